@@ -1,0 +1,475 @@
+"""The model's equations, derived once with SymPy from the Lagrangian.
+
+Everything numerical in the package descends from the expressions built here: the
+kernels in :mod:`sinktheory._generated` are printed from them by
+:mod:`sinktheory.codegen`, and the scripts in ``derivations/`` check them against the
+paper's printed forms (Pilipchuk, arXiv:1610.02939).
+
+Units are the paper's dimensionless ones: container mass M = 1, spring stiffness 1,
+so the container's own period is T = 2*pi.
+
+The ladder of derivations
+-------------------------
+1. :func:`potential` -- the soft-wall well V(x, y), ``"flat"`` (paper eq. V definition)
+   or ``"symmetric"`` (eq. V definition2), written through the *wall ratios*
+   s1 = x / D(y) and s2 (= y, or y / D(x)) with D(s) = alpha + beta (s^2 - 1).
+2. :func:`lagrangian` -- eq. (Lagr) for k particles in coordinates relative to the
+   container.
+3. :func:`hamiltonian` -- the Legendre transform, eq. (Hamiltonian).
+4. :func:`equations_of_motion` -- Euler-Lagrange equations solved for accelerations.
+5. :func:`separable_hamiltonian` -- the canonical change u_j = X + x_j after which
+   H = T(momenta) + U(coordinates) with a diagonal mass matrix.
+6. :func:`rescaled_equations` -- the single-particle system in the rescaled variables
+   (eq. rescale), giving (x-oscill) and the linearised (y-oscill) with
+   lambda = -2 beta (alpha - beta); the n = 1 case gets its extra linear term.
+7. :func:`rigid_wall_curvature` -- eq. (kappa), the curvature of the wall as n -> oo.
+8. :func:`period_integral` / :func:`period_closed_form` -- eq. (T).
+
+Examples
+--------
+>>> from sinktheory import symbolic as S
+>>> S.lambda_coefficient()
+-2*beta*(alpha - beta)
+>>> S.period_closed_form().subs({S.n: 1, S.A0: 1})
+2*pi
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import sympy as sp
+
+SHAPES = ("flat", "symmetric")
+
+# --- symbols shared by the whole package -------------------------------------------
+alpha = sp.Symbol("alpha", positive=True)
+beta = sp.Symbol("beta", real=True)
+gamma = sp.Symbol("gamma", positive=True)
+n = sp.Symbol("n", integer=True, positive=True)
+mu = sp.Symbol("mu", positive=True)
+X, x, y = sp.symbols("X x y", real=True)
+P, p_x, p_y = sp.symbols("P p_x p_y", real=True)
+E = sp.Symbol("E", positive=True)
+A0 = sp.Symbol("A0", positive=True)
+xdd, ydd = sp.symbols("xdd ydd", real=True)
+#: alpha - beta, the distance from the centre to the wall on the x axis (rigid limit).
+#: Used as a positive symbol inside derivations, then replaced by alpha - beta.
+wall_distance = sp.Symbol("L", positive=True)
+#: Atoms of the kernels: the wall ratios s1, s2 (V = gamma/(2n) (s1^(2n) + s2^(2n))) and
+#: the denominators Dx = D(x), Dy = D(y).  Derivatives are taken in these atoms so that a
+#: kernel raises numbers of order one to the power 2n (never x^(2n) and D^(-2n) apart,
+#: which overflow or underflow for large n).
+s1, s2 = sp.symbols("s1 s2", real=True)
+Dx, Dy = sp.symbols("Dx Dy", real=True)
+
+
+def _check_shape(shape: str) -> None:
+    if shape not in SHAPES:
+        raise ValueError(f"shape = {shape!r} is not allowed: must be one of {SHAPES}")
+
+
+def denominator(s: sp.Expr) -> sp.Expr:
+    """D(s) = alpha + beta (s^2 - 1): the wall's half-width across at coordinate s."""
+    return alpha + beta * (s**2 - 1)
+
+
+def wall_ratios(shape: str, xs: sp.Expr = x, ys: sp.Expr = y) -> tuple[sp.Expr, sp.Expr]:
+    """The two ratios (s1, s2) whose 2n-th powers make up V.
+
+    ``"flat"``: (x / D(y), y); ``"symmetric"``: (x / D(y), y / D(x)).
+    """
+    _check_shape(shape)
+    if shape == "flat":
+        return xs / denominator(ys), ys
+    return xs / denominator(ys), ys / denominator(xs)
+
+
+def _atom_definitions(shape: str) -> dict[sp.Symbol, tuple[sp.Expr, sp.Expr | None]]:
+    """Each ratio atom as (numerator, denominator atom or None)."""
+    _check_shape(shape)
+    return {s1: (x, Dy), s2: (y, Dx) if shape == "symmetric" else (y, None)}
+
+
+def atom_values(shape: str) -> dict[sp.Symbol, sp.Expr]:
+    """Definitions of the atoms in x, y, in the order a kernel computes them."""
+    out: dict[sp.Symbol, sp.Expr] = {Dy: denominator(y)}
+    if shape == "symmetric":
+        out[Dx] = denominator(x)
+    for atom, (num, den) in _atom_definitions(shape).items():
+        out[atom] = num if den is None else num / den
+    return out
+
+
+def potential_of_ratios() -> sp.Expr:
+    """V in the atoms: gamma/(2n) (s1^(2n) + s2^(2n)) (the same for both shapes)."""
+    return gamma / (2 * n) * (s1 ** (2 * n) + s2 ** (2 * n))
+
+
+def potential(shape: str, xs: sp.Expr = x, ys: sp.Expr = y) -> sp.Expr:
+    """The soft-wall well V(x, y), paper eqs. (V definition) and (V definition2)."""
+    r1, r2 = wall_ratios(shape, xs, ys)
+    return potential_of_ratios().subs({s1: r1, s2: r2}, simultaneous=True)
+
+
+# --- derivatives in atom form ------------------------------------------------------
+def _atom_derivative(atom: sp.Symbol, var: sp.Symbol, shape: str) -> sp.Expr:
+    """d(atom)/d(var), written in atoms: d(num/D) = (d num - (num/D) dD) / D."""
+    if atom in (Dx, Dy):
+        return sp.diff(denominator(x if atom == Dx else y), var)
+    num, den = _atom_definitions(shape)[atom]
+    dnum = sp.diff(num, var)
+    if den is None:
+        return dnum
+    return (dnum - atom * _atom_derivative(den, var, shape)) / den
+
+
+def ratio_derivative(expr: sp.Expr, var: sp.Symbol, shape: str) -> sp.Expr:
+    """d(expr)/d(var) for an expression in (x, y, s1, s2, Dx, Dy), chain rule through the atoms."""
+    total = sp.diff(expr, var)
+    for atom in (s1, s2, Dx, Dy):
+        if expr.has(atom):
+            total += sp.diff(expr, atom) * _atom_derivative(atom, var, shape)
+    return sp.powsimp(sp.expand(total), force=True)
+
+
+def gradient_in_ratios(shape: str) -> tuple[sp.Expr, sp.Expr]:
+    """(dV/dx, dV/dy) in the atoms x, y, s1, s2, Dx, Dy."""
+    V = potential_of_ratios()
+    return ratio_derivative(V, x, shape), ratio_derivative(V, y, shape)
+
+
+def hessian_in_ratios(shape: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+    """(V_xx, V_xy, V_yy) in the atoms (for variational equations)."""
+    Vx, Vy = gradient_in_ratios(shape)
+    return (
+        ratio_derivative(Vx, x, shape),
+        ratio_derivative(Vx, y, shape),
+        ratio_derivative(Vy, y, shape),
+    )
+
+
+def substitute_ratios(expr: sp.Expr, shape: str) -> sp.Expr:
+    """Replace the atoms s1, s2, Dx, Dy by their definitions in x, y."""
+    values = atom_values(shape)
+    for atom in reversed(list(values)):
+        expr = expr.subs(atom, values[atom])
+    return expr.subs(values)
+
+
+# --- mechanics --------------------------------------------------------------------
+@dataclass(frozen=True)
+class Mechanics:
+    """Coordinates, velocities and momenta of the container and k particles.
+
+    For k = 1 the particle symbols are the plain ``x, y, p_x, p_y``; for k > 1 they carry
+    the index j = 1..k (``x_1``, ``p_y_3``, ...).
+    """
+
+    k: int
+    coordinates: tuple[sp.Symbol, ...]
+    velocities: tuple[sp.Symbol, ...]
+    momenta: tuple[sp.Symbol, ...]
+
+    @property
+    def xs(self) -> tuple[sp.Symbol, ...]:
+        return self.coordinates[1 : 1 + self.k]
+
+    @property
+    def ys(self) -> tuple[sp.Symbol, ...]:
+        return self.coordinates[1 + self.k :]
+
+
+def mechanics(k: int) -> Mechanics:
+    """Symbols for the container (X, P) and k particles."""
+    if k < 1:
+        raise ValueError(f"k = {k!r} is not allowed: must be an integer >= 1")
+    if k == 1:
+        xs, ys, pxs, pys = (x,), (y,), (p_x,), (p_y,)
+    else:
+        idx = range(1, k + 1)
+        xs = tuple(sp.Symbol(f"x_{j}", real=True) for j in idx)
+        ys = tuple(sp.Symbol(f"y_{j}", real=True) for j in idx)
+        pxs = tuple(sp.Symbol(f"p_x_{j}", real=True) for j in idx)
+        pys = tuple(sp.Symbol(f"p_y_{j}", real=True) for j in idx)
+    q = (X, *xs, *ys)
+    qd = tuple(sp.Symbol(f"{s.name}dot", real=True) for s in q)
+    return Mechanics(k, q, qd, (P, *pxs, *pys))
+
+
+def lagrangian(k: int = 1, shape: str = "flat") -> tuple[sp.Expr, Mechanics]:
+    """Paper eq. (Lagr): L = X'^2/2 - X^2/2 + sum_j [mu/2((X' + x_j')^2 + y_j'^2) - V_j]."""
+    m = mechanics(k)
+    Xd = m.velocities[0]
+    xds, yds = m.velocities[1 : 1 + k], m.velocities[1 + k :]
+    L = Xd**2 / 2 - X**2 / 2
+    for xj, yj, xdj, ydj in zip(m.xs, m.ys, xds, yds, strict=True):
+        L += mu / 2 * ((Xd + xdj) ** 2 + ydj**2) - potential(shape, xj, yj)
+    return L, m
+
+
+def mass_matrix(k: int = 1, shape: str = "flat") -> sp.Matrix:
+    """The (constant) mass matrix d^2 L / dq' dq' in relative coordinates."""
+    L, m = lagrangian(k, shape)
+    M = sp.hessian(L, m.velocities)
+    if any(M.has(q) for q in m.coordinates):
+        raise AssertionError("mass matrix depends on coordinates")
+    return M
+
+
+def hamiltonian(k: int = 1, shape: str = "flat") -> sp.Expr:
+    """Legendre transform H = sum p q' - L, paper eq. (Hamiltonian), in (q, p).
+
+    The paper's sum lists only p_j x_j'; the y-momenta enter the transform too.
+    """
+    L, m = lagrangian(k, shape)
+    momenta_of_velocities = [sp.diff(L, v) for v in m.velocities]
+    sol = sp.solve(
+        [sp.Eq(p, e) for p, e in zip(m.momenta, momenta_of_velocities, strict=True)],
+        m.velocities,
+        dict=True,
+    )[0]
+    H = sum(p * v for p, v in zip(m.momenta, m.velocities, strict=True)) - L
+    H = sp.expand(H.subs(sol))
+    potential_part = H.subs({p: 0 for p in m.momenta})
+    return sp.expand(sp.simplify(H - potential_part)) + potential_part
+
+
+def equations_of_motion(k: int = 1, shape: str = "flat") -> dict[sp.Symbol, sp.Expr]:
+    """Euler-Lagrange equations solved for the accelerations, in relative coordinates.
+
+    L = q'^T M q'/2 - U(q) with a constant mass matrix M, so M q'' = -grad U.  Returns
+    ``{coordinate: acceleration}``.  For k = 1 the result is written in the kernel atoms
+    (s1, s2, Dx, Dy; see :func:`substitute_ratios`), for k > 1 explicitly in x_j, y_j.
+    """
+    L, m = lagrangian(k, shape)
+    M = mass_matrix(k, shape)
+    if k == 1:
+        Vx, Vy = gradient_in_ratios(shape)
+        grad_U = sp.Matrix([X, Vx, Vy])
+    else:
+        U = -L.subs({v: 0 for v in m.velocities})
+        grad_U = sp.Matrix([sp.diff(U, q) for q in m.coordinates])
+    acc = M.inv().applyfunc(sp.factor) * (-grad_U)
+    return {q: sp.expand(a) for q, a in zip(m.coordinates, acc, strict=True)}
+
+
+@dataclass(frozen=True)
+class SeparableHamiltonian:
+    """H = kinetic(momenta) + potential(coordinates) in absolute particle coordinates.
+
+    Attributes
+    ----------
+    coordinates : (X, u_1..u_k, y_1..y_k) with u_j = X + x_j
+    momenta : (Pi, pi_1..pi_k, pi_y_1..pi_y_k)
+    kinetic, potential : the two parts of H
+    masses : diagonal of the mass matrix, (1, mu, ..., mu)
+    """
+
+    coordinates: tuple[sp.Symbol, ...]
+    momenta: tuple[sp.Symbol, ...]
+    kinetic: sp.Expr
+    potential: sp.Expr
+    masses: tuple[sp.Expr, ...]
+
+
+def separable_hamiltonian(k: int = 1, shape: str = "flat") -> SeparableHamiltonian:
+    """Canonical change u_j = X + x_j (type-2 generating function) separating H.
+
+    F2 = X Pi + sum_j [(X + x_j) pi_j + y_j pi_y_j] gives P = Pi + sum pi_j, p_j = pi_j,
+    so the kinetic energy loses its cross terms and the mass matrix becomes diagonal.
+    """
+    m = mechanics(k)
+    H = hamiltonian(k, shape)
+    us = tuple(sp.Symbol(f"u_{j}" if k > 1 else "u", real=True) for j in range(1, k + 1))
+    new_p = tuple(sp.Symbol(f"pi_{s.name}", real=True) for s in m.momenta)
+    F2 = X * new_p[0]
+    for xj, yj, pij, piyj in zip(m.xs, m.ys, new_p[1 : 1 + k], new_p[1 + k :], strict=True):
+        F2 += (X + xj) * pij + yj * piyj
+    old_p = {p: sp.diff(F2, q) for p, q in zip(m.momenta, m.coordinates, strict=True)}
+    new_q = [sp.diff(F2, pn) for pn in new_p]
+    to_abs = {xj: uj - X for xj, uj in zip(m.xs, us, strict=True)}
+    H_new = sp.expand(H.subs(old_p, simultaneous=True).subs(to_abs, simultaneous=True))
+    coords = (X, *us, *m.ys)
+    # the new coordinates are what F2 says they are
+    for qn, c in zip(new_q, coords, strict=True):
+        if sp.simplify(qn.subs(to_abs) - c) != 0:
+            raise AssertionError("generating function does not give the new coordinates")
+    pot = sp.simplify(H_new.subs({p: 0 for p in new_p}))
+    kinetic = sp.expand(sp.simplify(H_new - pot))
+    if any(kinetic.has(q) for q in coords):
+        raise AssertionError("kinetic part still depends on coordinates: H does not separate")
+    masses = tuple(sp.simplify(1 / sp.diff(kinetic, p, 2)) for p in new_p)
+    return SeparableHamiltonian(coords, new_p, kinetic, pot, masses)
+
+
+# --- rescaled single-particle system --------------------------------------------------
+@dataclass(frozen=True)
+class RescaledSystem:
+    """Single particle (k = 1) in the variables of eq. (rescale).
+
+    x_equation, y_equation : expressions equal to zero, in xdd, ydd, x, y, X
+    hill_coefficient : q(x) such that the linearised y-equation reads ydd + q(x) y = 0
+    """
+
+    x_equation: sp.Expr
+    y_equation: sp.Expr
+    hill_coefficient: sp.Expr
+
+
+def _scaled_accelerations(shape: str, n_value: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """Accelerations of x and y (k = 1) in the rescaled variables, with alpha = L + beta."""
+    acc = equations_of_motion(1, shape)
+    L = wall_distance
+    # q = L qbar and t = L sqrt(mu/gamma) tbar, hence q'' = gamma/(mu L) qbar''.
+    scale = {x: L * x, y: L * y, X: L * X}
+    out = []
+    for q in (x, y):
+        a = substitute_ratios(acc[q], shape).subs(n, n_value)
+        a = a.subs(alpha, L + beta).subs(scale, simultaneous=True)
+        out.append(mu * L / gamma * a)
+    return out[0], out[1]
+
+
+def _linear_coefficient(ay: sp.Expr) -> sp.Expr:
+    """q(x) in ydd = -q(x) y + O(y^2), checking that y = 0 is invariant (a normal mode)."""
+    if sp.simplify(ay.subs(y, 0)) != 0:
+        raise AssertionError("y = 0 is not an invariant line")
+    ay = sp.powsimp(sp.expand_power_base(ay, force=True), force=True)
+    slope = sp.powsimp(sp.expand(sp.diff(ay, y)), force=True)
+    return sp.simplify(-slope.subs(y, 0))
+
+
+@functools.cache
+def rescaled_equations(shape: str = "flat", n_value: int | None = None) -> RescaledSystem:
+    """Paper eqs. (x-oscill) and (y-oscill), derived from the Lagrangian.
+
+    Parameters
+    ----------
+    shape : "flat" or "symmetric"
+    n_value : None for general n >= 2 (where y^(2n) adds nothing linear), or a specific
+        integer, e.g. 1, where the y-term of the well adds a linear restoring force.
+    """
+    _check_shape(shape)
+    if n_value is None:
+        m = sp.Symbol("m", integer=True, nonnegative=True)  # n = m + 2 >= 2
+        nv = m + 2
+    else:
+        nv = sp.Integer(n_value)
+    ax, ay = _scaled_accelerations(shape, nv)
+    ax0 = sp.simplify(sp.powsimp(ax.subs(y, 0), force=True))
+    q = _linear_coefficient(ay)
+    back = {wall_distance: alpha - beta}
+    if n_value is None:
+        back[m] = n - 2
+    x_eq = sp.expand(xdd - ax0).subs(back, simultaneous=True)
+    q = sp.powsimp(sp.factor_terms(q.subs(back, simultaneous=True)), force=True)
+    y_eq = ydd + q * y
+    return RescaledSystem(sp.powsimp(x_eq, force=True), y_eq, q)
+
+
+def lambda_coefficient() -> sp.Expr:
+    """lambda = q(x) / x^(2n) for general n, i.e. -2 beta (alpha - beta).
+
+    Derived from the flat well; the symmetric well gives the same value.
+    """
+    q = rescaled_equations("flat").hill_coefficient
+    lam = sp.simplify(sp.powsimp(q / x ** (2 * n), force=True))
+    return sp.factor(lam)
+
+
+# --- rigid-wall limit ---------------------------------------------------------------------
+def rigid_wall_contour() -> sp.Expr:
+    """x_wall(y): the level line V = E of the flat well as n -> oo (for x > 0).
+
+    On the level line x = D(y) (2nE/gamma)^(1/(2n)); the factor tends to 1.
+    """
+    factor = (2 * n * E / gamma) ** (1 / (2 * n))
+    lim = sp.limit(factor, n, sp.oo)
+    return denominator(y) * lim
+
+
+def rigid_wall_curvature() -> sp.Expr:
+    """Curvature of the rigid wall x = x_wall(y), paper eq. (kappa)."""
+    w = rigid_wall_contour()
+    k = sp.diff(w, y, 2) / (1 + sp.diff(w, y) ** 2) ** sp.Rational(3, 2)
+    return sp.simplify(k)
+
+
+# --- reach of a particle with energy E ----------------------------------------------
+def axis_reach_factor() -> sp.Expr:
+    """c with V(0, y) = E at y = c for the flat well: c = (2 n E / gamma)^(1/(2n)).
+
+    Every level line of either shape scales with this factor: |s1|, |s2| <= c on V <= E.
+    """
+    c = sp.Symbol("c", positive=True)
+    sol = sp.solve(sp.Eq(potential("flat", 0, c), E), c)
+    return sp.simplify(sol[0])
+
+
+def symmetric_corner_saddle() -> tuple[sp.Expr, sp.Expr]:
+    """(s*, V*) of the saddle on the diagonal x = y of the symmetric well (beta > 0).
+
+    Beyond this pass the level set V <= E opens to infinity through the corners, so the
+    well confines a particle only while its energy stays below V*.
+    """
+    s = sp.Symbol("s", positive=True)
+    b = sp.Symbol("b", positive=True)  # beta > 0 here
+    L = wall_distance  # alpha = beta + L with L > 0
+    Vd = potential("symmetric", s, s).subs(beta, b).subs(alpha, L + b)
+    crit = [c for c in sp.solve(sp.diff(Vd, s), s) if c.is_positive]
+    if len(crit) != 1:
+        raise AssertionError(f"expected one positive critical point, got {crit}")
+    s_star = sp.simplify(crit[0])
+    V_star = sp.simplify(Vd.subs(s, s_star))
+    back = {b: beta, L: alpha - beta}
+    return s_star.subs(back, simultaneous=True), V_star.subs(back, simultaneous=True)
+
+
+def symmetric_corner_bound() -> sp.Expr:
+    """Smallest s > 0 with s = c D(s): where the wall lines x = c D(y) and y = c D(x) meet.
+
+    For beta > 0 the basin around the centre lies inside |x|, |y| <= this value.
+    """
+    s = sp.Symbol("s", positive=True)
+    c = sp.Symbol("c", positive=True)
+    roots = sp.solve(sp.Eq(s, c * denominator(s)), s)
+    if len(roots) != 2:
+        raise AssertionError(f"expected two roots, got {roots}")
+    sample = {alpha: 1, beta: sp.Rational(1, 10), c: 1}
+    return min(roots, key=lambda r: float(r.subs(sample)))
+
+
+# --- power-law oscillator ---------------------------------------------------------------
+def period_integral() -> sp.Integral:
+    """T_n = 4 sqrt(n) / A0^(n-1) * Integral(1/sqrt(1 - z^(2n)), (z, 0, 1)).
+
+    From E_n = x'^2/2 + x^(2n)/(2n) = A0^(2n)/(2n): T = 4 int_0^A0 dx / sqrt(2(E_n - V)),
+    then x = A0 z.
+    """
+    z = sp.Symbol("z", positive=True)
+    xx = sp.Symbol("xx", positive=True)
+    En = A0 ** (2 * n) / (2 * n)
+    integrand = 1 / sp.sqrt(2 * (En - xx ** (2 * n) / (2 * n)))
+    scaled = sp.powsimp(sp.simplify(integrand.subs(xx, A0 * z) * A0), force=True)
+    return 4 * sp.Integral(scaled, (z, 0, 1))
+
+
+def period_closed_form() -> sp.Expr:
+    """Closed Gamma-function form of the period, paper eq. (T), evaluated from the integral."""
+    z = sp.Symbol("z", positive=True)
+    I = sp.integrate(1 / sp.sqrt(1 - z ** (2 * n)), (z, 0, 1), meijerg=True, conds="none")
+    inner = sp.gammasimp(sp.hyperexpand(I))
+    (integral,) = period_integral().atoms(sp.Integral)
+    integrand = integral.function
+    prefactor = sp.simplify(integrand * sp.sqrt(1 - z ** (2 * n)))
+    if prefactor.has(z):
+        raise AssertionError("period integrand is not prefactor / sqrt(1 - z^(2n))")
+    return sp.simplify(4 * prefactor * inner)  # period_integral() = 4 * prefactor * I
+
+
+def amplitude_of_energy() -> sp.Expr:
+    """A0 = (2 n E)^(1/(2n)) from E_n = A0^(2n) / (2n)."""
+    a = sp.Symbol("a", positive=True)
+    return sp.solve(sp.Eq(a ** (2 * n) / (2 * n), E), a)[0]
