@@ -1,0 +1,68 @@
+"""The ``sinktheory`` command.
+
+Bad input prints one line on stderr and exits with status 2, writing nothing; a
+numerical failure exits with status 1 and says where it happened.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+from . import __version__
+from .commands import COMMANDS
+from .errors import NumericalError, ParameterError
+
+
+class UsageError(Exception):
+    """An argument argparse could not parse."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str):  # one line, no usage dump
+        raise UsageError(f"{self.prog}: error: {message}")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(
+        prog="sinktheory",
+        description="The stochastic energy sink (Pilipchuk, arXiv:1610.02939): "
+        "symbolic model, periods, Floquet charts, simulations.",
+    )
+    parser.add_argument("--version", action="version", version=f"sinktheory {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for module in COMMANDS:
+        p = sub.add_parser(module.NAME, help=module.HELP, description=module.HELP)
+        module.add_arguments(p)
+        p.set_defaults(module=module)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except UsageError as e:
+        print(e, file=sys.stderr)
+        return 2
+    prog = f"sinktheory {args.command}"
+    try:
+        out = args.module.run(args)
+        for path, write in out.writers.items():
+            write(path)
+    except ParameterError as e:
+        print(f"{prog}: error: {e}", file=sys.stderr)
+        return 2
+    except NumericalError as e:
+        print(f"{prog}: numerical failure: {e}", file=sys.stderr)
+        return 1
+    if args.json:
+        print(json.dumps(out.data, allow_nan=False))
+    else:
+        print(out.text)
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

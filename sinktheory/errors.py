@@ -1,0 +1,50 @@
+"""Exception types of sinktheory.
+
+Two families, kept apart on purpose:
+
+* :class:`ParameterError` (a :class:`ValueError`) -- the caller asked for something
+  outside the model's domain.  The message is one line naming the parameter, the value
+  given and what is allowed.  The CLI turns it into exit status 2.
+* :class:`NumericalError` -- a computation went wrong although the input was valid
+  (energy drift over its bound, a non-finite state, a root that cannot be bracketed).
+  Each subclass says where and when it happened; nothing returns silently wrong numbers.
+"""
+
+from __future__ import annotations
+
+
+class ParameterError(ValueError):
+    """An input outside the allowed range.
+
+    Examples
+    --------
+    >>> raise ParameterError("n", 0, "an integer >= 1")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: n = 0 is not allowed: must be an integer >= 1
+    """
+
+    def __init__(self, name: str, value: object, allowed: str, *, why: str | None = None):
+        self.name = name
+        self.value = value
+        self.allowed = allowed
+        text = f"{name} = {value!r} is not allowed: must be {allowed}"
+        if why:
+            text += f" ({why})"
+        super().__init__(text)
+
+
+class NumericalError(RuntimeError):
+    """Base class of failures of a computation on valid input."""
+
+
+class NonFiniteStateError(NumericalError):
+    """A state variable became NaN or infinite."""
+
+
+class EnergyDriftError(NumericalError):
+    """The relative error of a conserved energy exceeded its bound."""
+
+
+class BracketError(NumericalError):
+    """A root finder could not bracket or converge to a root."""

@@ -1,0 +1,254 @@
+"""Validated, immutable parameters of the stochastic energy sink.
+
+This is the one place where the model's inputs are checked.  Every object validates
+itself on construction and raises :class:`~sinktheory.errors.ParameterError` (a
+``ValueError``) with a one-line message naming the parameter, the value and what is
+allowed.
+
+Units are the paper's dimensionless ones: container mass 1 on a spring of stiffness 1
+(period T = 2 pi); energies in the same units.
+
+Examples
+--------
+>>> well = Well(alpha=0.5, beta=0.3, n=10)
+>>> round(well.wall_distance, 12), well.curvature_at_centre
+(0.2, 0.6)
+>>> sink = Sink(well, particles=5, mass=0.2)
+>>> sink.mu
+0.04
+>>> Well(alpha=0.5, beta=0.5, n=2)  # doctest: +ELLIPSIS
+Traceback (most recent call last):
+...
+sinktheory.errors.ParameterError: beta = 0.5 is not allowed: must be < alpha = 0.5 (...)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import optimize
+
+from . import validation as v
+from ._generated import oscillator as _osc
+from ._generated import well as _well
+from .errors import ParameterError
+
+SHAPES = ("flat", "symmetric")
+#: Largest wall stiffness accepted.  Kernels stay finite far beyond it; the limit keeps
+#: integer powers s^(2n) of wall ratios |s| <= 1.5 well inside float64 range.
+MAX_N = 1000
+
+_POTENTIAL = {"flat": _well.potential_flat, "symmetric": _well.potential_symmetric}
+
+
+@dataclass(frozen=True)
+class Well:
+    """The soft-wall potential well V(x, y) (paper eqs. V definition / V definition2).
+
+    Parameters
+    ----------
+    alpha : float > 0
+        Sets the wall distance alpha - beta on the x axis.
+    beta : float, < alpha
+        Half the wall curvature at y = 0: beta > 0 bulges inward (Sinai-like),
+        beta < 0 focuses (stadium-like).
+    n : int in [1, 1000]
+        Wall stiffness; rigid walls as n -> oo.
+    gamma : float > 0
+        Strength of the well.
+    shape : "flat" or "symmetric"
+        ``"flat"``: gamma/(2n) [(x/D(y))^2n + y^2n]; ``"symmetric"``:
+        gamma/(2n) [(x/D(y))^2n + (y/D(x))^2n], with D(s) = alpha + beta (s^2 - 1).
+    """
+
+    alpha: float
+    beta: float
+    n: int
+    gamma: float = 1.0
+    shape: str = "flat"
+
+    def __post_init__(self) -> None:
+        set_ = object.__setattr__
+        set_(self, "alpha", v.positive("alpha", self.alpha))
+        set_(self, "beta", v.finite("beta", self.beta))
+        set_(self, "n", v.positive_int("n", self.n, maximum=MAX_N))
+        set_(self, "gamma", v.positive("gamma", self.gamma))
+        set_(self, "shape", v.choice("shape", self.shape, SHAPES))
+        if self.alpha - self.beta <= 0:
+            raise ParameterError(
+                "beta",
+                self.beta,
+                f"< alpha = {self.alpha!r}",
+                why="the wall distance alpha - beta must be > 0",
+            )
+
+    # --- geometry -------------------------------------------------------------------
+    @property
+    def wall_distance(self) -> float:
+        """alpha - beta: distance from the centre to the wall along x (rigid limit)."""
+        return float(_well.denominator(0.0, self.alpha, self.beta))
+
+    @property
+    def curvature_at_centre(self) -> float:
+        """Curvature of the rigid wall at y = 0, which is 2 beta (paper eq. kappa)."""
+        return self.curvature(0.0)
+
+    def curvature(self, y: float) -> float:
+        """Curvature of the rigid-wall contour x = D(y) at height y (n -> oo)."""
+        return float(_osc.rigid_wall_curvature(self.beta, v.finite("y", y)))
+
+    def denominator(self, s):
+        """D(s) = alpha + beta (s^2 - 1); accepts scalars or arrays."""
+        return _well.denominator(np.asarray(s, dtype=float), self.alpha, self.beta)
+
+    def potential(self, x, y) -> np.ndarray:
+        """V(x, y) at arrays of points (relative to the container)."""
+        f = np.vectorize(_POTENTIAL[self.shape], otypes=[float])
+        return f(x, y, self.alpha, self.beta, self.gamma, self.n)
+
+    # --- what a particle of energy E can reach -----------------------------------------
+    def reach(self, energy: float) -> tuple[float, float]:
+        """Bounds (x_max, y_max) on |x| and |y| over the basin V <= energy around the centre.
+
+        Checks that the well confines that energy with a positive denominator
+        everywhere in the basin (see :meth:`check_energy`).
+
+        Examples
+        --------
+        >>> Well(alpha=0.5, beta=0.3, n=2).reach(0.5)  # doctest: +ELLIPSIS
+        (0.5..., 1.189...)
+        """
+        e = v.positive("energy", energy)
+        c = float(_osc.axis_reach_factor(e, self.gamma, self.n))
+        D = self.denominator
+        if self.shape == "flat":
+            # |y| <= c; D is monotone in y^2, so its extremes on [0, c] are at the ends
+            if min(float(D(0.0)), float(D(c))) <= 0:
+                self._refuse_denominator(e, c)
+            return self._flat_x_reach(c), c
+        if self.beta <= 0:
+            # D(s) <= alpha - beta, so the basin lies in the box |x|, |y| <= c (alpha - beta)
+            s_box = c * self.wall_distance
+            if float(D(s_box)) <= 0:
+                self._refuse_denominator(e, s_box)
+            return s_box, s_box
+        s_star, v_star = _osc.symmetric_corner_saddle(self.alpha, self.beta, self.gamma, self.n)
+        if e >= v_star:
+            raise ParameterError(
+                "energy",
+                e,
+                f"< {v_star:.6g}, the height of the corner saddle of this symmetric well",
+                why="above it a particle escapes through the corners",
+            )
+        if 4 * c * c * self.beta * self.wall_distance <= 1:
+            s = float(_osc.symmetric_corner_bound(self.alpha, self.beta, c))
+        else:  # the wall lines do not close; the saddle position bounds the basin
+            s = max(s_star, c * float(D(s_star)))
+        return s, s
+
+    def _flat_x_reach(self, c: float) -> float:
+        """max over |y| <= c of D(y) (c^2n - y^2n)^(1/2n): the widest point of the basin."""
+        if self.beta <= 0:
+            return c * self.wall_distance  # D is largest at y = 0
+
+        def minus_width(y: float) -> float:
+            return (
+                -float(self.denominator(y))
+                * c
+                * max(0.0, 1 - (y / c) ** (2 * self.n)) ** (1 / (2 * self.n))
+            )
+
+        grid = np.linspace(0.0, c, 201)
+        i = int(np.argmin([minus_width(t) for t in grid]))
+        lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
+        best = optimize.minimize_scalar(
+            minus_width, bounds=(lo, hi), method="bounded", options={"xatol": 1e-12}
+        )
+        return -min(float(best.fun), minus_width(grid[i]))
+
+    def check_energy(self, energy: float) -> None:
+        """Raise ParameterError unless a particle with ``energy`` stays in a regular well."""
+        self.reach(energy)
+
+    def _refuse_denominator(self, energy: float, s: float) -> None:
+        raise ParameterError(
+            "beta",
+            self.beta,
+            "a value keeping D(s) = alpha + beta (s^2 - 1) > 0 wherever a particle can go",
+            why=f"with energy {energy:.6g} a particle reaches |s| = {s:.6g}, where "
+            f"D = {float(self.denominator(s)):.6g}",
+        )
+
+
+@dataclass(frozen=True)
+class Sink:
+    """The container (mass 1, spring 1) holding k particles of total mass m.
+
+    Parameters
+    ----------
+    well : Well
+    particles : int in [1, 1000]
+        Number k of non-interacting particles.
+    mass : float > 0
+        Their total mass m; each particle has mass mu = m / k.
+    """
+
+    well: Well
+    particles: int = 1
+    mass: float = 0.2
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.well, Well):
+            raise ParameterError("well", self.well, "a sinktheory.model.Well")
+        object.__setattr__(
+            self, "particles", v.positive_int("particles", self.particles, maximum=1000)
+        )
+        object.__setattr__(self, "mass", v.positive("mass", self.mass))
+
+    @property
+    def mu(self) -> float:
+        """Mass of one particle, m / k."""
+        return self.mass / self.particles
+
+
+@dataclass(frozen=True)
+class RunSettings:
+    """How an ensemble is started and how long it runs.
+
+    Parameters
+    ----------
+    energy : float > 0
+        Initial energy E0 of the container (0.5: displaced to X = 1 and released).
+    runs : int >= 1
+        Ensemble size R.
+    periods : int >= 1
+        Number of container periods T = 2 pi to integrate.
+    seed : int >= 0
+        Seed of the random initial positions; the same seed gives the same runs.
+    box : float > 0
+        Half-width of the square (-box, box)^2 around the centre where particles start.
+    """
+
+    energy: float = 0.5
+    runs: int = 25
+    periods: int = 1500
+    seed: int = 0
+    box: float = 0.01
+
+    def __post_init__(self) -> None:
+        set_ = object.__setattr__
+        set_(self, "energy", v.positive("energy", self.energy))
+        set_(self, "runs", v.positive_int("runs", self.runs))
+        set_(self, "periods", v.positive_int("periods", self.periods))
+        set_(self, "seed", v.positive_int("seed", self.seed, minimum=0))
+        set_(self, "box", v.positive("box", self.box))
+
+    def total_energy_bound(self, sink: Sink) -> float:
+        """Upper bound of the total energy: E0 plus k times V at the box's corner."""
+        corner = float(sink.well.potential(self.box, self.box))
+        return self.energy + sink.particles * corner
+
+    def check(self, sink: Sink) -> None:
+        """Raise ParameterError unless every particle stays in a regular part of the well."""
+        sink.well.check_energy(self.total_energy_bound(sink))

@@ -1,0 +1,88 @@
+"""Tiny validators shared by every input check of the package.
+
+Each returns the value in canonical form or raises :class:`~sinktheory.errors.ParameterError`
+whose message names the parameter.  The model objects in :mod:`sinktheory.model` and the
+analyses' entry points call these; no other module re-implements a check.
+
+Examples
+--------
+>>> positive("gamma", 2)
+2.0
+>>> positive_int("n", 3.0)
+3
+>>> positive("gamma", -1)
+Traceback (most recent call last):
+...
+sinktheory.errors.ParameterError: gamma = -1 is not allowed: must be a finite number > 0
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+
+from .errors import ParameterError
+
+
+def finite(name: str, value: object) -> float:
+    """A finite real number (bools are refused)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        try:
+            value = float(value)  # numpy scalars, mpmath mpf, numeric strings
+        except (TypeError, ValueError):
+            raise ParameterError(name, value, "a finite real number") from None
+    x = float(value)
+    if not math.isfinite(x):
+        raise ParameterError(name, value, "a finite real number")
+    return x
+
+
+def positive(name: str, value: object) -> float:
+    """A finite real number > 0."""
+    try:
+        x = finite(name, value)
+    except ParameterError:
+        raise ParameterError(name, value, "a finite number > 0") from None
+    if x <= 0:
+        raise ParameterError(name, value, "a finite number > 0")
+    return x
+
+
+def nonnegative(name: str, value: object) -> float:
+    """A finite real number >= 0."""
+    try:
+        x = finite(name, value)
+    except ParameterError:
+        raise ParameterError(name, value, "a finite number >= 0") from None
+    if x < 0:
+        raise ParameterError(name, value, "a finite number >= 0")
+    return x
+
+
+def positive_int(name: str, value: object, *, minimum: int = 1, maximum: int | None = None) -> int:
+    """An integer in ``[minimum, maximum]`` (floats with an integral value are accepted)."""
+    allowed = (
+        f"an integer >= {minimum}" if maximum is None else (f"an integer in [{minimum}, {maximum}]")
+    )
+    if isinstance(value, bool):
+        raise ParameterError(name, value, allowed)
+    if isinstance(value, numbers.Integral):
+        i = int(value)
+    else:
+        try:
+            x = float(value)
+        except (TypeError, ValueError):
+            raise ParameterError(name, value, allowed) from None
+        if not math.isfinite(x) or x != int(x):
+            raise ParameterError(name, value, allowed)
+        i = int(x)
+    if i < minimum or (maximum is not None and i > maximum):
+        raise ParameterError(name, value, allowed)
+    return i
+
+
+def choice(name: str, value: object, options: tuple[str, ...]) -> str:
+    """One of a fixed set of names."""
+    if value not in options:
+        raise ParameterError(name, value, "one of " + ", ".join(repr(o) for o in options))
+    return str(value)
