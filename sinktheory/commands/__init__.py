@@ -5,6 +5,6 @@ returns an :class:`~sinktheory.commands._common.Output`.  A command computes eve
 before it writes any file, so bad input never leaves partial output behind.
 """
 
-from . import sink, well
+from . import derive, sink, well
 
-COMMANDS = (well, sink)
+COMMANDS = (well, sink, derive)

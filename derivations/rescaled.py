@@ -1,0 +1,48 @@
+"""The rescaled single-particle system, paper eqs. (rescale), (x-oscill), (y-oscill).
+
+    python derivations/rescaled.py
+
+For k = 1 the equations of motion are rescaled by {x, y, X, t sqrt(gamma/mu)}/(alpha - beta),
+the y-equation is linearised about the normal mode y = 0, and the results are compared
+with the printed equations.  For n = 1 the term y^(2n) of the well is quadratic, so its
+force is linear in y and adds to Hill's coefficient; the paper's (y-oscill) omits it.
+"""
+
+import sympy as sp
+from _report import check, finish
+
+from sinktheory import symbolic as S
+from sinktheory.symbolic import X, alpha, beta, gamma, mu, n, x, xdd
+
+L = alpha - beta
+lam = -2 * beta * (alpha - beta)
+
+for shape in S.SHAPES:
+    r = S.rescaled_equations(shape)
+    derived_xdd = sp.solve(r.x_equation, xdd)[0]
+    paper = sp.Eq(xdd + x ** (2 * n - 1), mu / (1 + mu) * (xdd + L**2 / gamma * X))
+    paper_xdd = sp.solve(paper, xdd)[0]
+    check(f"{shape}: (x-oscill) on the normal mode y = 0", derived_xdd, paper_xdd)
+    check(
+        f"{shape}: (y-oscill) coefficient q(x) for n >= 2: lambda x^(2n)",
+        r.hill_coefficient,
+        lam * x ** (2 * n),
+    )
+
+check("lambda = -2 beta (alpha - beta)", S.lambda_coefficient(), lam)
+
+# n = 1: the well's y-term gamma y^2/2 (flat) or gamma (y/D(x))^2/2 (symmetric) is
+# quadratic; rescaled by (alpha - beta) it contributes L^2 (flat) and
+# 1/(1 + beta L x^2)^2 (symmetric, since D(L x) = L (1 + beta L x^2)) to Hill's coefficient.
+corrected = {
+    "flat": lam * x**2 + L**2,
+    "symmetric": lam * x**2 + 1 / (1 + beta * L * x**2) ** 2,
+}
+for shape in S.SHAPES:
+    check(
+        f"{shape}: Hill coefficient for n = 1 (corrected form)",
+        S.rescaled_equations(shape, 1).hill_coefficient,
+        corrected[shape],
+        note="the paper's (y-oscill) omits this extra linear term for n = 1",
+    )
+finish()
