@@ -330,6 +330,16 @@ def _oscillator_module() -> str:
             "c = (2 n E / gamma)^(1/(2n)): |s1|, |s2| <= c wherever V <= E.",
         )
     )
+    width = S.flat_level_half_width()
+    parts.append(
+        "\n\n"
+        + _njit_function(
+            "flat_level_half_width",
+            ("y", "E", "alpha", "beta", "gamma", "n"),
+            "x > 0 on the level line V = E of the flat well at height |y| <= c.",
+            _body([width], [(S.Dy, S.denominator(S.y))]),
+        )
+    )
     c = sp.Symbol("c", positive=True)
     parts.append(
         "\n\n"

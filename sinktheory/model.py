@@ -126,7 +126,7 @@ class Well:
             # |y| <= c; D is monotone in y^2, so its extremes on [0, c] are at the ends
             if min(float(D(0.0)), float(D(c))) <= 0:
                 self._refuse_denominator(e, c)
-            return self._flat_x_reach(c), c
+            return self._flat_x_reach(c, e), c
         if self.beta <= 0:
             # D(s) <= alpha - beta, so the basin lies in the box |x|, |y| <= c (alpha - beta)
             s_box = c * self.wall_distance
@@ -147,8 +147,8 @@ class Well:
             s = max(s_star, c * float(D(s_star)))
         return s, s
 
-    def _flat_x_reach(self, c: float) -> float:
-        """max over |y| <= c of D(y) (c^2n - y^2n)^(1/2n): the widest point of the basin."""
+    def _flat_x_reach(self, c: float, energy: float) -> float:
+        """Largest half-width of the level line V = energy over |y| <= c."""
         if self.beta <= 0:
             return c * self.wall_distance  # D is largest at y = 0
 

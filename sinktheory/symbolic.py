@@ -408,6 +408,20 @@ def axis_reach_factor() -> sp.Expr:
     return sp.simplify(sol[0])
 
 
+def flat_level_half_width() -> sp.Expr:
+    """x > 0 on the level line V = E of the flat well at height y, in the atom Dy.
+
+    From s1^(2n) + y^(2n) = 2 n E / gamma: x = Dy (2 n E / gamma - y^(2n))^(1/(2n)).
+    """
+    w = sp.Symbol("w", positive=True)
+    level = sp.Eq(potential_of_ratios().subs({s1: w, s2: y}), E)
+    sample = {E: sp.Rational(1, 2), n: 3, gamma: 1, y: sp.Rational(1, 2)}
+    roots = [r for r in sp.solve(level, w) if sp.N(r.subs(sample)).is_positive]
+    if len(roots) != 1:
+        raise AssertionError(f"expected one positive root, got {roots}")
+    return roots[0] * Dy
+
+
 def symmetric_corner_saddle() -> tuple[sp.Expr, sp.Expr]:
     """(s*, V*) of the saddle on the diagonal x = y of the symmetric well (beta > 0).
 

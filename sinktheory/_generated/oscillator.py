@@ -73,6 +73,15 @@ def axis_reach_factor(E, gamma, n):
 
 
 @numba.njit(cache=True)
+def flat_level_half_width(y, E, alpha, beta, gamma, n):
+    """x > 0 on the level line V = E of the flat well at height |y| <= c."""
+    Dy = alpha + beta*((y*y) - 1)
+    t0 = (1/2)/n
+    t1 = 2*n
+    return Dy*gamma**(-t0)*(E*t1 - gamma*ipow(y, t1))**t0
+
+
+@numba.njit(cache=True)
 def symmetric_corner_bound(alpha, beta, c):
     """Smallest s > 0 with s = c D(s) (symmetric well, beta > 0): the basin lies in |x|, |y| <= s."""
     t0 = 4*(c*c)
