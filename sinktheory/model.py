@@ -141,10 +141,9 @@ class Well:
                 f"< {v_star:.6g}, the height of the corner saddle of this symmetric well",
                 why="above it a particle escapes through the corners",
             )
-        if 4 * c * c * self.beta * self.wall_distance <= 1:
-            s = float(_osc.symmetric_corner_bound(self.alpha, self.beta, c))
-        else:  # the wall lines do not close; the saddle position bounds the basin
-            s = max(s_star, c * float(D(s_star)))
+        s = float(_osc.symmetric_corner_bound(self.alpha, self.beta, c))
+        if not np.isfinite(s):  # the wall lines x = c D(y), y = c D(x) do not meet:
+            s = max(s_star, c * float(D(s_star)))  # bound the basin by the saddle
         return s, s
 
     def _flat_x_reach(self, c: float, energy: float) -> float:
