@@ -1,0 +1,529 @@
+r"""Floquet stability of the normal mode y = 0 (paper eq. y-oscill, Fig. 7).
+
+Hill's equation y'' + q(x(t)) y = 0 has a coefficient of period T_n / 2, because q is
+even in x and x(t + T_n/2) = -x(t).  With M(t) the fundamental matrix (columns y1, y2),
+M(T_n) = M(T_n/2)^2, so
+
+    phi_T = [y1(T) + y2'(T)] / 2 = 2 phi_half^2 - 1 >= -1,    phi_half = tr M(T/2) / 2.
+
+phi_T alone cannot tell the two kinds of instability apart (both give phi_T > 1);
+phi_half can: phi_half > 1 (multipliers real positive) and phi_half < -1 (real
+negative).  The normal mode is stable iff |phi_half| < 1.  The multipliers over one
+period are rho = phi_T +- sqrt(phi_T^2 - 1) = rho_half^2.
+
+Quarter-period formulas.  Start x at a turning point, x(0) = A0, x'(0) = 0.  Then x is
+even about t = 0 and odd about Q = T_n/4, so q(x(t)) is even about both 0 and Q.  Let
+(y1, y1', y2, y2') be evaluated at Q.  Reversibility about Q: t -> 2Q - t maps
+solutions to solutions, so the half-period map is M(2Q) = R M(Q)^{-1} R M(Q) with
+R = diag(1, -1); with det M(Q) = y1 y2' - y2 y1' = 1 (Wronskian) this gives
+
+    M(T/2) = [[y1 y2' + y2 y1',  2 y2 y2'],
+              [2 y1 y1',         y1 y2' + y2 y1']],
+
+    phi_half     = y1 y2' + y2 y1',
+    phi_half - 1 = 2 y2 y1'     (use the Wronskian: y1 y2' = 1 + y2 y1'),
+    phi_half + 1 = 2 y1 y2'.
+
+So the stability boundaries phi_half = +1 are the zeros of y2(Q) or y1'(Q) and the
+boundaries phi_half = -1 the zeros of y1(Q) or y2'(Q).  These factors are computed
+without cancellation, so boundaries are located to near machine precision, and
+stability is decided from their signs: stable iff y2 y1' < 0 < y1 y2'.  In deeply
+unstable zones the products carry a common binary exponent (see
+:mod:`sinktheory.hill`), so log|phi_half| stays accurate far beyond float range.
+
+Rotation number.  In a stability zone rho = exp(+-i theta_T) with theta_T = 2 theta,
+theta = arccos(phi_half) in [0, pi]; the rotation number per period T_n (modulo 1) is
+theta / pi.  Strong resonances phi_T = -1 (rotation number 1/2) are the zeros of
+phi_half inside stability zones; there M(T) = -I (coexistence), which the paper links to
+the narrow chaotic windows of its bifurcation diagrams (Fig. 3).
+
+Rigid-wall limit (n -> oo).  Take A0 = 1 (only Lam A0^2 matters).  The energy is
+E = 1/(2n); away from the walls x^(2n) is negligible, x moves with constant speed
+sqrt(2E) = 1/sqrt(n) and y'' = 0.  Near a wall x^(2n) is O(1) for a short impact, whose
+weight follows from energy conservation, dt = dx / sqrt((1 - x^(2n))/n):
+
+    int_impact x^(2n) dt = 2 sqrt(n) int_0^1 x^(2n) dx / sqrt(1 - x^(2n))
+                         = B(1 + 1/(2n), 1/2) / sqrt(n)        (z = x^(2n))
+                         -> 2 / sqrt(n).
+
+In the time s = t / sqrt(n) the particle flies with unit speed, wall to wall in
+2 units of s, and y_ss = -n Lam x^(2n) y; integrating over one impact gives the kick
+dy/ds -> dy/ds - g y with g = Lam B(1 + 1/(2n), 1/2) -> 2 Lam.  So the coefficient tends
+to a Kronig-Penney comb of delta kicks in a free medium.  One half period is one flight
+and one kick, M(T/2) = [[1, 2], [0, 1]] [[1, 0], [-g, 1]], whose half-trace is
+
+    phi_half -> 1 - g = 1 - 2 Lam A0^2         (n -> oo).
+
+The limit has a single stability interval 0 < Lam A0^2 < 1; finite n adds the higher
+bands at Lam A0^2 of order n, where the impact duration (about 1/sqrt(8n) of the
+flight) is resolved by the waves.  At fixed Lam the corrections are O(1/n): the
+kick weight B(1 + 1/(2n), 1/2) - 2 = O(1/n), the flight time T_n/(2 sqrt(n)) - 2 = O(1/n),
+and the finite impact duration.
+
+Accuracy (see tests): phi_half to 1e-10 relative to max(1, |phi_half|) with the
+default tolerance, boundaries to 1e-10 in the parameter; log|rho| to 1e-10 relative in
+deeply unstable zones.  The comparison with the full simulator (oscillating container,
+mu > 0) is left to the simulator module.
+
+Examples
+--------
+>>> chart = pure_hill([0.5], n=2)
+>>> bool(chart.stable[0]), round(float(chart.phi_half[0]), 8)
+(True, -0.00405143)
+>>> c = model_hill(0.5, [-0.2], n=10)  # lambda = -2 beta (alpha - beta) = 0.28
+>>> round(float(c.lam[0]), 12), bool(c.stable[0])
+(0.28, True)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy import optimize
+
+from . import validation as v
+from ._generated import oscillator as _osc
+from .errors import BracketError, ParameterError
+from .hill import DEFAULT_RTOL, QuarterPeriod, integrate_quarter_period
+from .model import MAX_N, Well
+
+LN2 = math.log(2.0)
+#: Tolerance in the parameter of every located boundary and resonance.
+ROOT_XTOL = 1e-12
+#: The quarter-period factors whose zeros are the stability boundaries, with the value of
+#: phi_half there.
+BOUNDARY_FACTORS = {"y2": 1.0, "dy1": 1.0, "y1": -1.0, "dy2": -1.0}
+
+
+@dataclass(frozen=True)
+class HillProblem:
+    """One family of Hill equations, parametrised by Lam (pure) or beta (model).
+
+    Use :func:`pure_problem` / :func:`model_problem` to build it (they validate).
+
+    Attributes
+    ----------
+    kind : "pure", "flat" or "symmetric"
+    n : int
+    amplitude : float
+        A0, the amplitude of x(t).
+    alpha, gamma : float
+        Well parameters (model kinds; gamma only enters through the time rescaling and
+        so does not change phi).
+    rtol : float
+        Per-step tolerance of the integration.
+    """
+
+    kind: str
+    n: int
+    amplitude: float = 1.0
+    alpha: float = 0.0
+    gamma: float = 1.0
+    rtol: float = DEFAULT_RTOL
+
+    @property
+    def parameter(self) -> str:
+        """Name of the parameter: ``"lam"`` or ``"beta"``."""
+        return "lam" if self.kind == "pure" else "beta"
+
+    def check(self, values) -> np.ndarray:
+        """Validate parameter values; returns them as a 1-d float array."""
+        arr = np.atleast_1d(np.asarray(values, dtype=float))
+        if arr.ndim != 1 or arr.size == 0:
+            raise ParameterError(self.parameter, values, "a non-empty 1-d list of numbers")
+        for value in (arr.min(), arr.max()):
+            if self.kind == "pure":
+                v.finite("lam", value)
+            else:
+                Well(self.alpha, float(value), self.n, gamma=self.gamma, shape=self.kind)
+        return arr
+
+    def lam(self, values: np.ndarray) -> np.ndarray:
+        """lambda of eq. y-oscill: Lam itself, or -2 beta (alpha - beta) (generated kernel)."""
+        if self.kind == "pure":
+            return np.asarray(values, dtype=float)
+        return np.array([_osc.lambda_coefficient(self.alpha, b) for b in values])
+
+    def quarter(self, values: np.ndarray) -> QuarterPeriod:
+        """Fundamental solutions at Q for already validated parameter values."""
+        params = values * self.amplitude**2 if self.kind == "pure" else values
+        return integrate_quarter_period(
+            self.n,
+            params,
+            kind=self.kind,
+            amplitude=self.amplitude,
+            alpha=self.alpha,
+            rtol=self.rtol,
+        )
+
+    def evaluate(self, values) -> FloquetChart:
+        """phi_half, multipliers and stability at each parameter value."""
+        arr = self.check(values)
+        return FloquetChart(self, arr, self.quarter(arr))
+
+
+def pure_problem(n: int, amplitude: float = 1.0, *, rtol: float = DEFAULT_RTOL) -> HillProblem:
+    """The pure Hill equation y'' + Lam x(t)^(2n) y = 0 (only Lam A0^2 matters)."""
+    return HillProblem(
+        kind="pure",
+        n=v.positive_int("n", n, maximum=MAX_N),
+        amplitude=v.positive("amplitude", amplitude),
+        rtol=v.positive("rtol", rtol),
+    )
+
+
+def model_problem(
+    alpha: float,
+    n: int,
+    *,
+    gamma: float = 1.0,
+    shape: str = "flat",
+    amplitude: float = 1.0,
+    rtol: float = DEFAULT_RTOL,
+) -> HillProblem:
+    """Hill's equation of the model, linearised about y = 0, as a family in beta.
+
+    The coefficient is the generated ``hill_coefficient_{shape}`` in the rescaled
+    variables: lambda x^(2n) for n >= 2; for n = 1 an extra constant-plus-x^2 term
+    (flat) or a rational function of x^2 (symmetric) that the paper's eq. y-oscill omits.
+    """
+    well = Well(alpha, 0.0, n, gamma=gamma, shape=shape)  # validates all but beta
+    return HillProblem(
+        kind=well.shape,
+        n=well.n,
+        amplitude=v.positive("amplitude", amplitude),
+        alpha=well.alpha,
+        gamma=well.gamma,
+        rtol=v.positive("rtol", rtol),
+    )
+
+
+def pure_hill(lam, n: int, amplitude: float = 1.0, *, rtol: float = DEFAULT_RTOL):
+    """Floquet data of y'' + Lam x^(2n) y = 0 at each Lam.
+
+    Parameters
+    ----------
+    lam : float or array of float
+        Lam.  Only Lam A0^2 matters: rescaling t shows the equation with amplitude A0
+        equals the one with amplitude 1 and Lam A0^2 (see :mod:`sinktheory.hill`).
+    n : int in [1, 1000]
+    amplitude : float > 0
+        A0 (default 1).
+    rtol : float
+        Per-step tolerance (default 1e-13).
+
+    Returns
+    -------
+    FloquetChart
+
+    Examples
+    --------
+    >>> a = pure_hill([0.3], n=3, amplitude=2.0).phi_half[0]
+    >>> b = pure_hill([1.2], n=3, amplitude=1.0).phi_half[0]
+    >>> bool(abs(a - b) < 1e-11)
+    True
+    """
+    return pure_problem(n, amplitude, rtol=rtol).evaluate(lam)
+
+
+def model_hill(
+    alpha: float,
+    beta,
+    n: int,
+    *,
+    gamma: float = 1.0,
+    shape: str = "flat",
+    amplitude: float = 1.0,
+    rtol: float = DEFAULT_RTOL,
+):
+    """Floquet data of the model's Hill equation at each beta (validated by ``Well``).
+
+    Examples
+    --------
+    >>> c = model_hill(0.5, [0.25], n=2)  # lambda = -0.125 < 0: phi_half > 1
+    >>> bool(c.stable[0]), bool(c.phi_half[0] > 1)
+    (False, True)
+    """
+    problem = model_problem(alpha, n, gamma=gamma, shape=shape, amplitude=amplitude, rtol=rtol)
+    return problem.evaluate(beta)
+
+
+@dataclass(frozen=True)
+class FloquetChart:
+    """Floquet data of a family of Hill equations at an array of parameter values.
+
+    ``phi_half``, ``phi`` and ``multipliers`` are float arrays and become +-inf only
+    where the value exceeds float64 range (about 1e308); the ``log_*`` attributes are
+    always finite (except log|phi_half| = -inf where phi_half is exactly 0).
+    """
+
+    problem: HillProblem
+    values: np.ndarray
+    quarter: QuarterPeriod = field(repr=False)
+
+    # --- the four quarter-period factors and their products ---------------------------
+    @property
+    def lam(self) -> np.ndarray:
+        """lambda of eq. y-oscill at each value."""
+        return self.problem.lam(self.values)
+
+    @property
+    def _exponent(self) -> np.ndarray:
+        return self.quarter.scale1 + self.quarter.scale2
+
+    @property
+    def _p(self) -> np.ndarray:  # y1 y2' (mantissa)
+        return self.quarter.y1 * self.quarter.dy2
+
+    @property
+    def _r(self) -> np.ndarray:  # y2 y1' (mantissa)
+        return self.quarter.y2 * self.quarter.dy1
+
+    def factor(self, name: str) -> np.ndarray:
+        """One of y1(Q), dy1(Q), y2(Q), dy2(Q), in the normalised variables (may be inf)."""
+        q = self.quarter
+        mant = {"y1": q.y1, "dy1": q.dy1, "y2": q.y2, "dy2": q.dy2}[name]
+        scale = q.scale1 if name in ("y1", "dy1") else q.scale2
+        with np.errstate(over="ignore"):
+            return np.ldexp(mant, scale)
+
+    @property
+    def stable(self) -> np.ndarray:
+        """|phi_half| < 1, decided from the signs of the factors: y2 y1' < 0 < y1 y2'."""
+        return (self._p > 0) & (self._r < 0)
+
+    @property
+    def phi_half(self) -> np.ndarray:
+        """phi_{T/2} = y1 y2' + y2 y1' at Q (= half trace of M(T/2))."""
+        with np.errstate(over="ignore"):
+            return np.ldexp(self._p + self._r, self._exponent)
+
+    @property
+    def phi_half_minus_one(self) -> np.ndarray:
+        """phi_half - 1 = 2 y2 y1', free of cancellation."""
+        with np.errstate(over="ignore"):
+            return np.ldexp(2 * self._r, self._exponent)
+
+    @property
+    def phi_half_plus_one(self) -> np.ndarray:
+        """phi_half + 1 = 2 y1 y2', free of cancellation."""
+        with np.errstate(over="ignore"):
+            return np.ldexp(2 * self._p, self._exponent)
+
+    @property
+    def phi(self) -> np.ndarray:
+        """phi_T = 2 phi_half^2 - 1 (the paper's phi; >= -1)."""
+        h = self.phi_half
+        with np.errstate(over="ignore"):
+            return 2.0 * h * h - 1.0
+
+    @property
+    def log_abs_phi_half(self) -> np.ndarray:
+        """ln|phi_half|, finite in deeply unstable zones."""
+        with np.errstate(divide="ignore"):
+            return np.log(np.abs(self._p + self._r)) + self._exponent * LN2
+
+    @property
+    def log_abs_phi(self) -> np.ndarray:
+        """ln|phi_T|, finite in deeply unstable zones (ln(2 phi_half^2 - 1))."""
+        lh = self.log_abs_phi_half
+        h = self.phi_half
+        with np.errstate(divide="ignore", over="ignore"):
+            direct = np.log(np.abs(2.0 * h * h - 1.0))
+        return np.where(lh > 300.0, LN2 + 2.0 * lh, direct)
+
+    @property
+    def rotation_number(self) -> np.ndarray:
+        """theta/pi in [0, 1], theta = arccos(phi_half): rotation per period T_n, modulo 1.
+
+        0 where phi_half >= 1 and 1 where phi_half <= -1; 1/2 at the strong resonances
+        phi_T = -1.  Near phi_half = +-1 it is computed from the cancellation-free factors.
+        """
+        h = np.clip(self.phi_half, -1.0, 1.0)
+        near_plus = np.sqrt(np.clip(-0.5 * self.phi_half_minus_one, 0.0, 1.0))
+        near_minus = np.sqrt(np.clip(0.5 * self.phi_half_plus_one, 0.0, 1.0))
+        theta = np.where(
+            h > 0.5,
+            2 * np.arcsin(near_plus),
+            np.where(h < -0.5, np.pi - 2 * np.arcsin(near_minus), np.arccos(h)),
+        )
+        return theta / np.pi
+
+    @property
+    def log_abs_rho_half(self) -> np.ndarray:
+        """ln of the largest |multiplier| over T/2: arccosh|phi_half| (0 where stable)."""
+        d_plus = self.phi_half_minus_one  # >= 0 on the phi_half >= 1 side
+        d_minus = -self.phi_half_plus_one  # >= 0 on the phi_half <= -1 side
+        d = np.where(d_plus > 0, d_plus, np.where(d_minus > 0, d_minus, 0.0))
+        with np.errstate(over="ignore", invalid="ignore"):
+            small = np.log1p(d + np.sqrt(d * (d + 2.0)))
+        lh = self.log_abs_phi_half
+        return np.where(lh > 20.0, LN2 + lh, np.where(self.stable, 0.0, small))
+
+    @property
+    def growth_per_period(self) -> np.ndarray:
+        """ln|rho|_max over one period T_n (= 2 arccosh|phi_half|; 0 where stable)."""
+        return 2.0 * self.log_abs_rho_half
+
+    @property
+    def period(self) -> float:
+        """T_n at the amplitude A0 (rescaled time of eq. x-oscill), generated kernel."""
+        return float(_osc.period(self.problem.n, self.problem.amplitude))
+
+    @property
+    def floquet_exponent(self) -> np.ndarray:
+        """Largest Floquet exponent ln|rho| / T_n per unit rescaled time (0 where stable)."""
+        return self.growth_per_period / self.period
+
+    @property
+    def multipliers(self) -> np.ndarray:
+        """rho_{1,2} over T_n, shape (m, 2), complex: phi_T +- sqrt(phi_T^2 - 1).
+
+        Stable: exp(+-2 i theta).  Unstable: exp(+-g), g = growth_per_period (positive
+        real, since rho = rho_half^2); the large one becomes inf beyond float range.
+        """
+        theta = np.pi * self.rotation_number
+        g = self.growth_per_period
+        with np.errstate(over="ignore"):
+            big = np.exp(g)
+        small = np.exp(-g)
+        stable = self.stable
+        rho1 = np.where(stable, np.exp(2j * theta), big + 0j)
+        rho2 = np.where(stable, np.exp(-2j * theta), small + 0j)
+        return np.stack([rho1, rho2], axis=1)
+
+
+# --- stability intervals ---------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Boundary:
+    """A located stability boundary: ``factor`` vanishes at ``value``; phi_half = ``phi_half``."""
+
+    value: float
+    factor: str
+    phi_half: float
+
+
+@dataclass(frozen=True)
+class StabilityScan:
+    """A grid chart with refined stability intervals and strong resonances.
+
+    Attributes
+    ----------
+    chart : FloquetChart
+        The grid values.
+    boundaries : list of Boundary
+        Every zero of a quarter-period factor in the range, located by brentq.
+    stable_intervals : list of (lo, hi)
+        Maximal stable intervals; an end equal to the range end is not a boundary.
+    resonances : list of float
+        Zeros of phi_half (phi_T = -1) inside stable intervals.
+    """
+
+    chart: FloquetChart
+    boundaries: list[Boundary]
+    stable_intervals: list[tuple[float, float]]
+    resonances: list[float]
+
+
+def _scalar(chart_of, name: str):
+    def f(value: float) -> float:
+        out = chart_of(value)
+        x = float(out.phi_half[0] if name == "phi_half" else out.factor(name)[0])
+        return max(-1e300, min(1e300, x))
+
+    return f
+
+
+def _brentq(f, a: float, b: float, what: str) -> float:
+    try:
+        return float(optimize.brentq(f, a, b, xtol=ROOT_XTOL, rtol=4 * np.finfo(float).eps))
+    except (ValueError, RuntimeError) as exc:
+        raise BracketError(f"cannot locate the zero of {what} in [{a!r}, {b!r}]: {exc}") from None
+
+
+def scan(problem: HillProblem, lo: float, hi: float, count: int) -> StabilityScan:
+    """phi_half on a grid over [lo, hi], stability intervals with located boundaries.
+
+    Each sign change of y1(Q), y1'(Q), y2(Q) or y2'(Q) between neighbouring grid points
+    is refined by brentq to 1e-12 in the parameter.  A gap or a resonance narrower than
+    the grid spacing is still found when each bounding factor changes sign once in a
+    cell (the usual case), but two zeros of one factor within one cell are missed.
+
+    Parameters
+    ----------
+    problem : HillProblem
+    lo, hi : float
+        Range of the parameter, lo < hi (model: both < alpha).
+    count : int >= 2
+        Number of grid points.
+
+    Returns
+    -------
+    StabilityScan
+
+    Examples
+    --------
+    >>> s = scan(pure_problem(1), 0.0, 3.0, 31)  # y'' + Lam cos(t)^2 y = 0
+    >>> [(round(a, 9), round(b, 9)) for a, b in s.stable_intervals]
+    [(0.0, 1.316022911)]
+    """
+    lo = v.finite("lo", lo)
+    hi = v.finite("hi", hi)
+    count = v.positive_int("count", count, minimum=2, maximum=1_000_000)
+    if not lo < hi:
+        raise ParameterError("hi", hi, f"> lo = {lo!r}")
+    grid = np.linspace(lo, hi, count)
+    chart = problem.evaluate(grid)
+
+    def one(value: float) -> FloquetChart:
+        return FloquetChart(problem, np.array([value]), problem.quarter(np.array([value])))
+
+    boundaries: list[Boundary] = []
+    for name, phi_value in BOUNDARY_FACTORS.items():
+        sign = np.sign(chart.factor(name))
+        f = _scalar(one, name)
+        for i in np.nonzero(sign[:-1] * sign[1:] <= 0)[0]:
+            if sign[i] == 0 and i > 0:
+                continue  # a zero on a grid point was found from the previous cell
+            root = _brentq(f, grid[i], grid[i + 1], f"{name}(Q)")
+            boundaries.append(Boundary(root, name, phi_value))
+    boundaries.sort(key=lambda b: b.value)
+    cuts = [lo] + [b.value for b in boundaries if lo < b.value < hi] + [hi]
+    cuts = sorted(set(cuts))
+    mids = np.array([(a + b) / 2 for a, b in zip(cuts[:-1], cuts[1:], strict=True)])
+    stable_mid = problem.evaluate(mids).stable if mids.size else np.zeros(0, bool)
+    intervals: list[tuple[float, float]] = []
+    for (a, b), ok in zip(zip(cuts[:-1], cuts[1:], strict=True), stable_mid, strict=True):
+        if not ok:
+            continue
+        if intervals and intervals[-1][1] == a:
+            intervals[-1] = (intervals[-1][0], b)
+        else:
+            intervals.append((a, b))
+    resonances: list[float] = []
+    f_phi = _scalar(one, "phi_half")
+    h = chart.phi_half
+    for a, b in intervals:
+        inside = np.nonzero((grid >= a) & (grid <= b))[0]
+        pts = [a] + [float(grid[i]) for i in inside if a < grid[i] < b] + [b]
+        vals = [f_phi(a)] + [float(h[i]) for i in inside if a < grid[i] < b] + [f_phi(b)]
+        for k in range(len(pts) - 1):
+            if vals[k] * vals[k + 1] < 0:
+                resonances.append(_brentq(f_phi, pts[k], pts[k + 1], "phi_half"))
+    return StabilityScan(chart, boundaries, intervals, resonances)
+
+
+def rigid_limit_phi_half(lam, amplitude: float = 1.0) -> np.ndarray:
+    """phi_half of the rigid-wall limit n -> oo: 1 - 2 Lam A0^2 (see the module docstring).
+
+    Examples
+    --------
+    >>> rigid_limit_phi_half([0.0, 0.5, 1.0]).tolist()
+    [1.0, 0.0, -1.0]
+    """
+    a = v.positive("amplitude", amplitude)
+    return 1.0 - 2.0 * np.asarray(lam, dtype=float) * a * a
