@@ -99,8 +99,13 @@ def test_ten_thousand_points_without_a_dense_matrix():
     e = np.sin(0.05 * np.arange(10_000)) + 0.01 * np.random.default_rng(0).random(10_000)
     r = rqa(e, 0.05)
     assert r.recurrence_rate == pytest.approx(recurrence_rate(e, 0.05), rel=1e-12)
-    smooth = rqa(np.sin(0.05 * np.arange(10_000)), 0.05)
-    assert smooth.determinism > 0.99  # a pure sine recurs along long diagonal lines
+    # period 7 with well-separated values: exact answers at N = 10^4
+    n = 10_000
+    periodic = rqa(np.arange(n) % 7, 0.1)
+    pairs = sum(2 * (n - k) for k in range(7, n, 7))
+    assert periodic.recurrence_rate == pairs / (n * (n - 1))
+    assert periodic.determinism == 1.0 and periodic.laminarity == 0.0
+    assert periodic.mean_recurrence_time == 7.0
     img = recurrence_image(e, 0.05, max_pixels=500)
     assert img.shape == (500, 500) and img.dtype == np.float32
     assert abs(img.mean() - r.recurrence_rate) < 2e-3  # block means average to RR (+diag)
