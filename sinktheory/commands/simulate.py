@@ -1,0 +1,188 @@
+"""``sinktheory simulate``: ensemble of full-dynamics runs, <E>(t) of the container (Figs. 5, 8).
+
+``mean_energy[j]`` is the ensemble mean of the container energy E = (Xdot^2 + X^2)/2 at
+t = jT (j = 0..P) and ``stderr[j]`` its standard error std(ddof=1)/sqrt(R); with a single
+run the standard error is reported as 0.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+import numpy as np
+
+from .. import __version__
+from ..errors import ParameterError
+from ..integrators import DEFAULT_SCHEME, SCHEMES
+from ..model import RunSettings, Sink
+from ..simulate import ENERGY_BOUND, SimulationResult, simulate
+from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
+
+NAME = "simulate"
+HELP = "integrate an ensemble of the container + particles and report <E>(t) (Figs. 5, 8)"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_well_arguments(parser)
+    g = parser.add_argument_group("sink and ensemble")
+    g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
+    g.add_argument("--mass", type=number, default=0.2, help="total particle mass m (default 0.2)")
+    g.add_argument("--energy", type=number, default=0.5, help="container energy E0 (default 0.5)")
+    g.add_argument(
+        "--runs", type=number, default=None, help="ensemble size (default 25; 1 with --initial)"
+    )
+    g.add_argument("--periods", type=number, default=1500, help="periods T = 2 pi (default 1500)")
+    g.add_argument("--seed", type=number, default=0, help="random seed, integer >= 0 (default 0)")
+    g.add_argument(
+        "--initial",
+        type=number,
+        nargs="+",
+        metavar="X Y",
+        help="start the particles at these positions (x1 y1 x2 y2 ...), relative to the "
+        "container, at rest, instead of at random",
+    )
+    i = parser.add_argument_group("integrator")
+    i.add_argument(
+        "--method",
+        default=DEFAULT_SCHEME,
+        help=f"one of {', '.join(SCHEMES)} (default {DEFAULT_SCHEME})",
+    )
+    i.add_argument("--dt", type=number, default=None, help="step (default: from the stiffness)")
+    i.add_argument(
+        "--energy-bound",
+        type=number,
+        default=ENERGY_BOUND,
+        help=f"stop when the relative total-energy error exceeds this (default {ENERGY_BOUND:g})",
+    )
+    o = parser.add_argument_group("output")
+    o.add_argument("--out", help="save the recorded arrays and parameters to FILE.npz")
+    o.add_argument("--plot", help="draw <E>(t/T) with its standard-error band to FILE.png")
+    o.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_json(parser)
+
+
+def _npz_path(value: str | None) -> Path | None:
+    if value is None:
+        return None
+    path = Path(value)
+    if path.suffix.lower() != ".npz":
+        raise ParameterError("--out", value, "a file name ending in .npz")
+    if not path.parent.resolve().is_dir():
+        raise ParameterError("--out", value, "a path in an existing directory")
+    return path
+
+
+def _initial(values: list | None, particles: int) -> np.ndarray | None:
+    if values is None:
+        return None
+    if len(values) != 2 * particles:
+        raise ParameterError(
+            "--initial",
+            f"{len(values)} number(s)",
+            f"2 x particles = {2 * particles} numbers (x y for each particle)",
+        )
+    return np.array(values, dtype=float).reshape(particles, 2)
+
+
+def run(args: argparse.Namespace) -> Output:
+    plot = png_path("--plot", args.plot)
+    out = _npz_path(args.out)
+    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    initial = _initial(args.initial, sink.particles)
+    runs = args.runs if args.runs is not None else (1 if initial is not None else 25)
+    settings = RunSettings(energy=args.energy, runs=runs, periods=args.periods, seed=args.seed)
+    result = simulate(
+        sink,
+        settings,
+        method=args.method,
+        dt=args.dt,
+        initial=initial,
+        record=("container", "final"),
+        energy_bound=args.energy_bound,
+        progress=not args.quiet,
+    )
+    mean, stderr = result.ensemble_energy()
+    data = {
+        "mean_energy": mean.tolist(),
+        "stderr": stderr.tolist(),
+        "max_relative_energy_error": result.max_relative_energy_error,
+        "runs": settings.runs,
+        "periods": settings.periods,
+        "method": result.method,
+        "dt": result.dt,
+        "steps_per_period": result.steps_per_period,
+        "seed": settings.seed,
+    }
+    w = sink.well
+    text = "\n".join(
+        [
+            f"{w.shape} well alpha={w.alpha:g} beta={w.beta:g} n={w.n} gamma={w.gamma:g}; "
+            f"k={sink.particles}, m={sink.mass:g}",
+            result.message,
+            f"<E>(0) = {mean[0]:.6f}   <E>({settings.periods} T) = {mean[-1]:.6f} "
+            f"+- {stderr[-1]:.2g} (standard error over {settings.runs} run(s))",
+        ]
+    )
+    writers = {}
+    if out is not None:
+        writers[out] = lambda path: _save(path, result, mean, stderr, args, settings)
+    if plot is not None:
+        writers[plot] = lambda path: _plot(path, result, mean, stderr, sink, settings)
+    return Output(data, text, writers)
+
+
+def _save(path, result: SimulationResult, mean, stderr, args, settings) -> None:
+    parameters = {
+        "shape": args.shape,
+        "alpha": args.alpha,
+        "beta": args.beta,
+        "gamma": args.gamma,
+        "n": args.n,
+        "particles": args.particles,
+        "mass": args.mass,
+        "energy": settings.energy,
+        "runs": settings.runs,
+        "periods": settings.periods,
+        "seed": settings.seed,
+        "initial": args.initial,
+        "method": result.method,
+        "dt": result.dt,
+        "energy_bound": args.energy_bound,
+    }
+    with open(path, "wb") as f:
+        np.savez(
+            f,
+            times=result.times,
+            container_energy=result.container_energy,
+            mean_energy=mean,
+            stderr=stderr,
+            run_errors=result.run_errors,
+            initial_energy=result.initial_energy,
+            final_state=result.final_state.values,
+            parameters=json.dumps(parameters),
+            seed=settings.seed,
+            version=__version__,
+        )
+
+
+def _plot(path, result: SimulationResult, mean, stderr, sink: Sink, settings) -> None:
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(8, 4.5), layout="constrained")
+    ax = fig.add_subplot()
+    t = result.times / (2 * np.pi)
+    ax.fill_between(t, mean - stderr, mean + stderr, color="C0", alpha=0.3, label="± std. error")
+    ax.plot(t, mean, color="C0", lw=1.0, label=r"$\langle E\rangle$")
+    ax.set_xlabel(r"$t/T$")
+    ax.set_ylabel(r"$\langle E\rangle$ (container energy)")
+    w = sink.well
+    ax.set_title(
+        rf"{w.shape} well, $\alpha$={w.alpha:g}, $\beta$={w.beta:g}, n={w.n}, "
+        rf"k={sink.particles}, m={sink.mass:g}; {settings.runs} run(s)"
+    )
+    ax.set_xlim(t[0], t[-1])
+    ax.legend(loc="upper right")
+    ax.grid(alpha=0.3)
+    fig.savefig(path, dpi=120)
