@@ -61,7 +61,7 @@ def main(argv: list[str] | None = None) -> int:
         print(json.dumps(out.data, allow_nan=False))
     else:
         print(out.text)
-    return 0
+    return out.exit_status
 
 
 if __name__ == "__main__":  # pragma: no cover

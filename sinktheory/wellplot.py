@@ -7,7 +7,7 @@ from matplotlib.figure import Figure
 
 from .model import Well
 
-#: Level lines drawn, as fractions of the energy E (the outermost one, 1, is drawn bold).
+#: Level lines drawn, as fractions of the energy E (the outermost one, E itself, is bold).
 LEVEL_FRACTIONS = (1e-3, 1e-2, 0.05, 0.15, 0.35, 0.65, 1.0)
 
 
@@ -44,10 +44,10 @@ def plot_well(well: Well, energy: float = 0.5, ax=None, points: int = 301):
         ax = fig.subplots()
     else:
         fig = ax.figure
-    levels = [energy * f for f in LEVEL_FRACTIONS]
-    cs = ax.contour(X, Y, V, levels=levels, cmap="viridis", linewidths=1.0)
-    ax.contour(X, Y, V, levels=[energy], colors="black", linewidths=2.0)
+    inner = [energy * f for f in LEVEL_FRACTIONS if f < 1]
+    cs = ax.contour(X, Y, V, levels=inner, cmap="viridis", linewidths=1.0)
     ax.clabel(cs, fmt=lambda v: f"{v:.3g}", fontsize=7)
+    ax.contour(X, Y, V, levels=[energy], colors="black", linewidths=2.0)
     ax.set_aspect("equal")
     ax.set_xlabel("$x$")
     ax.set_ylabel("$y$")

@@ -5,6 +5,6 @@ returns an :class:`~sinktheory.commands._common.Output`.  A command computes eve
 before it writes any file, so bad input never leaves partial output behind.
 """
 
-from . import derive, period, series, simulate, sink, well
+from . import derive, period, reproduce, series, simulate, sink, well
 
-COMMANDS = (well, sink, derive, simulate, period, series)
+COMMANDS = (well, sink, derive, simulate, period, series, reproduce)

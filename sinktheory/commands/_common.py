@@ -23,6 +23,8 @@ class Output:
     data: dict[str, Any]
     text: str
     writers: dict[Path, Any] = field(default_factory=dict)
+    #: 1 when the command finished but part of it failed numerically (reported in data)
+    exit_status: int = 0
 
 
 def number(text: str) -> int | float:

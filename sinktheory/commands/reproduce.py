@@ -1,0 +1,90 @@
+"""``sinktheory reproduce``: every figure of the paper as a PNG, and report.md."""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+from .. import __version__
+from ..errors import NumericalError, ParameterError
+from ..report import SceneOutcome, render
+from ..scenes import SCENES
+from ._common import Output, add_json
+
+NAME = "reproduce"
+HELP = "redraw the paper's figures and write report.md with each claim checked"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--figure",
+        type=int,
+        nargs="+",
+        metavar="N",
+        help=f"figures to draw (default all: {', '.join(map(str, sorted(SCENES)))})",
+    )
+    parser.add_argument("--quick", action="store_true", help="low-fidelity preview")
+    parser.add_argument("--out", required=True, metavar="DIR", help="output directory")
+    add_json(parser)
+
+
+def run(args: argparse.Namespace) -> Output:
+    figures = sorted(set(args.figure or SCENES))
+    unknown = [f for f in figures if f not in SCENES]
+    if unknown:
+        allowed = ", ".join(map(str, sorted(SCENES)))
+        raise ParameterError("figure", unknown[0], f"one of {allowed}")
+    out_dir = Path(args.out)
+    if out_dir.exists() and not out_dir.is_dir():
+        raise ParameterError("out", args.out, "a directory (it exists as a file)")
+    outcomes = []
+    for number in figures:
+        scene = SCENES[number]
+        start = time.perf_counter()
+        try:
+            result = scene.build(args.quick)
+            error = None
+        except NumericalError as e:  # reported, not hidden: the run exits with status 1
+            result, error = None, f"{type(e).__name__}: {e}"
+        seconds = time.perf_counter() - start
+        image = f"fig{number:02d}.png" if result is not None else None
+        outcomes.append(SceneOutcome(scene, result, image, seconds, error))
+    report = render(outcomes, quick=args.quick, version=__version__)
+    data = {
+        "out": str(out_dir),
+        "figures": [
+            {
+                "figure": o.scene.number,
+                "image": o.image,
+                "seconds": o.seconds,
+                "error": o.error,
+                "claims": []
+                if o.result is None
+                else [
+                    {"statement": c.statement, "measured": c.measured, "verdict": c.verdict}
+                    for c in o.result.claims
+                ],
+            }
+            for o in outcomes
+        ],
+        "report": str(out_dir / "report.md"),
+    }
+    text = (
+        "\n".join(
+            f"Fig. {o.scene.number}: {'FAILED ' + o.error if o.error else o.image} "
+            f"({o.seconds:.1f} s)"
+            for o in outcomes
+        )
+        + f"\nreport: {out_dir / 'report.md'}"
+    )
+
+    def write_all(path: Path) -> None:
+        path.mkdir(parents=True, exist_ok=True)
+        for o in outcomes:
+            if o.result is not None:
+                o.result.figure.savefig(path / o.image, dpi=130)
+        (path / "report.md").write_text(report)
+
+    failed = any(o.error for o in outcomes)
+    return Output(data, text, {out_dir: write_all}, exit_status=1 if failed else 0)

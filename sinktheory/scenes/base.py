@@ -1,0 +1,53 @@
+"""What a scene is: one figure of the paper, its parameters, and the claims it checks."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+from matplotlib.figure import Figure
+
+HOLDS, FAILS, UNDECIDED = "holds", "does not hold", "cannot be decided"
+
+
+@dataclass(frozen=True)
+class Claim:
+    """A statement of the paper, what we measured, and a plain verdict."""
+
+    statement: str
+    measured: str
+    verdict: str
+
+    def __post_init__(self) -> None:
+        if self.verdict not in (HOLDS, FAILS, UNDECIDED):
+            raise ValueError(f"verdict = {self.verdict!r} is not one of the three verdicts")
+
+
+@dataclass
+class SceneResult:
+    """A drawn figure with the parameters it used, claims checked and notes."""
+
+    figure: Figure
+    parameters: dict[str, Any]
+    claims: list[Claim] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class Scene:
+    """One figure of the paper.
+
+    Attributes
+    ----------
+    number : the paper's figure number
+    title : what the figure shows
+    needs : the least model the scene computes (documented; e.g. "potential contours")
+    build : build(quick) -> SceneResult; ``quick`` lowers the fidelity (runs, periods,
+        grid sizes) for a fast preview, never the physics parameters
+    """
+
+    number: int
+    title: str
+    needs: str
+    build: Callable[[bool], SceneResult]
