@@ -5,6 +5,7 @@ the energy integral (mpmath), the closed form for n = 1 (sin), and a numerical O
 solution (scipy DOP853).
 """
 
+import json
 import math
 
 import mpmath
@@ -12,6 +13,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
+from sinktheory.cli import main
 from sinktheory.errors import ParameterError
 from sinktheory.oscillator import (
     PeriodOutOfRangeError,
@@ -255,3 +257,76 @@ def test_solution_bad_input(call, name):
     with pytest.raises(ParameterError) as info:
         call()
     assert info.value.name == name
+
+
+# --- CLI: sinktheory period --------------------------------------------------------------
+def run_cli(argv, capsys):
+    code = main(argv)
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_cli_period_40_digits_against_quadrature(capsys):
+    code, out, err = run_cli(
+        ["period", "--n", "7", "--amplitude", "1", "--digits", "40", "--json"], capsys
+    )
+    assert code == 0, err
+    data = json.loads(out)
+    assert set(data) == {"n", "amplitude", "energy", "period"} and data["n"] == 7
+    mantissa = data["period"].replace(".", "").lstrip("0")
+    assert len(mantissa) == 40  # exactly 40 significant digits printed
+    # Reference: independent 60-digit quadrature (error estimate < 1e-52, see above).
+    # A correctly rounded 40-digit value is within half a unit of the 40th digit.
+    ref = quadrature_period(7, amplitude=1)
+    with mpmath.workdps(60):
+        assert abs(mpmath.mpf(data["period"]) - ref) <= mpmath.mpf("0.5e-38")
+        # E = 1/14 = 0.0714...: 40 significant digits are correct to 0.5e-41
+        assert abs(mpmath.mpf(data["energy"]) - mpmath.mpf(1) / 14) <= mpmath.mpf("0.5e-41")
+
+
+def test_cli_period_decimal_input_is_exact(capsys):
+    # "--energy 0.1" means 1/10: compare with the quadrature at E = 1/10 exactly, which
+    # differs from E = float(0.1) in the 17th digit, so 30 digits would catch a float read.
+    code, out, _ = run_cli(["period", "--n", "3", "--energy", "0.1", "--json"], capsys)
+    assert code == 0
+    data = json.loads(out)
+    ref = quadrature_period(3, energy="0.1")
+    with mpmath.workdps(60):
+        assert abs(mpmath.mpf(data["period"]) / ref - 1) < mpmath.mpf(10) ** -29
+
+
+def test_cli_period_text(capsys):
+    code, out, _ = run_cli(["period", "--n", "1", "--amplitude", "2", "--digits", "12"], capsys)
+    assert code == 0 and "6.28318530718" in out
+
+
+@pytest.mark.parametrize(
+    "argv, name",
+    [
+        (["period", "--n", "0", "--amplitude", "1"], "n"),
+        (["period", "--n", "2.5", "--amplitude", "1"], "n"),
+        (["period", "--n", "3", "--amplitude", "0"], "amplitude"),
+        (["period", "--n", "3", "--amplitude", "-2"], "amplitude"),
+        (["period", "--n", "3", "--energy", "inf"], "energy"),
+        (["period", "--n", "3", "--energy", "nan"], "energy"),
+        (["period", "--n", "3", "--amplitude", "1", "--digits", "0"], "digits"),
+        (["period", "--n", "3", "--amplitude", "1", "--digits", "4.5"], "digits"),
+    ],
+)
+def test_cli_period_bad_values(argv, name, capsys):
+    code, out, err = run_cli(argv, capsys)
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and f"{name} = " in err
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["period", "--n", "3"],  # neither amplitude nor energy
+        ["period", "--n", "3", "--amplitude", "1", "--energy", "1"],  # both
+        ["period", "--n", "3", "--amplitude", "abc"],
+    ],
+)
+def test_cli_period_usage_errors(argv, capsys):
+    code, out, err = run_cli(argv, capsys)
+    assert code == 2 and out == "" and err.count("\n") == 1

@@ -1,0 +1,52 @@
+"""``sinktheory period``: exact period of x'' + x^(2n-1) = 0 at any precision (paper eq. T)."""
+
+from __future__ import annotations
+
+import argparse
+
+import mpmath
+
+from ..oscillator import oscillator
+from ..validation import positive_int
+from ._common import Output, add_json, number
+
+NAME = "period"
+HELP = "exact period T_n of x'' + x^(2n-1) = 0 from amplitude or energy, to any precision"
+MAX_DIGITS = 10_000
+
+
+def decimal_text(text: str) -> str:
+    """argparse type: a number kept as its text, so "0.1" means exactly 1/10 at any precision."""
+    number(text)  # the same parse errors as every other numeric option
+    return text.strip()
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--n", type=number, required=True, help="exponent, integer >= 1")
+    g = parser.add_mutually_exclusive_group(required=True)
+    g.add_argument("--amplitude", type=decimal_text, help="amplitude A0 > 0")
+    g.add_argument("--energy", type=decimal_text, help="energy E_n = A0^(2n)/(2n) > 0")
+    parser.add_argument("--digits", type=number, default=30, help="significant digits (default 30)")
+    add_json(parser)
+
+
+def run(args: argparse.Namespace) -> Output:
+    digits = positive_int("digits", args.digits, maximum=MAX_DIGITS)
+    o = oscillator(args.n, amplitude=args.amplitude, energy=args.energy, dps=digits)
+
+    def text(x: mpmath.mpf) -> str:
+        return mpmath.nstr(x, digits, strip_zeros=False, min_fixed=-4, max_fixed=digits)
+
+    data = {
+        "n": o.n,
+        "amplitude": text(o.amplitude),
+        "energy": text(o.energy),
+        "period": text(o.period),
+    }
+    lines = [
+        f"x'' + x^{2 * o.n - 1} = 0   ({digits} significant digits)",
+        f"  amplitude A0   {data['amplitude']}",
+        f"  energy    E_n  {data['energy']}",
+        f"  period    T_n  {data['period']}",
+    ]
+    return Output(data, "\n".join(lines))

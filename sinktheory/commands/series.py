@@ -1,0 +1,64 @@
+"""``sinktheory series``: the triangle-wave series, its errors and the paper's bounds."""
+
+from __future__ import annotations
+
+import argparse
+
+from ..series import check_bounds, error_table, plot_series
+from ._common import Output, add_json, number, png_path
+
+NAME = "series"
+HELP = "successive approximations in the triangle wave tau: error table and bound check"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--n", type=number, required=True, help="exponent, integer >= 1")
+    parser.add_argument("--order", type=number, required=True, help="highest order i >= 1")
+    parser.add_argument("--plot", metavar="FILE.png", help="draw x(t), U_i(t) and the errors")
+    add_json(parser)
+
+
+def run(args: argparse.Namespace) -> Output:
+    plot = png_path("plot", args.plot)
+    rows = error_table(args.n, args.order)
+    n, order = rows[0].n, len(rows)
+    checks = check_bounds([n], range(2, order + 1)) if order >= 2 else []
+    data = {
+        "n": n,
+        "order": order,
+        "errors": [
+            {
+                "order": r.order,
+                "shape_error": r.shape_error,
+                "period_estimate": float(r.period_estimate),
+                "period_relative_error": r.period_relative_error,
+            }
+            for r in rows
+        ],
+        "bounds": [
+            {"i": c.i, "max_ratio": c.max_ratio, "min_scaled": c.min_scaled, "holds": c.holds}
+            for c in checks
+        ],
+    }
+    lines = [
+        f"x'' + x^{2 * n - 1} = 0, U_i = A (tau - R_1 - ... - R_i), A0 = U_i(1) = 1",
+        "  i   max|U_i - x|/A0   T_i (A0 = 1)       T_i/T_n - 1",
+    ]
+    lines += [
+        f"  {r.order:<3d} {r.shape_error:<17.3e} {float(r.period_estimate):<18.12g} "
+        f"{r.period_relative_error:+.3e}"
+        for r in rows
+    ]
+    if checks:
+        lines.append("  bounds 0 < R_i < (2n-1)|tau|^(2n+1) / (2^(i-1) (2n+1)^2), 0 < tau <= 1:")
+        lines += [
+            f"  i = {c.i}: sup R_i/bound = {c.max_ratio:.4f}, min R_i/tau^(2n+1) = "
+            f"{c.min_scaled:.3e}  {'holds' if c.holds else 'FAILS'}"
+            for c in checks
+        ]
+    out = Output(data, "\n".join(lines))
+    if plot is not None:
+        fig = plot_series(n, order)
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        data["plot"] = str(plot)
+    return out
