@@ -1,0 +1,48 @@
+"""Bifurcation sections: decoupled and chaotic limits, determinism, bad input."""
+
+import numpy as np
+import pytest
+
+from sinktheory import ParameterError, Sink, Well
+from sinktheory.bifurcation import bifurcation, plot_bifurcation, section
+
+
+def test_straight_walls_decouple_y():
+    """beta = 0: V = gamma/2n [(x/alpha)^2n + y^2n] separates, so y obeys y'' = -(gamma/mu)
+    y^(2n-1) alone.  From y = 0.01 at rest with n = 10 the force is ~1e-37: over 60
+    periods y moves by < 1e-30, so every section value is 0.01 to rounding."""
+    s = section(Sink(Well(0.5, 0.0, 10), 1, 0.2), transient=10, count=50)
+    np.testing.assert_allclose(s, 0.01, rtol=1e-12, atol=0)
+
+
+def test_scattering_walls_spread_the_particle_over_the_well():
+    """beta = 0.3, n = 10 (Fig. 4f): the normal mode is Floquet-unstable and the particle
+    leaves it: within 150 periods its y covers most of the well (|y| <= 1.12)."""
+    s = section(Sink(Well(0.5, 0.3, 10), 1, 0.2), transient=50, count=100)
+    assert np.ptp(s) > 1.0
+    assert np.abs(s).max() <= Well(0.5, 0.3, 10).reach(0.5 + 1e-9)[1]
+
+
+def test_diagram_is_deterministic_and_energy_section_works():
+    kw = dict(alpha=0.5, n=4, transient=5, count=10)
+    a = bifurcation([-0.2, 0.2], **kw)
+    b = bifurcation([-0.2, 0.2], **kw)
+    np.testing.assert_array_equal(a.section, b.section)
+    e = bifurcation([0.2], quantity="energy", **kw)
+    assert e.section.shape == (1, 10) and np.all((e.section >= 0) & (e.section <= 0.5 + 1e-6))
+    fig = plot_bifurcation(a, unstable=[(0.0, 0.3)])
+    assert fig.axes[0].get_xlabel() == "$\\beta$"
+
+
+@pytest.mark.parametrize(
+    "call,name",
+    [
+        (lambda: section(Sink(Well(0.5, 0.3, 4), 2, 0.2)), "particles"),
+        (lambda: bifurcation([0.6], alpha=0.5, n=4), "beta"),
+        (lambda: bifurcation([0.1], alpha=0.5, n=4, quantity="x"), "quantity"),
+        (lambda: bifurcation([], alpha=0.5, n=4), "betas"),
+    ],
+)
+def test_bad_input(call, name):
+    with pytest.raises(ParameterError, match=f"^{name} = "):
+        call()
