@@ -36,15 +36,19 @@ point at eps = 2 makes the series converge like 2^(-i): the paper's 2^(1-i).
 
 The bounds (paper eq. estimates)
 --------------------------------
-0 < R_i < (2n-1) |tau|^(2n+1) / (2^(i-1) (2n+1)^2).  R_i is odd in tau, so "0 < R_i"
-holds only for tau > 0; read as 0 < |R_i| < bound for tau != 0 (:func:`check_bounds`).
-Checked exactly enough (R_i / tau^(2n+1) is a polynomial in s = tau^(2n) of degree i-1;
-its extrema on [0, 1] are found from the roots of its derivative) for n = 1 ... 200,
-i = 2 ... 8: the bounds *hold* everywhere on 0 < |tau| <= 1.  They are tight only in
-the limit tau -> 0 for i = 2 (R_2 / bound -> 1) and for n -> oo (the ratio
-sup R_i / bound is 0.71 at n = 2, i = 3; 0.96 at n = 20, i = 3; 0.86 at n = 20, i = 8);
-elsewhere they overestimate by up to a factor ~5 (n = 1, i = 6).  The sup of the
-ratio is always reached as tau -> 0.
+0 < R_i < (2n-1) |tau|^(2n+1) / (2^(i-1) (2n+1)^2), checked by :func:`check_bounds`
+(R_i / tau^(2n+1) is a polynomial in s = tau^(2n) of degree i-1; its extrema on [0, 1]
+come from the roots of its derivative, the limit s -> 0 is compared in exact rationals).
+
+* Where they hold: for n = 1 ... 200 (the brief asked n = 2 ... 20) and i = 2 ... 8 (asked
+  2 ... 6), 0 < R_i(tau) < bound(tau) for every 0 < tau <= 1, and so
+  0 < |R_i| < bound for 0 < |tau| <= 1 since R_i is odd.
+* Where they do not: literally for tau < 0 (R_i < 0 there: read them as bounds on
+  |R_i|); at tau = 0 (both sides vanish); for i = 1 (R_1 = tau^(2n+1)/(2n+1) exceeds
+  the formula by the factor (2n+1)/(2n-1) -- the paper states it for the higher terms).
+* How sharp: tight only as tau -> 0 for i = 2 (R_2 / bound -> 1) and as n -> oo; the
+  sup of R_i / bound (always reached as tau -> 0) is 0.71 at n = 2, i = 3; 0.96 at
+  n = 20, i = 3; 0.86 at n = 20, i = 8; 0.185 at n = 1, i = 6 (a factor 5.4 to spare).
 
 Accuracy (``sinktheory series``, ``benchmarks/bench_series.py``)
 ---------------------------------------------------------------

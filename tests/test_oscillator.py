@@ -330,3 +330,11 @@ def test_cli_period_bad_values(argv, name, capsys):
 def test_cli_period_usage_errors(argv, capsys):
     code, out, err = run_cli(argv, capsys)
     assert code == 2 and out == "" and err.count("\n") == 1
+
+
+def test_value_below_float_range_is_refused_not_misread():
+    # Documented limit: inputs are validated through float64; "1e-400" must be refused
+    # (ParameterError), never turned into a wrong finite period.
+    with pytest.raises(ParameterError) as info:
+        period(3, amplitude="1e-400")
+    assert info.value.name == "amplitude"
