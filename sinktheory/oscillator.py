@@ -168,9 +168,7 @@ def oscillator(
     dps = _check_dps(dps)
     if (amplitude is None) == (energy is None):
         given = "both" if amplitude is not None else "neither"
-        raise ParameterError(
-            "amplitude/energy", given, "exactly one of amplitude and energy", why="not both"
-        )
+        raise ParameterError("amplitude/energy", given, "exactly one of amplitude and energy")
     name, value = ("amplitude", amplitude) if amplitude is not None else ("energy", energy)
     v.positive(name, value)
     with mpmath.workdps(dps + GUARD_DIGITS):
