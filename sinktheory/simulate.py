@@ -488,7 +488,7 @@ def first_order_rhs(sink: Sink):
     >>> from sinktheory import Sink, Well
     >>> sink = Sink(Well(0.5, 0.3, 4), particles=1, mass=0.2)
     >>> f = first_order_rhs(sink)
-    >>> f(0.0, start_state(sink, 0.5, np.zeros((1, 1, 2)))[0]).round(12).tolist()  # X = 1: Xddot = -X
+    >>> f(0.0, start_state(sink, 0.5, np.zeros((1, 1, 2)))[0]).round(12).tolist()
     [0.0, -1.0, 0.0, 0.0, -0.0, -0.0]
     """
     w, k, mu = sink.well, sink.particles, sink.mu
