@@ -344,3 +344,97 @@ def integrate_quarter_period(
         steps=int(steps),
         rejected=int(rejected),
     )
+
+
+# --- independent reference paths (slow; for tests and benchmarks) ----------------------
+
+
+def quarter_period_mpmath(n: int, lam: float, *, dps: int = 30) -> tuple:
+    """Reference (y1, y1', y2, y2') at Q for y'' + lam X^(2n) y = 0, at ``dps`` digits.
+
+    Integrates X'' = -X^(2n-1) (X(0) = 1) with the fundamental solutions by mpmath's
+    Taylor-series ODE solver (``mpmath.odefun``) at ``dps`` significant digits, up to
+    Q = T_n / 4 from the generated ``period_mp``.  Independent of the float path: other
+    method, other arithmetic, Q from the Gamma-function formula.  ``lam`` is Lam A0^2
+    (normalised variables); for the model with n >= 2 it is lambda A0^2.  Costs about a
+    second for n = 10; the Taylor steps shrink like 1/sqrt(n), so keep n below ~100.
+
+    Returns
+    -------
+    tuple of mpmath.mpf
+        (y1(Q), y1'(Q), y2(Q), y2'(Q), Q), rounded to ``dps`` digits.
+
+    Examples
+    --------
+    >>> y1, dy1, y2, dy2, Q = quarter_period_mpmath(2, 0.0, dps=20)
+    >>> float(y2 - Q), float(dy1)
+    (0.0, 0.0)
+    """
+    import mpmath
+
+    n = v.positive_int("n", n)
+    lam_f = v.finite("lam", lam)
+    dps = v.positive_int("dps", dps, minimum=15)
+    with mpmath.workdps(dps + 10):
+        lam_mp = mpmath.mpf(lam_f)
+        q_end = _osc.period_mp(n, mpmath.mpf(1)) / 4
+
+        def rhs(_t, u):
+            c = lam_mp * u[0] ** (2 * n)
+            return [u[1], -(u[0] ** (2 * n - 1)), u[3], -c * u[2], u[5], -c * u[4]]
+
+        sol = mpmath.odefun(rhs, 0, [mpmath.mpf(1), 0, 1, 0, 0, 1])(q_end)
+        out = tuple(+x for x in sol[2:]) + (q_end,)
+    with mpmath.workdps(dps):
+        return tuple(+x for x in out)
+
+
+def monodromy_solve_ivp(
+    n: int,
+    param: float,
+    *,
+    kind: str = "pure",
+    amplitude: float = 1.0,
+    alpha: float = 0.0,
+    half_periods: int = 1,
+    rtol: float = 1e-13,
+) -> np.ndarray:
+    """Second method: M over ``half_periods`` * T_n/2 by scipy's DOP853 (solve_ivp).
+
+    Integrates the augmented system (X, X', y1, y1', y2, y2') in the normalised variables
+    from the turning point over whole half periods, without the quarter-period symmetry.
+    Slow (Python right-hand side); ``rtol`` 1e-13 with ``atol`` 1e-15 gives about 1e-11.
+    ``param`` is Lam A0^2 (pure) or beta (model kinds), as in
+    :func:`integrate_quarter_period`.
+
+    Returns
+    -------
+    ndarray, shape (2, 2)
+        [[y1, y2], [y1', y2']] at the end time.
+
+    Examples
+    --------
+    >>> m = monodromy_solve_ivp(1, 0.0)  # y'' = 0 over pi: [[1, pi], [0, 1]]
+    >>> bool(abs(m[0, 1] - np.pi) < 1e-10 and abs(m[1, 0]) < 1e-12)
+    True
+    """
+    from scipy.integrate import solve_ivp
+
+    n = v.positive_int("n", n)
+    k = KINDS.index(v.choice("kind", kind, KINDS))
+    amplitude = v.positive("amplitude", amplitude)
+    param = v.finite("param", param)
+    half_periods = v.positive_int("half_periods", half_periods)
+    t_end = half_periods * float(_osc.period(n, 1.0)) / 2.0
+
+    def rhs(_t, u):
+        c = _coefficient(k, u[0], n, amplitude, alpha, param)
+        return [u[1], -(u[0] ** (2 * n - 1)), u[3], -c * u[2], u[5], -c * u[4]]
+
+    sol = solve_ivp(
+        rhs, (0.0, t_end), [1.0, 0.0, 1.0, 0.0, 0.0, 1.0], method="DOP853", rtol=rtol, atol=1e-15
+    )
+    if not sol.success:
+        raise HillIntegrationError(f"solve_ivp failed before t = {t_end:.6g}: {sol.message}")
+    y = sol.y[:, -1]
+    return np.array([[y[2], y[4]], [y[3], y[5]]])

@@ -1,0 +1,170 @@
+"""``sinktheory floquet``: Floquet stability of the normal mode y = 0 (paper Fig. 7).
+
+Modes (exactly one of):
+
+* ``--beta B`` (with ``--alpha``): the model's Hill equation at one beta;
+* ``--lam L``: the pure Hill equation y'' + L x^(2n) y = 0;
+* ``--beta-range LO HI COUNT`` / ``--lam-range LO HI COUNT``: a chart on a grid with
+  stability intervals whose ends are located by root finding (not read off the grid).
+
+Huge numbers.  In deeply unstable zones phi and the multipliers can exceed float range.
+A value whose magnitude is below 1e300 is a JSON number; a larger one is a decimal string
+such as ``"-3.1415926536e+512"``.  ``log_abs_phi_half`` and ``log_abs_phi`` (natural
+logarithms) are always plain numbers.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+from ..errors import ParameterError
+from ..floquet import FloquetChart, model_problem, pure_problem, scan
+from ._common import Output, add_json, finite_or_none, number, png_path
+
+NAME = "floquet"
+HELP = "Floquet stability of the normal mode y = 0: phi(beta) charts with located boundaries"
+
+#: Magnitudes at or above this are written as decimal strings.
+JSON_CAP = 1e300
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    mode = parser.add_mutually_exclusive_group(required=True)
+    mode.add_argument("--beta", type=number, help="one beta of the model (needs --alpha)")
+    mode.add_argument("--lam", type=number, help="one Lam of the pure Hill equation")
+    mode.add_argument(
+        "--beta-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"), help="beta grid"
+    )
+    mode.add_argument(
+        "--lam-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"), help="Lam grid"
+    )
+    parser.add_argument("--alpha", type=number, help="alpha > 0 of the well (beta modes)")
+    parser.add_argument("--n", type=number, required=True, help="wall stiffness, integer >= 1")
+    parser.add_argument("--gamma", type=number, default=1.0, help="well strength (default 1)")
+    parser.add_argument("--shape", default="flat", help="flat or symmetric (default flat)")
+    parser.add_argument(
+        "--amplitude", type=number, default=1.0, help="amplitude A0 of x(t) (default 1)"
+    )
+    parser.add_argument("--plot", metavar="FILE.png", help="chart phi_{T/2} (range modes)")
+    add_json(parser)
+
+
+def json_value(x: float, log_abs: float) -> float | str:
+    """x as a JSON number, or as a decimal string built from ln|x| = ``log_abs`` when
+    |x| >= 1e300 or 0 < |x| <= 1e-300 (beyond or near the end of float range).
+
+    Examples
+    --------
+    >>> json_value(2.5, math.log(2.5))
+    2.5
+    >>> json_value(math.inf, 1000.0)
+    '1.9700711140e+434'
+    >>> json_value(0.0, -1000.0)
+    '5.0759588975e-435'
+    """
+    if not math.isfinite(log_abs) or abs(log_abs) < math.log(JSON_CAP):
+        return float(x)
+    sign = "-" if x < 0 else ""
+    log10 = log_abs / math.log(10.0)
+    exponent = math.floor(log10)
+    mantissa = 10.0 ** (log10 - exponent)
+    return f"{sign}{mantissa:.10f}e{exponent:+d}"
+
+
+def _point(chart: FloquetChart, i: int) -> dict:
+    lh = float(chart.log_abs_phi_half[i])
+    lp = float(chart.log_abs_phi[i])
+    g = float(chart.growth_per_period[i])
+    rho = chart.multipliers[i]
+    if chart.stable[i]:
+        multipliers = [[float(r.real), float(r.imag)] for r in rho]
+    else:
+        multipliers = [
+            [json_value(float(rho[0].real), g), 0.0],
+            [json_value(float(rho[1].real), -g), 0.0],
+        ]
+    return {
+        "lambda": float(chart.lam[i]),
+        "phi_half": json_value(float(chart.phi_half[i]), lh),
+        "phi": json_value(float(chart.phi[i]), lp),
+        "log_abs_phi_half": finite_or_none(lh),
+        "log_abs_phi": finite_or_none(lp),
+        "multipliers": multipliers,
+        "stable": bool(chart.stable[i]),
+        "growth_per_period": g,
+        "floquet_exponent": float(chart.floquet_exponent[i]),
+        "rotation_number": float(chart.rotation_number[i]),
+    }
+
+
+def _problem(args: argparse.Namespace, beta_mode: bool):
+    if beta_mode:
+        if args.alpha is None:
+            raise ParameterError("alpha", None, "given with --beta or --beta-range")
+        return model_problem(
+            args.alpha, args.n, gamma=args.gamma, shape=args.shape, amplitude=args.amplitude
+        )
+    if args.alpha is not None:
+        raise ParameterError("alpha", args.alpha, "omitted for the pure equation (--lam)")
+    return pure_problem(args.n, args.amplitude)
+
+
+def run(args: argparse.Namespace) -> Output:
+    ranged = args.beta_range or args.lam_range
+    beta_mode = args.beta is not None or args.beta_range is not None
+    problem = _problem(args, beta_mode)
+    plot = png_path("plot", args.plot)
+    key = problem.parameter
+    head = {"kind": problem.kind, "n": problem.n, "amplitude": problem.amplitude}
+    if beta_mode:
+        head.update(alpha=problem.alpha, gamma=problem.gamma, shape=problem.kind)
+    if not ranged:
+        if plot is not None:
+            raise ParameterError("plot", args.plot, "used with --beta-range or --lam-range")
+        value = args.beta if beta_mode else args.lam
+        chart = problem.evaluate([value])
+        data = {**head, key: float(chart.values[0]), **_point(chart, 0)}
+        data["period"] = chart.period
+        state = "stable" if data["stable"] else "unstable"
+        text = (
+            f"{key} = {value:g}, n = {problem.n}: lambda = {data['lambda']:.12g}\n"
+            f"  phi_T/2 = {data['phi_half']}  phi = {data['phi']}  ({state})\n"
+            f"  rotation number {data['rotation_number']:.12g}, "
+            f"growth per period {data['growth_per_period']:.12g}"
+        )
+        return Output(data, text)
+    lo, hi, count = ranged
+    if not isinstance(count, int):
+        raise ParameterError("COUNT", count, "an integer >= 2")
+    result = scan(problem, lo, hi, count)
+    chart = result.chart
+    lh = chart.log_abs_phi_half
+    lp = chart.log_abs_phi
+    data = {
+        **head,
+        key: chart.values.tolist(),
+        "lambda": chart.lam.tolist(),
+        "phi_half": [json_value(x, y) for x, y in zip(chart.phi_half, lh, strict=True)],
+        "phi": [json_value(x, y) for x, y in zip(chart.phi, lp, strict=True)],
+        "log_abs_phi_half": [finite_or_none(float(x)) for x in lh],
+        "stable": chart.stable.tolist(),
+        "stable_intervals": [[a, b] for a, b in result.stable_intervals],
+        "boundaries": [
+            {"value": b.value, "factor": b.factor, "phi_half": b.phi_half}
+            for b in result.boundaries
+        ],
+        "resonances": result.resonances,
+    }
+    data["period"] = chart.period
+    lines = [f"{problem.kind} Hill equation, n = {problem.n}, {key} in [{lo:g}, {hi:g}]"]
+    lines += [f"  stable  [{a:.12g}, {b:.12g}]" for a, b in result.stable_intervals]
+    lines += [f"  phi_T = -1 at {key} = {r:.12g}" for r in result.resonances]
+    out = Output(data, "\n".join(lines))
+    if plot is not None:
+        from ..floquet_plot import plot_scan
+
+        fig = plot_scan(result)
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        data["plot"] = str(plot)
+    return out
