@@ -8,9 +8,10 @@ Modes (exactly one of):
   stability intervals whose ends are located by root finding (not read off the grid).
 
 Huge numbers.  In deeply unstable zones phi and the multipliers can exceed float range.
-A value whose magnitude is below 1e300 is a JSON number; a larger one is a decimal string
-such as ``"-3.1415926536e+512"``.  ``log_abs_phi_half`` and ``log_abs_phi`` (natural
-logarithms) are always plain numbers.
+A value whose magnitude is below 1e300 (and, for the small multiplier, above 1e-300) is
+a JSON number; otherwise it is a decimal string such as ``"-3.14159265e+512"`` with 8
+decimals, the precision the logarithm it is built from supports.  ``log_abs_phi_half``
+and ``log_abs_phi`` (natural logarithms) are always plain numbers.
 """
 
 from __future__ import annotations
@@ -59,9 +60,9 @@ def json_value(x: float, log_abs: float) -> float | str:
     >>> json_value(2.5, math.log(2.5))
     2.5
     >>> json_value(math.inf, 1000.0)
-    '1.9700711140e+434'
+    '1.97007111e+434'
     >>> json_value(0.0, -1000.0)
-    '5.0759588975e-435'
+    '5.07595890e-435'
     """
     if not math.isfinite(log_abs) or abs(log_abs) < math.log(JSON_CAP):
         return float(x)
@@ -69,7 +70,7 @@ def json_value(x: float, log_abs: float) -> float | str:
     log10 = log_abs / math.log(10.0)
     exponent = math.floor(log10)
     mantissa = 10.0 ** (log10 - exponent)
-    return f"{sign}{mantissa:.10f}e{exponent:+d}"
+    return f"{sign}{mantissa:.8f}e{exponent:+d}"
 
 
 def _point(chart: FloquetChart, i: int) -> dict:
