@@ -77,10 +77,18 @@ def section(
     if quantity == "energy":
         res = simulate(sink, settings, initial=[START], record=("container",), progress=False)
         return res.container_energy[0, transient + 1 :]
-    _, steps = default_step(sink, settings.total_energy_bound(sink))
+    dt, steps = default_step(sink, settings.total_energy_bound(sink))
     res = simulate(
-        sink, settings, initial=[START], record=("trajectory",), stride=steps, progress=False
+        sink,
+        settings,
+        initial=[START],
+        record=("trajectory",),
+        dt=dt,
+        stride=steps,
+        progress=False,
     )
+    if res.steps_per_period != steps:  # the section must fall exactly on t = jT
+        raise AssertionError("trajectory stride does not match the period")
     y = res.trajectory[0, :, 3]  # columns X, Xdot, u, y, udot, ydot
     return y[transient + 1 :]
 
@@ -147,7 +155,7 @@ def plot_bifurcation(diagram: BifurcationDiagram, unstable=(), ax=None, title=No
             label="normal mode unstable (Floquet)" if i == 0 else None,
         )
     b = np.repeat(diagram.beta, diagram.section.shape[1])
-    ax.plot(b, diagram.section.ravel(), ",", color="black", alpha=0.6)
+    ax.plot(b, diagram.section.ravel(), ".", ms=1.0, color="black", alpha=0.6)
     ax.set_xlabel("$\\beta$")
     ax.set_ylabel("$y(jT)$" if diagram.quantity == "y" else "$E(jT)$")
     ax.set_title(

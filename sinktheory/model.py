@@ -180,6 +180,55 @@ class Well:
         )
 
 
+def confining_betas(
+    alpha: float, n: int, energy: float, *, gamma: float = 1.0, shape: str = "flat",
+    lo: float = -5.0, hi: float | None = None, points: int = 2001,
+) -> list[tuple[float, float]]:
+    """Intervals of beta in [lo, hi] for which the well holds a particle of ``energy``.
+
+    A beta is valid when :class:`Well` accepts it and :meth:`Well.check_energy` passes
+    (positive denominator within reach; below the corner saddle for the symmetric
+    shape).  The grid is refined at each change of validity by bisection to 1e-12.
+
+    Examples
+    --------
+    >>> [(round(float(a), 4), round(float(b), 4))
+    ...  for a, b in confining_betas(1.0, 6, 0.5, shape="symmetric")]
+    [(-0.4959, 0.2955), (0.7045, 1.0)]
+    """
+    hi = alpha if hi is None else hi
+
+    def ok(beta: float) -> bool:
+        try:
+            Well(alpha, beta, n, gamma=gamma, shape=shape).check_energy(energy)
+        except ParameterError:
+            return False
+        return True
+
+    grid = np.linspace(lo, hi, points)
+    flags = [ok(b) for b in grid]
+    intervals: list[tuple[float, float]] = []
+    start = float(grid[0]) if flags[0] else None
+    for i in range(1, grid.size):
+        if flags[i] == flags[i - 1]:
+            continue
+        a, b = grid[i - 1], grid[i]  # validity changes in (a, b): bisect
+        while b - a > 1e-12:
+            mid = 0.5 * (a + b)
+            if ok(mid) == flags[i - 1]:
+                a = mid
+            else:
+                b = mid
+        if flags[i]:
+            start = float(b)
+        else:
+            intervals.append((start, float(a)))
+            start = None
+    if start is not None:
+        intervals.append((start, float(grid[-1])))
+    return intervals
+
+
 @dataclass(frozen=True)
 class Sink:
     """The container (mass 1, spring 1) holding k particles of total mass m.

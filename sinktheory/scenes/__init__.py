@@ -5,8 +5,9 @@ Each scene declares the least model it needs and computes only that (see
 """
 
 from .base import Claim, Scene, SceneResult
+from .orbits import FIG3, FIG11
 from .wells import FIG2, FIG10
 
-SCENES: dict[int, Scene] = {s.number: s for s in (FIG2, FIG10)}
+SCENES: dict[int, Scene] = {s.number: s for s in (FIG2, FIG3, FIG10, FIG11)}
 
 __all__ = ["SCENES", "Claim", "Scene", "SceneResult"]
