@@ -33,6 +33,12 @@ check(
     probes=[{A0: sp.Rational(3, 2), n: k} for k in (1, 2, 3, 7, 20)],
 )
 check("T_1 = 2 pi for every amplitude", sp.simplify(T.subs(n, 1)), 2 * sp.pi)
+xd = sp.Symbol("xd", real=True)
+check(
+    "first integral E_n = x'^2/2 + x^(2n)/(2n) (text after eq. T)",
+    S.oscillator_energy(),
+    xd**2 / 2 + S.x ** (2 * n) / (2 * n),
+)
 show("amplitude of energy A0(E_n)", S.amplitude_of_energy())
 check(
     "A0 = (2 n E_n)^(1/(2n))",

@@ -274,6 +274,12 @@ def _oscillator_module() -> str:
         "    n = mpmath.mpf(n)\n"
         f"    return {mp_src}\n"
     )
+    parts.append(
+        "\n\ndef energy_of_amplitude_mp(n, A0):\n"
+        '    """Energy E_n = A0^(2n)/(2n) of the oscillator at the current mpmath precision."""\n'
+        "    n = mpmath.mpf(n)\n"
+        f"    return {_mp_printer.doprint(S.energy_of_amplitude())}\n"
+    )
     A = S.amplitude_of_energy()
     parts.append(
         "\n\ndef amplitude_of_energy_mp(n, E):\n"

@@ -108,17 +108,6 @@ class Oscillator:
     dps: int
 
 
-def energy_of_amplitude_mp(n: int, amplitude: mpmath.mpf) -> mpmath.mpf:
-    """E_n = A0^(2n) / (2n), the inverse of the generated ``amplitude_of_energy_mp``.
-
-    Examples
-    --------
-    >>> energy_of_amplitude_mp(2, mpmath.mpf(2))
-    mpf('4.0')
-    """
-    return amplitude ** (2 * n) / (2 * n)
-
-
 def _check_n(n: object) -> int:
     return v.positive_int("n", n, maximum=MAX_N)
 
@@ -174,7 +163,7 @@ def oscillator(
     with mpmath.workdps(dps + GUARD_DIGITS):
         x = mpmath.mpf(value)
         if name == "amplitude":
-            a0, e = x, energy_of_amplitude_mp(n, x)
+            a0, e = x, _osc.energy_of_amplitude_mp(n, x)
         else:
             a0, e = _osc.amplitude_of_energy_mp(n, x), x
         t = _osc.period_mp(n, a0)

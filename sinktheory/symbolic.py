@@ -483,7 +483,27 @@ def period_closed_form() -> sp.Expr:
     return sp.simplify(4 * prefactor * inner)  # period_integral() = 4 * prefactor * I
 
 
+def oscillator_energy() -> sp.Expr:
+    """E_n = x'^2/2 + x^(2n)/(2n): the conserved energy of x'' + x^(2n-1) = 0.
+
+    Derived as the first integral: multiply the equation by x' and integrate.
+    """
+    t = sp.Symbol("t", real=True)
+    xf = sp.Function("x")(t)
+    xd = sp.Symbol("xd", real=True)
+    first_integral = sp.integrate(sp.diff(xf, t, 2) * sp.diff(xf, t), t) + sp.integrate(
+        xf ** (2 * n - 1) * sp.diff(xf, t), t
+    )
+    return sp.powsimp(first_integral.subs(sp.diff(xf, t), xd).subs(xf, x), force=True)
+
+
+def energy_of_amplitude() -> sp.Expr:
+    """E_n at a turning point x = A0, x' = 0: A0^(2n) / (2n)."""
+    xd = sp.Symbol("xd", real=True)
+    return oscillator_energy().subs({xd: 0, x: A0})
+
+
 def amplitude_of_energy() -> sp.Expr:
-    """A0 = (2 n E)^(1/(2n)) from E_n = A0^(2n) / (2n)."""
+    """A0 = (2 n E)^(1/(2n)): the inverse of :func:`energy_of_amplitude`."""
     a = sp.Symbol("a", positive=True)
-    return sp.solve(sp.Eq(a ** (2 * n) / (2 * n), E), a)[0]
+    return sp.solve(sp.Eq(energy_of_amplitude().subs(A0, a), E), a)[0]

@@ -23,6 +23,12 @@ def period_mp(n, A0):
     return 4*mpmath.sqrt(mpmath.pi)*A0**(1 - n)*mpmath.sqrt(n)*mpmath.gamma(1 + (mpmath.mpf(1)/mpmath.mpf(2))/n)/mpmath.gamma(mpmath.mpf(1)/mpmath.mpf(2) + (mpmath.mpf(1)/mpmath.mpf(2))/n)
 
 
+def energy_of_amplitude_mp(n, A0):
+    """Energy E_n = A0^(2n)/(2n) of the oscillator at the current mpmath precision."""
+    n = mpmath.mpf(n)
+    return (mpmath.mpf(1)/mpmath.mpf(2))*A0**(2*n)/n
+
+
 def amplitude_of_energy_mp(n, E):
     """Amplitude A0 = (2 n E)^(1/(2n)) at the current mpmath precision."""
     n = mpmath.mpf(n)
