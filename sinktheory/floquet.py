@@ -138,7 +138,26 @@ class HillProblem:
                 v.finite("lam", value)
             else:
                 Well(self.alpha, float(value), self.n, gamma=self.gamma, shape=self.kind)
+        if self.kind == "symmetric" and self.n == 1:
+            for beta in arr:
+                self._check_symmetric_reach(float(beta))
         return arr
+
+    def _check_symmetric_reach(self, beta: float) -> None:
+        """n = 1 symmetric well: the coefficient has a pole where the wall D(x) vanishes.
+
+        In physical units x reaches (alpha - beta) A0; D(s) = alpha + beta (s^2 - 1) is
+        monotone in s^2, so D must stay positive at that end.
+        """
+        well = Well(self.alpha, beta, self.n, gamma=self.gamma, shape=self.kind)
+        if float(well.denominator(well.wall_distance * self.amplitude)) <= 0:
+            raise ParameterError(
+                "amplitude",
+                self.amplitude,
+                f"smaller for beta = {beta!r} (symmetric well, n = 1)",
+                why="the wall D(x) of the y-direction vanishes inside the x-range, "
+                "where Hill's coefficient has a pole",
+            )
 
     def lam(self, values: np.ndarray) -> np.ndarray:
         """lambda of eq. y-oscill: Lam itself, or -2 beta (alpha - beta) (generated kernel)."""
