@@ -1,0 +1,77 @@
+"""Fig. 4: single-particle trajectories in the container's frame (k = 1, n = 10)."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from ..model import RunSettings, Sink, Well
+from ..simulate import simulate
+from .base import HOLDS, UNDECIDED, Claim, Scene, SceneResult
+
+BETAS = (-0.5, -0.3, -0.2, -0.14, 0.009, 0.3)
+ALPHA, N, MASS, START = 0.5, 10, 0.2, (0.0, 0.01)
+
+
+def trajectory(beta: float, periods: int) -> np.ndarray:
+    """Relative positions (x, y) of the particle over ``periods`` container periods."""
+    sink = Sink(Well(ALPHA, beta, N), particles=1, mass=MASS)
+    res = simulate(
+        sink,
+        RunSettings(runs=1, periods=periods),
+        initial=[START],
+        record=("trajectory",),
+        progress=False,
+    )
+    tr = res.trajectory[0]
+    return np.stack([tr[:, 2] - tr[:, 0], tr[:, 3]], axis=1)  # x = u - X, y
+
+
+def _fig4(quick: bool) -> SceneResult:
+    periods = 20 if quick else 100
+    fig = Figure(figsize=(8, 11), layout="constrained")
+    axes = fig.subplots(3, 2).ravel()
+    spreads = []
+    for ax, beta, label in zip(axes, BETAS, "abcdef", strict=True):
+        xy = trajectory(beta, periods)
+        spreads.append(float(np.abs(xy[:, 1]).max()))
+        well = Well(ALPHA, beta, N)
+        g = np.linspace(-1.2, 1.2, 241)
+        X, Y = np.meshgrid(g, g)
+        ax.contour(X, Y, well.potential(X, Y), levels=[0.5], colors="0.6", linewidths=1)
+        ax.plot(xy[:, 0], xy[:, 1], lw=0.3, color="tab:blue")
+        ax.set_aspect("equal")
+        ax.set_title(f"{label}) $\\beta$ = {beta:g}", fontsize=10)
+        ax.set_xlabel("$x$")
+        ax.set_ylabel("$y$")
+    fig.suptitle(
+        f"Fig. 4: particle paths, $0 \\leq t/T \\leq {periods}$, $\\alpha$ = 1/2, "
+        f"$n$ = {N}, $k$ = 1, $m$ = {MASS}; grey: V = 0.5"
+    )
+    measured = "; ".join(
+        f"beta = {b:g}: max|y| = {s:.3f}" for b, s in zip(BETAS, spreads, strict=True)
+    )
+    return SceneResult(
+        fig,
+        {
+            "alpha": ALPHA,
+            "gamma": 1.0,
+            "n": N,
+            "k": 1,
+            "mass": MASS,
+            "beta": list(BETAS),
+            "start": "(x, y) = (0, 0.01) at rest; container X(0) = 1 at rest",
+            "periods": periods,
+        },
+        [
+            Claim(
+                "the particle path is regular or chaotic depending on beta",
+                measured + " (regular: max|y| < 0.05; wandering: max|y| > 0.3)",
+                HOLDS if min(spreads) < 0.05 and max(spreads) > 0.3 else UNDECIDED,
+            )
+        ],
+        ["The paper does not give m for Figs. 3-5; m = 0.2 as in Fig. 8."],
+    )
+
+
+FIG4 = Scene(4, "particle trajectories for six wall shapes", "single-particle trajectories", _fig4)
