@@ -6,21 +6,27 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from ..model import RunSettings, Sink, Well
-from ..simulate import simulate
+from ..simulate import default_step, simulate
 from .base import HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
 BETAS = (-0.5, -0.3, -0.2, -0.14, 0.009, 0.3)
 ALPHA, N, MASS, START = 0.5, 10, 0.2, (0.0, 0.01)
+#: Trajectory samples per container period (about 40 per wall-to-wall flight).
+SAMPLES = 200
 
 
 def trajectory(beta: float, periods: int) -> np.ndarray:
     """Relative positions (x, y) of the particle over ``periods`` container periods."""
     sink = Sink(Well(ALPHA, beta, N), particles=1, mass=MASS)
+    settings = RunSettings(runs=1, periods=periods)
+    dt, steps = default_step(sink, settings.total_energy_bound(sink))
     res = simulate(
         sink,
-        RunSettings(runs=1, periods=periods),
+        settings,
         initial=[START],
         record=("trajectory",),
+        dt=dt,
+        stride=max(1, steps // SAMPLES),
         progress=False,
     )
     tr = res.trajectory[0]
