@@ -52,6 +52,31 @@ class BifurcationDiagram:
     count: int
 
 
+def sampled_run(sink: Sink, settings: RunSettings, start, *, per_period: int) -> np.ndarray:
+    """One run from ``start`` = (x, y) (each particle at rest), its state sampled exactly
+    ``per_period`` times per container period: rows (P * per_period + 1, 2 + 4k) with
+    columns X, Xdot, u_1..u_k, y_1..y_k, udot..., ydot... (u = X + x).
+
+    The step is the default one shortened so a period holds a multiple of
+    ``per_period`` steps, so the samples fall on t = jT / per_period.
+    """
+    per_period = v.positive_int("per_period", per_period)
+    dt, steps = default_step(sink, settings.total_energy_bound(sink))
+    steps = per_period * -(-steps // per_period)  # round up to a multiple
+    res = simulate(
+        sink,
+        settings,
+        initial=[start] * sink.particles,
+        record=("trajectory",),
+        dt=2 * np.pi / steps,
+        stride=steps // per_period,
+        progress=False,
+    )
+    if res.steps_per_period != steps:  # samples must fall exactly on t = jT / per_period
+        raise AssertionError("trajectory stride does not match the period")
+    return res.trajectory[0]
+
+
 def section(
     sink: Sink,
     *,
@@ -77,20 +102,8 @@ def section(
     if quantity == "energy":
         res = simulate(sink, settings, initial=[START], record=("container",), progress=False)
         return res.container_energy[0, transient + 1 :]
-    dt, steps = default_step(sink, settings.total_energy_bound(sink))
-    res = simulate(
-        sink,
-        settings,
-        initial=[START],
-        record=("trajectory",),
-        dt=dt,
-        stride=steps,
-        progress=False,
-    )
-    if res.steps_per_period != steps:  # the section must fall exactly on t = jT
-        raise AssertionError("trajectory stride does not match the period")
-    y = res.trajectory[0, :, 3]  # columns X, Xdot, u, y, udot, ydot
-    return y[transient + 1 :]
+    rows = sampled_run(sink, settings, START, per_period=1)
+    return rows[transient + 1 :, 3]  # columns X, Xdot, u, y, udot, ydot
 
 
 def bifurcation(

@@ -116,29 +116,19 @@ def _line_histograms(e, eps, matrix, use_matrix, w):
     diag = np.zeros(n + 1, np.int64)
     vert = np.zeros(n + 1, np.int64)
     gaps = np.zeros(n + 1, np.int64)
-    # diagonal lines: offsets k >= max(w, 1) above the main diagonal, mirrored below (x2)
-    for k in range(max(w, 1), n):
+    # diagonal lines at offsets k >= w; each k > 0 stands for two (mirrored) diagonals
+    for k in range(w, n):
+        weight = 1 if k == 0 else 2
         run = 0
         for i in range(n - k):
             if matrix[i, i + k] if use_matrix else abs(e[i] - e[i + k]) <= eps:
                 run += 1
             else:
                 if run > 0:
-                    diag[run] += 2
+                    diag[run] += weight
                 run = 0
         if run > 0:
-            diag[run] += 2
-    if w == 0:  # the main diagonal itself, unbroken
-        run = 0
-        for i in range(n):
-            if matrix[i, i] if use_matrix else True:
-                run += 1
-            else:
-                if run > 0:
-                    diag[run] += 1
-                run = 0
-        if run > 0:
-            diag[run] += 1
+            diag[run] += weight
     # vertical lines and gaps, column by column; the window cuts both
     for j in range(n):
         run = 0

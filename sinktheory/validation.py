@@ -37,26 +37,25 @@ def finite(name: str, value: object) -> float:
     return x
 
 
-def positive(name: str, value: object) -> float:
-    """A finite real number > 0."""
+def _finite_where(name: str, value: object, ok, allowed: str) -> float:
+    """A finite real number for which ``ok(x)`` holds; else refused as ``allowed``."""
     try:
         x = finite(name, value)
     except ParameterError:
-        raise ParameterError(name, value, "a finite number > 0") from None
-    if x <= 0:
-        raise ParameterError(name, value, "a finite number > 0")
+        raise ParameterError(name, value, allowed) from None
+    if not ok(x):
+        raise ParameterError(name, value, allowed)
     return x
+
+
+def positive(name: str, value: object) -> float:
+    """A finite real number > 0."""
+    return _finite_where(name, value, lambda x: x > 0, "a finite number > 0")
 
 
 def nonnegative(name: str, value: object) -> float:
     """A finite real number >= 0."""
-    try:
-        x = finite(name, value)
-    except ParameterError:
-        raise ParameterError(name, value, "a finite number >= 0") from None
-    if x < 0:
-        raise ParameterError(name, value, "a finite number >= 0")
-    return x
+    return _finite_where(name, value, lambda x: x >= 0, "a finite number >= 0")
 
 
 def positive_int(name: str, value: object, *, minimum: int = 1, maximum: int | None = None) -> int:

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from ..bifurcation import sampled_run
 from ..model import RunSettings, Sink, Well
-from ..simulate import default_step, simulate
 from .base import HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
 BETAS = (-0.5, -0.3, -0.2, -0.14, 0.009, 0.3)
@@ -18,18 +18,7 @@ SAMPLES = 200
 def trajectory(beta: float, periods: int) -> np.ndarray:
     """Relative positions (x, y) of the particle over ``periods`` container periods."""
     sink = Sink(Well(ALPHA, beta, N), particles=1, mass=MASS)
-    settings = RunSettings(runs=1, periods=periods)
-    dt, steps = default_step(sink, settings.total_energy_bound(sink))
-    res = simulate(
-        sink,
-        settings,
-        initial=[START],
-        record=("trajectory",),
-        dt=dt,
-        stride=max(1, steps // SAMPLES),
-        progress=False,
-    )
-    tr = res.trajectory[0]
+    tr = sampled_run(sink, RunSettings(runs=1, periods=periods), START, per_period=SAMPLES)
     return np.stack([tr[:, 2] - tr[:, 0], tr[:, 3]], axis=1)  # x = u - X, y
 
 
