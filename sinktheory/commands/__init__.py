@@ -5,6 +5,6 @@ returns an :class:`~sinktheory.commands._common.Output`.  A command computes eve
 before it writes any file, so bad input never leaves partial output behind.
 """
 
-from . import derive, floquet, period, reproduce, series, simulate, sink, well
+from . import derive, floquet, period, reproduce, series, simulate, sink, sweep, well
 
-COMMANDS = (well, sink, derive, simulate, period, series, reproduce, floquet)
+COMMANDS = (well, sink, derive, simulate, period, series, reproduce, floquet, sweep)

@@ -1,0 +1,308 @@
+"""What a sweep can compute: one pure point function per kind.
+
+Each kind lists its parameters (type, default, whether it may be swept), checks a point
+with the model's own validators before anything runs, and computes a point as a pure
+function of (parameters, point seed), returning a dict of arrays whose shapes depend only
+on the fixed parameters.
+
+=============  ==============================================  ===============================
+kind           point function                                  results per point
+=============  ==============================================  ===============================
+floquet        :func:`sinktheory.floquet.model_hill` at one     lam, phi_half, phi, stable,
+               beta (never batched: the integrator shares its   log_abs_phi_half,
+               steps over a batch, which would make a value     rotation_number,
+               depend on its neighbours)                        floquet_exponent
+bifurcation    :func:`sinktheory.bifurcation.section`           section (sample)
+ensemble       :func:`sinktheory.simulate.simulate`, seeded     mean_energy (period),
+               with the point's seed                            stderr (period),
+                                                                max_relative_energy_error,
+                                                                dt_used
+=============  ==============================================  ===============================
+
+The bifurcation section starts from a fixed state and does not use the seed.  An ensemble
+point's runs start from positions drawn with the point's seed; sweep ``replica=0:9:10`` to
+repeat an ensemble with ten independent seeds.
+
+Examples
+--------
+>>> kind = get_kind("floquet")
+>>> point = kind.complete({"alpha": 0.5, "beta": -0.2, "n": 10})
+>>> kind.check(point)
+>>> out = kind.compute(point, seed=0)
+>>> round(float(out["lam"]), 12), bool(out["stable"])
+(0.28, True)
+>>> kind.complete({"alpha": 0.5, "beta": 0.1, "n": 10, "mas": 1})
+Traceback (most recent call last):
+...
+sinktheory.errors.ParameterError: mas = 1 is not allowed: must be a parameter of a floquet \
+sweep: alpha, amplitude, beta, gamma, n, rtol, shape
+"""
+
+from __future__ import annotations
+
+import numbers
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .. import validation as v
+from ..bifurcation import QUANTITIES, section
+from ..errors import ParameterError
+from ..floquet import model_hill, model_problem
+from ..hill import DEFAULT_RTOL
+from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
+from ..model import SHAPES, RunSettings, Sink, Well
+from ..simulate import ENERGY_BOUND, simulate
+
+REQUIRED = object()
+
+
+@dataclass(frozen=True)
+class Param:
+    """One parameter of a kind: ``type`` float, int or str; ``default`` REQUIRED if none.
+
+    ``sweepable`` is False for parameters that set the length of a result (a sweep's
+    results must have the same shape at every point).
+    """
+
+    type: type
+    default: Any = REQUIRED
+    options: tuple[str, ...] | None = None
+    sweepable: bool = True
+
+    def coerce(self, name: str, value: Any) -> Any:
+        """The value in canonical type; range checks are left to the model's validators."""
+        if value is None and self.default is None:
+            return None
+        if self.type is str:
+            if self.options is not None:
+                return v.choice(name, value, self.options)
+            if not isinstance(value, str):
+                raise ParameterError(name, value, "a name")
+            return value
+        if self.type is int:
+            if isinstance(value, bool):
+                raise ParameterError(name, value, "an integer")
+            if isinstance(value, numbers.Integral):
+                return int(value)
+            x = v.finite(name, value)
+            if x != int(x):
+                raise ParameterError(name, value, "an integer")
+            return int(x)
+        return v.finite(name, value)
+
+
+@dataclass(frozen=True)
+class Result:
+    """One result variable: its extra dimensions (after the swept ones), dtype and fill."""
+
+    dims: tuple[str, ...]
+    dtype: str
+    description: str
+
+
+WELL = {
+    "alpha": Param(float),
+    "beta": Param(float),
+    "n": Param(int),
+    "gamma": Param(float, 1.0),
+    "shape": Param(str, "flat", SHAPES),
+}
+SINK = {"particles": Param(int, 1), "mass": Param(float, 0.2), "energy": Param(float, 0.5)}
+
+
+@dataclass(frozen=True)
+class Kind:
+    """A kind of sweep: parameters, results, checks and the point function.
+
+    ``extra_coords(point)`` gives the coordinates of the result dimensions beyond the
+    swept ones (they depend on fixed parameters only).
+    """
+
+    name: str
+    params: dict[str, Param]
+    results: dict[str, Result]
+    check: Callable[[dict], None]
+    compute: Callable[[dict, int], dict[str, Any]]
+    extra_coords: Callable[[dict], dict[str, np.ndarray]] = field(default=lambda p: {})
+
+    def complete(self, given: Mapping[str, Any]) -> dict[str, Any]:
+        """Check names, add defaults, coerce types (values may be lists of values)."""
+        for name in given:
+            if name not in self.params:
+                raise ParameterError(
+                    name,
+                    given[name],
+                    f"a parameter of a {self.name} sweep: {', '.join(sorted(self.params))}",
+                )
+        out = {}
+        for name, p in self.params.items():
+            if name not in given:
+                if p.default is REQUIRED:
+                    raise ParameterError(name, None, "given (it has no default)")
+                out[name] = p.default
+                continue
+            value = given[name]
+            if isinstance(value, list | tuple | np.ndarray):
+                values = [p.coerce(name, x) for x in np.asarray(value, dtype=object).ravel()]
+                if len(values) > 1 and not p.sweepable:
+                    raise ParameterError(
+                        name, value, "a single value (it sets the length of the results)"
+                    )
+                out[name] = values
+            else:
+                out[name] = p.coerce(name, value)
+        return out
+
+
+# --------------------------------------------------------------------------- floquet
+def _floquet_check(p: dict) -> None:
+    model_problem(
+        p["alpha"],
+        p["n"],
+        gamma=p["gamma"],
+        shape=p["shape"],
+        amplitude=p["amplitude"],
+        rtol=p["rtol"],
+    ).check([p["beta"]])
+
+
+def _floquet(p: dict, seed: int) -> dict[str, Any]:
+    c = model_hill(
+        p["alpha"],
+        [p["beta"]],
+        p["n"],
+        gamma=p["gamma"],
+        shape=p["shape"],
+        amplitude=p["amplitude"],
+        rtol=p["rtol"],
+    )
+    return {name: getattr(c, name)[0] for name in FLOQUET_RESULTS}
+
+
+FLOQUET_RESULTS = {
+    "lam": Result((), "float64", "lambda = -2 beta (alpha - beta) of Hill's equation"),
+    "phi_half": Result((), "float64", "half trace of the half-period map (+-inf beyond range)"),
+    "phi": Result((), "float64", "phi_T = 2 phi_half^2 - 1 (+inf beyond float range)"),
+    "stable": Result((), "bool", "normal mode y = 0 stable: |phi_half| < 1"),
+    "log_abs_phi_half": Result((), "float64", "ln|phi_half|"),
+    "rotation_number": Result((), "float64", "theta/pi, theta = arccos(phi_half)"),
+    "floquet_exponent": Result((), "float64", "largest Floquet exponent (0 where stable)"),
+}
+
+# --------------------------------------------------------------------------- bifurcation
+
+
+def _sink(p: dict) -> Sink:
+    well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
+    return Sink(well, particles=p["particles"], mass=p["mass"])
+
+
+def _bifurcation_check(p: dict) -> None:
+    sink = _sink(p)
+    if sink.particles != 1:
+        raise ParameterError("particles", sink.particles, "1 for a bifurcation sweep")
+    v.positive_int("transient", p["transient"], minimum=0)
+    v.positive_int("count", p["count"])
+    v.choice("quantity", p["quantity"], QUANTITIES)
+    RunSettings(energy=p["energy"], runs=1, periods=1).check(sink)
+
+
+def _bifurcation(p: dict, seed: int) -> dict[str, Any]:
+    s = section(
+        _sink(p),
+        transient=p["transient"],
+        count=p["count"],
+        quantity=p["quantity"],
+        energy=p["energy"],
+    )
+    return {"section": s}
+
+
+# --------------------------------------------------------------------------- ensemble
+def _settings(p: dict, seed: int) -> RunSettings:
+    return RunSettings(
+        energy=p["energy"], runs=p["runs"], periods=p["periods"], seed=seed, box=p["box"]
+    )
+
+
+def _ensemble_check(p: dict) -> None:
+    _settings(p, 0).check(_sink(p))
+    get_scheme(p["method"])
+    if p["dt"] is not None:
+        v.positive("dt", p["dt"])
+    v.positive("energy_bound", p["energy_bound"])
+
+
+def _ensemble(p: dict, seed: int) -> dict[str, Any]:
+    res = simulate(
+        _sink(p),
+        _settings(p, seed),
+        method=p["method"],
+        dt=p["dt"],
+        record=("container",),
+        energy_bound=p["energy_bound"],
+        progress=False,
+    )
+    mean, stderr = res.ensemble_energy()
+    return {
+        "mean_energy": mean,
+        "stderr": stderr,
+        "max_relative_energy_error": res.max_relative_energy_error,
+        "dt_used": res.dt,
+    }
+
+
+KINDS = {
+    "floquet": Kind(
+        "floquet",
+        {**WELL, "amplitude": Param(float, 1.0), "rtol": Param(float, DEFAULT_RTOL)},
+        FLOQUET_RESULTS,
+        _floquet_check,
+        _floquet,
+    ),
+    "bifurcation": Kind(
+        "bifurcation",
+        {
+            **WELL,
+            **SINK,
+            "transient": Param(int, 200),
+            "count": Param(int, 200, sweepable=False),
+            "quantity": Param(str, "y", QUANTITIES),
+        },
+        {"section": Result(("sample",), "float64", "y(jT) or E(jT), j = transient + sample")},
+        _bifurcation_check,
+        _bifurcation,
+        lambda p: {"sample": np.arange(1, p["count"] + 1)},
+    ),
+    "ensemble": Kind(
+        "ensemble",
+        {
+            **WELL,
+            **SINK,
+            "runs": Param(int, 25),
+            "periods": Param(int, 1500, sweepable=False),
+            "box": Param(float, 0.01),
+            "method": Param(str, DEFAULT_SCHEME, tuple(SCHEMES)),
+            "dt": Param(float, None),
+            "energy_bound": Param(float, ENERGY_BOUND),
+            "replica": Param(int, 0),
+        },
+        {
+            "mean_energy": Result(("period",), "float64", "ensemble mean <E>(jT)"),
+            "stderr": Result(("period",), "float64", "standard error of <E>(jT)"),
+            "max_relative_energy_error": Result((), "float64", "largest |H - H0|/H0 of all runs"),
+            "dt_used": Result((), "float64", "integration step used"),
+        },
+        _ensemble_check,
+        _ensemble,
+        lambda p: {"period": np.arange(p["periods"] + 1)},
+    ),
+}
+
+
+def get_kind(name: str) -> Kind:
+    """The kind called ``name`` (ParameterError naming ``kind`` otherwise)."""
+    return KINDS[v.choice("kind", name, tuple(KINDS))]

@@ -1,0 +1,128 @@
+"""A checked sweep: kind, grid, seed, fingerprint, and the layout of its labelled results.
+
+:meth:`Sweep.make` validates everything before any work starts: parameter names and
+types, and every point of the grid with the model's own validators, so a bad value fails
+at once with a :class:`~sinktheory.errors.ParameterError` naming the parameter.
+
+Examples
+--------
+>>> s = Sweep.make("floquet", {"alpha": 0.5, "beta": [-0.2, 0.1], "n": 10})
+>>> s.grid.names, s.grid.size, s.dims
+(('beta',), 2, {'beta': 2})
+>>> Sweep.make("floquet", {"alpha": 0.5, "beta": [0.1, 0.5], "n": 10})  # doctest: +ELLIPSIS
+Traceback (most recent call last):
+...
+sinktheory.errors.ParameterError: beta = 0.5 is not allowed: must be < alpha = 0.5 (...)
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from .. import __version__
+from .. import validation as v
+from .grid import Grid, fingerprint, point_seed
+from .kinds import Kind, get_kind
+
+#: Attribute that marks a store as a sinktheory sweep (its value: the fingerprint).
+MARK = "sweep_fingerprint"
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """A validated sweep.  ``spec`` is its canonical JSON, ``fingerprint`` its SHA-256."""
+
+    kind: Kind
+    grid: Grid
+    seed: int
+    spec: str
+    fingerprint: str
+
+    @classmethod
+    def make(cls, kind: str, params: Mapping[str, Any], seed: int = 0) -> Sweep:
+        """Check ``params`` (name -> value or list of values) for ``kind`` at every point."""
+        k = get_kind(kind)
+        seed = v.positive_int("seed", seed, minimum=0)
+        grid = Grid.from_params(k.complete(params))
+        for index in range(grid.size):
+            k.check(grid.point(index))
+        spec, digest = fingerprint(k.name, grid, seed)
+        return cls(k, grid, seed, spec, digest)
+
+    # --- points -------------------------------------------------------------------------
+    def task(self, index: int) -> tuple[int, dict, int]:
+        """(index, parameters, point seed) of point ``index``: what a worker needs."""
+        return index, self.grid.point(index), point_seed(self.seed, index)
+
+    @property
+    def fixed(self) -> dict[str, Any]:
+        return dict(self.grid.fixed)
+
+    # --- layout of the results ------------------------------------------------------------
+    @property
+    def extra_coords(self) -> dict[str, np.ndarray]:
+        """Coordinates of the result dimensions after the swept ones (e.g. ``sample``)."""
+        return self.kind.extra_coords(self.grid.point(0))
+
+    @property
+    def dims(self) -> dict[str, int]:
+        """Sizes of the swept dimensions, in order."""
+        return dict(zip(self.grid.names, self.grid.shape, strict=True))
+
+    def shape(self, name: str) -> tuple[int, ...]:
+        """Shape of result ``name`` over the whole grid."""
+        extra = self.extra_coords
+        return self.grid.shape + tuple(extra[d].size for d in self.kind.results[name].dims)
+
+    def coords(self) -> dict[str, np.ndarray]:
+        swept = {name: _coordinate(values) for name, values in self.grid.dims}
+        return {**swept, **self.extra_coords}
+
+    def attrs(self) -> dict[str, Any]:
+        """Fixed parameters (those not None), kind, seed, package version, fingerprint."""
+        fixed = {name: value for name, value in self.grid.fixed if value is not None}
+        return {
+            **fixed,
+            "sweep_kind": self.kind.name,
+            "sweep_seed": self.seed,
+            "sweep_spec": self.spec,
+            MARK: self.fingerprint,
+            "sinktheory_version": __version__,
+        }
+
+    def point_seeds(self) -> np.ndarray:
+        """The seed of every point, shaped like the grid."""
+        seeds = [point_seed(self.seed, i) for i in range(self.grid.size)]
+        return np.array(seeds, dtype=np.uint64).reshape(self.grid.shape)
+
+    def dataset(self, results: Mapping[str, Any], done: np.ndarray) -> xr.Dataset:
+        """The labelled results: ``results`` (name -> array over the grid) plus bookkeeping.
+
+        ``done`` flags the points computed; ``point_seed`` holds each point's seed.
+        """
+        names = self.grid.names
+        data = {
+            name: (names + spec.dims, results[name], {"description": spec.description})
+            for name, spec in self.kind.results.items()
+        }
+        data["done"] = (names, done, {"description": "point computed and stored"})
+        data["point_seed"] = (names, self.point_seeds(), {"description": "seed of the point"})
+        return xr.Dataset(data, coords=self.coords(), attrs=self.attrs())
+
+    def describe(self) -> str:
+        """One line: kind, swept dimensions and fixed parameters."""
+        swept = ", ".join(f"{n} ({s})" for n, s in self.dims.items()) or "no swept parameter"
+        return f"{self.kind.name} sweep over {swept}; fixed {json.dumps(self.fixed)}"
+
+
+def _coordinate(values: tuple) -> np.ndarray:
+    """Labels of a swept parameter; names become variable-length strings (Zarr v3 spec)."""
+    if all(isinstance(x, str) for x in values):
+        return np.array(values, dtype=object)
+    return np.array(values)

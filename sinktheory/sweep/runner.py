@@ -1,0 +1,342 @@
+"""Running a sweep: in this process, on local processes, or on a Dask cluster.
+
+Where the points run:
+
+* ``scheduler=None``: the Dask scheduler named by the Dask configuration
+  (``DASK_SCHEDULER_ADDRESS`` or the ``scheduler-address`` key) if there is one, else
+  local processes;
+* ``scheduler="processes"``: local processes (``workers`` of them, default all cores;
+  ``workers=1`` or a single point runs in this process, with no start-up cost);
+* ``scheduler="tcp://host:port"`` (any Dask address) or a ``distributed.Client``: that
+  Dask cluster.
+
+Points are grouped into tasks of up to ``kind.batch`` neighbours along the last swept
+dimension; each point is still computed on its own from (parameters, point seed), so the
+numbers are bitwise the same whatever the scheduler, the number of workers or the order in
+which tasks finish.  The driver (this process) alone writes the store, task by task, as
+results come in.
+
+Examples
+--------
+>>> ds = run_sweep("floquet", {"alpha": 0.5, "beta": [-0.2, 0.3], "n": 10},
+...                workers=1, progress=False)
+>>> ds.lam.values.round(12).tolist(), ds.stable.values.tolist()  # lam = -2 beta (alpha - beta)
+([0.28, -0.12], [True, False])
+>>> ds.attrs["alpha"], ds.attrs["sweep_kind"]
+(0.5, 'floquet')
+"""
+
+from __future__ import annotations
+
+import math
+import multiprocessing
+import os
+import time
+from collections.abc import Iterator, Mapping
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from .. import validation as v
+from ..errors import NumericalError, ParameterError
+from ..progress import ProgressBar
+from .kinds import KINDS
+from .plan import Sweep
+from .store import SweepStore
+
+#: Largest number of points in one task, per kind: cheap points are grouped to save
+#: scheduling overhead (results do not depend on the grouping).
+BATCH = {"floquet": 64, "bifurcation": 1, "ensemble": 1}
+
+
+class SweepPointError(NumericalError):
+    """A point of a sweep failed numerically; the message names the point."""
+
+
+@dataclass(frozen=True)
+class SweepRun:
+    """A finished sweep: the labelled results and what this call did."""
+
+    dataset: xr.Dataset
+    store: Path | None
+    computed: int
+    skipped: int
+    seconds: float
+    where: str
+
+
+def run_sweep(
+    kind: str,
+    params: Mapping[str, Any],
+    seed: int = 0,
+    store: str | Path | None = None,
+    scheduler: Any = None,
+    workers: int | None = None,
+    resume: bool = False,
+    progress: bool = True,
+) -> xr.Dataset:
+    """Compute ``kind`` at every point of the grid ``params``; return labelled results.
+
+    Parameters
+    ----------
+    kind : "floquet", "bifurcation" or "ensemble"
+        See :mod:`sinktheory.sweep.kinds` for each kind's parameters and results.
+    params : dict
+        name -> value (fixed) or list of values (swept; becomes a coordinate).  Parameters
+        left out take their defaults; alpha, beta and n are required.
+    seed : int >= 0
+        Sweep seed; point i gets ``SeedSequence(seed, spawn_key=(i,))``.
+    store : path, optional
+        Zarr store to write the results to, point by point.  None keeps them in memory.
+    scheduler : None, "processes", a Dask address or a distributed.Client
+        Where to compute (see the module docstring).
+    workers : int >= 1, optional
+        Local processes (default: all cores).  Ignored on a Dask cluster.
+    resume : bool
+        Continue the sweep in ``store``, computing only the points not yet done; a store
+        made by a different sweep is refused.  Without it an existing store is refused.
+    progress : bool
+        Progress bar on stderr (points done, rate, time left; only on a terminal).
+
+    Returns
+    -------
+    xarray.Dataset
+        Results over the swept parameters (opened lazily from ``store`` if given).
+
+    Raises
+    ------
+    ParameterError
+        Unknown kind or parameter, a value the model refuses (at any point), a store
+        that exists (without resume) or belongs to another sweep.
+    SweepPointError
+        A point failed numerically; the points finished before it stay stored.
+    """
+    return execute(
+        Sweep.make(kind, params, seed),
+        store=store,
+        scheduler=scheduler,
+        workers=workers,
+        resume=resume,
+        progress=progress,
+    ).dataset
+
+
+def execute(
+    sweep: Sweep,
+    *,
+    store: str | Path | None = None,
+    scheduler: Any = None,
+    workers: int | None = None,
+    resume: bool = False,
+    progress: bool = True,
+) -> SweepRun:
+    """Run a checked :class:`~sinktheory.sweep.plan.Sweep` (see :func:`run_sweep`)."""
+    start = time.perf_counter()
+    workers = None if workers is None else v.positive_int("workers", workers)
+    if store is None:
+        saved, done = None, np.zeros(sweep.grid.shape, dtype=bool)
+        results = {
+            name: np.full(sweep.shape(name), False if spec.dtype == "bool" else np.nan)
+            for name, spec in sweep.kind.results.items()
+        }
+    else:
+        path = Path(store)
+        if resume and path.exists():
+            saved = SweepStore.open(path, sweep)
+        else:
+            saved = SweepStore.create(path, sweep)
+        done = saved.done()
+    tasks = _tasks(sweep, done)
+    pending = sum(len(t) for t in tasks)
+    bar = _SweepBar(pending, enabled=progress, label="sweep ")
+    where = "this process"
+    try:
+        with _engine(scheduler, workers, len(tasks)) as (where, run):
+            for task, outputs in run(sweep.kind.name, tasks):
+                region = _region(sweep, task)
+                stacked = {
+                    name: np.stack([o[name] for o in outputs]) for name in sweep.kind.results
+                }
+                if not sweep.grid.shape:  # a single point: no swept dimension
+                    stacked = {name: value[0] for name, value in stacked.items()}
+                if saved is None:
+                    for name, value in stacked.items():
+                        results[name][region] = value
+                    done[region] = True
+                else:
+                    saved.write(region, stacked)
+                bar.update(len(task))
+    finally:
+        bar.close()
+    if saved is None:
+        dataset = sweep.dataset(results, done)
+    else:
+        dataset = xr.open_zarr(saved.path)
+    return SweepRun(
+        dataset,
+        None if saved is None else saved.path,
+        computed=pending,
+        skipped=sweep.grid.size - pending,
+        seconds=time.perf_counter() - start,
+        where=where,
+    )
+
+
+# --------------------------------------------------------------------------- tasks
+def _tasks(sweep: Sweep, done: np.ndarray) -> list[list[tuple[int, dict, int]]]:
+    """Points not done, in runs of up to BATCH neighbours along the last swept dimension."""
+    batch = BATCH[sweep.kind.name]
+    last = sweep.grid.shape[-1] if sweep.grid.shape else 1
+    flat = done.reshape(-1)
+    tasks, current = [], []
+    for index in range(sweep.grid.size):
+        if flat[index]:
+            continue
+        if current and (index != current[-1][0] + 1 or index % last == 0 or len(current) == batch):
+            tasks.append(current)
+            current = []
+        current.append(sweep.task(index))
+    if current:
+        tasks.append(current)
+    return tasks
+
+
+def _region(sweep: Sweep, task: list[tuple[int, dict, int]]) -> tuple:
+    """Index of a task's points: a slice along the last swept dimension."""
+    if not sweep.grid.shape:
+        return ()
+    first = np.unravel_index(task[0][0], sweep.grid.shape)
+    stop = first[-1] + len(task)
+    return tuple(int(i) for i in first[:-1]) + (slice(int(first[-1]), int(stop)),)
+
+
+# --------------------------------------------------------------------------- engines
+class _engine:
+    """Context manager giving (description, run) where ``run(kind, tasks)`` yields
+    (task, outputs) as tasks finish."""
+
+    def __init__(self, scheduler: Any, workers: int | None, ntasks: int) -> None:
+        self.scheduler = scheduler
+        self.workers = workers
+        self.ntasks = ntasks
+        self._close = None
+
+    def __enter__(self):
+        scheduler = self.scheduler
+        if scheduler is None:
+            import dask.config
+
+            scheduler = dask.config.get("scheduler-address", None) or "processes"
+        if isinstance(scheduler, str) and scheduler == "processes":
+            workers = self.workers or os.cpu_count() or 1
+            workers = min(workers, self.ntasks)
+            if workers <= 1:
+                return "this process", _run_here
+            pool = ProcessPoolExecutor(
+                workers, mp_context=_context(), initializer=_one_thread_per_process
+            )
+            self._close = lambda: pool.shutdown(wait=True, cancel_futures=True)
+            return f"{workers} local processes", lambda kind, tasks: _run_pool(pool, kind, tasks)
+        return self._dask(scheduler)
+
+    def _dask(self, scheduler: Any):
+        from distributed import Client
+
+        if isinstance(scheduler, Client):
+            client = scheduler
+        elif isinstance(scheduler, str):
+            try:
+                client = Client(scheduler, timeout=30)
+            except (OSError, TimeoutError, ValueError) as e:
+                raise ParameterError(
+                    "scheduler",
+                    scheduler,
+                    "the address of a running Dask scheduler",
+                    why=str(e),
+                ) from None
+            self._close = client.close
+        else:
+            raise ParameterError(
+                "scheduler", scheduler, "None, 'processes', a Dask address or a Client"
+            )
+        where = f"Dask cluster at {client.scheduler.address}"
+        return where, lambda kind, tasks: _run_dask(client, kind, tasks)
+
+    def __exit__(self, *exc) -> None:
+        if self._close is not None:
+            self._close()
+
+
+def _run_here(kind: str, tasks: list) -> Iterator[tuple[list, list]]:
+    for task in tasks:
+        yield task, _checked(kind, task)
+
+
+def _run_pool(pool: ProcessPoolExecutor, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
+    futures = {pool.submit(_checked, kind, task): task for task in tasks}
+    remaining = set(futures)
+    while remaining:
+        finished, remaining = wait(remaining, return_when=FIRST_COMPLETED)
+        for future in finished:
+            yield futures[future], future.result()
+
+
+def _run_dask(client, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
+    from distributed import as_completed
+
+    futures = {client.submit(_checked, kind, task, pure=False): i for i, task in enumerate(tasks)}
+    try:
+        for future in as_completed(futures):
+            yield tasks[futures[future]], future.result()
+    finally:
+        client.cancel(list(futures))
+
+
+def _checked(kind: str, task: list) -> list[dict[str, Any]]:
+    """Compute each point of a task on its own; a numerical failure names the point."""
+    compute = KINDS[kind].compute
+    outputs = []
+    for index, params, seed in task:
+        try:
+            outputs.append(compute(params, seed))
+        except NumericalError as e:
+            raise SweepPointError(f"point {index} ({params}): {e}") from None
+    return outputs
+
+
+def _context():
+    """forkserver: children start from a clean process with the point functions imported
+    (fork is unsafe once numba's thread pool runs; spawn re-imports everything per child)."""
+    context = multiprocessing.get_context("forkserver")
+    context.set_forkserver_preload(["sinktheory.sweep.runner"])
+    return context
+
+
+def _one_thread_per_process() -> None:
+    """One numba thread per worker process: the processes already use every core (a
+    run's arithmetic does not depend on the thread count)."""
+    import numba
+
+    numba.set_num_threads(1)
+
+
+class _SweepBar(ProgressBar):
+    """:class:`~sinktheory.progress.ProgressBar` counting points, with rate and time left."""
+
+    def update(self, units: int) -> None:
+        self.done = min(self.done + units, self.total)
+        elapsed = time.perf_counter() - self.start
+        if not self.enabled or elapsed < self.delay:
+            return
+        rate = self.done / elapsed
+        left = (self.total - self.done) / rate if rate > 0 else math.inf
+        self.stream.write(
+            f"\r{self.label}{self.done}/{self.total} points  {rate:8.3g} points/s  "
+            f"{left:6.0f} s left "
+        )
+        self.stream.flush()
+        self.drawn = True
