@@ -21,8 +21,10 @@ Where it stops being trustworthy: the step must resolve the fastest wall collisi
 (:func:`default_step` derives it from the energy); a step too large raises
 :class:`~sinktheory.errors.EnergyDriftError` (or :class:`~sinktheory.errors.NonFiniteStateError`
 when the state overflows) instead of returning numbers.  Individual trajectories are chaotic:
-beyond a few hundred periods they are not reproducible by any other integrator (round-off
-grows exponentially); ensemble means and the energy audit are.
+differences (round-off included) grow by a factor ~10-100 per period once the particles are
+energised, so beyond a few periods a single trajectory is not reproducible by any other
+integrator or step; ensemble means, the energy audit and the bitwise results for a given
+seed, method and dt are.
 
 Examples
 --------
