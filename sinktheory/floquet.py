@@ -55,8 +55,8 @@ and one kick, M(T/2) = [[1, 2], [0, 1]] [[1, 0], [-g, 1]], whose half-trace is
     phi_half -> 1 - g = 1 - 2 Lam A0^2         (n -> oo).
 
 The limit has a single stability interval 0 < Lam A0^2 < 1; finite n adds the higher
-bands at Lam A0^2 of order n, where the impact duration (about 1/sqrt(8n) of the
-flight) is resolved by the waves.  At fixed Lam the corrections are O(1/n): the
+bands at Lam A0^2 of order n, where the waves resolve the impact (which lasts a
+fraction of order 1/(4n) of the flight).  At fixed Lam the corrections are O(1/n): the
 kick weight B(1 + 1/(2n), 1/2) - 2 = O(1/n), the flight time T_n/(2 sqrt(n)) - 2 = O(1/n),
 and the finite impact duration.
 

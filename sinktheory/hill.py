@@ -30,9 +30,11 @@ powers of two when it grows past 2^400, so deeply unstable zones never overflow;
 exponents are returned.
 
 Trustworthy range: ``rtol`` down to about 1e-14 (below that round-off dominates);
-|q| large makes the step count grow like sqrt(max |q|) Q; n up to a few hundred (the
-wall impacts last about 1/sqrt(8n) of the normalised time scale, and steps shrink
-accordingly).
+|q| large makes the step count grow like sqrt(max |q|) Q.  Stiff walls are handled by
+the step control: an impact lasts a fraction of order 1/(4n) of the wall-to-wall flight,
+the steps shrink there, and the step count stays near 60 for |Lam| <= 3 from n = 2 to
+n = 1000 (errors measured against mpmath up to n = 200 stay below 1e-12, see
+``benchmarks/bench_floquet.py``).
 
 Examples
 --------
