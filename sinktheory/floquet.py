@@ -62,8 +62,11 @@ and the finite impact duration.
 
 Accuracy (see tests): phi_half to 1e-10 relative to max(1, |phi_half|) with the
 default tolerance, boundaries to 1e-10 in the parameter; log|rho| to 1e-10 relative in
-deeply unstable zones.  The comparison with the full simulator (oscillating container,
-mu > 0) is left to the simulator module.
+deeply unstable zones.
+
+Not done here (issue 5, item 7): the comparison of these intervals with the full
+simulator (oscillating container, mu > 0, bifurcation diagrams of Fig. 3); it belongs
+with the simulator module.
 
 Examples
 --------
@@ -184,7 +187,26 @@ class HillProblem:
 
 
 def pure_problem(n: int, amplitude: float = 1.0, *, rtol: float = DEFAULT_RTOL) -> HillProblem:
-    """The pure Hill equation y'' + Lam x(t)^(2n) y = 0 (only Lam A0^2 matters)."""
+    """The pure Hill equation y'' + Lam x(t)^(2n) y = 0 as a family in Lam.
+
+    Parameters
+    ----------
+    n : int in [1, 1000]
+    amplitude : float > 0
+        A0; only Lam A0^2 matters (see :mod:`sinktheory.hill`).
+    rtol : float
+        Per-step tolerance of the integration.
+
+    Returns
+    -------
+    HillProblem
+
+    Examples
+    --------
+    >>> p = pure_problem(4)
+    >>> p.parameter, bool(p.evaluate([-1.0]).phi_half[0] > 1)  # Lam < 0: unstable
+    ('lam', True)
+    """
     return HillProblem(
         kind="pure",
         n=v.positive_int("n", n, maximum=MAX_N),
@@ -207,6 +229,28 @@ def model_problem(
     The coefficient is the generated ``hill_coefficient_{shape}`` in the rescaled
     variables: lambda x^(2n) for n >= 2; for n = 1 an extra constant-plus-x^2 term
     (flat) or a rational function of x^2 (symmetric) that the paper's eq. y-oscill omits.
+
+    Parameters
+    ----------
+    alpha : float > 0
+    n : int in [1, 1000]
+    gamma : float > 0
+        Validated only: it is absorbed by the time rescaling and does not change phi.
+    shape : "flat" or "symmetric"
+    amplitude : float > 0
+        A0 of the rescaled oscillator x(t).
+    rtol : float
+        Per-step tolerance of the integration.
+
+    Returns
+    -------
+    HillProblem
+
+    Examples
+    --------
+    >>> p = model_problem(0.5, 2)
+    >>> p.parameter, float(p.lam(np.array([-0.5]))[0])  # -2 beta (alpha - beta)
+    ('beta', 1.0)
     """
     well = Well(alpha, 0.0, n, gamma=gamma, shape=shape)  # validates all but beta
     return HillProblem(
