@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
+from matplotlib.ticker import SymmetricalLogLocator
 
 from . import validation as v
 from .floquet import StabilityScan, model_problem, pure_problem, scan
@@ -25,10 +26,21 @@ _LABEL = {"lam": r"$\Lambda$", "beta": r"$\beta$"}
 _CAP = 1e300
 
 
+def _phi_axis(ax, h: np.ndarray) -> None:
+    """Symmetric-log axis for phi_half: linear in [-1, 1], decades beyond, plain labels."""
+    ax.set_yscale("symlog", linthresh=1.0, linscale=2.0)
+    top = int(np.ceil(np.log10(max(1.0, float(np.max(np.abs(h)))))))
+    step = max(1, top // 6)
+    decades = [10.0**k for k in range(step, top + 1, step)]
+    ticks = [-d for d in decades[::-1]] + [-1.0, -0.5, 0.0, 0.5, 1.0] + decades
+    ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
+    ax.yaxis.set_minor_locator(SymmetricalLogLocator(base=10, linthresh=1.0, subs=range(2, 10)))
+
+
 def _draw_scan(ax, result: StabilityScan, title: str) -> None:
     chart = result.chart
     h = np.clip(chart.phi_half, -_CAP, _CAP)
-    ax.set_yscale("symlog", linthresh=1.0)
+    _phi_axis(ax, h)
     for k, (a, b) in enumerate(result.stable_intervals):
         ax.axvspan(a, b, color="tab:green", alpha=0.15, lw=0, label="stable" if k == 0 else None)
     ax.plot(chart.values, h, color="k", lw=1.2, label=r"$\phi_{T/2}$")
