@@ -12,6 +12,8 @@ import json
 import mpmath
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy import optimize, special
 from scipy.integrate import solve_ivp
 
@@ -291,6 +293,26 @@ def test_stability_decision_and_phi_relations():
     assert np.array_equal(chart.stable[clear], (np.abs(h) < 1)[clear])
     assert np.all(chart.phi >= -1 - 1e-12)
     np.testing.assert_allclose(chart.phi_half_minus_one, h - 1, atol=1e-12 * np.abs(h).max())
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    n=st.integers(1, 40),
+    lam=st.floats(-20.0, 60.0),
+    amplitude=st.floats(0.5, 2.0),
+)
+def test_wronskian_and_phi_bound_hold_everywhere(n, lam, amplitude):
+    """det M(Q) = 1 (Liouville) to 1e-11 of the solution size, and phi_T >= -1 always.
+
+    The Wronskian is not imposed by the integrator, so it measures its error.
+    """
+    chart = pure_hill([lam], n, amplitude=amplitude)
+    q = chart.quarter
+    if q.scale1[0] == 0 and q.scale2[0] == 0:
+        size = (abs(q.y1[0]) + abs(q.dy1[0])) * (abs(q.y2[0]) + abs(q.dy2[0]))
+        assert abs(q.y1[0] * q.dy2[0] - q.y2[0] * q.dy1[0] - 1.0) <= 1e-11 * size
+    assert chart.phi[0] >= -1.0 - 1e-12
+    assert chart.stable[0] == (chart.rotation_number[0] not in (0.0, 1.0))
 
 
 def test_multipliers_and_rotation_number_match_monodromy_eigenvalues():
