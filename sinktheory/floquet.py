@@ -64,9 +64,11 @@ Accuracy (see tests): phi_half to 1e-10 relative to max(1, |phi_half|) with the
 default tolerance, boundaries to 1e-10 in the parameter; log|rho| to 1e-10 relative in
 deeply unstable zones.
 
-Not done here (issue 5, item 7): the comparison of these intervals with the full
-simulator (oscillating container, mu > 0, bifurcation diagrams of Fig. 3); it belongs
-with the simulator module.
+Link to the full dynamics: in the simulator, a light particle (mu = 1e-4) on the
+unstable normal mode grows its y at exactly this exponent times sqrt(gamma/mu)/(alpha -
+beta) (tests/test_floquet_vs_simulation.py, agreement 4e-6).  How far the intervals
+predict the chaos of the oscillating container (mu = 0.2, Figs. 3 and 11) is measured
+by ``sinktheory reproduce`` and stated in its report.
 
 Examples
 --------
