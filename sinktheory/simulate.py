@@ -390,16 +390,12 @@ def _params(well) -> tuple[float, float, float, int]:
 
 
 def default_step(sink: Sink, energy: float, method: str = DEFAULT_SCHEME) -> tuple[float, int]:
-    """(dt, steps per period) chosen from the stiffness: dt <= h_omega / (omega_max c_n).
+    """(dt, steps per period) chosen from the stiffness: dt <= h_omega / omega_max.
 
     omega_max is :func:`stiffness_frequency` at the total ``energy``; ``h_omega`` is the
     scheme's calibrated step x frequency product (see
-    :class:`~sinktheory.integrators.SplittingScheme`).  c_n = sqrt(max(n, 4)/4) accounts for
-    the higher derivatives of the wall force x^(2n-1), which grow with n faster than the
-    curvature: measured on the paper's workloads, the energy error of a fixed h omega_max
-    grows from n = 4 to n = 10 by as much as a step sqrt(10/4) times larger does
-    (``benchmarks/bench_simulate.py``).  dt is then shortened so a period T = 2 pi is a
-    whole number of steps and E(jT) is sampled exactly at t = jT.
+    :class:`~sinktheory.integrators.SplittingScheme`).  dt is then shortened so a period
+    T = 2 pi is a whole number of steps and E(jT) is sampled exactly at t = jT.
 
     Examples
     --------
@@ -408,8 +404,7 @@ def default_step(sink: Sink, energy: float, method: str = DEFAULT_SCHEME) -> tup
     >>> abs(dt * steps - 2 * math.pi) < 1e-12
     True
     """
-    omega = stiffness_frequency(sink, energy) * math.sqrt(max(sink.well.n, 4) / 4)
-    return aligned_step(get_scheme(method).h_omega / omega)
+    return aligned_step(get_scheme(method).h_omega / stiffness_frequency(sink, energy))
 
 
 def aligned_step(dt: float) -> tuple[float, int]:
@@ -518,7 +513,7 @@ def _initial_values(sink, settings, initial, initial_state):
     """(values, t0, reference energy, runs) from exactly one of the three starting modes."""
     k = sink.particles
     if initial is not None and initial_state is not None:
-        raise ParameterError("initial", "...", "None when initial_state is given")
+        raise ParameterError("initial", "positions", "None when initial_state is given")
     if initial_state is not None:
         if not isinstance(initial_state, SimulationState):
             raise ParameterError("initial_state", initial_state, "a SimulationState")
