@@ -8,6 +8,7 @@ Those direct calls (``section``, ``model_hill``, ``simulate``) are the independe
 
 from __future__ import annotations
 
+import io
 import json
 import os
 import signal
@@ -21,13 +22,21 @@ import pytest
 import xarray as xr
 import zarr
 
-from sinktheory.bifurcation import section
+from sinktheory.bifurcation import bifurcation, section
 from sinktheory.cli import main
 from sinktheory.errors import ParameterError
 from sinktheory.floquet import model_hill
 from sinktheory.model import RunSettings, Sink, Well
 from sinktheory.simulate import simulate
-from sinktheory.sweep import Grid, SweepPointError, parse_param, point_seed, run_sweep
+from sinktheory.sweep import (
+    Grid,
+    SweepPointError,
+    bifurcation_diagram,
+    parse_param,
+    point_seed,
+    run_sweep,
+)
+from sinktheory.sweep.runner import _SweepBar
 
 # small, fast bifurcation points (~0.05 s each)
 BIF = {"alpha": 0.5, "beta": [-0.3, -0.1, 0.1, 0.3], "n": 4, "transient": 2, "count": 3}
@@ -134,6 +143,33 @@ def test_bifurcation_points_equal_direct_sections():
     assert bool(ds.done.all())
 
 
+def test_bifurcation_diagram_view_equals_the_serial_diagram():
+    params = {k: v for k, v in BIF.items() if k != "beta"}
+    serial = bifurcation(BIF["beta"], **params)
+    view = bifurcation_diagram(run_sweep("bifurcation", BIF, workers=2, progress=False))
+    assert np.array_equal(view.section, serial.section)
+    assert np.array_equal(view.beta, serial.beta)
+    fields = ("quantity", "alpha", "n", "gamma", "shape", "mass", "energy", "transient", "count")
+    assert [getattr(view, f) for f in fields] == [getattr(serial, f) for f in fields]
+    with pytest.raises(ParameterError, match="a bifurcation sweep over beta alone"):
+        bifurcation_diagram(run_sweep("floquet", {"alpha": 0.5, "beta": [0.1, 0.2], "n": 4}))
+
+
+def test_progress_bar_counts_points_rate_and_time_left():
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    bar = _SweepBar(4, enabled=True, stream=Terminal(), delay=0.0, label="sweep ")
+    bar.update(1)
+    bar.close()
+    text = bar.stream.getvalue()
+    assert "sweep 1/4 points" in text and "points/s" in text and "s left" in text
+    quiet = _SweepBar(4, enabled=False, stream=Terminal(), delay=0.0)
+    quiet.update(4)
+    assert quiet.stream.getvalue() == ""
+
+
 def test_floquet_points_equal_single_beta_charts_over_two_dims():
     ds = run_sweep(
         "floquet",
@@ -183,34 +219,40 @@ def test_numerical_failure_names_the_point_and_keeps_finished_ones(tmp_path):
 
 
 # --------------------------------------------------------------------------- engines
-def test_local_processes_and_dask_cluster_match_bitwise(tmp_path):
-    distributed = pytest.importorskip("distributed")
+def test_local_processes_and_dask_cluster_match_bitwise(tmp_path, capsys):
+    import dask
+    import distributed
+
     serial = run_sweep("bifurcation", BIF, workers=1, progress=False)
     pool = run_sweep("bifurcation", BIF, workers=2, progress=False)
+    ens = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 2, "periods": 3, "replica": [0, 1, 2]}
+    ens_local = run_sweep("ensemble", ens, seed=4, workers=1, progress=False)
     with distributed.LocalCluster(
         n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
     ) as cluster:
         address = cluster.scheduler_address
         on_cluster = run_sweep("bifurcation", BIF, scheduler=address, progress=False)
-        stored = run_sweep(
-            "bifurcation", BIF, store=tmp_path / "c.zarr", scheduler=address, progress=False
-        )
-        ens = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 2, "periods": 3, "replica": [0, 1, 2]}
         ens_cluster = run_sweep("ensemble", ens, seed=4, scheduler=address, progress=False)
-    ens_local = run_sweep("ensemble", ens, seed=4, workers=1, progress=False)
-    for other in (pool, on_cluster, stored):
+        # the address from dask's configuration (what DASK_SCHEDULER_ADDRESS sets)
+        with dask.config.set({"scheduler-address": address}):
+            stored = run_sweep("bifurcation", BIF, store=tmp_path / "c.zarr", progress=False)
+        # the command line with --scheduler
+        line = "bifurcation --param alpha=0.5 --param beta=-0.3,-0.1,0.1,0.3 --param n=4 "
+        line += f"--param transient=2 --param count=3 --scheduler {address} --json --quiet"
+        assert main(["sweep", *line.split(), "--out", str(tmp_path / "cli.zarr")]) == 0
+        assert json.loads(capsys.readouterr().out)["where"].startswith("Dask cluster")
+    by_cli = xr.open_zarr(tmp_path / "cli.zarr")
+    for other in (pool, on_cluster, stored, by_cli):
         assert np.array_equal(serial.section.values, other.section.values)
     assert np.array_equal(ens_cluster.mean_energy.values, ens_local.mean_energy.values)
 
 
-def test_dask_address_from_the_environment_is_used(monkeypatch):
-    # DASK_SCHEDULER_ADDRESS is read through dask's configuration; an address nobody
-    # listens on must be reported as a ParameterError naming the scheduler
+def test_unreachable_scheduler_is_a_parameter_error():
     import dask
 
-    with dask.config.set({"scheduler-address": "tcp://127.0.0.1:1"}):
+    with dask.config.set({"distributed.comm.timeouts.connect": "0.5s"}):
         with pytest.raises(ParameterError, match="scheduler = 'tcp://127.0.0.1:1'"):
-            run_sweep("bifurcation", BIF, progress=False)
+            run_sweep("bifurcation", BIF, scheduler="tcp://127.0.0.1:1", progress=False)
 
 
 # --------------------------------------------------------------------------- store

@@ -13,8 +13,8 @@ from __future__ import annotations
 import argparse
 
 from ..errors import ParameterError
-from ..sweep import KINDS, Sweep, execute, parse_param
-from ..sweep.grid import Value
+from ..sweep.grid import Value, parse_param
+from ..sweep.kinds import KINDS
 from ._common import Output, add_json, number
 
 NAME = "sweep"
@@ -60,6 +60,9 @@ def params_of(specs: list[str]) -> dict[str, list[Value]]:
 
 
 def run(args: argparse.Namespace) -> Output:
+    from ..sweep.plan import Sweep  # imports xarray, zarr and dask: only when sweeping
+    from ..sweep.runner import execute
+
     sweep = Sweep.make(args.kind, params_of(args.param), args.seed)
     done = execute(
         sweep,

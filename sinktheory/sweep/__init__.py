@@ -10,7 +10,9 @@ sweeps over beta, n, k, runs and seeds:
 * :mod:`~sinktheory.sweep.plan` -- a checked sweep and the layout of its results;
 * :mod:`~sinktheory.sweep.store` -- the Zarr store, written point by point, resumable;
 * :mod:`~sinktheory.sweep.runner` -- :func:`run_sweep`: in this process, on local
-  processes, or on a Dask cluster.
+  processes, or on a Dask cluster;
+* :mod:`~sinktheory.sweep.views` -- results back as the analyses' types
+  (:func:`~sinktheory.sweep.views.bifurcation_diagram`).
 
 The same sweep and seed give bitwise the same numbers however and wherever they run.
 
@@ -18,6 +20,7 @@ Examples
 --------
 In memory, here in this process (``workers=1``; by default all cores are used):
 
+>>> from sinktheory.sweep import run_sweep
 >>> ds = run_sweep("bifurcation", {"alpha": 0.5, "beta": [0.1, 0.3], "n": 4,
 ...                                "transient": 2, "count": 3}, workers=1, progress=False)
 >>> dict(ds.section.sizes), ds.attrs["count"]
@@ -42,11 +45,29 @@ On a Dask cluster: ``run_sweep(..., scheduler="tcp://host:8786")`` (or set
     # killed? the same command with --resume computes only the missing points
 """
 
+from importlib import import_module
+
 from .grid import Grid, parse_param, point_seed
 from .kinds import KINDS, get_kind
-from .plan import Sweep
-from .runner import SweepPointError, SweepRun, execute, run_sweep
-from .store import SweepStore
+
+#: Loaded on first use, so that importing the command line does not import xarray, zarr
+#: and dask.
+_LAZY = {
+    "Sweep": "plan",
+    "SweepPointError": "runner",
+    "SweepRun": "runner",
+    "execute": "runner",
+    "run_sweep": "runner",
+    "SweepStore": "store",
+    "bifurcation_diagram": "views",
+}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        return getattr(import_module(f".{_LAZY[name]}", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 __all__ = [
     "KINDS",
@@ -55,6 +76,7 @@ __all__ = [
     "SweepPointError",
     "SweepRun",
     "SweepStore",
+    "bifurcation_diagram",
     "execute",
     "get_kind",
     "parse_param",

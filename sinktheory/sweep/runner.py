@@ -31,6 +31,7 @@ from __future__ import annotations
 import math
 import multiprocessing
 import os
+import threading
 import time
 from collections.abc import Iterator, Mapping
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -237,7 +238,10 @@ class _engine:
             if workers <= 1:
                 return "this process", _run_here
             pool = ProcessPoolExecutor(
-                workers, mp_context=_context(), initializer=_one_thread_per_process
+                workers,
+                mp_context=_context(),
+                initializer=_start_worker,
+                initargs=(os.getpid(),),
             )
             self._close = lambda: pool.shutdown(wait=True, cancel_futures=True)
             return f"{workers} local processes", lambda kind, tasks: _run_pool(pool, kind, tasks)
@@ -250,7 +254,7 @@ class _engine:
             client = scheduler
         elif isinstance(scheduler, str):
             try:
-                client = Client(scheduler, timeout=30)
+                client = Client(scheduler)  # waits distributed.comm.timeouts.connect
             except (OSError, TimeoutError, ValueError) as e:
                 raise ParameterError(
                     "scheduler",
@@ -316,12 +320,27 @@ def _context():
     return context
 
 
-def _one_thread_per_process() -> None:
-    """One numba thread per worker process: the processes already use every core (a
-    run's arithmetic does not depend on the thread count)."""
+def _start_worker(driver: int) -> None:
+    """Set up a local worker process.
+
+    One numba thread per process: the processes already use every core (a run's
+    arithmetic does not depend on the thread count).  A watchdog thread ends the worker
+    when the driver is gone (killed with kill -9, a pool's workers would otherwise wait
+    for work forever).
+    """
     import numba
 
     numba.set_num_threads(1)
+    threading.Thread(target=_watch, args=(driver,), daemon=True).start()
+
+
+def _watch(driver: int) -> None:
+    while True:
+        time.sleep(0.5)
+        try:
+            os.kill(driver, 0)
+        except ProcessLookupError:
+            os._exit(1)
 
 
 class _SweepBar(ProgressBar):
