@@ -287,6 +287,18 @@ def test_existing_store_needs_resume_and_the_same_sweep(tmp_path):
             run_sweep(kind, params, seed=seed, store=store, resume=True, progress=False)
 
 
+def test_a_store_being_written_is_refused(tmp_path):
+    from sinktheory.sweep import Sweep, SweepStore
+
+    store = tmp_path / "busy.zarr"
+    writer = SweepStore.create(store, Sweep.make("bifurcation", BIF))  # holds the lock
+    with pytest.raises(ParameterError, match="no other sweep is writing to .*locked"):
+        run_sweep("bifurcation", BIF, store=store, resume=True, workers=1, progress=False)
+    writer.close()
+    ds = run_sweep("bifurcation", BIF, store=store, resume=True, workers=1, progress=False)
+    assert bool(ds.done.all())
+
+
 def test_foreign_and_damaged_stores_are_refused(tmp_path):
     plain = tmp_path / "plain"
     plain.mkdir()

@@ -173,6 +173,8 @@ def execute(
                 bar.update(len(task))
     finally:
         bar.close()
+        if saved is not None:
+            saved.close()
     if saved is None:
         dataset = sweep.dataset(results, done)
     else:

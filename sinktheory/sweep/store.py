@@ -42,6 +42,7 @@ that does not exist yet (resume to continue the sweep stored there)
 
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import json
 import math
@@ -59,6 +60,8 @@ import zarr
 from ..errors import ParameterError
 from .plan import MARK, Sweep
 
+#: File in the store locked by the process writing to it.
+LOCK = ".sweep.lock"
 #: Target number of values in one chunk of a result array.
 CHUNK_VALUES = 4096
 
@@ -70,6 +73,7 @@ class SweepStore:
         self.path = path
         self.sweep = sweep
         self.group = group
+        self._lock = _lock(path)
         self._arrays = {name: group[name] for name in (*sweep.kind.results, "done")}
 
     # --- creating and opening -----------------------------------------------------------
@@ -133,6 +137,8 @@ class SweepStore:
                 if array.shape != expected:
                     raise ValueError(f"{name} has shape {array.shape}, expected {expected}")
             store.done()
+        except ParameterError:  # locked by another process
+            raise
         except Exception as e:  # noqa: BLE001 - a missing or unreadable array is damage
             raise ParameterError(
                 "store", str(path), "an intact sweep store", why=f"damaged: {e}"
@@ -151,6 +157,27 @@ class SweepStore:
         for name, value in results.items():
             self._arrays[name][region] = value
         self._arrays["done"][region] = True
+
+    def close(self) -> None:
+        """Release the store's lock (the results stay readable with xarray)."""
+        self._lock.close()
+
+
+def _lock(path: Path):
+    """Hold an exclusive lock on ``path/LOCK`` while the store is open for writing.
+
+    Two drivers writing one store could overwrite each other's chunks; the second is
+    refused.  The operating system drops the lock when its process ends, kill -9 included.
+    """
+    handle = open(path / LOCK, "a")  # noqa: SIM115 - held open as long as the store
+    try:
+        fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        handle.close()
+        raise ParameterError(
+            "store", str(path), "a store no other sweep is writing to", why="it is locked"
+        ) from None
+    return handle
 
 
 def _checked_path(path: str | Path) -> Path:
@@ -182,6 +209,19 @@ def _empty_results(sweep: Sweep) -> dict[str, da.Array]:
     return out
 
 
+def _swept(dims: list) -> str:
+    """A short description of swept values: ``beta: 161 values in [-0.7, 0.45]``."""
+    if not dims:
+        return "nothing"
+    parts = []
+    for name, values in dims:
+        if len(values) <= 4:
+            parts.append(f"{name}: {values}")
+        else:
+            parts.append(f"{name}: {len(values)} values from {values[0]} to {values[-1]}")
+    return "; ".join(parts)
+
+
 def _difference(stored: dict, given: dict) -> str:
     """Say how the stored sweep differs from the one asked for."""
     parts = []
@@ -189,7 +229,8 @@ def _difference(stored: dict, given: dict) -> str:
         if stored.get(key) != given.get(key):
             parts.append(f"{key} {stored.get(key)!r} there, {given.get(key)!r} here")
     if stored.get("dims") != given.get("dims"):
-        parts.append(f"swept {stored.get('dims')} there, {given.get('dims')} here")
+        there, here = _swept(stored.get("dims", [])), _swept(given.get("dims", []))
+        parts.append(f"swept {there} there, {here} here")
     a, b = stored.get("fixed", {}), given.get("fixed", {})
     for key in sorted(set(a) | set(b)):
         if a.get(key) != b.get(key):
