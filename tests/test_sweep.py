@@ -247,12 +247,14 @@ def test_local_processes_and_dask_cluster_match_bitwise(tmp_path, capsys):
     assert np.array_equal(ens_cluster.mean_energy.values, ens_local.mean_energy.values)
 
 
-def test_unreachable_scheduler_is_a_parameter_error():
+def test_unreachable_scheduler_is_a_parameter_error_and_writes_nothing(tmp_path):
     import dask
 
+    store = tmp_path / "never.zarr"
     with dask.config.set({"distributed.comm.timeouts.connect": "0.5s"}):
         with pytest.raises(ParameterError, match="scheduler = 'tcp://127.0.0.1:1'"):
-            run_sweep("bifurcation", BIF, scheduler="tcp://127.0.0.1:1", progress=False)
+            run_sweep("bifurcation", BIF, store=store, scheduler="tcp://127.0.0.1:1")
+    assert list(tmp_path.iterdir()) == []
 
 
 # --------------------------------------------------------------------------- store

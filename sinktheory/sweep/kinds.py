@@ -118,7 +118,8 @@ class Kind:
     """A kind of sweep: parameters, results, checks and the point function.
 
     ``extra_coords(point)`` gives the coordinates of the result dimensions beyond the
-    swept ones (they depend on fixed parameters only).
+    swept ones (they depend on fixed parameters only).  Grouping points into tasks
+    (``batch``) never changes a result: each point is computed on its own.
     """
 
     name: str
@@ -127,6 +128,10 @@ class Kind:
     check: Callable[[dict], None]
     compute: Callable[[dict, int], dict[str, Any]]
     extra_coords: Callable[[dict], dict[str, np.ndarray]] = field(default=lambda p: {})
+    #: Points per task at most (cheap points are grouped to save scheduling overhead).
+    batch: int = 1
+    #: Rough seconds per point, to decide whether local processes are worth starting.
+    cost: float = 1.0
 
     def complete(self, given: Mapping[str, Any]) -> dict[str, Any]:
         """Check names, add defaults, coerce types (values may be lists of values)."""
@@ -262,6 +267,8 @@ KINDS = {
         FLOQUET_RESULTS,
         _floquet_check,
         _floquet,
+        batch=64,
+        cost=1e-4,  # measured 6e-5 to 7e-5 s for n = 2 to 1000
     ),
     "bifurcation": Kind(
         "bifurcation",

@@ -5,8 +5,11 @@ Where the points run:
 * ``scheduler=None``: the Dask scheduler named by the Dask configuration
   (``DASK_SCHEDULER_ADDRESS`` or the ``scheduler-address`` key) if there is one, else
   local processes;
-* ``scheduler="processes"``: local processes (``workers`` of them, default all cores;
-  ``workers=1`` or a single point runs in this process, with no start-up cost);
+* ``scheduler="processes"``: local processes (``workers`` of them, default all cores).
+  ``workers=1``, a single task, or (with ``workers`` not given) less estimated work
+  than :data:`POOL_THRESHOLD` seconds (``kind.cost`` per point: e.g. a floquet chart
+  under 20000 points) runs in this process, with no start-up cost (about 1-3 s for the
+  processes to start and load the compiled kernels);
 * ``scheduler="tcp://host:port"`` (any Dask address) or a ``distributed.Client``: that
   Dask cluster.
 
@@ -45,13 +48,12 @@ import xarray as xr
 from .. import validation as v
 from ..errors import NumericalError, ParameterError
 from ..progress import ProgressBar
-from .kinds import KINDS
+from .kinds import KINDS, Kind
 from .plan import Sweep
 from .store import SweepStore
 
-#: Largest number of points in one task, per kind: cheap points are grouped to save
-#: scheduling overhead (results do not depend on the grouping).
-BATCH = {"floquet": 64, "bifurcation": 1, "ensemble": 1}
+#: Below this many seconds of estimated work, local processes are not worth starting.
+POOL_THRESHOLD = 2.0
 
 
 class SweepPointError(NumericalError):
@@ -138,26 +140,26 @@ def execute(
     """Run a checked :class:`~sinktheory.sweep.plan.Sweep` (see :func:`run_sweep`)."""
     start = time.perf_counter()
     workers = None if workers is None else v.positive_int("workers", workers)
-    if store is None:
-        saved, done = None, np.zeros(sweep.grid.shape, dtype=bool)
-        results = {
-            name: np.full(sweep.shape(name), False if spec.dtype == "bool" else np.nan)
-            for name, spec in sweep.kind.results.items()
-        }
-    else:
-        path = Path(store)
-        if resume and path.exists():
-            saved = SweepStore.open(path, sweep)
+    # reach the scheduler first: a bad address must not leave a new store behind
+    with _Engine(scheduler, workers) as engine:
+        if store is None:
+            saved, done = None, np.zeros(sweep.grid.shape, dtype=bool)
+            results = {
+                name: np.full(sweep.shape(name), False if spec.dtype == "bool" else np.nan)
+                for name, spec in sweep.kind.results.items()
+            }
         else:
-            saved = SweepStore.create(path, sweep)
-        done = saved.done()
-    tasks = _tasks(sweep, done)
-    pending = sum(len(t) for t in tasks)
-    bar = _SweepBar(pending, enabled=progress, label="sweep ")
-    where = "this process"
-    try:
-        with _engine(scheduler, workers, len(tasks)) as (where, run):
-            for task, outputs in run(sweep.kind.name, tasks):
+            path = Path(store)
+            if resume and path.exists():
+                saved = SweepStore.open(path, sweep)
+            else:
+                saved = SweepStore.create(path, sweep)
+            done = saved.done()
+        tasks = _tasks(sweep, done)
+        pending = sum(len(t) for t in tasks)
+        bar = _SweepBar(pending, enabled=progress, label="sweep ")
+        try:
+            for task, outputs in engine.run(sweep.kind, tasks):
                 region = _region(sweep, task)
                 stacked = {
                     name: np.stack([o[name] for o in outputs]) for name in sweep.kind.results
@@ -171,10 +173,10 @@ def execute(
                 else:
                     saved.write(region, stacked)
                 bar.update(len(task))
-    finally:
-        bar.close()
-        if saved is not None:
-            saved.close()
+        finally:
+            bar.close()
+            if saved is not None:
+                saved.close()
     if saved is None:
         dataset = sweep.dataset(results, done)
     else:
@@ -185,14 +187,15 @@ def execute(
         computed=pending,
         skipped=sweep.grid.size - pending,
         seconds=time.perf_counter() - start,
-        where=where,
+        where=engine.where,
     )
 
 
 # --------------------------------------------------------------------------- tasks
 def _tasks(sweep: Sweep, done: np.ndarray) -> list[list[tuple[int, dict, int]]]:
-    """Points not done, in runs of up to BATCH neighbours along the last swept dimension."""
-    batch = BATCH[sweep.kind.name]
+    """Points not done, in runs of up to ``kind.batch`` neighbours along the last swept
+    dimension."""
+    batch = sweep.kind.batch
     last = sweep.grid.shape[-1] if sweep.grid.shape else 1
     flat = done.reshape(-1)
     tasks, current = [], []
@@ -218,59 +221,59 @@ def _region(sweep: Sweep, task: list[tuple[int, dict, int]]) -> tuple:
 
 
 # --------------------------------------------------------------------------- engines
-class _engine:
-    """Context manager giving (description, run) where ``run(kind, tasks)`` yields
-    (task, outputs) as tasks finish."""
+class _Engine:
+    """Where tasks run.  ``run(kind, tasks)`` yields (task, outputs) as tasks finish;
+    ``where`` says where they ran.  A Dask scheduler is reached on entering."""
 
-    def __init__(self, scheduler: Any, workers: int | None, ntasks: int) -> None:
-        self.scheduler = scheduler
-        self.workers = workers
-        self.ntasks = ntasks
-        self._close = None
-
-    def __enter__(self):
-        scheduler = self.scheduler
+    def __init__(self, scheduler: Any, workers: int | None) -> None:
         if scheduler is None:
             import dask.config
 
             scheduler = dask.config.get("scheduler-address", None) or "processes"
-        if isinstance(scheduler, str) and scheduler == "processes":
-            workers = self.workers or os.cpu_count() or 1
-            workers = min(workers, self.ntasks)
-            if workers <= 1:
-                return "this process", _run_here
-            pool = ProcessPoolExecutor(
-                workers,
-                mp_context=_context(),
-                initializer=_start_worker,
-                initargs=(os.getpid(),),
-            )
-            self._close = lambda: pool.shutdown(wait=True, cancel_futures=True)
-            return f"{workers} local processes", lambda kind, tasks: _run_pool(pool, kind, tasks)
-        return self._dask(scheduler)
+        self.scheduler = scheduler
+        self.workers = workers
+        self.where = "this process"
+        self._close = None
+        self._client = None
 
-    def _dask(self, scheduler: Any):
+    def __enter__(self) -> _Engine:
+        if isinstance(self.scheduler, str) and self.scheduler == "processes":
+            return self
         from distributed import Client
 
-        if isinstance(scheduler, Client):
-            client = scheduler
-        elif isinstance(scheduler, str):
+        if isinstance(self.scheduler, Client):
+            self._client = self.scheduler
+        elif isinstance(self.scheduler, str):
             try:
-                client = Client(scheduler)  # waits distributed.comm.timeouts.connect
+                self._client = Client(self.scheduler)  # waits distributed.comm.timeouts.connect
             except (OSError, TimeoutError, ValueError) as e:
                 raise ParameterError(
                     "scheduler",
-                    scheduler,
+                    self.scheduler,
                     "the address of a running Dask scheduler",
                     why=str(e),
                 ) from None
-            self._close = client.close
+            self._close = self._client.close
         else:
             raise ParameterError(
-                "scheduler", scheduler, "None, 'processes', a Dask address or a Client"
+                "scheduler", self.scheduler, "None, 'processes', a Dask address or a Client"
             )
-        where = f"Dask cluster at {client.scheduler.address}"
-        return where, lambda kind, tasks: _run_dask(client, kind, tasks)
+        return self
+
+    def run(self, kind: Kind, tasks: list) -> Iterator[tuple[list, list]]:
+        if self._client is not None:
+            self.where = f"Dask cluster at {self._client.scheduler.address}"
+            return _run_dask(self._client, kind.name, tasks)
+        workers = min(self.workers or os.cpu_count() or 1, len(tasks))
+        cheap = self.workers is None and kind.cost * sum(map(len, tasks)) < POOL_THRESHOLD
+        if workers <= 1 or cheap:
+            return _run_here(kind.name, tasks)
+        pool = ProcessPoolExecutor(
+            workers, mp_context=_context(), initializer=_start_worker, initargs=(os.getpid(),)
+        )
+        self._close = lambda: pool.shutdown(wait=True, cancel_futures=True)
+        self.where = f"{workers} local processes"
+        return _run_pool(pool, kind.name, tasks)
 
     def __exit__(self, *exc) -> None:
         if self._close is not None:
