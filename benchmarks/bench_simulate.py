@@ -275,7 +275,7 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     full = RunSettings(runs=25, periods=1500, seed=0)
     sweep = RunSettings(runs=5, periods=150, seed=0)
-    scipy_horizon = 2
+    scipy_horizon = 20  # long enough to include some of scipy's secular energy drift
     if args.quick:
         full = RunSettings(runs=4, periods=100, seed=0)
         sweep = RunSettings(runs=2, periods=20, seed=0)
