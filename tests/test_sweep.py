@@ -331,6 +331,37 @@ def test_foreign_and_damaged_stores_are_refused(tmp_path):
             run_sweep("bifurcation", BIF, store=path, resume=True, progress=False)
 
 
+def test_unflagged_points_are_recomputed_whatever_their_data(tmp_path, capsys):
+    # The done flag is the commit point: a point whose data was written but whose flag
+    # was not (a kill between the two) is computed again, overwriting what is there.
+    store = tmp_path / "chart.zarr"
+    params = {"alpha": 0.5, "beta": np.linspace(-0.5, 0.4, 150), "n": [2, 3, 4]}
+    reference = run_sweep("floquet", params, workers=1, progress=False)
+    run_sweep("floquet", params, store=store, workers=1, progress=False)
+    group = zarr.open_group(store, mode="r+")
+    lost = np.zeros((150, 3), dtype=bool)
+    lost[[0, 7, 64, 65, 149], [0, 2, 1, 1, 2]] = True
+    done, phi = group["done"][...], group["phi_half"][...]
+    done[lost], phi[lost] = False, 12345.0
+    group["done"][...], group["phi_half"][...] = done, phi
+    assert main(["sweep", "floquet", *_params_args(params), "--out", str(store), "--resume",
+                 "--json", "--quiet"]) == 0  # fmt: skip
+    summary = json.loads(capsys.readouterr().out)
+    assert (summary["computed"], summary["skipped"]) == (5, 450 - 5)
+    resumed = xr.open_zarr(store)
+    assert bool(resumed.done.all())
+    for name in reference.data_vars:
+        assert np.array_equal(resumed[name].values, reference[name].values), name
+
+
+def _params_args(params: dict) -> list[str]:
+    args = []
+    for name, value in params.items():
+        values = np.atleast_1d(value)
+        args += ["--param", f"{name}=" + ",".join(repr(x.item()) for x in values)]
+    return args
+
+
 # --------------------------------------------------------------------------- kill -9
 KILL_ARGS = (
     "bifurcation --param alpha=0.5 --param beta=-0.3:0.4:8 --param n=4 "

@@ -46,6 +46,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     add_json(parser)
+    parser.epilog = "parameters of each KIND: " + "; ".join(
+        f"{name}: {', '.join(kind.params)}" for name, kind in KINDS.items()
+    )
 
 
 def params_of(specs: list[str]) -> dict[str, list[Value]]:

@@ -13,11 +13,11 @@ Where the points run:
 * ``scheduler="tcp://host:port"`` (any Dask address) or a ``distributed.Client``: that
   Dask cluster.
 
-Points are grouped into tasks of up to ``kind.batch`` neighbours along the last swept
-dimension; each point is still computed on its own from (parameters, point seed), so the
-numbers are bitwise the same whatever the scheduler, the number of workers or the order in
-which tasks finish.  The driver (this process) alone writes the store, task by task, as
-results come in.
+Points are grouped into tasks of up to ``kind.batch`` consecutive points (C order); each
+point is still computed on its own from (parameters, point seed), so the numbers are
+bitwise the same whatever the scheduler, the number of workers or the order in which
+tasks finish.  The driver (this process) alone writes the store, task by task, as results
+come in.
 
 Examples
 --------
@@ -50,7 +50,7 @@ from ..errors import NumericalError, ParameterError
 from ..progress import ProgressBar
 from .kinds import KINDS, Kind
 from .plan import Sweep
-from .store import SweepStore
+from .store import SweepStore, coordinates
 
 #: Below this many seconds of estimated work, local processes are not worth starting.
 POOL_THRESHOLD = 2.0
@@ -160,18 +160,20 @@ def execute(
         bar = _SweepBar(pending, enabled=progress, label="sweep ")
         try:
             for task, outputs in engine.run(sweep.kind, tasks):
-                region = _region(sweep, task)
+                indices = np.array([index for index, _, _ in task])
                 stacked = {
                     name: np.stack([o[name] for o in outputs]) for name in sweep.kind.results
                 }
-                if not sweep.grid.shape:  # a single point: no swept dimension
-                    stacked = {name: value[0] for name, value in stacked.items()}
-                if saved is None:
+                if saved is not None:
+                    saved.write(indices, stacked)
+                elif not sweep.grid.shape:  # a single point: no swept dimension
                     for name, value in stacked.items():
-                        results[name][region] = value
-                    done[region] = True
+                        results[name][()] = value[0]
+                    done[()] = True
                 else:
-                    saved.write(region, stacked)
+                    for name, value in stacked.items():
+                        results[name][coordinates(sweep, indices, value.shape[1:])] = value
+                    done[coordinates(sweep, indices, ())] = True
                 bar.update(len(task))
         finally:
             bar.close()
@@ -193,31 +195,17 @@ def execute(
 
 # --------------------------------------------------------------------------- tasks
 def _tasks(sweep: Sweep, done: np.ndarray) -> list[list[tuple[int, dict, int]]]:
-    """Points not done, in runs of up to ``kind.batch`` neighbours along the last swept
-    dimension."""
+    """Points not done, in runs of up to ``kind.batch`` consecutive points (C order)."""
     batch = sweep.kind.batch
-    last = sweep.grid.shape[-1] if sweep.grid.shape else 1
-    flat = done.reshape(-1)
     tasks, current = [], []
-    for index in range(sweep.grid.size):
-        if flat[index]:
-            continue
-        if current and (index != current[-1][0] + 1 or index % last == 0 or len(current) == batch):
+    for index in np.flatnonzero(~done.reshape(-1)).tolist():
+        if current and (index != current[-1][0] + 1 or len(current) == batch):
             tasks.append(current)
             current = []
         current.append(sweep.task(index))
     if current:
         tasks.append(current)
     return tasks
-
-
-def _region(sweep: Sweep, task: list[tuple[int, dict, int]]) -> tuple:
-    """Index of a task's points: a slice along the last swept dimension."""
-    if not sweep.grid.shape:
-        return ()
-    first = np.unravel_index(task[0][0], sweep.grid.shape)
-    stop = first[-1] + len(task)
-    return tuple(int(i) for i in first[:-1]) + (slice(int(first[-1]), int(stop)),)
 
 
 # --------------------------------------------------------------------------- engines

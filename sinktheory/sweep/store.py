@@ -91,6 +91,7 @@ class SweepStore:
         try:
             template = sweep.dataset(_empty_results(sweep), np.zeros(sweep.grid.shape, bool))
             encoding = {name: {"chunks": _chunks(sweep, name)} for name in sweep.kind.results}
+            encoding["done"] = {"chunks": _flag_chunks(sweep)}
             with warnings.catch_warnings():  # consolidated metadata: not (yet) in the v3 spec
                 warnings.filterwarnings("ignore", message="Consolidated metadata")
                 template.to_zarr(tmp, mode="w-", compute=False, encoding=encoding)
@@ -152,15 +153,43 @@ class SweepStore:
         """The ``done`` flags over the grid (bool array)."""
         return np.asarray(self._arrays["done"][...], dtype=bool)
 
-    def write(self, region: tuple, results: dict[str, Any]) -> None:
-        """Store the results of the points in ``region``, then flag them done."""
+    def write(self, indices: np.ndarray, results: dict[str, Any]) -> None:
+        """Store the results of the points ``indices`` (flat, C order), then flag them done.
+
+        ``results[name]`` has shape (len(indices), *result dimensions).
+        """
+        if not self.sweep.grid.shape:  # a single point: no swept dimension
+            for name, value in results.items():
+                self._arrays[name][...] = value[0]
+            self._arrays["done"][...] = True
+            return
         for name, value in results.items():
-            self._arrays[name][region] = value
-        self._arrays["done"][region] = True
+            self._arrays[name].vindex[coordinates(self.sweep, indices, value.shape[1:])] = value
+        self._arrays["done"].vindex[coordinates(self.sweep, indices, ())] = True
 
     def close(self) -> None:
         """Release the store's lock (the results stay readable with xarray)."""
         self._lock.close()
+
+
+def coordinates(sweep: Sweep, indices: np.ndarray, extra: tuple[int, ...]) -> tuple:
+    """Coordinate selection of points ``indices`` (flat) over all their result values:
+    one integer array per dimension, each of shape (len(indices), *extra).  Works for
+    numpy fancy indexing and zarr's ``vindex`` alike.
+
+    Examples
+    --------
+    >>> from sinktheory.sweep.plan import Sweep
+    >>> s = Sweep.make("floquet", {"alpha": 0.5, "beta": [0.1, 0.2], "n": [2, 4, 6]})
+    >>> [c.tolist() for c in coordinates(s, np.array([2, 3]), ())]
+    [[0, 1], [2, 0]]
+    """
+    m = len(indices)
+    lead = np.unravel_index(np.asarray(indices), sweep.grid.shape)
+    trailing = (1,) * len(extra)
+    out = [np.broadcast_to(i.reshape((m, *trailing)), (m, *extra)) for i in lead]
+    out += [np.broadcast_to(j, (m, *extra)) for j in np.indices(extra)]
+    return tuple(out)
 
 
 def _lock(path: Path):
@@ -188,16 +217,27 @@ def _checked_path(path: str | Path) -> Path:
 
 
 def _chunks(sweep: Sweep, name: str) -> tuple[int, ...]:
-    """One chunk per point along all swept dimensions but the last, where about
-    :data:`CHUNK_VALUES` values share a chunk; whole along the result dimensions."""
+    """Whole along the result dimensions; about :data:`CHUNK_VALUES` values per chunk,
+    filled from the last swept dimension backwards (neighbouring points share a chunk,
+    so writing a point rewrites at most some tens of kilobytes)."""
     shape = sweep.shape(name)
     ndim = len(sweep.grid.shape)
-    extra = shape[ndim:]
-    chunks = [1] * ndim + list(extra)
-    if ndim:
-        per_point = max(1, math.prod(extra))
-        chunks[ndim - 1] = max(1, min(shape[ndim - 1], CHUNK_VALUES // per_point))
-    return tuple(max(1, c) for c in chunks)
+    return _fill(shape[:ndim], math.prod(shape[ndim:])) + shape[ndim:]
+
+
+def _flag_chunks(sweep: Sweep) -> tuple[int, ...]:
+    """Chunks of ``done``: about :data:`CHUNK_VALUES` flags each."""
+    return _fill(sweep.grid.shape, 1)
+
+
+def _fill(shape: tuple[int, ...], per_point: int) -> tuple[int, ...]:
+    """Chunk sizes over ``shape`` holding about CHUNK_VALUES / per_point points."""
+    budget = max(1, CHUNK_VALUES // max(1, per_point))
+    chunks = []
+    for size in reversed(shape):
+        chunks.append(max(1, min(size, budget)))
+        budget = max(1, budget // chunks[-1])
+    return tuple(reversed(chunks))
 
 
 def _empty_results(sweep: Sweep) -> dict[str, da.Array]:
