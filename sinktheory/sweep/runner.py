@@ -50,7 +50,7 @@ from ..errors import NumericalError, ParameterError
 from ..progress import ProgressBar
 from .kinds import KINDS, Kind
 from .plan import Sweep
-from .store import SweepStore, coordinates
+from .store import MemoryStore, SweepStore
 
 #: Below this many seconds of estimated work, local processes are not worth starting.
 POOL_THRESHOLD = 2.0
@@ -143,49 +143,28 @@ def execute(
     # reach the scheduler first: a bad address must not leave a new store behind
     with _Engine(scheduler, workers) as engine:
         if store is None:
-            saved, done = None, np.zeros(sweep.grid.shape, dtype=bool)
-            results = {
-                name: np.full(sweep.shape(name), False if spec.dtype == "bool" else np.nan)
-                for name, spec in sweep.kind.results.items()
-            }
+            target = MemoryStore(sweep)
+        elif resume and Path(store).exists():
+            target = SweepStore.open(store, sweep)
         else:
-            path = Path(store)
-            if resume and path.exists():
-                saved = SweepStore.open(path, sweep)
-            else:
-                saved = SweepStore.create(path, sweep)
-            done = saved.done()
-        tasks = _tasks(sweep, done)
+            target = SweepStore.create(store, sweep)
+        tasks = _tasks(sweep, target.done())
         pending = sum(len(t) for t in tasks)
         bar = _SweepBar(pending, enabled=progress, label="sweep ")
         try:
             for task, outputs in engine.run(sweep.kind, tasks):
                 indices = np.array([index for index, _, _ in task])
-                stacked = {
-                    name: np.stack([o[name] for o in outputs]) for name in sweep.kind.results
-                }
-                if saved is not None:
-                    saved.write(indices, stacked)
-                elif not sweep.grid.shape:  # a single point: no swept dimension
-                    for name, value in stacked.items():
-                        results[name][()] = value[0]
-                    done[()] = True
-                else:
-                    for name, value in stacked.items():
-                        results[name][coordinates(sweep, indices, value.shape[1:])] = value
-                    done[coordinates(sweep, indices, ())] = True
+                target.write(
+                    indices,
+                    {name: np.stack([o[name] for o in outputs]) for name in sweep.kind.results},
+                )
                 bar.update(len(task))
         finally:
             bar.close()
-            if saved is not None:
-                saved.close()
-    if saved is None:
-        dataset = sweep.dataset(results, done)
-    else:
-        dataset = xr.open_zarr(saved.path)
+            target.close()
     return SweepRun(
-        dataset,
-        None if saved is None else saved.path,
+        target.dataset(),
+        target.path,
         computed=pending,
         skipped=sweep.grid.size - pending,
         seconds=time.perf_counter() - start,

@@ -55,6 +55,7 @@ from typing import Any
 
 import dask.array as da
 import numpy as np
+import xarray as xr
 import zarr
 
 from ..errors import ParameterError
@@ -158,18 +159,62 @@ class SweepStore:
 
         ``results[name]`` has shape (len(indices), *result dimensions).
         """
-        if not self.sweep.grid.shape:  # a single point: no swept dimension
-            for name, value in results.items():
-                self._arrays[name][...] = value[0]
-            self._arrays["done"][...] = True
-            return
         for name, value in results.items():
-            self._arrays[name].vindex[coordinates(self.sweep, indices, value.shape[1:])] = value
-        self._arrays["done"].vindex[coordinates(self.sweep, indices, ())] = True
+            _vset(self._arrays[name], *selection(self.sweep, indices, value))
+        _vset(self._arrays["done"], *selection(self.sweep, indices, np.ones(len(indices), bool)))
+
+    def dataset(self) -> xr.Dataset:
+        """The stored results, opened lazily with ``xarray.open_zarr``."""
+        return xr.open_zarr(self.path)
 
     def close(self) -> None:
         """Release the store's lock (the results stay readable with xarray)."""
         self._lock.close()
+
+
+class MemoryStore:
+    """The results of a sweep kept in memory; same interface as :class:`SweepStore`."""
+
+    path = None
+
+    def __init__(self, sweep: Sweep) -> None:
+        self.sweep = sweep
+        self.results = {
+            name: np.full(sweep.shape(name), False if spec.dtype == "bool" else np.nan)
+            for name, spec in sweep.kind.results.items()
+        }
+        self.flags = np.zeros(sweep.grid.shape, dtype=bool)
+
+    def done(self) -> np.ndarray:
+        return self.flags
+
+    def write(self, indices: np.ndarray, results: dict[str, Any]) -> None:
+        for name, value in results.items():
+            where, value = selection(self.sweep, indices, value)
+            self.results[name][where] = value
+        where, value = selection(self.sweep, indices, np.ones(len(indices), bool))
+        self.flags[where] = value
+
+    def dataset(self) -> xr.Dataset:
+        return self.sweep.dataset(self.results, self.flags)
+
+    def close(self) -> None:
+        """Nothing to release."""
+
+
+def selection(sweep: Sweep, indices: np.ndarray, value: np.ndarray) -> tuple[tuple, np.ndarray]:
+    """(where, value) to assign ``value`` (len(indices), *result dims) at points ``indices``:
+    a coordinate selection, or () and the one value for a grid with no swept dimension."""
+    if not sweep.grid.shape:
+        return (), value[0]
+    return coordinates(sweep, indices, value.shape[1:]), value
+
+
+def _vset(array: zarr.Array, where: tuple, value: np.ndarray) -> None:
+    if where:
+        array.vindex[where] = value
+    else:
+        array[...] = value
 
 
 def coordinates(sweep: Sweep, indices: np.ndarray, extra: tuple[int, ...]) -> tuple:
