@@ -319,6 +319,12 @@ def test_foreign_and_damaged_stores_are_refused(tmp_path):
     (damaged / "done" / "zarr.json").unlink()
     cases.append((damaged, "damaged"))
 
+    broken_data = tmp_path / "data.zarr"
+    run_sweep("bifurcation", BIF, store=broken_data, workers=1, progress=False)
+    chunks = [c for c in (broken_data / "section" / "c").rglob("*") if c.is_file()]
+    chunks[0].write_bytes(chunks[0].read_bytes()[:5])  # a finished point's data cut short
+    cases.append((broken_data, "damaged"))
+
     broken_chunk = tmp_path / "chunk.zarr"
     run_sweep("bifurcation", BIF, store=broken_chunk, workers=1, progress=False)
     for chunk in (broken_chunk / "done" / "c").rglob("*"):

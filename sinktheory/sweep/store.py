@@ -19,7 +19,12 @@ Why a killed sweep never corrupts the store or loses a finished point:
   its old values intact;
 * the ``done`` flag is the commit point: a point killed between its data and its flag is
   computed again on resume (it gives the same numbers), and leftover temporary files are
-  removed.
+  removed;
+* resuming reads every array once: a store whose chunks do not decode, whose arrays are
+  missing or misshapen, or whose fingerprint does not match its description is refused
+  as damaged rather than silently extended;
+* while a driver writes, it holds an exclusive lock (``flock``) on a file in the store, so
+  a second driver is refused; the system drops the lock when the process dies.
 
 This holds for a killed process (kill -9) on a local file system; it does not promise
 durability across a power cut (no fsync) or on object stores.
@@ -138,7 +143,7 @@ class SweepStore:
                 expected = sweep.grid.shape if name == "done" else sweep.shape(name)
                 if array.shape != expected:
                     raise ValueError(f"{name} has shape {array.shape}, expected {expected}")
-            store.done()
+                _read_all(array)  # every chunk decodes: no finished point is unreadable
         except ParameterError:  # locked by another process
             raise
         except Exception as e:  # noqa: BLE001 - a missing or unreadable array is damage
@@ -235,6 +240,16 @@ def coordinates(sweep: Sweep, indices: np.ndarray, extra: tuple[int, ...]) -> tu
     out = [np.broadcast_to(i.reshape((m, *trailing)), (m, *extra)) for i in lead]
     out += [np.broadcast_to(j, (m, *extra)) for j in np.indices(extra)]
     return tuple(out)
+
+
+def _read_all(array: zarr.Array) -> None:
+    """Read ``array`` band by band along its first axis (a codec error if a chunk is bad)."""
+    if not array.shape:
+        array[...]
+        return
+    step = array.chunks[0]
+    for start in range(0, array.shape[0], step):
+        array[start : start + step]
 
 
 def _lock(path: Path):
