@@ -228,7 +228,7 @@ def test_local_processes_and_dask_cluster_match_bitwise(tmp_path, capsys):
     ens = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 2, "periods": 3, "replica": [0, 1, 2]}
     ens_local = run_sweep("ensemble", ens, seed=4, workers=1, progress=False)
     with distributed.LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+        n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None
     ) as cluster:
         address = cluster.scheduler_address
         on_cluster = run_sweep("bifurcation", BIF, scheduler=address, progress=False)
