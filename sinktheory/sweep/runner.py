@@ -7,7 +7,7 @@ Where the points run:
   local processes;
 * ``scheduler="processes"``: local processes (``workers`` of them, default all cores).
   ``workers=1``, a single task, or (with ``workers`` not given) less estimated work
-  than :data:`POOL_THRESHOLD` seconds (``kind.cost`` per point: e.g. a floquet chart
+  than :data:`POOL_THRESHOLD` seconds (``kind.cost(point)``: e.g. a floquet chart
   under 20000 points) runs in this process, with no start-up cost (about 1-3 s for the
   processes to start and load the compiled kernels);
 * ``scheduler="tcp://host:port"`` (any Dask address) or a ``distributed.Client``: that
@@ -31,9 +31,11 @@ Examples
 
 from __future__ import annotations
 
+import contextlib
 import math
 import multiprocessing
 import os
+import sys
 import threading
 import time
 from collections.abc import Iterator, Mapping
@@ -232,7 +234,8 @@ class _Engine:
             self.where = f"Dask cluster at {self._client.scheduler.address}"
             return _run_dask(self._client, kind.name, tasks)
         workers = min(self.workers or os.cpu_count() or 1, len(tasks))
-        cheap = self.workers is None and kind.cost * sum(map(len, tasks)) < POOL_THRESHOLD
+        work = sum(kind.cost(params) for task in tasks for _, params, _ in task)
+        cheap = self.workers is None and work < POOL_THRESHOLD
         if workers <= 1 or cheap:
             return _run_here(kind.name, tasks)
         pool = ProcessPoolExecutor(
@@ -253,7 +256,8 @@ def _run_here(kind: str, tasks: list) -> Iterator[tuple[list, list]]:
 
 
 def _run_pool(pool: ProcessPoolExecutor, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
-    futures = {pool.submit(_checked, kind, task): task for task in tasks}
+    with _main_file_hidden():  # the workers are started by these submits
+        futures = {pool.submit(_checked, kind, task): task for task in tasks}
     remaining = set(futures)
     while remaining:
         finished, remaining = wait(remaining, return_when=FIRST_COMPLETED)
@@ -282,6 +286,24 @@ def _checked(kind: str, task: list) -> list[dict[str, Any]]:
         except NumericalError as e:
             raise SweepPointError(f"point {index} ({params}): {e}") from None
     return outputs
+
+
+@contextlib.contextmanager
+def _main_file_hidden() -> Iterator[None]:
+    """Hide ``__main__.__file__`` while workers start, so they do not run the caller's
+    script again (what multiprocessing does for spawn and forkserver; the tasks only need
+    :mod:`sinktheory`).  Scripts then need no ``if __name__ == "__main__"`` guard and
+    code read from stdin works."""
+    main = sys.modules["__main__"]
+    missing = object()
+    path = getattr(main, "__file__", missing)
+    if path is not missing:
+        del main.__file__
+    try:
+        yield
+    finally:
+        if path is not missing:
+            main.__file__ = path
 
 
 def _context():
