@@ -1,7 +1,8 @@
 """Figs. 3 and 11: bifurcation diagrams over beta with the Floquet-unstable intervals.
 
-Each panel needs single-particle sections (:mod:`sinktheory.bifurcation`) and the
-stability scan of the normal mode (:mod:`sinktheory.floquet`); nothing else.
+Each panel needs single-particle sections (:mod:`sinktheory.bifurcation`, computed in
+parallel through the sweep layer :mod:`sinktheory.sweep`) and the stability scan of the
+normal mode (:mod:`sinktheory.floquet`); nothing else.
 """
 
 from __future__ import annotations
@@ -9,9 +10,11 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from ..bifurcation import BifurcationDiagram, bifurcation, plot_bifurcation
+from ..bifurcation import BifurcationDiagram, plot_bifurcation
 from ..floquet import model_problem, scan
 from ..model import confining_betas
+from ..sweep import run_sweep
+from ..sweep.views import bifurcation_diagram
 from .base import FAILS, HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
 #: A section whose y spans more than this (10x the initial offset 0.01) is "irregular".
@@ -48,9 +51,15 @@ def _panel(alpha, n, shape, ranges, quick, ax):
     betas = np.concatenate(
         [np.linspace(a, b, max(2, round(f["points"] * (b - a) / total))) for a, b in ranges]
     )
-    diagram = bifurcation(
-        betas, alpha=alpha, n=n, shape=shape, transient=f["transient"], count=f["count"]
-    )
+    params = {
+        "alpha": alpha,
+        "beta": [float(b) for b in betas],
+        "n": n,
+        "shape": shape,
+        "transient": f["transient"],
+        "count": f["count"],
+    }
+    diagram = bifurcation_diagram(run_sweep("bifurcation", params, progress=False))
     lo, hi = ranges[0][0], ranges[-1][1]
     floq = scan(model_problem(alpha, n, shape=shape), lo, hi, 400)
     unstable = _unstable(floq.stable_intervals, lo, hi)
