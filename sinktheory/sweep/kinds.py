@@ -40,13 +40,11 @@ sweep: alpha, amplitude, beta, gamma, n, rtol, shape
 
 from __future__ import annotations
 
-import contextlib
 import numbers
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-import numba
 import numpy as np
 
 from .. import validation as v
@@ -221,32 +219,14 @@ def _bifurcation_check(p: dict) -> None:
 
 
 def _bifurcation(p: dict, seed: int) -> dict[str, Any]:
-    with _one_numba_thread():
-        s = section(
-            _sink(p),
-            transient=p["transient"],
-            count=p["count"],
-            quantity=p["quantity"],
-            energy=p["energy"],
-        )
+    s = section(
+        _sink(p),
+        transient=p["transient"],
+        count=p["count"],
+        quantity=p["quantity"],
+        energy=p["energy"],
+    )
     return {"section": s}
-
-
-@contextlib.contextmanager
-def _one_numba_thread() -> Iterator[None]:
-    """Run a single-run simulation on one numba thread (a setting of the calling thread).
-
-    The engine runs an ensemble's runs in parallel; with one run the other threads have
-    nothing to do and the hand-offs cost: a 24-point bifurcation sweep (n = 10, 80
-    periods) took 14.6 s on 2 threads against 1.6 s on one, on this 2-core machine.
-    A run's arithmetic does not depend on the thread count, so the numbers are the same.
-    """
-    before = numba.get_num_threads()
-    numba.set_num_threads(1)
-    try:
-        yield
-    finally:
-        numba.set_num_threads(before)
 
 
 # --------------------------------------------------------------------------- ensemble
