@@ -60,21 +60,35 @@ class ipow(sp.Function):  # noqa: N801 - printed as the kernel helper of that na
     """b**e with a symbolic integer e >= 0, kept whole through CSE."""
 
 
-def _integer_powers(expr: sp.Expr) -> sp.Expr:
+def _is_symbolic_int_pow(e) -> bool:
+    return e.is_Pow and e.exp.is_integer and not e.exp.is_number
+
+
+def _integer_powers(outputs: Sequence[sp.Expr]) -> list[sp.Expr]:
     """Wrap powers with symbolic integer exponents (s1**(2n), Dy**(-2n-1)) in ``ipow``.
 
-    CSE would otherwise pull 2n out into a temporary that no longer knows it is an integer.
+    CSE would otherwise pull 2n out into a temporary that no longer knows it is an
+    integer.  Powers of one base whose exponents differ by a whole number share one
+    ``ipow``: with s1**(2n-1) and s1**(2n) in the same kernel, the second becomes
+    s1 * ipow(s1, 2n - 1), so each base is raised to a runtime power only once.
     """
-
-    def is_symbolic_int_pow(e):
-        return e.is_Pow and e.exp.is_integer and not e.exp.is_number
+    lowest: dict[sp.Expr, sp.Expr] = {}
+    for expr in outputs:
+        for p in expr.atoms(sp.Pow):
+            if _is_symbolic_int_pow(p) and not p.exp.could_extract_minus_sign():
+                e0 = lowest.get(p.base)
+                if e0 is None or ((p.exp - e0).is_number and (p.exp - e0) < 0):
+                    lowest[p.base] = p.exp
 
     def wrap(e):
         if e.exp.could_extract_minus_sign():
             return 1 / ipow(e.base, -e.exp)
+        e0 = lowest.get(e.base)
+        if e0 is not None and (e.exp - e0).is_number:
+            return ipow(e.base, e0) * e.base ** (e.exp - e0)
         return ipow(e.base, e.exp)
 
-    return expr.replace(is_symbolic_int_pow, wrap)
+    return [expr.replace(_is_symbolic_int_pow, wrap) for expr in outputs]
 
 
 _kernel_printer = KernelPrinter({"fully_qualified_modules": True, "standard": "python3"})
@@ -86,7 +100,7 @@ def _body(
 ) -> list[str]:
     """Assignment lines (prelude, CSE temporaries) and the names holding the outputs."""
     lines = [f"{s.name} = {_kernel_printer.doprint(e)}" for s, e in prelude]
-    outputs = [_integer_powers(sp.sympify(e)) for e in outputs]
+    outputs = _integer_powers([sp.sympify(e) for e in outputs])
     reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols("t"), optimizations="basic")
     lines += [f"{s.name} = {_kernel_printer.doprint(e)}" for s, e in reps]
     return lines + [

@@ -25,12 +25,11 @@ def accelerations_flat(X, u, yy, alpha, beta, gamma, n, mu, au, ay):
         Dy = alpha + beta*((y*y) - 1)
         s1 = x/Dy
         s2 = y
-        t0 = (1.0/Dy)
-        t1 = 2*n
-        t2 = t1 - 1
-        t3 = gamma*t0*ipow(s1, t2)
-        t4 = (1.0/mu)
-        daX, au[j], ay[j] = t3, -t3*t4, -gamma*t4*(-2*beta*t0*y*ipow(s1, t1) + ipow(s2, t2))
+        t0 = 2*n - 1
+        t1 = ipow(s1, t0)/Dy
+        t2 = gamma*t1
+        t3 = (1.0/mu)
+        daX, au[j], ay[j] = t2, -t2*t3, -gamma*t3*(-2*beta*s1*t1*y + ipow(s2, t0))
         aX += daX
     return aX
 
@@ -63,14 +62,13 @@ def accelerations_symmetric(X, u, yy, alpha, beta, gamma, n, mu, au, ay):
         Dx = alpha + beta*((x*x) - 1)
         s1 = x/Dy
         s2 = y/Dx
-        t0 = (1.0/Dy)
-        t1 = 2*n
-        t2 = t1 - 1
-        t3 = (1.0/Dx)
-        t4 = 2*beta
-        t5 = gamma*(t0*ipow(s1, t2) - t3*t4*x*ipow(s2, t1))
-        t6 = (1.0/mu)
-        daX, au[j], ay[j] = t5, -t5*t6, gamma*t6*(t0*t4*y*ipow(s1, t1) - t3*ipow(s2, t2))
+        t0 = 2*n - 1
+        t1 = ipow(s1, t0)/Dy
+        t2 = ipow(s2, t0)/Dx
+        t3 = 2*beta
+        t4 = gamma*(-s2*t2*t3*x + t1)
+        t5 = (1.0/mu)
+        daX, au[j], ay[j] = t4, -t4*t5, gamma*t5*(s1*t1*t3*y - t2)
         aX += daX
     return aX
 

@@ -37,10 +37,9 @@ def gradient_flat(x, y, alpha, beta, gamma, n):
     Dy = alpha + beta*((y*y) - 1)
     s1 = x/Dy
     s2 = y
-    t0 = (1.0/Dy)
-    t1 = 2*n
-    t2 = t1 - 1
-    return gamma*t0*ipow(s1, t2), gamma*(-2*beta*t0*y*ipow(s1, t1) + ipow(s2, t2))
+    t0 = 2*n - 1
+    t1 = ipow(s1, t0)/Dy
+    return gamma*t1, gamma*(-2*beta*s1*t1*y + ipow(s2, t0))
 
 
 @numba.njit(cache=True)
@@ -50,14 +49,14 @@ def hessian_flat(x, y, alpha, beta, gamma, n):
     s1 = x/Dy
     s2 = y
     t0 = 2*n
-    t1 = t0 - 1
-    t2 = 2*(n - 1)
-    t3 = (1.0/(Dy*Dy))
+    t1 = 2*(n - 1)
+    t2 = ipow(s1, t1)
+    t3 = t2/(Dy*Dy)
     t4 = gamma*t3
-    t5 = ipow(s2, t2)
-    t6 = ipow(s1, t0)
+    t5 = ipow(s2, t1)
+    t6 = (s1*s1)
     t7 = (beta*beta)*t3*t6*(y*y)
-    return t1*t4*ipow(s1, t2), -4*beta*n*t4*y*ipow(s1, t1), gamma*(8*n*t7 + t0*t5 - t5 + 4*t7 - 2*beta*t6/Dy)
+    return t4*(t0 - 1), -4*beta*n*s1*t4*y, gamma*(8*n*t7 + t0*t5 - t5 + 4*t7 - 2*beta*t2*t6/Dy)
 
 
 @numba.njit(cache=True)
@@ -78,12 +77,12 @@ def gradient_symmetric(x, y, alpha, beta, gamma, n):
     Dx = alpha + beta*((x*x) - 1)
     s1 = x/Dy
     s2 = y/Dx
-    t0 = (1.0/Dy)
-    t1 = 2*n
-    t2 = t1 - 1
-    t3 = (1.0/Dx)
+    t0 = 2*n - 1
+    t1 = ipow(s1, t0)/Dy
+    t2 = (1.0/Dx)
+    t3 = ipow(s2, t0)
     t4 = 2*beta
-    return gamma*(t0*ipow(s1, t2) - t3*t4*x*ipow(s2, t1)), gamma*(-t0*t4*y*ipow(s1, t1) + t3*ipow(s2, t2))
+    return gamma*(-s2*t2*t3*t4*x + t1), gamma*(-s1*t1*t4*y + t2*t3)
 
 
 @numba.njit(cache=True)
@@ -93,19 +92,18 @@ def hessian_symmetric(x, y, alpha, beta, gamma, n):
     Dx = alpha + beta*((x*x) - 1)
     s1 = x/Dy
     s2 = y/Dx
-    t0 = 2*n
-    t1 = ipow(s2, t0)
-    t2 = 2*beta
-    t3 = (1.0/(Dy*Dy))
-    t4 = 2*(n - 1)
-    t5 = t3*ipow(s1, t4)
-    t6 = (beta*beta)
-    t7 = 4*t6
-    t8 = (1.0/(Dx*Dx))
-    t9 = t1*t8*(x*x)
-    t10 = 8*n*t6
-    t11 = t0 - 1
-    t12 = ipow(s1, t0)
-    t13 = t8*ipow(s2, t4)
-    t14 = t12*t3*(y*y)
-    return gamma*(t0*t5 + t10*t9 - t5 + t7*t9 - t1*t2/Dx), -4*beta*gamma*n*(t3*y*ipow(s1, t11) + t8*x*ipow(s2, t11)), gamma*(t0*t13 + t10*t14 - t13 + t14*t7 - t12*t2/Dy)
+    t0 = 2*(n - 1)
+    t1 = ipow(s1, t0)
+    t2 = t1/(Dy*Dy)
+    t3 = 2*n
+    t4 = ipow(s2, t0)
+    t5 = (s2*s2)
+    t6 = 2*beta
+    t7 = (beta*beta)
+    t8 = 4*t7
+    t9 = t4/(Dx*Dx)
+    t10 = t5*t9*(x*x)
+    t11 = 8*n*t7
+    t12 = (s1*s1)
+    t13 = t12*t2*(y*y)
+    return gamma*(t10*t11 + t10*t8 + t2*t3 - t2 - t4*t5*t6/Dx), -4*beta*gamma*n*(s1*t2*y + s2*t9*x), gamma*(t11*t13 + t13*t8 + t3*t9 - t9 - t1*t12*t6/Dy)
