@@ -53,6 +53,32 @@ def add_well_arguments(parser: argparse.ArgumentParser, *, beta: bool = True) ->
     g.add_argument("--shape", default="flat", help=f"one of {', '.join(SHAPES)} (default flat)")
 
 
+def add_sink_arguments(
+    parser: argparse.ArgumentParser,
+    *,
+    runs_default: int | None = 25,
+    runs_help: str = "ensemble size, integer >= 1 (default 25)",
+):
+    """Options of the particles and the run: particles, mass, energy, runs, periods, seed.
+
+    Returns the argument group, so a command can add options of its own to it.
+    """
+    g = parser.add_argument_group("sink and run")
+    g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
+    g.add_argument(
+        "--mass", type=number, default=0.2, help="total particle mass m > 0 (default 0.2)"
+    )
+    g.add_argument(
+        "--energy", type=number, default=0.5, help="container energy E0 > 0 (default 0.5)"
+    )
+    g.add_argument("--runs", type=number, default=runs_default, help=runs_help)
+    g.add_argument(
+        "--periods", type=number, default=1500, help="periods T = 2 pi, integer >= 1 (default 1500)"
+    )
+    g.add_argument("--seed", type=number, default=0, help="random seed, integer >= 0 (default 0)")
+    return g
+
+
 def well_from_args(args: argparse.Namespace) -> Well:
     return Well(args.alpha, args.beta, args.n, gamma=args.gamma, shape=args.shape)
 

@@ -18,7 +18,15 @@ from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES
 from ..model import RunSettings, Sink
 from ..simulate import ENERGY_BOUND, SimulationResult, simulate
-from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
+from ._common import (
+    Output,
+    add_json,
+    add_sink_arguments,
+    add_well_arguments,
+    number,
+    png_path,
+    well_from_args,
+)
 
 NAME = "simulate"
 HELP = "integrate an ensemble of the container + particles and report <E>(t) (Figs. 5, 8)"
@@ -26,15 +34,9 @@ HELP = "integrate an ensemble of the container + particles and report <E>(t) (Fi
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_well_arguments(parser)
-    g = parser.add_argument_group("sink and ensemble")
-    g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
-    g.add_argument("--mass", type=number, default=0.2, help="total particle mass m (default 0.2)")
-    g.add_argument("--energy", type=number, default=0.5, help="container energy E0 (default 0.5)")
-    g.add_argument(
-        "--runs", type=number, default=None, help="ensemble size (default 25; 1 with --initial)"
+    g = add_sink_arguments(
+        parser, runs_default=None, runs_help="ensemble size (default 25; 1 with --initial)"
     )
-    g.add_argument("--periods", type=number, default=1500, help="periods T = 2 pi (default 1500)")
-    g.add_argument("--seed", type=number, default=0, help="random seed, integer >= 0 (default 0)")
     g.add_argument(
         "--initial",
         type=number,

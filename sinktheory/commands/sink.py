@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 
 from ..model import RunSettings, Sink
-from ._common import Output, add_json, add_well_arguments, number, well_from_args
+from ._common import Output, add_json, add_sink_arguments, add_well_arguments, well_from_args
 
 NAME = "sink"
 HELP = "validate and describe a container + particles set-up and its run settings"
@@ -13,13 +13,7 @@ HELP = "validate and describe a container + particles set-up and its run setting
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_well_arguments(parser)
-    g = parser.add_argument_group("sink and run")
-    g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
-    g.add_argument("--mass", type=number, default=0.2, help="total particle mass m > 0")
-    g.add_argument("--energy", type=number, default=0.5, help="container energy E0 > 0")
-    g.add_argument("--runs", type=number, default=25, help="ensemble size, integer >= 1")
-    g.add_argument("--periods", type=number, default=1500, help="periods T = 2 pi, >= 1")
-    g.add_argument("--seed", type=number, default=0, help="random seed, integer >= 0")
+    add_sink_arguments(parser)
     add_json(parser)
 
 
