@@ -53,6 +53,7 @@ from .errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from .integrators import DEFAULT_SCHEME, get_scheme
 from .model import RunSettings, Sink
 from .progress import ProgressBar
+from .sinkstats import ensemble_mean
 
 #: The container's period T = 2 pi (mass 1, spring 1).
 PERIOD = 2.0 * math.pi
@@ -329,23 +330,7 @@ class SimulationResult:
 
     def ensemble_energy(self) -> tuple[np.ndarray, np.ndarray]:
         """Ensemble mean <E>(t_j) and its standard error (ddof = 1; zeros for one run)."""
-        return ensemble_statistics(self.container_energy)
-
-
-def ensemble_statistics(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Mean over runs (axis 0) and standard error std(ddof=1)/sqrt(R); 0 when R = 1.
-
-    Examples
-    --------
-    >>> ensemble_statistics(np.array([[1.0, 2.0], [3.0, 2.0]]))
-    (array([2., 2.]), array([1., 0.]))
-    """
-    values = np.asarray(values, dtype=float)
-    mean = values.mean(axis=0)
-    runs = values.shape[0]
-    if runs == 1:
-        return mean, np.zeros_like(mean)
-    return mean, values.std(axis=0, ddof=1) / math.sqrt(runs)
+        return ensemble_mean(self.container_energy)
 
 
 def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float:

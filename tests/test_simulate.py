@@ -8,7 +8,6 @@ ensemble statistics.
 """
 
 import json
-import math
 
 import numba
 import numpy as np
@@ -24,7 +23,6 @@ from sinktheory.simulate import (
     PERIOD,
     SimulationState,
     default_step,
-    ensemble_statistics,
     first_order_rhs,
     random_positions,
     simulate,
@@ -216,15 +214,6 @@ def test_energy_the_well_cannot_hold_is_refused():
     assert info.value.name == "beta"
 
 
-def test_ensemble_statistics_match_numpy():
-    x = np.random.default_rng(0).normal(size=(7, 4))
-    mean, err = ensemble_statistics(x)
-    assert np.allclose(mean, np.mean(x, axis=0), rtol=0, atol=1e-15)
-    assert np.allclose(err, np.std(x, axis=0, ddof=1) / math.sqrt(7), rtol=1e-14)
-    assert np.array_equal(ensemble_statistics(x[:1])[1], np.zeros(4))
-
-
-# --------------------------------------------------------------------------- failures
 def test_step_too_large_raises_energy_drift_naming_run_and_time():
     sink = Sink(Well(0.5, 0.3, 10), particles=1, mass=0.2)
     with pytest.raises(EnergyDriftError, match=r"run \d+ at t = 6\.28319 \(period 1\).*H0 ="):
