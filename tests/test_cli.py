@@ -5,16 +5,11 @@ import subprocess
 import sys
 
 import pytest
+from _cli import run_cli as run
 
 from sinktheory import __version__
 from sinktheory.cli import main
 from sinktheory.commands import COMMANDS
-
-
-def run(argv, capsys):
-    code = main(argv)
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_version(capsys):

@@ -12,13 +12,13 @@ import json
 import mpmath
 import numpy as np
 import pytest
+from _cli import run_cli as run
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy import optimize, special
 from scipy.integrate import solve_ivp
 
 from sinktheory._generated import oscillator as osc
-from sinktheory.cli import main
 from sinktheory.errors import ParameterError
 from sinktheory.floquet import (
     model_hill,
@@ -366,12 +366,6 @@ def test_charts_are_figures_with_labels():
     assert len(fig.axes) == 2 and fig.axes[1].get_xlabel() == r"$\beta$"
     fig = plot_tongues([1, 2, 3], -0.5, 0.4, count=20, alpha=0.5)
     assert fig.axes[0].get_xlabel() == r"$\beta$"
-
-
-def run(argv, capsys):
-    code = main(argv)
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_cli_model_point(capsys):

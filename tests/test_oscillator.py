@@ -11,11 +11,11 @@ import math
 import mpmath
 import numpy as np
 import pytest
+from _cli import run_cli
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
-from sinktheory.cli import main
 from sinktheory.errors import ParameterError
 from sinktheory.oscillator import (
     PeriodOutOfRangeError,
@@ -262,10 +262,6 @@ def test_solution_bad_input(call, name):
 
 
 # --- CLI: sinktheory period --------------------------------------------------------------
-def run_cli(argv, capsys):
-    code = main(argv)
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_cli_period_40_digits_against_quadrature(capsys):

@@ -12,8 +12,8 @@ import mpmath
 import numpy as np
 import pytest
 import sympy as sp
+from _cli import run_cli as run
 
-from sinktheory.cli import main
 from sinktheory.errors import ParameterError
 from sinktheory.oscillator import exact_shape, period
 from sinktheory.series import (
@@ -202,10 +202,6 @@ def test_bad_input(call, name):
 
 
 # --- CLI --------------------------------------------------------------------------------
-def run(argv, capsys):
-    code = main(argv)
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 def test_cli_series_json_and_plot(tmp_path, capsys):
