@@ -37,3 +37,16 @@ def test_level_line_curvature_against_a_circle():
     well = Well(alpha=1.0, beta=0.0, n=1, shape="symmetric")
     r = (2 * 0.5) ** 0.5
     assert abs(level_line_curvature(well, 0.5) - (-1 / r)) < 1e-5
+
+
+def test_quick_reproduction_of_every_figure(tmp_path, capsys):
+    """The README's main job at preview fidelity: every scene draws and reports."""
+    out = tmp_path / "all"
+    assert main(["reproduce", "--quick", "--out", str(out), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert sorted(f["figure"] for f in data["figures"]) == sorted(SCENES)
+    assert all(f["error"] is None and f["claims"] for f in data["figures"])
+    report = (out / "report.md").read_text()
+    for number in SCENES:
+        assert f"## Fig. {number}:" in report
+        assert (out / f"fig{number:02d}.png").exists()
