@@ -30,6 +30,12 @@ for shape in S.SHAPES:
     )
 
 check("lambda = -2 beta (alpha - beta)", S.lambda_coefficient(), lam)
+check(
+    "unloaded oscillator (mu -> 0, right-hand side of x-oscill dropped): x'' = -x^(2n-1)",
+    S.oscillator_acceleration(),
+    -(x ** (2 * n - 1)),
+)
+check("Hill's coefficient over lambda: x^(2n)", S.hill_shape(), x ** (2 * n))
 
 # n = 1: the well's y-term gamma y^2/2 (flat) or gamma (y/D(x))^2/2 (symmetric) is
 # quadratic; rescaled by (alpha - beta) it contributes L^2 (flat) and

@@ -305,6 +305,18 @@ def _oscillator_module() -> str:
         "\n\n"
         + _scalar_function("amplitude_of_energy", ("n", "E"), A, "A0 = (2 n E)^(1/(2n)), float64.")
     )
+    for name, expr, doc in (
+        ("oscillator_acceleration", S.oscillator_acceleration(),
+         "x'' of the unloaded power-law oscillator (x-oscill, mu -> 0): -x^(2n-1)."),
+        ("hill_shape", S.hill_shape(),
+         "x^(2n): the pure Hill coefficient per unit Lam (q(x) / lambda for n >= 2)."),
+    ):
+        parts.append("\n\n" + _scalar_function(name, ("x", "n"), expr, doc + " Float64."))
+        parts.append(
+            f"\n\ndef {name}_mp(x, n):\n"
+            f'    """{doc} At the current mpmath precision (x an mpf, n an int)."""\n'
+            f"    return {_mp_printer.doprint(expr)}\n"
+        )
     parts.append(
         "\n\n"
         + _scalar_function(

@@ -111,7 +111,7 @@ class QuarterPeriod:
 def _coefficient(kind, x, n, amplitude, alpha, p):
     """Normalised coefficient A0^(2-2n) q(A0 x); p is Lam A0^2 (pure) or beta (model)."""
     if kind == 0:
-        return p * ipow(x, 2 * n)
+        return p * _osc.hill_shape(x, n)
     scale = 1.0 / ipow(amplitude, 2 * n - 2)
     if kind == 1:
         return scale * _osc.hill_coefficient_flat(amplitude * x, alpha, p, n)
@@ -141,7 +141,7 @@ def _quarter_kernel(n, kind, amplitude, alpha, params, q_end, rtol, max_steps, A
     small = 2.0 ** (-RENORM_BITS)
     # first stage derivative
     kx[0] = vx
-    kv[0] = -ipow(x, 2 * n - 1)
+    kv[0] = _osc.oscillator_acceleration(x, n)
     for j in range(m):
         c = _coefficient(kind, x, n, amplitude, alpha, params[j])
         ky[0, j, 0] = y[j, 1]
@@ -168,7 +168,7 @@ def _quarter_kernel(n, kind, amplitude, alpha, params, q_end, rtol, max_steps, A
                     xs += h * a * kx[r]
                     vs += h * a * kv[r]
             kx[s] = vs
-            kv[s] = -ipow(xs, 2 * n - 1)
+            kv[s] = _osc.oscillator_acceleration(xs, n)
             for j in range(m):
                 c = _coefficient(kind, xs, n, amplitude, alpha, params[j])
                 for i in range(4):
@@ -382,8 +382,9 @@ def quarter_period_mpmath(n: int, lam: float, *, dps: int = 30) -> tuple:
         q_end = _osc.period_mp(n, mpmath.mpf(1)) / 4
 
         def rhs(_t, u):
-            c = lam_mp * u[0] ** (2 * n)
-            return [u[1], -(u[0] ** (2 * n - 1)), u[3], -c * u[2], u[5], -c * u[4]]
+            c = lam_mp * _osc.hill_shape_mp(u[0], n)
+            acc = _osc.oscillator_acceleration_mp(u[0], n)
+            return [u[1], acc, u[3], -c * u[2], u[5], -c * u[4]]
 
         sol = mpmath.odefun(rhs, 0, [mpmath.mpf(1), 0, 1, 0, 0, 1])(q_end)
         out = tuple(+x for x in sol[2:]) + (q_end,)
@@ -431,7 +432,8 @@ def monodromy_solve_ivp(
 
     def rhs(_t, u):
         c = _coefficient(k, u[0], n, amplitude, alpha, param)
-        return [u[1], -(u[0] ** (2 * n - 1)), u[3], -c * u[2], u[5], -c * u[4]]
+        acc = _osc.oscillator_acceleration(u[0], n)
+        return [u[1], acc, u[3], -c * u[2], u[5], -c * u[4]]
 
     sol = solve_ivp(
         rhs, (0.0, t_end), [1.0, 0.0, 1.0, 0.0, 0.0, 1.0], method="DOP853", rtol=rtol, atol=1e-15

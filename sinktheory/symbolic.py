@@ -369,6 +369,19 @@ def rescaled_equations(shape: str = "flat", n_value: int | None = None) -> Resca
     return RescaledSystem(sp.powsimp(x_eq, force=True), y_eq, q)
 
 
+def oscillator_acceleration() -> sp.Expr:
+    """xdd of the unloaded power-law oscillator: (x-oscill) with mu -> 0, i.e. -x^(2n-1)."""
+    x_eq = rescaled_equations("flat").x_equation.subs(mu, 0)
+    (acc,) = sp.solve(x_eq, xdd)
+    return sp.powsimp(acc, force=True)
+
+
+def hill_shape() -> sp.Expr:
+    """x^(2n): Hill's coefficient over lambda for n >= 2, the pure equation's q(x) / Lam."""
+    return sp.powsimp(sp.simplify(rescaled_equations("flat").hill_coefficient
+                                  / lambda_coefficient()), force=True)
+
+
 def lambda_coefficient() -> sp.Expr:
     """lambda = q(x) / x^(2n) for general n, i.e. -2 beta (alpha - beta).
 

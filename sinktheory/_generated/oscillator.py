@@ -42,6 +42,28 @@ def amplitude_of_energy(n, E):
 
 
 @numba.njit(cache=True)
+def oscillator_acceleration(x, n):
+    """x'' of the unloaded power-law oscillator (x-oscill, mu -> 0): -x^(2n-1). Float64."""
+    return -ipow(x, 2*n - 1)
+
+
+def oscillator_acceleration_mp(x, n):
+    """x'' of the unloaded power-law oscillator (x-oscill, mu -> 0): -x^(2n-1). At the current mpmath precision (x an mpf, n an int)."""
+    return -x**(2*n - 1)
+
+
+@numba.njit(cache=True)
+def hill_shape(x, n):
+    """x^(2n): the pure Hill coefficient per unit Lam (q(x) / lambda for n >= 2). Float64."""
+    return ipow(x, 2*n)
+
+
+def hill_shape_mp(x, n):
+    """x^(2n): the pure Hill coefficient per unit Lam (q(x) / lambda for n >= 2). At the current mpmath precision (x an mpf, n an int)."""
+    return x**(2*n)
+
+
+@numba.njit(cache=True)
 def lambda_coefficient(alpha, beta):
     """lambda = -2 beta (alpha - beta) of the linearised y-equation (y-oscill)."""
     return -2*beta*(alpha - beta)
