@@ -194,6 +194,8 @@ def _dynamics_module() -> str:
     kin_container = kin_container.subs(sh.momenta[0], PX)
     kin_particle = kin_particle.subs({sh.momenta[1]: pu_j, sh.momenta[2]: py_j})
     pot_container = S.X**2 / 2
+    aX_container = _kernel_printer.doprint(-sp.diff(pot_container, S.X) / m_container)
+    inner_of: dict[str, list[str]] = {}
     for shape in S.SHAPES:
         sh_shape = S.separable_hamiltonian(1, shape)
         diff = (
@@ -214,7 +216,7 @@ def _dynamics_module() -> str:
         # the loop: per-particle contributions, container spring added once
         *assign, ret = lines
         inner = [*assign, ret.replace("return ", "daX, au[j], ay[j] = ")]
-        aX_container = _kernel_printer.doprint(-sp.diff(pot_container, S.X) / m_container)
+        inner_of[shape] = inner
         body = [
             f"aX = {aX_container}",
             "for j in range(u.shape[0]):",
@@ -257,6 +259,28 @@ def _dynamics_module() -> str:
                 e_body,
             )
         )
+    body = [
+        f"aX = {aX_container}",
+        "for j in range(u.shape[0]):",
+        "    x = u[j] - X",
+        "    y = yy[j]",
+        "    if symmetric:",
+        *("        " + s for s in inner_of["symmetric"]),
+        "    else:",
+        *("        " + s for s in inner_of["flat"]),
+        "    aX += daX",
+        "return aX",
+    ]
+    parts.append(
+        "\n\n"
+        + _njit_function(
+            "accelerations",
+            ("symmetric", "X", "u", "yy", "alpha", "beta", "gamma", "n", "mu", "au", "ay"),
+            "accelerations_flat or accelerations_symmetric in one kernel (one call site, so a "
+            "stepping loop can inline it).",
+            body,
+        )
+    )
     return "".join(parts)
 
 

@@ -64,18 +64,19 @@ ENERGY_BOUND = 1e-6
 
 _HESSIAN = {"flat": _well.hessian_flat, "symmetric": _well.hessian_symmetric}
 _ENERGY = {"flat": _dyn.energy_flat, "symmetric": _dyn.energy_symmetric}
-#: The compiled loops take these kernels as arguments, so numba specialises (and inlines)
-#: them per shape; a branch on the shape inside the loop cost twice the time per step.
-_ACCELERATIONS = {
-    "flat": _dyn.accelerations_flat,
-    "symmetric": _dyn.accelerations_symmetric,
-}
 
 # status codes of a run inside the compiled loop
 _RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
 
 
 # --------------------------------------------------------------------------- compiled core
+@numba.njit(cache=True)
+def _energy(symmetric, X, PX, u, yy, pu, py, alpha, beta, gamma, n, mu):
+    if symmetric:
+        return _dyn.energy_symmetric(X, PX, u, yy, pu, py, alpha, beta, gamma, n, mu)
+    return _dyn.energy_flat(X, PX, u, yy, pu, py, alpha, beta, gamma, n, mu)
+
+
 @numba.njit(cache=True)
 def _run(
     row,
@@ -85,8 +86,7 @@ def _run(
     steps,
     ah,
     bh,
-    acc,
-    energy,
+    symmetric,
     alpha,
     beta,
     gamma,
@@ -117,7 +117,7 @@ def _run(
     none = np.empty(0)
     one = np.empty(1)
     s = ah.shape[0]
-    aX = acc(X, u, yy, alpha, beta, gamma, n, mu, au, ay)
+    aX = _dyn.accelerations(symmetric, X, u, yy, alpha, beta, gamma, n, mu, au, ay)
     status = _RUNNING
     worst = 0.0
     H = h0
@@ -135,7 +135,7 @@ def _run(
                 for j in range(k):
                     u[j] += c * vu[j]
                     yy[j] += c * vy[j]
-                aX = acc(X, u, yy, alpha, beta, gamma, n, mu, au, ay)
+                aX = _dyn.accelerations(symmetric, X, u, yy, alpha, beta, gamma, n, mu, au, ay)
             c = bh[s]
             vX += c * aX
             for j in range(k):
@@ -155,7 +155,7 @@ def _run(
         for j in range(k):
             pu[j] = mu * vu[j]
             py[j] = mu * vy[j]
-        H = energy(X, vX, u, yy, pu, py, alpha, beta, gamma, n, mu)
+        H = _energy(symmetric, X, vX, u, yy, pu, py, alpha, beta, gamma, n, mu)
         if not math.isfinite(H):
             status = _NONFINITE
             break
@@ -165,11 +165,14 @@ def _run(
             status = _DRIFT
             break
         if container.shape[1] > 0:
-            container[r, p] = energy(X, vX, none, none, none, none, alpha, beta, gamma, n, mu)
+            container[r, p] = _energy(
+                symmetric, X, vX, none, none, none, none, alpha, beta, gamma, n, mu
+            )
         if particles.shape[1] > 0:
             for j in range(k):
                 one[0] = u[j] - X
-                particles[r, p, j] = energy(
+                particles[r, p, j] = _energy(
+                    symmetric,
                     0.0,
                     0.0,
                     one,
@@ -199,8 +202,7 @@ def _advance(
     steps,
     ah,
     bh,
-    acc,
-    energy,
+    symmetric,
     alpha,
     beta,
     gamma,
@@ -229,8 +231,7 @@ def _advance(
             steps,
             ah,
             bh,
-            acc,
-            energy,
+            symmetric,
             alpha,
             beta,
             gamma,
@@ -642,8 +643,7 @@ def simulate(
                 steps,
                 a * dt,
                 b * dt,
-                _ACCELERATIONS[w.shape],
-                _ENERGY[w.shape],
+                w.shape == "symmetric",
                 w.alpha,
                 w.beta,
                 w.gamma,

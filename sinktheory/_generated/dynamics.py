@@ -89,3 +89,35 @@ def energy_symmetric(X, PX, u, yy, pu, py, alpha, beta, gamma, n, mu):
         t0 = 2*n
         H += (1/2)*(pu_j*pu_j)/mu + (1/2)*(py_j*py_j)/mu + (1/2)*gamma*(ipow(s1, t0) + ipow(s2, t0))/n
     return H
+
+
+@numba.njit(cache=True)
+def accelerations(symmetric, X, u, yy, alpha, beta, gamma, n, mu, au, ay):
+    """accelerations_flat or accelerations_symmetric in one kernel (one call site, so a stepping loop can inline it)."""
+    aX = -X
+    for j in range(u.shape[0]):
+        x = u[j] - X
+        y = yy[j]
+        if symmetric:
+            Dy = alpha + beta*((y*y) - 1)
+            Dx = alpha + beta*((x*x) - 1)
+            s1 = x/Dy
+            s2 = y/Dx
+            t0 = 2*n - 1
+            t1 = ipow(s1, t0)/Dy
+            t2 = ipow(s2, t0)/Dx
+            t3 = 2*beta
+            t4 = gamma*(-s2*t2*t3*x + t1)
+            t5 = (1.0/mu)
+            daX, au[j], ay[j] = t4, -t4*t5, gamma*t5*(s1*t1*t3*y - t2)
+        else:
+            Dy = alpha + beta*((y*y) - 1)
+            s1 = x/Dy
+            s2 = y
+            t0 = 2*n - 1
+            t1 = ipow(s1, t0)/Dy
+            t2 = gamma*t1
+            t3 = (1.0/mu)
+            daX, au[j], ay[j] = t2, -t2*t3, -gamma*t3*(-2*beta*s1*t1*y + ipow(s2, t0))
+        aX += daX
+    return aX
