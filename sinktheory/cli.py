@@ -8,11 +8,19 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 
 from . import __version__
 from .commands import COMMANDS
+from .commands._common import write_outputs
 from .errors import NumericalError, ParameterError
+
+#: What argparse should read as a negative number, not an option: decimal and scientific
+#: literals and -inf / -nan (argparse's own pattern knows only -1 and -1.5).
+NEGATIVE_NUMBER = re.compile(
+    r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE
+)
 
 
 class UsageError(Exception):
@@ -20,6 +28,10 @@ class UsageError(Exception):
 
 
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = NEGATIVE_NUMBER  # "--lam -1e308" is a value
+
     def error(self, message: str):  # one line, no usage dump
         raise UsageError(f"{self.prog}: error: {message}")
 
@@ -49,13 +61,15 @@ def main(argv: list[str] | None = None) -> int:
     prog = f"sinktheory {args.command}"
     try:
         out = args.module.run(args)
-        for path, write in out.writers.items():
-            write(path)
+        write_outputs(out.writers)
     except ParameterError as e:
         print(f"{prog}: error: {e}", file=sys.stderr)
         return 2
     except NumericalError as e:
         print(f"{prog}: numerical failure: {e}", file=sys.stderr)
+        return 1
+    except OSError as e:  # an output checked writable failed later (disk full, ...)
+        print(f"{prog}: could not write {e.filename or ''}: {e.strerror or e}", file=sys.stderr)
         return 1
     if args.json:
         print(json.dumps(out.data, allow_nan=False))

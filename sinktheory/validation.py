@@ -20,6 +20,9 @@ from __future__ import annotations
 
 import math
 import numbers
+import os
+import tempfile
+from pathlib import Path
 
 from .errors import ParameterError
 
@@ -85,3 +88,22 @@ def choice(name: str, value: object, options: tuple[str, ...]) -> str:
     if value not in options:
         raise ParameterError(name, value, "one of " + ", ".join(repr(o) for o in options))
     return str(value)
+
+
+def writable_directory(name: str, value: object, directory: str | os.PathLike) -> None:
+    """Raise ParameterError naming ``name`` unless a new file can be created in ``directory``.
+
+    A probe file is created and removed at once: permissions alone do not tell (root may
+    write anywhere, yet not in /proc nor on a read-only mount).
+    """
+    directory = Path(directory) if str(directory) else Path(".")
+    if not directory.is_dir():
+        raise ParameterError(name, value, "a path in an existing directory")
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".sinktheory-probe-", dir=directory)
+    except OSError as e:
+        raise ParameterError(
+            name, value, "a path in a writable directory", why=e.strerror or str(e)
+        ) from None
+    os.close(fd)
+    os.unlink(probe)

@@ -4,12 +4,17 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
+import shutil
+import uuid
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from ..errors import ParameterError
 from ..model import SHAPES, Well
+from ..validation import writable_directory
 
 
 @dataclass
@@ -84,15 +89,96 @@ def well_from_args(args: argparse.Namespace) -> Well:
 
 
 def png_path(name: str, value: str | None) -> Path | None:
-    """Validate an output PNG path: suffix .png and an existing directory."""
+    """Validate an output PNG path: suffix .png, a file we can create (see :func:`output_file`)."""
+    return output_file(name, value, (".png",))
+
+
+def output_file(name: str, value: str | None, suffixes: Iterable[str]) -> Path | None:
+    """Check, before any computing, that the file ``value`` can be written.
+
+    The name must end in one of ``suffixes``; the path must not be a directory or a
+    special file; its directory must exist and accept a new file (tried with a probe
+    file that is removed at once).  Raises ParameterError naming ``name`` otherwise.
+    """
     if value is None:
         return None
+    suffixes = tuple(suffixes)
+    allowed = "a file name ending in " + " or ".join(suffixes)
+    if not str(value).strip():
+        raise ParameterError(name, value, allowed)
     path = Path(value)
-    if path.suffix.lower() != ".png":
-        raise ParameterError(name, value, "a file name ending in .png")
-    if not path.parent.resolve().is_dir():
-        raise ParameterError(name, value, "a path in an existing directory")
+    if path.suffix.lower() not in suffixes:
+        raise ParameterError(name, value, allowed)
+    if path.is_dir():
+        raise ParameterError(name, value, allowed, why="it is a directory")
+    if path.exists() and not path.is_file():
+        raise ParameterError(name, value, allowed, why="it exists and is not a regular file")
+    writable_directory(name, value, path.parent)
     return path
+
+
+def output_directory(name: str, value: str | None) -> Path | None:
+    """Check, before any computing, that directory ``value`` exists and can take new files,
+    or can be created (its nearest existing ancestor takes new files)."""
+    if value is None:
+        return None
+    if not str(value).strip():
+        raise ParameterError(name, value, "a directory name (not empty)")
+    path = Path(value)
+    if path.exists() and not path.is_dir():
+        raise ParameterError(name, value, "a directory", why="it exists and is not a directory")
+    writable_directory(name, value, existing_ancestor(path))
+    return path
+
+
+def existing_ancestor(path: Path) -> Path:
+    """``path`` itself if it exists, else its nearest existing ancestor."""
+    path = Path(os.path.abspath(path))
+    while not path.exists() and path != path.parent:
+        path = path.parent
+    return path
+
+
+def as_directory(write: Callable[[Path], None]) -> Callable[[Path], None]:
+    """Mark an output writer as one that fills a directory (see :func:`write_outputs`)."""
+    write.directory = True  # type: ignore[attr-defined]
+    return write
+
+
+def write_outputs(writers: dict[Path, Callable[[Path], None]]) -> None:
+    """Write every output or none.
+
+    Each writer writes a hidden staging file (same directory, same suffix, so matplotlib
+    still knows the format) or, for a directory writer, a hidden staging directory; only
+    when all have succeeded are they moved into place (``os.replace``).  On any error the
+    staged files are removed and the error is raised: no output is left half-written.
+    """
+    staged: list[tuple[Path, Path, bool]] = []
+    try:
+        for path, write in writers.items():
+            path = Path(path)
+            directory = bool(getattr(write, "directory", False))
+            tag = uuid.uuid4().hex[:12]
+            if directory:
+                tmp = existing_ancestor(path) / f".sinktheory-partial-{tag}"
+            else:
+                tmp = path.with_name(f".{path.stem}.partial-{tag}{path.suffix}")
+            staged.append((tmp, path, directory))
+            write(tmp)
+        for tmp, path, directory in staged:
+            if directory:
+                path.mkdir(parents=True, exist_ok=True)
+                for child in tmp.iterdir():
+                    os.replace(child, path / child.name)
+                tmp.rmdir()
+            else:
+                os.replace(tmp, path)
+    finally:
+        for tmp, _, directory in staged:
+            if directory:
+                shutil.rmtree(tmp, ignore_errors=True)
+            elif tmp.exists():
+                tmp.unlink()
 
 
 def finite_or_none(x: float) -> float | None:

@@ -10,7 +10,7 @@ from .. import __version__
 from ..errors import NumericalError, ParameterError
 from ..report import SceneOutcome, render
 from ..scenes import SCENES
-from ._common import Output, add_json
+from ._common import Output, add_json, as_directory, output_directory
 
 NAME = "reproduce"
 HELP = "redraw the paper's figures and write report.md with each claim checked"
@@ -35,9 +35,7 @@ def run(args: argparse.Namespace) -> Output:
     if unknown:
         allowed = ", ".join(map(str, sorted(SCENES)))
         raise ParameterError("figure", unknown[0], f"one of {allowed}")
-    out_dir = Path(args.out)
-    if out_dir.exists() and not out_dir.is_dir():
-        raise ParameterError("out", args.out, "a directory (it exists as a file)")
+    out_dir = output_directory("out", args.out)
     outcomes = []
     for number in figures:
         scene = SCENES[number]
@@ -79,6 +77,7 @@ def run(args: argparse.Namespace) -> Output:
         + f"\nreport: {out_dir / 'report.md'}"
     )
 
+    @as_directory
     def write_all(path: Path) -> None:
         path.mkdir(parents=True, exist_ok=True)
         for o in outcomes:

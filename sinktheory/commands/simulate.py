@@ -24,6 +24,7 @@ from ._common import (
     add_sink_arguments,
     add_well_arguments,
     number,
+    output_file,
     png_path,
     well_from_args,
 )
@@ -66,14 +67,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _npz_path(value: str | None) -> Path | None:
-    if value is None:
-        return None
-    path = Path(value)
-    if path.suffix.lower() != ".npz":
-        raise ParameterError("--out", value, "a file name ending in .npz")
-    if not path.parent.resolve().is_dir():
-        raise ParameterError("--out", value, "a path in an existing directory")
-    return path
+    return output_file("--out", value, (".npz",))
 
 
 def _initial(values: list | None, particles: int) -> np.ndarray | None:

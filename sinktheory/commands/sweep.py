@@ -11,10 +11,12 @@ flagged done are computed.  The store opens with ``xarray.open_zarr(STORE)``.
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from ..errors import ParameterError
 from ..sweep.grid import Value, parse_param
 from ..sweep.kinds import KINDS
+from ..validation import writable_directory
 from ._common import Output, add_json, number
 
 NAME = "sweep"
@@ -63,6 +65,9 @@ def params_of(specs: list[str]) -> dict[str, list[Value]]:
 
 
 def run(args: argparse.Namespace) -> Output:
+    if not args.out.strip():
+        raise ParameterError("out", args.out, "the path of a Zarr store (not empty)")
+    writable_directory("out", args.out, Path(args.out).parent)  # before any work
     from ..sweep.plan import Sweep  # imports xarray, zarr and dask: only when sweeping
     from ..sweep.runner import execute
 

@@ -63,6 +63,7 @@ import numpy as np
 import xarray as xr
 import zarr
 
+from .. import validation as v
 from ..errors import ParameterError
 from .plan import MARK, Sweep
 
@@ -101,7 +102,17 @@ class SweepStore:
             with warnings.catch_warnings():  # consolidated metadata: not (yet) in the v3 spec
                 warnings.filterwarnings("ignore", message="Consolidated metadata")
                 template.to_zarr(tmp, mode="w-", compute=False, encoding=encoding)
-            os.rename(tmp, path)
+            try:
+                os.rename(tmp, path)
+            except OSError as e:  # another process created the store meanwhile
+                if not path.exists():
+                    raise
+                raise ParameterError(
+                    "store",
+                    str(path),
+                    "a path that does not exist yet",
+                    why=f"another process created it while this one did ({e.strerror})",
+                ) from None
         finally:
             shutil.rmtree(tmp, ignore_errors=True)
         return cls(path, sweep, zarr.open_group(path, mode="r+"))
@@ -258,7 +269,12 @@ def _lock(path: Path):
     Two drivers writing one store could overwrite each other's chunks; the second is
     refused.  The operating system drops the lock when its process ends, kill -9 included.
     """
-    handle = open(path / LOCK, "a")  # noqa: SIM115 - held open as long as the store
+    try:
+        handle = open(path / LOCK, "a")  # noqa: SIM115 - held open as long as the store
+    except OSError as e:
+        raise ParameterError(
+            "store", str(path), "a store this process can write to", why=e.strerror or str(e)
+        ) from None
     try:
         fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except BlockingIOError:
@@ -270,9 +286,13 @@ def _lock(path: Path):
 
 
 def _checked_path(path: str | Path) -> Path:
+    """The store's path, refused unless its directory exists and takes new files."""
+    if isinstance(path, bool) or not isinstance(path, str | os.PathLike) or not str(path).strip():
+        raise ParameterError("store", path, "a path (str or os.PathLike) of a Zarr store")
     path = Path(path)
-    if not path.parent.resolve().is_dir():
-        raise ParameterError("store", str(path), "a path in an existing directory")
+    v.writable_directory("store", str(path), path.parent)
+    if path.exists() and not path.is_dir():
+        raise ParameterError("store", str(path), "a Zarr store (a directory)", why="it is a file")
     return path
 
 
