@@ -13,14 +13,29 @@ Examples
 0.6
 """
 
-from importlib.metadata import PackageNotFoundError, version
+from importlib import import_module
 
 from .errors import NumericalError, ParameterError
-from .model import RunSettings, Sink, Well
 
-try:
-    __version__ = version("sinktheory")
-except PackageNotFoundError:  # running from a source tree that is not installed
-    __version__ = "0.1.0"
+#: Loaded on first use, so ``import sinktheory`` (and ``sinktheory --version``) stays light.
+_LAZY = {"RunSettings": "model", "Sink": "model", "Well": "model"}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        return getattr(import_module(f".{_LAZY[name]}", __name__), name)
+    if name == "__version__":
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            return version("sinktheory")
+        except PackageNotFoundError:  # running from a source tree that is not installed
+            return "0.1.0"
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted([*globals(), *_LAZY, "__version__"])
+
 
 __all__ = ["NumericalError", "ParameterError", "RunSettings", "Sink", "Well", "__version__"]

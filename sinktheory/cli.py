@@ -11,8 +11,7 @@ import json
 import re
 import sys
 
-from . import __version__
-from .commands import COMMANDS
+from . import commands
 from .commands._common import write_outputs
 from .errors import NumericalError, ParameterError
 
@@ -36,23 +35,47 @@ class _Parser(argparse.ArgumentParser):
         raise UsageError(f"{self.prog}: error: {message}")
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The parser of ``sinktheory``.
+
+    With ``only`` (a command name) just that command gets its options and the others are
+    listed by name and summary, so their modules (and what they import) are not loaded;
+    this keeps ``--version``, ``--help`` and light commands fast.  Without it every
+    command is built in full.
+    """
     parser = _Parser(
         prog="sinktheory",
         description="The stochastic energy sink (Pilipchuk, arXiv:1610.02939): "
         "symbolic model, periods, Floquet charts, simulations.",
     )
-    parser.add_argument("--version", action="version", version=f"sinktheory {__version__}")
+    parser.add_argument("--version", action="version", version=f"sinktheory {_version()}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    for module in COMMANDS:
-        p = sub.add_parser(module.NAME, help=module.HELP, description=module.HELP)
-        module.add_arguments(p)
-        p.set_defaults(module=module)
+    for name, summary in commands.HELP.items():
+        p = sub.add_parser(name, help=summary, description=summary)
+        if only is None or name == only:
+            module = commands.load(name)
+            module.add_arguments(p)
+            p.set_defaults(module=module)
     return parser
 
 
+def _version() -> str:
+    from . import __version__
+
+    return __version__
+
+
+def _command(argv: list[str]) -> str | None:
+    """The command named in ``argv``: its first word that is not an option."""
+    for word in argv:
+        if not word.startswith("-"):
+            return word if word in commands.HELP else None
+    return None
+
+
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
+    argv = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(_command(argv) or "")
     try:
         args = parser.parse_args(argv)
     except UsageError as e:

@@ -86,7 +86,6 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy import optimize
 
 from . import validation as v
 from ._generated import oscillator as _osc
@@ -504,6 +503,8 @@ def _scalar(chart_of, name: str):
 
 
 def _brentq(f, a: float, b: float, what: str) -> float:
+    from scipy import optimize  # imported here: 0.3 s that one-point charts need not pay
+
     try:
         return float(optimize.brentq(f, a, b, xtol=ROOT_XTOL, rtol=4 * np.finfo(float).eps))
     except (ValueError, RuntimeError) as exc:

@@ -49,10 +49,10 @@ True
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
 
 import numba
 import numpy as np
-from scipy.integrate._ivp import dop853_coefficients as _dop
 
 from . import validation as v
 from ._generated import oscillator as _osc
@@ -67,6 +67,25 @@ DEFAULT_RTOL = 1e-13
 #: Solution pairs are divided by 2^RENORM_BITS when their size exceeds 2^RENORM_BITS.
 RENORM_BITS = 400
 
+
+def _dop853_coefficients():
+    """scipy's DOP853 tableau, read from its module file alone: importing it the usual way
+    runs ``scipy.integrate/__init__`` (0.7 s at start-up for one coefficient table)."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("scipy")
+    path = Path(spec.origin).parent / "integrate" / "_ivp" / "dop853_coefficients.py"
+    if not path.is_file():  # another layout: the ordinary import
+        from scipy.integrate._ivp import dop853_coefficients
+
+        return dop853_coefficients
+    module_spec = importlib.util.spec_from_file_location("_sinktheory_dop853", path)
+    module = importlib.util.module_from_spec(module_spec)
+    module_spec.loader.exec_module(module)
+    return module
+
+
+_dop = _dop853_coefficients()
 _N_STAGES = 12
 _A = np.ascontiguousarray(_dop.A[: _N_STAGES + 1, :_N_STAGES])
 _E3 = np.ascontiguousarray(_dop.E3)

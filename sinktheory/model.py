@@ -24,10 +24,10 @@ sinktheory.errors.ParameterError: beta = 0.5 is not allowed: must be < alpha = 0
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import optimize
 
 from . import validation as v
 from ._generated import oscillator as _osc
@@ -40,6 +40,22 @@ SHAPES = ("flat", "symmetric")
 MAX_N = 1000
 
 _POTENTIAL = {"flat": _well.potential_flat, "symmetric": _well.potential_symmetric}
+
+
+def _python(kernel):
+    """The plain-Python body of a generated kernel (``py_func``), for scalar geometry.
+
+    Same formula, evaluated by Python: the first call of a compiled kernel in a process
+    costs about 0.5 s (numba loads its target), which a light command such as
+    ``sinktheory well`` should not pay.  Only for kernels without integer powers
+    (``ipow`` is itself compiled) and with no 0/0 or sqrt(<0) on valid input.
+    """
+    return getattr(kernel, "py_func", kernel)
+
+
+_denominator = _python(_well.denominator)
+_axis_reach_factor = _python(_osc.axis_reach_factor)
+_rigid_wall_curvature = _python(_osc.rigid_wall_curvature)
 
 
 @dataclass(frozen=True)
@@ -87,7 +103,7 @@ class Well:
     @property
     def wall_distance(self) -> float:
         """alpha - beta: distance from the centre to the wall along x (rigid limit)."""
-        return float(_well.denominator(0.0, self.alpha, self.beta))
+        return float(_denominator(0.0, self.alpha, self.beta))
 
     @property
     def curvature_at_centre(self) -> float:
@@ -96,11 +112,11 @@ class Well:
 
     def curvature(self, y: float) -> float:
         """Curvature of the rigid-wall contour x = D(y) at height y (n -> oo)."""
-        return float(_osc.rigid_wall_curvature(self.beta, v.finite("y", y)))
+        return float(_rigid_wall_curvature(self.beta, v.finite("y", y)))
 
     def denominator(self, s):
         """D(s) = alpha + beta (s^2 - 1); accepts scalars or arrays."""
-        return _well.denominator(np.asarray(s, dtype=float), self.alpha, self.beta)
+        return _denominator(np.asarray(s, dtype=float), self.alpha, self.beta)
 
     def potential(self, x, y) -> np.ndarray:
         """V(x, y) at arrays of points (relative to the container)."""
@@ -120,7 +136,7 @@ class Well:
         (0.5..., 1.189...)
         """
         e = v.positive("energy", energy)
-        c = float(_osc.axis_reach_factor(e, self.gamma, self.n))
+        c = float(_axis_reach_factor(e, self.gamma, self.n))
         D = self.denominator
         if self.shape == "flat":
             # |y| <= c; D is monotone in y^2, so its extremes on [0, c] are at the ends
@@ -161,10 +177,8 @@ class Well:
         grid = np.linspace(0.0, c, 201)
         i = int(np.argmin([minus_width(t) for t in grid]))
         lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
-        best = optimize.minimize_scalar(
-            minus_width, bounds=(lo, hi), method="bounded", options={"xatol": 1e-12}
-        )
-        return -min(float(best.fun), minus_width(grid[i]))
+        best = _golden_minimum(minus_width, float(lo), float(hi), 1e-12)
+        return -min(minus_width(best), minus_width(grid[i]))
 
     def check_energy(self, energy: float) -> None:
         """Raise ParameterError unless a particle with ``energy`` stays in a regular well."""
@@ -180,9 +194,35 @@ class Well:
         )
 
 
+def _golden_minimum(f, lo: float, hi: float, xatol: float) -> float:
+    """Where the unimodal ``f`` is smallest on [lo, hi], by golden-section search to
+    ``xatol`` (plain Python: scipy.optimize would cost 0.4 s to import at start-up)."""
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    a, b = lo, hi
+    c, d = b - ratio * (b - a), a + ratio * (b - a)
+    fc, fd = f(c), f(d)
+    while b - a > xatol:
+        if fc <= fd:
+            b, d, fd = d, c, fc
+            c = b - ratio * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + ratio * (b - a)
+            fd = f(d)
+    return c if fc <= fd else d
+
+
 def confining_betas(
-    alpha: float, n: int, energy: float, *, gamma: float = 1.0, shape: str = "flat",
-    lo: float = -5.0, hi: float | None = None, points: int = 2001,
+    alpha: float,
+    n: int,
+    energy: float,
+    *,
+    gamma: float = 1.0,
+    shape: str = "flat",
+    lo: float = -5.0,
+    hi: float | None = None,
+    points: int = 2001,
 ) -> list[tuple[float, float]]:
     """Intervals of beta in [lo, hi] for which the well holds a particle of ``energy``.
 

@@ -216,3 +216,66 @@ def test_beta_range_minus_inf_names_the_end(capsys, tmp_path, monkeypatch):
         "lo",
     )
     assert "-inf" in line
+
+
+# --------------------------------------------------------------------------- start-up
+HEAVY = ("matplotlib", "xarray", "zarr", "dask", "sympy", "sinktheory.scenes")
+IMPORTS = """
+import sys
+from sinktheory.cli import main
+try:
+    main(sys.argv[1:])
+except SystemExit:
+    pass
+print("LOADED", " ".join(sorted(m for m in sys.modules if m.split(".")[0] in {heavy})))
+"""
+
+
+def loaded_by(args):
+    """Heavy top-level modules (and numba) a fresh process imports to run ARGS."""
+    import subprocess
+    import sys
+
+    heavy = {m.split(".")[0] for m in (*HEAVY, "numba", "scipy", "sinktheory")}
+    proc = subprocess.run(
+        [sys.executable, "-c", IMPORTS.format(heavy=heavy), *args],
+        capture_output=True,
+        text=True,
+        env={**os.environ, "MPLBACKEND": "Agg"},
+        timeout=300,
+    )
+    line = [s for s in proc.stdout.splitlines() if s.startswith("LOADED")][-1]
+    return set(line.split()[1:])
+
+
+@pytest.mark.parametrize("args", [["--version"], ["--help"], ["bogus"]])
+def test_version_and_help_import_no_numerics(args):
+    """Timed in benchmarks/bench_startup.py; here: nothing numerical is imported."""
+    loaded = loaded_by(args)
+    assert not {m for m in loaded if m.split(".")[0] in {"numba", "scipy", "matplotlib"}}
+    assert not {m for m in loaded if m.startswith("sinktheory.") and m not in LIGHT}, loaded
+
+
+LIGHT = {
+    "sinktheory.cli",
+    "sinktheory.commands",
+    "sinktheory.commands._common",
+    "sinktheory.errors",
+    "sinktheory.validation",
+}
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["well", *WELL, "--json"],
+        ["period", "--n", "4", "--amplitude", "1"],
+        ["floquet", "--alpha", "0.5", "--beta", "0.1", "--n", "4"],
+        ["sink", *WELL],
+    ],
+    ids=lambda a: a[0],
+)
+def test_light_commands_import_no_plotting_or_arrays(args):
+    loaded = loaded_by(args)
+    assert not any(m.startswith(h) for m in loaded for h in HEAVY), loaded
+    assert "scipy.optimize" not in loaded and "scipy.integrate" not in loaded, loaded

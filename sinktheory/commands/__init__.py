@@ -3,8 +3,40 @@
 Each module defines ``NAME``, ``HELP``, ``add_arguments(parser)`` and ``run(args)``, which
 returns an :class:`~sinktheory.commands._common.Output`.  A command computes everything
 before it writes any file, so bad input never leaves partial output behind.
+
+Modules are imported only when needed (:func:`load`): ``sinktheory --version`` and
+``--help`` read the one-line summaries in :data:`HELP` and import no command, and a
+command imports only what it uses.  ``COMMANDS`` (every module) is loaded on first use.
 """
 
-from . import derive, floquet, period, reproduce, series, simulate, sink, sweep, well
+from importlib import import_module
 
-COMMANDS = (well, sink, derive, simulate, period, series, reproduce, floquet, sweep)
+#: The one-line summary of each command, in the order ``sinktheory --help`` lists them;
+#: each module's ``HELP`` is its entry here.
+HELP = {
+    "well": "describe a soft-wall well and optionally draw its level lines (like Fig. 2)",
+    "sink": "validate and describe a container + particles set-up and its run settings",
+    "derive": "print the model's equations derived symbolically from the Lagrangian",
+    "simulate": "integrate an ensemble of the container + particles and report <E>(t) (Figs. 5, 8)",
+    "period": "exact period T_n of x'' + x^(2n-1) = 0 from amplitude or energy, to any precision",
+    "series": "successive approximations in the triangle wave tau: error table and bound check",
+    "reproduce": "redraw the paper's figures and write report.md with each claim checked",
+    "floquet": "Floquet stability of the normal mode y = 0: phi(beta) charts with located "
+    "boundaries",
+    "sweep": "parameter sweep (floquet, bifurcation, ensemble) into a resumable Zarr store",
+}
+NAMES = tuple(HELP)
+
+
+def load(name: str):
+    """The module of command ``name`` (imported now)."""
+    return import_module(f".{name}", __name__)
+
+
+def __getattr__(name: str):
+    if name == "COMMANDS":
+        return tuple(load(n) for n in NAMES)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+__all__ = ["COMMANDS", "HELP", "NAMES", "load"]

@@ -13,7 +13,6 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import ParameterError
-from ..model import SHAPES, Well
 from ..validation import writable_directory
 
 
@@ -49,6 +48,8 @@ def add_json(parser: argparse.ArgumentParser) -> None:
 
 
 def add_well_arguments(parser: argparse.ArgumentParser, *, beta: bool = True) -> None:
+    from ..model import SHAPES
+
     g = parser.add_argument_group("well")
     g.add_argument("--alpha", type=number, required=True, help="alpha > 0")
     if beta:
@@ -84,7 +85,10 @@ def add_sink_arguments(
     return g
 
 
-def well_from_args(args: argparse.Namespace) -> Well:
+def well_from_args(args: argparse.Namespace):
+    """The :class:`~sinktheory.model.Well` of the well options."""
+    from ..model import Well
+
     return Well(args.alpha, args.beta, args.n, gamma=args.gamma, shape=args.shape)
 
 

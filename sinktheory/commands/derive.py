@@ -11,10 +11,11 @@ import sympy as sp
 from sympy.printing.str import StrPrinter
 
 from .. import symbolic as S
+from . import HELP as HELPS
 from ._common import Output, add_json
 
 NAME = "derive"
-HELP = "print the model's equations derived symbolically from the Lagrangian"
+HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

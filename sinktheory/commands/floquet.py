@@ -21,10 +21,11 @@ import math
 
 from ..errors import ParameterError
 from ..floquet import FloquetChart, model_problem, pure_problem, scan
+from . import HELP as HELPS
 from ._common import Output, add_json, finite_or_none, number, png_path
 
 NAME = "floquet"
-HELP = "Floquet stability of the normal mode y = 0: phi(beta) charts with located boundaries"
+HELP = HELPS[NAME]
 
 #: Magnitudes at or above this are written as decimal strings.
 JSON_CAP = 1e300

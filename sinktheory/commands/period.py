@@ -8,10 +8,11 @@ import mpmath
 
 from ..oscillator import oscillator
 from ..validation import positive_int
+from . import HELP as HELPS
 from ._common import Output, add_json, number
 
 NAME = "period"
-HELP = "exact period T_n of x'' + x^(2n-1) = 0 from amplitude or energy, to any precision"
+HELP = HELPS[NAME]
 MAX_DIGITS = 10_000
 
 

@@ -10,10 +10,11 @@ from .. import __version__
 from ..errors import NumericalError, ParameterError
 from ..report import SceneOutcome, render
 from ..scenes import SCENES
+from . import HELP as HELPS
 from ._common import Output, add_json, as_directory, output_directory
 
 NAME = "reproduce"
-HELP = "redraw the paper's figures and write report.md with each claim checked"
+HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

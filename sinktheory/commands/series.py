@@ -5,10 +5,11 @@ from __future__ import annotations
 import argparse
 
 from ..series import check_bounds, error_table, plot_series
+from . import HELP as HELPS
 from ._common import Output, add_json, number, png_path
 
 NAME = "series"
-HELP = "successive approximations in the triangle wave tau: error table and bound check"
+HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

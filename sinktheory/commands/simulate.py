@@ -18,6 +18,7 @@ from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES
 from ..model import RunSettings, Sink
 from ..simulate import ENERGY_BOUND, SimulationResult, simulate
+from . import HELP as HELPS
 from ._common import (
     Output,
     add_json,
@@ -30,7 +31,7 @@ from ._common import (
 )
 
 NAME = "simulate"
-HELP = "integrate an ensemble of the container + particles and report <E>(t) (Figs. 5, 8)"
+HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

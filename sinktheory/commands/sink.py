@@ -5,10 +5,11 @@ from __future__ import annotations
 import argparse
 
 from ..model import RunSettings, Sink
+from . import HELP as HELPS
 from ._common import Output, add_json, add_sink_arguments, add_well_arguments, well_from_args
 
 NAME = "sink"
-HELP = "validate and describe a container + particles set-up and its run settings"
+HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -17,10 +17,11 @@ from ..errors import ParameterError
 from ..sweep.grid import Value, parse_param
 from ..sweep.kinds import KINDS
 from ..validation import writable_directory
+from . import HELP as HELPS
 from ._common import Output, add_json, number
 
 NAME = "sweep"
-HELP = "parameter sweep (floquet, bifurcation, ensemble) into a resumable Zarr store"
+HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -5,10 +5,11 @@ from __future__ import annotations
 import argparse
 
 from ..validation import positive
+from . import HELP as HELPS
 from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
 
 NAME = "well"
-HELP = "describe a soft-wall well and optionally draw its level lines (like Fig. 2)"
+HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
