@@ -51,7 +51,7 @@ come from the roots of its derivative, the limit s -> 0 is compared in exact rat
   n = 20, i = 3; 0.86 at n = 20, i = 8; 0.185 at n = 1, i = 6 (a factor 5.4 to spare).
 
 Accuracy (``sinktheory series``, ``benchmarks/bench_series.py``)
----------------------------------------------------------------
+----------------------------------------------------------------
 Shape error max |U_i - x| / A0 over a period (U_i with A fixed by U_i(1) = A0, each
 curve on its own period) and period error T_i / T_n - 1, orders i = 1 ... 6:
 

@@ -1,0 +1,67 @@
+"""Sphinx configuration for the sinktheory documentation.
+
+Build with warnings as errors (this is what tests/test_docs.py runs)::
+
+    sphinx-build -W --keep-going -b html docs docs/_build/html
+
+The equations on the theory pages are rendered from :mod:`sinktheory.symbolic`, the CLI
+reference from :func:`sinktheory.cli.build_parser`, the API reference from the
+docstrings of every public module found at build time, and the gallery from
+``sinktheory reproduce --quick`` (see ``_ext/sinktheory_docs.py``).
+"""
+
+import sys
+import types
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent / "_ext"))
+
+import sinktheory  # noqa: E402
+
+# autosummary imports every submodule it finds, and sinktheory/__main__.py runs the
+# command line on import (with sphinx-build's arguments).  An empty stand-in keeps that
+# import inert; ``__main__`` is private and not documented anyway.
+sys.modules.setdefault("sinktheory.__main__", types.ModuleType("sinktheory.__main__"))
+
+project = "sinktheory"
+author = "the sinktheory authors"
+copyright = "the sinktheory authors"
+release = sinktheory.__version__
+version = ".".join(release.split(".")[:2])
+
+extensions = [
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    "sphinx.ext.mathjax",
+    "sphinx.ext.viewcode",
+    "numpydoc",
+    "sinktheory_docs",
+]
+
+templates_path = ["_templates"]
+exclude_patterns = ["_build", "_autogen", "README.md"]
+root_doc = "index"
+
+# --- API reference: autosummary over the package, discovered at build time ---------
+autosummary_generate = True
+autosummary_imported_members = False
+autodoc_default_options = {}
+autodoc_member_order = "bysource"
+autodoc_typehints = "none"  # numpydoc's Parameters sections carry the types
+
+# numpydoc: no per-member stub tables for classes (autodoc documents the members).
+numpydoc_show_class_members = False
+numpydoc_class_members_toctree = False
+numpydoc_xref_param_type = False
+
+# --- HTML ---------------------------------------------------------------------------
+html_theme = "alabaster"
+html_title = f"sinktheory {release}"
+html_static_path = []
+html_theme_options = {
+    "description": "The stochastic energy sink (Pilipchuk, arXiv:1610.02939)",
+    "fixed_sidebar": True,
+    "page_width": "1100px",
+    "sidebar_width": "230px",
+}
+html_sidebars = {"**": ["about.html", "navigation.html", "searchbox.html"]}
