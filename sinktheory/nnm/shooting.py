@@ -1,0 +1,357 @@
+r"""Periodic orbits of a conservative system by shooting with Newton's method.
+
+Unknowns and equations.  A periodic orbit is a start state z0 and a period T with
+Phi_T(z0) = z0, Phi_T the time-T map of :class:`~sinktheory.nnm.system.FlowSystem`
+(N steps of the symplectic scheme, the same N along a branch).  For a conservative
+system these equations are degenerate twice over: every point of the orbit is a
+solution (fixed by a *phase condition*), and the orbits come in one-parameter families
+along which the energy varies, so Phi_T(z0) = z0 has one equation too many (energy
+conservation makes one component redundant) and its Jacobian [M - I, f] is singular
+even with a phase condition.  Following Munoz-Almaraz, Freire, Galan, Doedel and
+Vanderbauwhede (Physica D 181, 2003, "Continuation of periodic orbits in conservative and
+Hamiltonian systems") we add an *unfolding parameter* sigma:
+
+    Phi_T(z0) - z0 + sigma grad H(z0) = 0        (2D equations; the solution has sigma = 0)
+    c . (z0 - z_ref)                   = 0        (phase condition)
+    H(z0) - h                          = 0        (energy constraint, h given)
+
+Unknowns (z0, ln T, sigma): 2D + 2, square.  grad H(z0) spans the direction missing
+from the range of M - I (g^T M = g^T on a periodic orbit, so g is a left null vector of
+M - I), which makes the Jacobian regular at an isolated family member.  Any periodic
+orbit forces sigma = 0 (a nonzero sigma would move the end point across energy levels
+which the flow conserves), so |sigma| is reported as a check; it comes out at the
+level of the energy error of the scheme over one period, not exactly 0, because the
+discrete map conserves a modified energy (O(dt^p) away from H).  Muñoz-Almaraz et al.
+add sigma grad H to the vector field; adding it to the end-point residual is the
+first-order equivalent and needs no non-symplectic integration.
+
+Phase conditions: ``"velocity"`` (default) sets the velocity of one coordinate
+(default the first: the container X for the sink) to zero at t = 0, so orbits start at a
+turning point; every synchronous normal mode passes through one.  ``"orthogonal"``
+uses c = f(z_ref): the start lies on the hyperplane through a reference point normal
+to the flow (the Poincaré section used between continuation steps).
+
+Invariant subspaces: ``free`` lists the state indices that may move; the others keep
+their start values (for the sink, ``subspace="plane"`` keeps y_j = 0, dy_j/dt = 0).  The
+equations are then solved in the subspace only, so a transverse multiplier passing
+through 1 (a symmetry-breaking bifurcation) does not make Newton singular; the transverse
+multipliers still come from the full monodromy.
+
+The period enters as ln T so that the unknowns are of order one whether T is 2 pi or
+1e-4 (light particles oscillate fast).
+
+Examples
+--------
+>>> import numpy as np
+>>> from sinktheory.nnm.system import FlowSystem
+>>> s = FlowSystem("duffing2", [])
+>>> orbit = shoot(s, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=128, energy=0.01)
+>>> round(orbit.frequency, 6), bool(abs(orbit.energy - 0.01) < 1e-14)
+(1.000933, True)
+>>> bool(orbit.residual < 1e-12 and abs(orbit.sigma) < 1e-10)
+True
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import NumericalError, ParameterError
+from .stability import Floquet, floquet
+from .system import FlowSystem
+
+#: Newton stops when the update's largest component is below this (ln T, z0 units).
+XTOL = 1e-11
+#: Newton iterations before giving up.
+MAX_ITER = 25
+
+
+class ShootingError(NumericalError):
+    """Newton's method on the periodicity conditions did not converge."""
+
+
+@dataclass
+class ShootingProblem:
+    """The periodicity equations of one system with the continuation parameter ``parameter``.
+
+    Unknowns u = (z0[free], ln T, sigma, lam): lam is ln h for ``parameter="energy"``
+    (h the energy), otherwise the value of the named system parameter at fixed energy
+    ``energy``.  ``base`` holds the values of the state components that are not free.
+    """
+
+    system: FlowSystem
+    steps: int
+    free: np.ndarray
+    base: np.ndarray
+    parameter: str = "energy"
+    energy: float = math.nan
+    phase: str = "velocity"
+    phase_index: int = 0
+    phase_ref: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        self.free = np.asarray(self.free, dtype=int)
+        self.base = np.asarray(self.base, dtype=float).copy()
+        if self.parameter != "energy":
+            self.system.index(self.parameter)  # validates the name
+        if self.phase not in ("velocity", "orthogonal"):
+            raise ParameterError("phase", self.phase, "'velocity' or 'orthogonal'")
+        D = self.system.dim
+        if self.phase == "velocity" and D + self.phase_index not in set(self.free.tolist()):
+            raise ParameterError(
+                "phase_index", self.phase_index, "a coordinate whose velocity is free"
+            )
+
+    # --- packing ------------------------------------------------------------------
+    def lam(self, system: FlowSystem, h: float) -> float:
+        if self.parameter == "energy":
+            return math.log(h)
+        return float(system.params[system.index(self.parameter)])
+
+    def pack(self, z0: np.ndarray, T: float, sigma: float, lam: float) -> np.ndarray:
+        return np.concatenate([np.asarray(z0)[self.free], [math.log(T), sigma, lam]])
+
+    def unpack(self, u: np.ndarray):
+        z0 = self.base.copy()
+        z0[self.free] = u[: self.free.size]
+        return z0, math.exp(u[-3]), u[-2], u[-1]
+
+    def system_at(self, lam: float) -> tuple[FlowSystem, float]:
+        """(system, energy h) at continuation value lam."""
+        if self.parameter == "energy":
+            return self.system, math.exp(lam)
+        return self.system.with_param(self.parameter, lam), self.energy
+
+    def phase_vector(self, system: FlowSystem) -> tuple[np.ndarray, np.ndarray]:
+        D = system.dim
+        if self.phase == "velocity":
+            c = np.zeros(2 * D)
+            c[D + self.phase_index] = 1.0
+            return c, np.zeros(2 * D)
+        ref = self.base if self.phase_ref is None else self.phase_ref
+        return system.vector_field(ref), ref
+
+    # --- equations ----------------------------------------------------------------
+    def evaluate(self, u: np.ndarray, *, lam_column: bool = True):
+        """G(u) (nF + 2,), its Jacobian (nF + 2, nF + 3) and the orbit data at u."""
+        z0, T, sigma, lam = self.unpack(u)
+        system, h = self.system_at(lam)
+        zT, M = system.propagate(z0, T, steps=self.steps)
+        F = self.free
+        g = system.gradient(z0)
+        fT = system.vector_field(zT)
+        c, ref = self.phase_vector(system)
+        G = np.concatenate([(zT - z0 + sigma * g)[F], [c @ (z0 - ref), system.energy(z0) - h]])
+        n = F.size
+        J = np.zeros((n + 2, n + 3))
+        J[:n, :n] = (M - np.eye(M.shape[0]))[np.ix_(F, F)]
+        J[:n, n] = T * fT[F]
+        J[:n, n + 1] = g[F]
+        J[n, :n] = c[F]
+        J[n + 1, :n] = g[F]
+        if lam_column:
+            if self.parameter == "energy":
+                J[n + 1, n + 2] = -h
+            else:
+                dz, dH = system.param_derivative(z0, T, self.parameter, steps=self.steps)
+                J[:n, n + 2] = dz[F]
+                J[n + 1, n + 2] = dH
+        return G, J, (system, z0, T, sigma, zT, M)
+
+    def orbit(self, u: np.ndarray, data, iterations: int) -> Orbit:
+        system, z0, T, sigma, zT, M = data
+        fl = floquet(M, system.vector_field(z0), system.gradient(z0), self.free)
+        return Orbit(
+            system=system,
+            z0=z0,
+            period=T,
+            steps=self.steps,
+            sigma=float(sigma),
+            residual=float(np.max(np.abs(zT - z0))),
+            iterations=iterations,
+            monodromy=M,
+            floquet=fl,
+            free=tuple(int(i) for i in self.free),
+            u=u.copy(),
+        )
+
+    def newton(self, u: np.ndarray, *, extra=None, max_iter: int = MAX_ITER, xtol: float = XTOL):
+        """Solve G(u) = 0 for u, with lam fixed (``extra`` None) or with one more equation
+        ``extra = (t, u_pred)``: t . (u - u_pred) = 0 (pseudo-arclength)."""
+        u = np.array(u, dtype=float)
+        for it in range(1, max_iter + 1):
+            G, J, data = self.evaluate(u, lam_column=extra is not None)
+            if extra is None:
+                A, b = J[:, :-1], -G
+            else:
+                t, up = extra
+                A = np.vstack([J, t])
+                b = -np.concatenate([G, [t @ (u - up)]])
+            if not np.all(np.isfinite(A)) or not np.all(np.isfinite(b)):
+                raise ShootingError(f"non-finite residual or Jacobian at Newton iteration {it}")
+            try:
+                du = np.linalg.solve(A, b)
+            except np.linalg.LinAlgError:
+                du = np.linalg.lstsq(A, b, rcond=None)[0]
+            if extra is None:
+                du = np.concatenate([du, [0.0]])
+            u = u + du
+            if np.max(np.abs(du)) < xtol * (1 + np.max(np.abs(u[:-2]))):
+                G, J, data = self.evaluate(u, lam_column=True)
+                return u, J, data, it
+            if np.max(np.abs(du)) > 1e3:
+                break
+        raise ShootingError(
+            f"Newton did not converge in {it} iterations (last update {np.max(np.abs(du)):.3g})"
+        )
+
+
+@dataclass
+class Orbit:
+    """A periodic orbit found by :func:`shoot` or along a branch.
+
+    Attributes
+    ----------
+    system : FlowSystem
+        The system (with its parameters at this orbit).
+    z0 : (2D,) start state (q, v); period : T; steps : N (dt = T / N).
+    sigma : the unfolding parameter (0 on an exact periodic orbit; reported as a check).
+    residual : max |Phi_T(z0) - z0|.
+    monodromy : (2D, 2D) Jacobian of the time-T map at z0.
+    floquet : :class:`~sinktheory.nnm.stability.Floquet`
+    free : the free state indices (the invariant subspace holding the orbit).
+    """
+
+    system: FlowSystem
+    z0: np.ndarray
+    period: float
+    steps: int
+    sigma: float
+    residual: float
+    iterations: int
+    monodromy: np.ndarray = field(repr=False)
+    floquet: Floquet = field(repr=False)
+    free: tuple[int, ...] = ()
+    u: np.ndarray | None = field(default=None, repr=False)
+
+    @property
+    def frequency(self) -> float:
+        """omega = 2 pi / T (rad per unit time)."""
+        return 2 * math.pi / self.period
+
+    @property
+    def energy(self) -> float:
+        """H(z0)."""
+        return self.system.energy(self.z0)
+
+    def trajectory(self, samples: int = 200) -> tuple[np.ndarray, np.ndarray]:
+        """(t, z(t)) on ``samples`` + 1 equally spaced times over one period (same steps)."""
+        per = max(1, self.steps // samples)
+        n = self.steps // per
+        dt = self.period / self.steps
+        zs = [self.z0]
+        z = self.z0
+        for _ in range(n):
+            z = self.system.propagate(z, dt * per, steps=per, jacobian=False)
+            zs.append(z)
+        return np.arange(n + 1) * per * dt, np.array(zs)
+
+    def half_period(self) -> tuple[np.ndarray, np.ndarray, float]:
+        """(z(T/2), Jacobian of the half-period map, symmetry error max|z(T/2) + z0|).
+
+        For orbits odd under the half-period shift (the synchronous normal modes of the
+        even potentials here), the transverse coefficient has period T/2 and the
+        transverse monodromy is the square of the half-period block.
+        """
+        if self.steps % 2:
+            raise ParameterError("steps", self.steps, "even for the half-period map")
+        zT, M, zh, Mh = self.system.propagate(self.z0, self.period, steps=self.steps, half=True)
+        return zh, Mh, float(np.max(np.abs(zh + self.z0)))
+
+    def transverse_half_traces(self) -> np.ndarray:
+        """phi_half = tr / 2 of each particle's (y_j, dy_j/dt) block of the half-period map.
+
+        The sink's transverse directions decouple particle by particle on the plane
+        y = 0 (V is even in y), so each 2 x 2 block is that particle's half-period map;
+        it is the coupled-system counterpart of :attr:`sinktheory.floquet.FloquetChart.phi_half`
+        (the paper's fixed-container normal mode).
+        """
+        D = self.system.dim
+        other = [i for i in range(D) if i not in self.free]
+        _, Mh, _ = self.half_period()
+        out = []
+        for i in other:
+            block = Mh[np.ix_([i, D + i], [i, D + i])]
+            out.append(0.5 * np.trace(block))
+        return np.array(out)
+
+
+def subspace_indices(system: FlowSystem, subspace: str | None) -> np.ndarray:
+    """State indices free to move: all (``None``/``"full"``) or, for the sink, the plane
+    y_j = 0 (``"plane"``): X, u_j and their velocities."""
+    D = system.dim
+    if subspace in (None, "full"):
+        return np.arange(2 * D)
+    if subspace == "plane":
+        if not system.system.startswith("sink_"):
+            raise ParameterError("subspace", subspace, "'full' for a system without particles")
+        k = (D - 1) // 2
+        q = list(range(0, 1 + k))
+        return np.array(q + [D + i for i in q])
+    raise ParameterError("subspace", subspace, "'full' or 'plane'")
+
+
+def shoot(
+    system: FlowSystem,
+    z0,
+    T: float,
+    *,
+    steps: int,
+    energy: float | None = None,
+    subspace: str | None = None,
+    phase: str = "velocity",
+    phase_index: int = 0,
+) -> Orbit:
+    """The periodic orbit near (z0, T) at energy ``energy`` (default H(z0)).
+
+    Parameters
+    ----------
+    system : FlowSystem
+    z0 : array (2D,)
+        Guess of the start state (q, v).
+    T : float
+        Guess of the period.
+    steps : int
+        Steps per period N (dt = T / N); choose dt small against the fastest motion.
+    energy : float, optional
+        Energy h of the orbit.
+    subspace : None, "full" or "plane"
+        Invariant subspace to stay in (see :func:`subspace_indices`).
+    phase, phase_index
+        Phase condition (see the module docstring).
+
+    Returns
+    -------
+    Orbit
+
+    Raises
+    ------
+    ShootingError
+        If Newton does not converge.
+    """
+    z0 = np.asarray(z0, dtype=float)
+    if z0.shape != (2 * system.dim,):
+        raise ParameterError("z0", z0.shape, f"a state of length {2 * system.dim}")
+    h = system.energy(z0) if energy is None else float(energy)
+    if not h > 0:
+        raise ParameterError("energy", h, "a positive energy")
+    free = subspace_indices(system, subspace)
+    problem = ShootingProblem(
+        system, int(steps), free, z0, "energy", h, phase, phase_index, phase_ref=z0.copy()
+    )
+    u = problem.pack(z0, T, 0.0, problem.lam(system, h))
+    u, J, data, it = problem.newton(u)
+    return problem.orbit(u, data, it)

@@ -1,0 +1,232 @@
+"""The flow map of a generated engine system and its exact Jacobian (monodromy).
+
+:class:`FlowSystem` wraps one compiled engine system (:mod:`sinktheory.engine`) for the
+periodic-orbit analyses: the state is one vector z = (q, v) of length 2D in the engine's
+coordinate order (for the sink: X, u_1..u_k, y_1..y_k, then their velocities, u absolute),
+and the time-T map is N steps of size dt = T / N of the engine's symplectic splitting
+scheme.  The deviation vectors of the engine start as the identity, with no
+renormalisation, so they return the Jacobian dz(T)/dz(0) of *this discrete map* exactly
+(round-off aside): Newton on the periodicity condition then sees the derivative of the
+very map whose fixed point it seeks.  N is fixed along a branch so that the map is smooth
+in T.
+
+Derivatives that the tangent map does not give:
+
+* d z(T) / dT: the vector field f(z(T)) of the continuous flow.  The discrete map is the
+  time-T flow of a modified Hamiltonian whose vector field differs from f by O(dt^p)
+  (p the order of the scheme), so Newton's Jacobian is that close to exact and the
+  iteration still converges to round-off in a few steps.
+* d z(T) / d(parameter): a central difference (two more runs).
+
+Units: the engine's (for the sink the paper's: container mass 1, spring 1, T = 2 pi).
+
+Examples
+--------
+>>> import numpy as np
+>>> s = FlowSystem("duffing2", [])
+>>> s.dim, s.masses.tolist()
+(2, [1.0, 1.0])
+>>> z = np.array([1e-4, 1e-4, 0.0, 0.0])  # the in-phase linear mode, omega = 1
+>>> zT, M = s.propagate(z, 2 * np.pi, steps=200)
+>>> bool(np.allclose(zT, z, atol=1e-12)), M.shape
+(True, (4, 4))
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..engine.core import Ensemble
+from ..errors import ParameterError
+from ..integrators import DEFAULT_SCHEME, get_scheme
+
+#: Runtime parameter names of the engine systems (sink systems: alpha, beta, gamma, mu).
+SINK_PARAMS = ("alpha", "beta", "gamma", "mu")
+
+
+def parameter_names(system: str) -> tuple[str, ...]:
+    """Names of the runtime parameters of engine ``system``.
+
+    Examples
+    --------
+    >>> parameter_names("sink_flat_n4_k1"), parameter_names("duffing2")
+    (('alpha', 'beta', 'gamma', 'mu'), ())
+    """
+    return SINK_PARAMS if system.startswith("sink_") else ()
+
+
+@dataclass
+class FlowSystem:
+    """Time-T maps of an engine system with their Jacobians.
+
+    Parameters
+    ----------
+    system : str
+        Engine name, e.g. ``"sink_flat_n4_k1"`` or ``"duffing2"``.
+    params : sequence of float
+        The engine's runtime parameters (see :func:`parameter_names`).
+    scheme : str
+        Splitting scheme (:func:`sinktheory.integrators.get_scheme`).
+    """
+
+    system: str
+    params: np.ndarray
+    scheme: str = DEFAULT_SCHEME
+    _scheme: object = field(init=False, repr=False)
+    masses: np.ndarray = field(init=False)
+
+    def __post_init__(self) -> None:
+        self.params = np.ascontiguousarray(self.params, dtype=float)
+        names = parameter_names(self.system)
+        if self.params.size != len(names):
+            raise ParameterError(
+                "params", self.params.tolist(), f"{len(names)} values {names} for {self.system}"
+            )
+        self._scheme = get_scheme(self.scheme)
+        from ..engine.cache import load
+
+        self.module = load(self.system)
+        D = self.module.DIM
+        # masses from the kinetic energy of unit velocities (q = 0)
+        q = np.zeros((D, D + 1))
+        v = np.zeros((D, D + 1))
+        v[:, 1:] = np.eye(D)
+        total = self.module.block_energies(q, v, self.params)[0]
+        self.masses = 2.0 * (total[1:] - total[0])
+
+    @property
+    def dim(self) -> int:
+        """Number of coordinates D (the state has 2D components)."""
+        return int(self.module.DIM)
+
+    @property
+    def parameter_names(self) -> tuple[str, ...]:
+        return parameter_names(self.system)
+
+    def with_param(self, name: str, value: float) -> FlowSystem:
+        """A copy with parameter ``name`` set to ``value``."""
+        p = self.params.copy()
+        p[self.index(name)] = value
+        return FlowSystem(self.system, p, self.scheme)
+
+    def index(self, name: str) -> int:
+        names = self.parameter_names
+        if name not in names:
+            raise ParameterError("parameter", name, f"one of {names or '(none)'}")
+        return names.index(name)
+
+    # --- pointwise quantities -----------------------------------------------------
+    def energy(self, z: np.ndarray, params: np.ndarray | None = None) -> float:
+        """Total energy H(z)."""
+        D = self.dim
+        z = np.asarray(z, float)
+        p = self.params if params is None else params
+        return float(self.module.block_energies(z[:D, None], z[D:, None], p)[0][0])
+
+    def accelerations(self, q: np.ndarray) -> np.ndarray:
+        """Accelerations (D,) at positions q (D,)."""
+        return self.module.block_accelerations(np.asarray(q, float)[:, None], self.params)[:, 0]
+
+    def vector_field(self, z: np.ndarray) -> np.ndarray:
+        """f(z) = (v, a(q))."""
+        D = self.dim
+        return np.concatenate([z[D:], self.accelerations(z[:D])])
+
+    def gradient(self, z: np.ndarray) -> np.ndarray:
+        """grad H(z) = (-M a(q), M v) in the (q, v) coordinates."""
+        D = self.dim
+        return np.concatenate([-self.masses * self.accelerations(z[:D]), self.masses * z[D:]])
+
+    def stiffness(self, q: np.ndarray | None = None, h: float = 1e-6) -> np.ndarray:
+        """-da/dq (D, D) at q (default 0) by central differences (for linear modes)."""
+        D = self.dim
+        q = np.zeros(D) if q is None else np.asarray(q, float)
+        K = np.empty((D, D))
+        for j in range(D):
+            e = np.zeros(D)
+            e[j] = h
+            K[:, j] = -(self.accelerations(q + e) - self.accelerations(q - e)) / (2 * h)
+        return K
+
+    # --- maps -----------------------------------------------------------------------
+    def propagate(
+        self,
+        z0: np.ndarray,
+        T: float,
+        *,
+        steps: int,
+        jacobian: bool = True,
+        half: bool = False,
+        params: np.ndarray | None = None,
+    ):
+        """z(T) after ``steps`` steps of size T / steps, and its Jacobian dz(T)/dz(0).
+
+        Parameters
+        ----------
+        z0 : array (2D,) or (2D, R)
+            Start state(s); columns are independent runs.
+        T : float
+            Time (> 0).
+        steps : int
+            N; with ``half`` it must be even and the map at T/2 is returned too.
+        jacobian : bool
+            Also return the monodromy (2D, 2D) (or (2D, 2D, R)).
+        params : array, optional
+            Parameters other than the system's (for finite differences).
+
+        Returns
+        -------
+        zT, M  or, with ``half``, (zT, M, z_half, M_half).
+        """
+        if not (math.isfinite(T) and T > 0):
+            raise ParameterError("T", T, "a finite positive period")
+        steps = int(steps)
+        if half and steps % 2:
+            raise ParameterError("steps", steps, "even when the half-period map is wanted")
+        D = self.dim
+        z0 = np.asarray(z0, float)
+        single = z0.ndim == 1
+        Z = z0[:, None] if single else z0
+        R = Z.shape[1]
+        p = self.params if params is None else np.asarray(params, float)
+        if jacobian:
+            eye = np.repeat(np.eye(2 * D)[:, :, None], R, axis=2)
+            dq, dv = eye[:D].copy(), eye[D:].copy()
+        else:
+            dq = dv = None
+        # the engine advances its arrays in place: give it copies
+        ens = Ensemble(self.system, Z[:D].copy(), Z[D:].copy(), p, dq=dq, dv=dv, tangent="none")
+        dt = T / steps
+        parts = (steps // 2, steps - steps // 2) if half else (steps,)
+        states, jacobians = [], []
+        for n in parts:
+            ens.run(self._scheme, dt=dt, steps=n, segments=1, record=())
+            zT = np.concatenate([ens.q, ens.v])
+            states.append(zT[:, 0] if single else zT)
+            if jacobian:
+                M = np.concatenate([ens.dq, ens.dv])
+                jacobians.append(M[:, :, 0] if single else M)
+        res = []
+        for k in range(len(parts) - 1, -1, -1):  # full period first, then the half
+            res.append(states[k])
+            if jacobian:
+                res.append(jacobians[k])
+        return tuple(res) if len(res) > 1 else res[0]
+
+    def param_derivative(
+        self, z0: np.ndarray, T: float, name: str, *, steps: int, rel: float = 1e-6
+    ) -> tuple[np.ndarray, float]:
+        """(d z(T) / dp, dH(z0) / dp) for parameter ``name`` by central differences."""
+        i = self.index(name)
+        p0 = self.params
+        h = rel * max(1.0, abs(p0[i]))
+        out, energies = [], []
+        for s in (1, -1):
+            p = p0.copy()
+            p[i] += s * h
+            out.append(self.propagate(z0, T, steps=steps, jacobian=False, params=p))
+            energies.append(self.energy(z0, p))
+        return (out[0] - out[1]) / (2 * h), (energies[0] - energies[1]) / (2 * h)
