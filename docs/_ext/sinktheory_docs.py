@@ -102,6 +102,9 @@ def _latex(value) -> str:
     return sp.latex(value, symbol_names=_symbol_names())
 
 
+ALIGN = "\x00"  # alignment point, "&" when a display has several lines
+
+
 class SymbolicMath(SphinxDirective):
     required_arguments = 1
     final_argument_whitespace = True
@@ -128,10 +131,14 @@ class SymbolicMath(SphinxDirective):
             if lhs:
                 if shape is not None:
                     lhs = lhs.replace("{shape}", rf"{{\text{{{shape}}}}}")
-                body = f"{lhs} = {body}"
+                body = f"{lhs} {ALIGN}= {body}"
             elif "zero" in self.options:
                 body = f"{body} = 0"
+                if shape is not None:
+                    body = rf"\text{{{shape}:}} \quad {ALIGN} {body}"
             lines.append(body)
+        # several lines are aligned at "=" (Sphinx wraps them in an aligned environment)
+        lines = [line.replace(ALIGN, "&" if len(lines) > 1 else "") for line in lines]
         node = nodes.math_block("\n\n".join(lines), "\n\n".join(lines), nowrap=False, number=None)
         node["docname"] = self.env.docname
         node["label"] = None
