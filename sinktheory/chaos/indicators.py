@@ -1,0 +1,244 @@
+"""Chaos indicators of any engine system: one call, the ensembles it needs, one result.
+
+The engine (:class:`sinktheory.engine.core.Ensemble`) renormalises deviation vectors at
+every segment end (and every ``renorm`` steps inside a segment, if asked) in one of two
+ways, so an analysis may need two ensembles over the same orbits:
+
+* ``orthonormalise`` (modified Gram-Schmidt of 2D vectors: Benettin et al. 1980, the QR
+  method): the accumulated ln R_ii give the whole Lyapunov spectrum;
+* ``normalise`` (each vector on its own): the first vector gives lambda_1 and MEGNO, and
+  the volume of the first k unit vectors is GALI_k (Skokos, Bountis & Antonopoulos 2007).
+
+Vector 0 is normalised identically in both modes, so lambda_1 and MEGNO are bitwise the
+same whichever ensemble carries them; when both are needed the orbits are integrated
+twice (the cost of an orbit is small next to that of 2D tangent vectors).
+
+Norms are Euclidean in the engine's (q, v) coordinates; the exponents do not depend on the
+norm, finite-time values do by O(ln cond(mass matrix) / t).
+
+Examples
+--------
+>>> import numpy as np
+>>> q, v = np.array([[0.0], [-0.25]]), np.array([[0.42081], [0.0]])  # Henon-Heiles, E = 1/8
+>>> res = indicators("henon_heiles", q, v, [], dt=0.05, steps=20, segments=50,
+...                  spectrum=True, megno=True)
+>>> res.spectrum.shape, bool(abs(res.pair_sums).max() < 0.05)
+((1, 4), True)
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import validation as val
+from ..engine.core import Ensemble
+from ..errors import ParameterError
+from ..integrators import DEFAULT_SCHEME, get_scheme
+from .result import ChaosResult
+from .vectors import random_vectors
+
+
+def check_gali(gali: int, dim: int) -> int:
+    """k of GALI_k: 0 (none) or an integer in [2, 2D]."""
+    k = val.positive_int("gali", gali, minimum=0, maximum=2 * dim)
+    if k == 1:
+        raise ParameterError("gali", gali, f"0 (none) or an integer in [2, {2 * dim}]")
+    return k
+
+
+def _run(system, q, v, params, vectors, mode, scheme, dt, steps, segments, opts, **kw):
+    """One ensemble with deviation vectors: (Records, Ensemble)."""
+    dq, dv = vectors
+    ens = Ensemble(
+        system,
+        np.array(q, float),  # copies: the engine advances its arrays in place
+        np.array(v, float),
+        params,
+        dq=dq,
+        dv=dv,
+        tangent=mode,
+        reference_energy=opts["reference_energy"],
+    )
+    rec = ens.run(
+        scheme,
+        dt=dt,
+        steps=steps,
+        segments=segments,
+        record=("logs",),
+        renorm=opts["renorm"],
+        bound=opts["bound"],
+        block=opts["block"],
+        progress=opts["progress"],
+        **kw,
+    )
+    return rec, ens
+
+
+def indicators(
+    system: str,
+    q,
+    v,
+    params,
+    *,
+    dt: float,
+    steps: int,
+    segments: int,
+    spectrum: bool = False,
+    gali: int = 0,
+    megno: bool = False,
+    transverse: tuple | None = None,
+    method: str = DEFAULT_SCHEME,
+    renorm: int = 0,
+    seed: int = 0,
+    bound: float = math.inf,
+    block: int | None = None,
+    progress: bool | None = False,
+    reference_energy=None,
+    parameters: dict | None = None,
+) -> ChaosResult:
+    """Lyapunov exponents, GALI/SALI, MEGNO and transverse exponents of R orbits.
+
+    Parameters
+    ----------
+    system : str
+        Engine system (``sink_<shape>_n<N>_k<K>``, ``henon_heiles``, ``duffing2``).
+    q, v : arrays (D, R)
+        Start states (positions, velocities); not modified.
+    params : sequence of float
+        The system's runtime parameters.
+    dt, steps, segments : float, int, int
+        Step, steps per segment (records and renormalisation at every segment end), and
+        number of segments.
+    spectrum : bool
+        Full spectrum (2D exponents) by the QR method.
+    gali : int
+        k of GALI_k (0: none; 2 also gives SALI).
+    megno : bool
+        MEGNO Y(t) of the first vector.
+    transverse : (q, v, mask), optional
+        Start states (D, R) on an invariant subspace and the phase-space directions
+        (bool, 2D) transverse to it: the growth of one vector confined to them.
+    method : str
+        Splitting scheme (:data:`sinktheory.integrators.SCHEMES`).
+    renorm : int >= 0
+        Steps between renormalisations inside a segment (0: at segment ends only); needed
+        when the growth over one segment could overflow (ln growth > ~700).
+    seed : int
+        Seed of the random orthonormal start vectors (:mod:`~sinktheory.chaos.vectors`).
+    bound : float
+        Largest relative total-energy error tolerated (engine audit at segment ends).
+    block : int, optional
+        Runs per block of the engine (results are bitwise the same for any value).
+    reference_energy : array (R,), optional
+        H0 of the energy audit (default: energy of the start state).
+
+    Returns
+    -------
+    ChaosResult
+    """
+    q = np.asarray(q, float)
+    D, R = q.shape
+    scheme = get_scheme(method)
+    gali = check_gali(gali, D)
+    renorm = val.positive_int("renorm", renorm, minimum=0)
+    segments = val.positive_int("segments", segments)
+    steps = val.positive_int("steps", steps)
+    dt = val.positive("dt", dt)
+    opts = {
+        "renorm": renorm,
+        "bound": bound,
+        "block": block,
+        "progress": progress,
+        "reference_energy": reference_energy,
+    }
+    count = max(2 * D if spectrum else 0, gali, 1)
+    dq, dv = random_vectors(D, count, R, seed)
+    times = dt * steps * np.arange(segments + 1)
+    worst = np.zeros(R)
+    out: dict = {}
+    need_normalise = gali > 0 or not spectrum
+    if spectrum:
+        rec, _ = _run(
+            system,
+            q,
+            v,
+            params,
+            (dq, dv),
+            "orthonormalise",
+            scheme,
+            dt,
+            steps,
+            segments,
+            opts,
+            megno=megno and not need_normalise,
+            label="spectrum ",
+        )
+        out["spectrum_logs"] = rec.logs
+        out["log_growth"] = rec.logs[:, :, 0]
+        if megno and not need_normalise:
+            out["megno"] = rec.megno
+        worst = np.maximum(worst, rec.worst)
+    if need_normalise:
+        m = max(gali, 1)
+        rec, _ = _run(
+            system,
+            q,
+            v,
+            params,
+            (dq[:, :m].copy(), dv[:, :m].copy()),
+            "normalise",
+            scheme,
+            dt,
+            steps,
+            segments,
+            opts,
+            gali=gali,
+            megno=megno,
+            label="lambda1 ",
+        )
+        out["log_growth"] = rec.logs[:, :, 0]
+        if gali:
+            out["gali"] = rec.gali
+        if megno:
+            out["megno"] = rec.megno
+        worst = np.maximum(worst, rec.worst)
+    if transverse is not None:
+        qt, vt, mask = transverse
+        vecs = random_vectors(D, 1, R, seed, mask=mask)
+        topts = dict(opts, reference_energy=None)
+        rec, _ = _run(
+            system,
+            qt,
+            vt,
+            params,
+            vecs,
+            "normalise",
+            scheme,
+            dt,
+            steps,
+            segments,
+            topts,
+            label="transverse ",
+        )
+        out["transverse_logs"] = rec.logs[:, :, 0]
+        worst = np.maximum(worst, rec.worst)
+    info = {
+        "system": system,
+        "params": [float(p) for p in np.atleast_1d(np.asarray(params, float))],
+        "method": scheme.name,
+        "dt": float(dt),
+        "steps_per_segment": int(steps),
+        "segments": int(segments),
+        "renorm": int(renorm),
+        "seed": int(seed),
+    }
+    info.update(parameters or {})
+    return ChaosResult(
+        times=times,
+        gali_order=gali,
+        run_errors=worst,
+        parameters=info,
+        **out,
+    )

@@ -1,0 +1,269 @@
+"""One result object for every chaos indicator of an ensemble run.
+
+All exponents are per unit time (the paper's units: container period T = 2 pi); ``times``
+are the segment ends (for the sink, the container periods t_j = j T) at which the engine
+renormalised the deviation vectors and recorded the indicators.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..sinkstats import ensemble_mean
+
+
+def sali_from_gali2(g: np.ndarray) -> np.ndarray:
+    """SALI of two unit vectors from their GALI_2 = sin(theta).
+
+    SALI = min(|w1 + w2|, |w1 - w2|) = 2 sin(phi/2), phi = min(theta, pi - theta), and
+    sin(phi) = GALI_2; written as GALI_2 / cos(phi/2) so tiny values keep their digits.
+
+    Examples
+    --------
+    >>> th = np.array([1e-13, 0.3, np.pi / 2, np.pi - 0.3])
+    >>> w1, w2 = np.array([1.0, 0.0]), np.stack([np.cos(th), np.sin(th)], 1)
+    >>> direct = np.minimum(np.linalg.norm(w1 + w2, axis=1), np.linalg.norm(w1 - w2, axis=1))
+    >>> bool(np.allclose(sali_from_gali2(np.sin(th)), direct, rtol=1e-12, atol=0))
+    True
+    """
+    g = np.clip(np.asarray(g, float), 0.0, 1.0)
+    return g / np.cos(0.5 * np.arcsin(g))
+
+
+def time_average(times: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Running time average (1/t) int_0^t y ds by the trapezoid rule over the samples
+    (last axis); the first sample (t = 0) is returned as is."""
+    y = np.asarray(y, float)
+    dt = np.diff(times)
+    integral = np.concatenate(
+        [np.zeros(y.shape[:-1] + (1,)), np.cumsum(0.5 * dt * (y[..., 1:] + y[..., :-1]), -1)], -1
+    )
+    out = y.copy()
+    out[..., 1:] = integral[..., 1:] / (times[1:] - times[0])
+    return out
+
+
+@dataclass(frozen=True)
+class ChaosResult:
+    """Chaos indicators of R runs, recorded at the segment ends.
+
+    Attributes
+    ----------
+    times : ndarray (S + 1,)
+        Segment ends t_0 = 0, ..., t_S (for the sink, multiples of the period T = 2 pi).
+    log_growth : ndarray (R, S + 1)
+        ln |delta_1(t)| of the first deviation vector (its growth with every
+        renormalisation accumulated); lambda_1(t) = log_growth / t.
+    spectrum_logs : ndarray (R, S + 1, 2D) or None
+        Accumulated ln R_ii of the QR (modified Gram-Schmidt) renormalisations of 2D
+        vectors; lambda_i(t) = spectrum_logs[..., i] / t, in decreasing order.
+    gali : ndarray (R, S + 1) or None
+        GALI_k(t) of the first ``gali_order`` unit deviation vectors.
+    gali_order : int
+        k of ``gali`` (0: not computed).
+    megno : ndarray (R, S + 1) or None
+        MEGNO Y(t) of the first deviation vector (Cincotta & Simo 2000).
+    transverse_logs : ndarray (R, S + 1) or None
+        ln |delta_y(t)| of a deviation vector in the y-directions, for runs started on the
+        invariant subspace y = 0 (their own orbits, not those of ``log_growth``).
+    run_errors : ndarray (R,)
+        Largest relative total-energy error of each run (of every ensemble that ran).
+    parameters : dict
+        What was run (system, parameters, method, dt, steps, renorm, seed, ...).
+    """
+
+    times: np.ndarray
+    log_growth: np.ndarray
+    spectrum_logs: np.ndarray | None = None
+    gali: np.ndarray | None = None
+    gali_order: int = 0
+    megno: np.ndarray | None = None
+    transverse_logs: np.ndarray | None = None
+    run_errors: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    parameters: dict = field(default_factory=dict)
+
+    # ----------------------------------------------------------------- per run
+    @property
+    def runs(self) -> int:
+        return self.log_growth.shape[0]
+
+    @property
+    def duration(self) -> float:
+        return float(self.times[-1] - self.times[0])
+
+    @property
+    def lambda1(self) -> np.ndarray:
+        """Maximal Lyapunov exponent of each run at the last time, (R,)."""
+        return self.log_growth[:, -1] / self.duration
+
+    @property
+    def finite_time_lambda1(self) -> np.ndarray:
+        """lambda_1(t_j) = ln|delta_1(t_j)| / t_j for j >= 1, (R, S)."""
+        return self.log_growth[:, 1:] / (self.times[1:] - self.times[0])
+
+    @property
+    def spectrum(self) -> np.ndarray | None:
+        """Lyapunov spectrum lambda_1 >= ... >= lambda_2D of each run, (R, 2D)."""
+        if self.spectrum_logs is None:
+            return None
+        return self.spectrum_logs[:, -1] / self.duration
+
+    @property
+    def pair_sums(self) -> np.ndarray | None:
+        """lambda_i + lambda_{2D+1-i}, i = 1..D, of each run (0 for a symplectic flow), (R, D)."""
+        s = self.spectrum
+        if s is None:
+            return None
+        D = s.shape[1] // 2
+        return s[:, :D] + s[:, ::-1][:, :D]
+
+    @property
+    def sali(self) -> np.ndarray | None:
+        """SALI(t) of the first two vectors (only when ``gali_order`` is 2), (R, S + 1)."""
+        if self.gali is None or self.gali_order != 2:
+            return None
+        return sali_from_gali2(self.gali)
+
+    @property
+    def mean_megno(self) -> np.ndarray | None:
+        """Time-averaged MEGNO <Y>(t) (trapezoid over the segment ends), (R, S + 1).
+
+        Tends to 2 on quasi-periodic orbits, 0 on stable periodic ones and grows like
+        lambda_1 t / 2 on chaotic ones.
+        """
+        if self.megno is None:
+            return None
+        return time_average(self.times, self.megno)
+
+    @property
+    def transverse(self) -> np.ndarray | None:
+        """Transverse exponent of the invariant subspace y = 0 of each run, (R,)."""
+        if self.transverse_logs is None:
+            return None
+        return self.transverse_logs[:, -1] / self.duration
+
+    def window_exponents(self, window: int, logs: np.ndarray | None = None):
+        """Finite-time exponents over consecutive windows of ``window`` segments.
+
+        Returns (ends, exponents): window end times (W,) and, per run, (L(t_end) -
+        L(t_start)) / (t_end - t_start), shape (R, W), of ``logs`` (default
+        ``log_growth``; any (R, S + 1, ...) array of accumulated logs).
+        """
+        logs = self.log_growth if logs is None else logs
+        window = max(1, int(window))
+        idx = np.arange(0, len(self.times), window)
+        t = self.times[idx]
+        return t[1:], np.diff(logs[:, idx], axis=1) / np.diff(t).reshape(
+            (1, -1) + (1,) * (logs.ndim - 2)
+        )
+
+    # ----------------------------------------------------------------- ensemble
+    def mean(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """Ensemble mean and standard error of a per-run quantity (see
+        :func:`sinktheory.sinkstats.ensemble_mean`): ``name`` is an attribute or property
+        of shape (R, ...), e.g. "lambda1", "spectrum", "finite_time_lambda1", "gali"."""
+        a = getattr(self, name)
+        if a is None:
+            raise AttributeError(f"{name} was not computed in this run")
+        a = np.asarray(a, float)
+        shape = a.shape[1:]
+        m, se = ensemble_mean(a.reshape(a.shape[0], -1))
+        return m.reshape(shape), se.reshape(shape)
+
+    def as_dict(self, *, series: bool = False) -> dict:
+        """JSON-ready summary: per-run final values, ensemble mean and standard error.
+
+        ``series=True`` adds the ensemble mean (and standard error) of the time series
+        (finite-time lambda_1, GALI, MEGNO) at ``times``.
+        """
+
+        def clean(x):
+            x = np.asarray(x, float)
+            return (
+                [None if not math.isfinite(v) else float(v) for v in x.ravel()]
+                if x.ndim
+                else (float(x) if math.isfinite(float(x)) else None)
+            )
+
+        def nested(x):
+            return np.where(np.isfinite(x), x, np.nan).tolist()
+
+        out: dict = {"parameters": dict(self.parameters), "runs": self.runs}
+        out["time"] = self.duration
+        out["max_relative_energy_error"] = float(np.max(self.run_errors, initial=0.0))
+        names = ["lambda1"]
+        if self.spectrum_logs is not None:
+            names += ["spectrum", "pair_sums"]
+        if self.transverse_logs is not None:
+            names.append("transverse")
+        for name in names:
+            per_run = getattr(self, name)
+            m, se = self.mean(name)
+            out[name] = {"runs": nested(per_run), "mean": clean(m), "stderr": clean(se)}
+        finals = {}
+        if self.gali is not None:
+            finals[f"gali{self.gali_order}"] = self.gali[:, -1]
+        if self.sali is not None:
+            finals["sali"] = self.sali[:, -1]
+        if self.megno is not None:
+            finals["megno"] = self.megno[:, -1]
+            finals["mean_megno"] = self.mean_megno[:, -1]
+        for name, per_run in finals.items():
+            m, se = ensemble_mean(per_run[:, None])
+            out[name] = {"runs": nested(per_run), "mean": clean(m[0]), "stderr": clean(se[0])}
+        if series:
+            s = {"times": self.times.tolist()}
+            m, se = self.mean("finite_time_lambda1")
+            s["lambda1"] = {"mean": [None] + clean(m), "stderr": [None] + clean(se)}
+            for name in ("gali", "megno"):
+                a = getattr(self, name)
+                if a is not None:
+                    m, se = ensemble_mean(a)
+                    s[name] = {"mean": clean(m), "stderr": clean(se)}
+            out["series"] = s
+        return out
+
+    def to_dataset(self):
+        """The result as an :class:`xarray.Dataset` (dims run, time, exponent).
+
+        Examples
+        --------
+        >>> r = ChaosResult(np.arange(3.0), np.array([[0.0, 1.0, 2.0]]))
+        >>> ds = r.to_dataset()
+        >>> float(ds.lambda1[0]), ds.log_growth.dims
+        (1.0, ('run', 'time'))
+        """
+        import xarray as xr
+
+        rt = ("run", "time")
+        data = {
+            "log_growth": (rt, self.log_growth),
+            "lambda1": (("run",), self.lambda1),
+            "run_errors": (("run",), np.asarray(self.run_errors, float))
+            if np.size(self.run_errors) == self.runs
+            else (("run",), np.zeros(self.runs)),
+        }
+        if self.spectrum_logs is not None:
+            data["spectrum_logs"] = (rt + ("exponent",), self.spectrum_logs)
+            data["spectrum"] = (("run", "exponent"), self.spectrum)
+        if self.gali is not None:
+            data["gali"] = (rt, self.gali)
+        if self.sali is not None:
+            data["sali"] = (rt, self.sali)
+        if self.megno is not None:
+            data["megno"] = (rt, self.megno)
+            data["mean_megno"] = (rt, self.mean_megno)
+        if self.transverse_logs is not None:
+            data["transverse_logs"] = (rt, self.transverse_logs)
+            data["transverse"] = (("run",), self.transverse)
+        attrs = {
+            k: (v if isinstance(v, int | float | str) else str(v))
+            for k, v in self.parameters.items()
+        }
+        attrs["gali_order"] = self.gali_order
+        return xr.Dataset(
+            data, coords={"time": self.times, "run": np.arange(self.runs)}, attrs=attrs
+        )

@@ -1,0 +1,78 @@
+"""Initial deviation vectors: seeded, orthonormal, optionally confined to a subspace.
+
+Deviation vectors live in the engine's coordinates (q, v) (positions and velocities, see
+:class:`sinktheory.engine.core.Ensemble`).  Run r draws its vectors from
+``SeedSequence(seed, spawn_key=(r, 0))`` -- the first child of the seed that
+:func:`sinktheory.simulate.random_positions` gives run r -- so they depend only on the seed
+and r, never on how runs are spread over threads.  The columns are orthonormalised by
+modified Gram-Schmidt in plain numpy (no LAPACK, whose results may depend on threads).
+
+Examples
+--------
+>>> dq, dv = random_vectors(dim=2, count=3, runs=2, seed=1)
+>>> dq.shape
+(2, 3, 2)
+>>> W = np.concatenate([dq[:, :, 0], dv[:, :, 0]])  # the 3 vectors of run 0, (4, 3)
+>>> bool(np.allclose(W.T @ W, np.eye(3), atol=1e-14))
+True
+>>> mask = [False, False, True, False, False, False]  # the direction of q_2 only
+>>> dq, dv = random_vectors(dim=3, count=1, runs=1, seed=0, mask=mask)
+>>> dq[:, 0, 0].tolist(), dv[:, 0, 0].tolist()
+([0.0, 0.0, 1.0], [0.0, 0.0, 0.0])
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import ParameterError
+
+
+def orthonormalise(W: np.ndarray) -> np.ndarray:
+    """Modified Gram-Schmidt of the columns of W (n, m), m <= n, in a fixed order."""
+    W = np.array(W, dtype=float)
+    for m in range(W.shape[1]):
+        for l in range(m):  # noqa: E741 - the usual index name
+            W[:, m] -= (W[:, l] @ W[:, m]) * W[:, l]
+        norm = np.sqrt(W[:, m] @ W[:, m])
+        if not norm > 0:
+            raise ParameterError("vectors", "linearly dependent vectors", "independent vectors")
+        W[:, m] /= norm
+    return W
+
+
+def vector_seed(seed: int, run: int) -> np.random.SeedSequence:
+    """The seed of run ``run``'s deviation vectors (first child of its position seed)."""
+    return np.random.SeedSequence(seed, spawn_key=(int(run), 0))
+
+
+def random_vectors(
+    dim: int, count: int, runs: int, seed: int, *, mask=None
+) -> tuple[np.ndarray, np.ndarray]:
+    """``count`` orthonormal random deviation vectors for each of ``runs`` runs.
+
+    Parameters
+    ----------
+    dim : int
+        Number of coordinates D (the phase space has 2D dimensions).
+    count : int
+        Vectors per run M, at most the number of free phase-space directions.
+    runs, seed : int
+        Ensemble size and seed (see the module docstring).
+    mask : array of bool (2D,), optional
+        Phase-space directions (q_0..q_{D-1}, v_0..v_{D-1}) the vectors may use; the others
+        stay exactly zero.
+
+    Returns
+    -------
+    dq, dv : arrays (D, M, R)
+    """
+    mask = np.ones(2 * dim, bool) if mask is None else np.asarray(mask, bool)
+    free = int(mask.sum())
+    if mask.shape != (2 * dim,) or not 1 <= count <= free:
+        raise ParameterError("vectors", count, f"between 1 and {free} (free directions)")
+    W = np.zeros((2 * dim, count, runs))
+    for r in range(runs):
+        g = np.random.default_rng(vector_seed(seed, r))
+        W[mask, :, r] = orthonormalise(g.standard_normal((free, count)))
+    return np.ascontiguousarray(W[:dim]), np.ascontiguousarray(W[dim:])
