@@ -67,6 +67,8 @@ from .system import FlowSystem
 XTOL = 1e-11
 #: Newton iterations before giving up.
 MAX_ITER = 25
+#: Largest Newton update in scaled units (a damped step beyond it).
+MAX_STEP = 0.25
 
 
 class ShootingError(NumericalError):
@@ -139,7 +141,10 @@ class ShootingProblem:
         """G(u) (nF + 2,), its Jacobian (nF + 2, nF + 3) and the orbit data at u."""
         z0, T, sigma, lam = self.unpack(u)
         system, h = self.system_at(lam)
-        zT, M = system.propagate(z0, T, steps=self.steps)
+        try:
+            zT, M = system.propagate(z0, T, steps=self.steps)
+        except NumericalError as err:  # the step is too large for a far-off iterate
+            raise ShootingError(f"integration failed during Newton: {err}") from err
         F = self.free
         g = system.gradient(z0)
         fT = system.vector_field(zT)
@@ -178,34 +183,74 @@ class ShootingProblem:
             u=u.copy(),
         )
 
+    def scales(self, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(unknown scales, equation scales) for equilibration and the stopping test.
+
+        Positions scale with their largest component a, velocities with a omega
+        (omega = 2 pi / T), ln T, sigma and lam with 1; the equations like the
+        components they are residuals of, the phase row like a velocity (or like
+        |c| a), the energy row like h.
+        """
+        z0, T, _, lam = self.unpack(u)
+        system, h = self.system_at(lam)
+        D = system.dim
+        F = self.free
+        a = max(float(np.max(np.abs(z0[:D]))), 1e-300)
+        w = 2 * math.pi / T
+        zs = np.where(F < D, a, a * w)
+        c, _ = self.phase_vector(system)
+        phase = float(np.abs(c[F]) @ zs) or 1.0
+        gs = np.abs(system.gradient(z0)[F]) @ zs
+        usc = np.concatenate([zs, [1.0, 1.0 / max(gs / max(zs.max(), 1e-300), 1e-300), 1.0]])
+        gsc = np.concatenate([zs, [phase, max(abs(h), gs, 1e-300)]])
+        return usc, gsc
+
     def newton(self, u: np.ndarray, *, extra=None, max_iter: int = MAX_ITER, xtol: float = XTOL):
         """Solve G(u) = 0 for u, with lam fixed (``extra`` None) or with one more equation
-        ``extra = (t, u_pred)``: t . (u - u_pred) = 0 (pseudo-arclength)."""
+        ``extra = (t, u_pred)``: t . (u - u_pred) = 0 (pseudo-arclength).
+
+        The linear systems are equilibrated with :meth:`scales`; Newton stops when every
+        update component is below ``xtol`` times its scale, or when the scaled residual
+        is at round-off level (1e-12) and stops decreasing (the map's own noise).
+        """
         u = np.array(u, dtype=float)
+        last = math.inf
         for it in range(1, max_iter + 1):
             G, J, data = self.evaluate(u, lam_column=extra is not None)
+            usc, gsc = self.scales(u)
             if extra is None:
-                A, b = J[:, :-1], -G
+                A, b = J[:, :-1] * usc[:-1], -G
+                rs = gsc
             else:
                 t, up = extra
-                A = np.vstack([J, t])
+                A = np.vstack([J, t]) * usc
                 b = -np.concatenate([G, [t @ (u - up)]])
+                rs = np.concatenate([gsc, [1.0]])
+            A, b = A / rs[:, None], b / rs
+            res = float(np.max(np.abs(b)))
             if not np.all(np.isfinite(A)) or not np.all(np.isfinite(b)):
                 raise ShootingError(f"non-finite residual or Jacobian at Newton iteration {it}")
+            if res < 1e-12 and res >= 0.5 * last:
+                return u, J, data, it - 1
+            last = min(last, res)
             try:
-                du = np.linalg.solve(A, b)
+                y = np.linalg.solve(A, b)
             except np.linalg.LinAlgError:
-                du = np.linalg.lstsq(A, b, rcond=None)[0]
+                y = np.linalg.lstsq(A, b, rcond=None)[0]
+            big = float(np.max(np.abs(y)))
+            if big > MAX_STEP:  # damped far from the solution (scaled units)
+                y = y * (MAX_STEP / big)
+            du = y * (usc[:-1] if extra is None else usc)
             if extra is None:
                 du = np.concatenate([du, [0.0]])
             u = u + du
-            if np.max(np.abs(du)) < xtol * (1 + np.max(np.abs(u[:-2]))):
+            if np.max(np.abs(y[:-1] if extra is None else y)) < xtol:
                 G, J, data = self.evaluate(u, lam_column=True)
                 return u, J, data, it
-            if np.max(np.abs(du)) > 1e3:
-                break
+
         raise ShootingError(
-            f"Newton did not converge in {it} iterations (last update {np.max(np.abs(du)):.3g})"
+            f"Newton did not converge in {it} iterations (last scaled update "
+            f"{np.max(np.abs(y)):.3g}, scaled residual {res:.3g})"
         )
 
 

@@ -70,11 +70,15 @@ class FlowSystem:
         The engine's runtime parameters (see :func:`parameter_names`).
     scheme : str
         Splitting scheme (:func:`sinktheory.integrators.get_scheme`).
+    members : int
+        Number of members (particles) for engines whose dimension is read from the
+        state (the sink: D = 1 + 2 k); ignored for fixed-dimension systems.
     """
 
     system: str
     params: np.ndarray
     scheme: str = DEFAULT_SCHEME
+    members: int = 0
     _scheme: object = field(init=False, repr=False)
     masses: np.ndarray = field(init=False)
 
@@ -89,7 +93,7 @@ class FlowSystem:
         from ..engine.cache import load
 
         self.module = load(self.system)
-        D = self.module.DIM
+        D = self.dim
         # masses from the kinetic energy of unit velocities (q = 0)
         q = np.zeros((D, D + 1))
         v = np.zeros((D, D + 1))
@@ -100,7 +104,10 @@ class FlowSystem:
     @property
     def dim(self) -> int:
         """Number of coordinates D (the state has 2D components)."""
-        return int(self.module.DIM)
+        mod = self.module
+        if hasattr(mod, "DIM"):
+            return int(mod.DIM)
+        return int(mod.SHARED + getattr(mod, "MEMBER_COORDS", 0) * self.members)
 
     @property
     def parameter_names(self) -> tuple[str, ...]:
@@ -110,7 +117,7 @@ class FlowSystem:
         """A copy with parameter ``name`` set to ``value``."""
         p = self.params.copy()
         p[self.index(name)] = value
-        return FlowSystem(self.system, p, self.scheme)
+        return FlowSystem(self.system, p, self.scheme, self.members)
 
     def index(self, name: str) -> int:
         names = self.parameter_names

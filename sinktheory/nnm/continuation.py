@@ -1,0 +1,406 @@
+"""Pseudo-arclength continuation of periodic orbits in energy or a system parameter.
+
+A branch is a curve u(s) of solutions of the shooting equations G(u) = 0 of
+:class:`~sinktheory.nnm.shooting.ShootingProblem`, u = (z0[free], ln T, sigma, lam),
+with lam = ln h (energy h) or a well parameter (alpha, beta, gamma, mu) at fixed energy.
+Each step predicts u + ds t along the unit tangent t (the null vector of the Jacobian
+dG/du, oriented to continue the previous one) and corrects with Newton on G = 0 plus
+Keller's arclength equation t . (u - u_pred) = 0, so folds (lam turning back) are passed
+without trouble.  ds adapts to the number of Newton iterations.
+
+Along the branch every point carries its period, frequency, energy, all Floquet
+multipliers (full monodromy, in-plane nontrivial and transverse sets), the distance of
+the trivial pair from 1, and the stability.  Events are detected from sign changes of
+the test functions of :mod:`sinktheory.nnm.stability` between consecutive points and
+located by the Illinois (regula falsi) method on the arclength from the earlier point:
+
+* ``fold``: d lam / ds changes sign;
+* ``period-doubling``: a nontrivial in-plane multiplier crosses -1;
+* ``transverse-period-doubling``: a transverse multiplier crosses -1;
+* ``symmetry-breaking``: a transverse multiplier crosses +1 (orbits leaving the
+  invariant plane branch off);
+* ``branch-point``: an in-plane multiplier crosses +1 away from a fold.
+
+:func:`switch_branch` starts the period-2T branch at a period doubling (or the
+symmetry-broken branch at a symmetry-breaking point) from the critical eigenvector.
+
+Examples
+--------
+>>> import numpy as np
+>>> from sinktheory.nnm.system import FlowSystem
+>>> s = FlowSystem("duffing2", [])
+>>> b = continue_orbits(s, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=64,
+...                     energy=0.01, stop=(1e-3, 0.1), ds=0.3, max_points=30)
+>>> b.stop_reason, bool(b.frequency[-1] > b.frequency[0])  # hardening spring
+('parameter left [0.001, 0.1]', True)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import ParameterError
+from .shooting import Orbit, ShootingError, ShootingProblem, subspace_indices
+from .stability import classify
+from .system import FlowSystem
+
+#: Arclength-step limits relative to the initial step.
+DS_MIN_FACTOR = 1e-4
+#: Iterations of the event location.
+LOCATE_ITER = 30
+
+
+@dataclass
+class Event:
+    """A bifurcation or fold located on a branch.
+
+    kind : see the module docstring; index : the branch point before it;
+    value : the continuation parameter there (energy, not ln energy); orbit : the
+    orbit at the event; multiplier : the critical multiplier (nan for a fold).
+    """
+
+    kind: str
+    index: int
+    value: float
+    orbit: Orbit = field(repr=False)
+    multiplier: complex = complex("nan")
+
+
+@dataclass
+class Branch:
+    """A continued family of periodic orbits (see :mod:`.result` for labelled arrays)."""
+
+    problem: ShootingProblem = field(repr=False)
+    orbits: list[Orbit] = field(default_factory=list, repr=False)
+    tangents: list[np.ndarray] = field(default_factory=list, repr=False)
+    events: list[Event] = field(default_factory=list)
+    stop_reason: str = ""
+
+    @property
+    def parameter(self) -> str:
+        return self.problem.parameter
+
+    @property
+    def values(self) -> np.ndarray:
+        """The continuation parameter at each point (energy, or the well parameter)."""
+        lam = np.array([o.u[-1] for o in self.orbits])
+        return np.exp(lam) if self.parameter == "energy" else lam
+
+    @property
+    def energy(self) -> np.ndarray:
+        return np.array([o.energy for o in self.orbits])
+
+    @property
+    def period(self) -> np.ndarray:
+        return np.array([o.period for o in self.orbits])
+
+    @property
+    def frequency(self) -> np.ndarray:
+        return 2 * math.pi / self.period
+
+    @property
+    def stable(self) -> np.ndarray:
+        return np.array([o.floquet.stable for o in self.orbits])
+
+    def result(self, **meta):
+        """Labelled arrays of this branch (:class:`~sinktheory.nnm.result.BranchResult`)."""
+        from .result import BranchResult
+
+        return BranchResult.from_branch(self, **meta)
+
+
+def tangent(J: np.ndarray, previous: np.ndarray | None = None) -> np.ndarray:
+    """Unit null vector of the (n, n + 1) Jacobian, oriented along ``previous``."""
+    _, _, vt = np.linalg.svd(J)
+    t = vt[-1]
+    if previous is not None and t @ previous < 0:
+        t = -t
+    return t / np.linalg.norm(t)
+
+
+def _scaled_jacobian(problem: ShootingProblem, u: np.ndarray, J: np.ndarray):
+    usc, gsc = problem.scales(u)
+    return (J * usc) / gsc[:, None], usc
+
+
+def _dot(a: np.ndarray, b: np.ndarray, usc: np.ndarray) -> float:
+    """Inner product of two tangents in scaled unknowns (the arclength metric)."""
+    return float((a / usc) @ (b / usc))
+
+
+def _orient(t: np.ndarray, usc: np.ndarray) -> np.ndarray:
+    """A tangent in scaled unknowns back to plain ones (unit length in scaled units)."""
+    return t * usc
+
+
+def continue_orbits(
+    system: FlowSystem,
+    z0,
+    T: float,
+    *,
+    steps: int,
+    parameter: str = "energy",
+    energy: float | None = None,
+    stop: tuple[float, float] = (0.0, math.inf),
+    ds: float = 0.1,
+    ds_max: float | None = None,
+    max_points: int = 200,
+    direction: int = 1,
+    subspace: str | None = None,
+    phase: str = "velocity",
+    phase_index: int = 0,
+    locate: bool = True,
+) -> Branch:
+    """Find the orbit near (z0, T) and continue it in ``parameter``.
+
+    Parameters
+    ----------
+    system : FlowSystem
+    z0, T : start guess (state (2D,), period)
+    steps : int
+        Steps per period N (fixed along the branch).
+    parameter : "energy" or a system parameter name ("alpha", "beta", "gamma", "mu")
+    energy : float, optional
+        Energy of the first orbit (and of the whole branch when continuing in a
+        parameter); default H(z0).
+    stop : (lo, hi)
+        The branch ends when the parameter (energy itself, not its logarithm) leaves
+        [lo, hi].
+    ds, ds_max : float
+        First and largest arclength step, in scaled unknowns (ln h for the energy).
+    max_points : int
+    direction : +1 or -1
+        Initial direction of the parameter.
+    subspace, phase, phase_index : see :func:`sinktheory.nnm.shooting.shoot`.
+    locate : bool
+        Locate events by root finding (else the first point past the event is used).
+
+    Returns
+    -------
+    Branch
+    """
+    z0 = np.asarray(z0, dtype=float)
+    if z0.shape != (2 * system.dim,):
+        raise ParameterError("z0", z0.shape, f"a state of length {2 * system.dim}")
+    h = system.energy(z0) if energy is None else float(energy)
+    if not h > 0:
+        raise ParameterError("energy", h, "a positive energy")
+    if direction not in (1, -1):
+        raise ParameterError("direction", direction, "+1 or -1")
+    lo, hi = map(float, stop)
+    free = subspace_indices(system, subspace)
+    problem = ShootingProblem(
+        system, int(steps), free, z0, parameter, h, phase, phase_index, phase_ref=z0.copy()
+    )
+    u = problem.pack(z0, T, 0.0, problem.lam(system, h))
+    u, J, data, it = problem.newton(u)
+    first = problem.orbit(u, data, it)
+    return _continue(problem, first, J, ds, ds_max, max_points, direction, lo, hi, locate)
+
+
+def _continue(problem, first, J, ds, ds_max, max_points, direction, lo, hi, locate, t0=None):
+    """Continue from a converged orbit ``first`` (Jacobian J) with step ``ds``."""
+    ds_max = 10 * ds if ds_max is None else float(ds_max)
+    ds_min = ds * DS_MIN_FACTOR
+    branch = Branch(problem)
+    A, usc = _scaled_jacobian(problem, first.u, J)
+    ts = tangent(A)
+    t = _orient(ts, usc)
+    if t0 is not None:
+        if _dot(t, t0, usc) < 0:
+            t = -t
+    elif t[-1] * direction < 0:
+        t = -t
+    branch.orbits.append(first)
+    branch.tangents.append(t)
+    u = first.u
+    tests = first.floquet.tests()
+    while len(branch.orbits) < max_points:
+        value = _value(problem, u[-1])
+        if not lo <= value <= hi:
+            branch.stop_reason = f"parameter left [{lo:g}, {hi:g}]"
+            break
+        try:
+            un, Jn, data, it = _corrector(problem, u, t, ds)
+        except ShootingError:
+            ds *= 0.5
+            if ds < ds_min:
+                branch.stop_reason = "step size below its minimum (corrector failed)"
+                break
+            continue
+        orbit = problem.orbit(un, data, it)
+        A, usc = _scaled_jacobian(problem, un, Jn)
+        tn = _orient(tangent(A), usc)
+        if _dot(tn, t, usc) < 0:
+            tn = -tn
+        new_tests = orbit.floquet.tests()
+        fold = np.sign(tn[-1]) != np.sign(t[-1]) and t[-1] != 0
+        for kind in classify(tests, new_tests, fold):
+            if kind == "fold":
+                f0, f1 = float(t[-1]), float(tn[-1])
+            else:
+                f0, f1 = tests[_TEST_KEY[kind]], new_tests[_TEST_KEY[kind]]
+            index = len(branch.orbits) - 1
+            branch.events.append(_locate(problem, index, u, t, f0, un, f1, orbit, kind, locate))
+        branch.orbits.append(orbit)
+        branch.tangents.append(tn)
+        u, t, tests = un, tn, new_tests
+        ds = min(ds_max, ds * (1.6 if it <= 3 else 1.0 if it <= 5 else 0.6))
+    else:
+        branch.stop_reason = f"{max_points} points"
+    return branch
+
+
+def _value(problem: ShootingProblem, lam: float) -> float:
+    return math.exp(lam) if problem.parameter == "energy" else lam
+
+
+def _normal(problem: ShootingProblem, u: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """The arclength hyperplane's normal in plain unknowns: t / scales^2 (scaled metric)."""
+    usc, _ = problem.scales(u)
+    return t / usc**2
+
+
+def _corrector(problem: ShootingProblem, u: np.ndarray, t: np.ndarray, ds: float, max_iter=12):
+    """Newton from the predictor u + ds t with t . (u' - u_pred) = 0 in scaled units.
+
+    Near a branch point the augmented Jacobian is nearly singular and Newton slows down
+    to linear convergence; the location of events allows more iterations.
+    """
+    up = u + ds * t
+    return problem.newton(up, extra=(_normal(problem, u, t), up), max_iter=max_iter)
+
+
+_TEST_KEY = {
+    "period-doubling": "inplane_minus",
+    "transverse-period-doubling": "transverse_minus",
+    "symmetry-breaking": "transverse_plus",
+    "branch-point": "inplane_plus",
+}
+
+
+def _test_value(problem, kind, orbit, J, t_ref):
+    if kind == "fold":
+        A, usc = _scaled_jacobian(problem, orbit.u, J)
+        tn = _orient(tangent(A), usc)
+        return float(tn[-1] if _dot(tn, t_ref, usc) >= 0 else -tn[-1])
+    return orbit.floquet.tests()[_TEST_KEY[kind]]
+
+
+def _critical(kind: str, orbit: Orbit) -> complex:
+    fl = orbit.floquet
+    if kind == "fold":
+        return complex("nan")
+    target = -1.0 if kind.endswith("period-doubling") else 1.0
+    pool = fl.transverse if kind.startswith(("transverse", "symmetry")) else fl.nontrivial
+    return complex(pool[np.argmin(np.abs(pool - target))])
+
+
+def _locate(problem, index, u0, t0, f0, u1, f1, orbit1, kind, locate) -> Event:
+    """Event between u0 (tangent t0, test value f0) and u1 (f1, ``orbit1``): the Illinois
+    method on s, the arclength along t0 from u0."""
+    normal = _normal(problem, u0, t0)
+    s1 = float(normal @ (u1 - u0)) / float(normal @ t0)
+    best = orbit1
+
+    def evaluate(s):
+        un, Jn, data, it = _corrector(problem, u0, t0, s, max_iter=40)
+        o = problem.orbit(un, data, it)
+        return _test_value(problem, kind, o, Jn, t0), o
+
+    if locate:
+        a, b, fa, fb = 0.0, s1, f0, f1
+        side = 0
+        try:
+            for _ in range(LOCATE_ITER):
+                if fa == fb or abs(b - a) < 1e-9 * abs(s1):
+                    break
+                s = b - fb * (b - a) / (fb - fa)
+                fs, best = evaluate(s)
+                if fs == 0:
+                    break
+                if np.sign(fs) == np.sign(fb):
+                    if side == -1:
+                        fa *= 0.5
+                    b, fb, side = s, fs, -1
+                else:
+                    a, fa = b, fb
+                    b, fb = s, fs
+                    if side == 1:
+                        fa *= 0.5
+                    side = 1
+        except ShootingError:
+            pass  # keep the last converged estimate
+    return Event(
+        kind=kind,
+        index=index,
+        value=_value(problem, best.u[-1]),
+        orbit=best,
+        multiplier=_critical(kind, best),
+    )
+
+
+def switch_branch(
+    branch: Branch,
+    event: Event,
+    *,
+    amplitude: float = 1e-3,
+    ds: float = 0.05,
+    max_points: int = 50,
+    stop: tuple[float, float] = (0.0, math.inf),
+    locate: bool = True,
+) -> Branch:
+    """Start the bifurcating branch at a period doubling or symmetry-breaking ``event``.
+
+    The new orbit is sought at amplitude ``amplitude`` (scaled state units) along the
+    critical eigenvector w of the monodromy (multiplier -1: period 2T with 2N steps;
+    multiplier +1 of a transverse pair: same period, out of the invariant plane), by
+    Newton on the shooting equations plus w . (z0 - z0* - amplitude w) = 0, then
+    continued by :func:`continue_orbits`' stepper.
+
+    Raises
+    ------
+    ParameterError
+        For events of other kinds.
+    ShootingError
+        If the new orbit cannot be found.
+    """
+    if event.kind not in ("period-doubling", "transverse-period-doubling", "symmetry-breaking"):
+        raise ParameterError("event", event.kind, "a period doubling or a symmetry-breaking point")
+    old = branch.problem
+    orbit = event.orbit
+    target = 1.0 if event.kind == "symmetry-breaking" else -1.0
+    mu, vec = np.linalg.eig(orbit.monodromy)
+    k = int(np.argmin(np.abs(mu - target)))
+    w = np.real(vec[:, k])
+    w /= np.linalg.norm(w)
+    D2 = orbit.z0.size
+    leaves = np.any(np.abs(w[np.setdiff1d(np.arange(D2), old.free)]) > 1e-8)
+    free = np.arange(D2) if leaves or event.kind != "period-doubling" else old.free
+    factor = 1 if event.kind == "symmetry-breaking" else 2
+    problem = ShootingProblem(
+        orbit.system if old.parameter == "energy" else old.system,
+        old.steps * factor,
+        free,
+        orbit.z0,
+        old.parameter,
+        old.energy,
+        old.phase,
+        old.phase_index,
+        phase_ref=orbit.z0.copy(),
+    )
+    if problem.phase == "velocity":
+        w[orbit.system.dim + problem.phase_index] = 0.0  # keep the phase condition
+        w /= np.linalg.norm(w)
+    u_star = problem.pack(orbit.z0, orbit.period * factor, 0.0, orbit.u[-1])
+    usc, _ = problem.scales(u_star)
+    direction = np.concatenate([w[free], [0.0, 0.0, 0.0]])
+    direction /= np.linalg.norm(direction / usc)
+    guess = u_star + amplitude * direction
+    u, J, data, it = problem.newton(guess, extra=(direction / usc**2, guess))
+    first = problem.orbit(u, data, it)
+    t0 = direction
+    return _continue(problem, first, J, ds, None, max_points, 1, *stop, locate, t0=t0)

@@ -1,0 +1,183 @@
+"""Frequency-energy plots and transverse-stability charts of the normal modes.
+
+matplotlib is imported inside the functions only (the package itself does not need it).
+Every function returns a :class:`matplotlib.figure.Figure` (no pyplot state).
+
+* :func:`plot_frequency_energy`: frequency omega = 2 pi / T against the total energy
+  (log axis), solid where the orbit is stable, dotted where it is not (in-plane or
+  transverse), events marked (Kerschen et al., MSSP 2009 style).
+* :func:`plot_transverse`: the transverse phi_half of the coupled normal mode against
+  beta beside the paper's fixed-container phi_half(beta) (Fig. 7,
+  :func:`sinktheory.floquet.scan`); a ``chaos`` hook draws a chaos map below it
+  (the chaos package will provide one).
+
+Examples
+--------
+>>> import numpy as np
+>>> from sinktheory.nnm.system import FlowSystem
+>>> from sinktheory.nnm.continuation import continue_orbits
+>>> b = continue_orbits(FlowSystem("duffing2", []), np.array([0.1, 0.1, 0, 0]),
+...                     2 * np.pi, steps=64, energy=0.01, stop=(1e-3, 1.0), ds=0.5)
+>>> fig = plot_frequency_energy([b.result(label="NNM1")])
+>>> fig.axes[0].get_xlabel()
+'total energy $H$'
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+_MARK = {
+    "fold": ("s", "tab:purple"),
+    "period-doubling": ("o", "tab:red"),
+    "transverse-period-doubling": ("v", "tab:orange"),
+    "symmetry-breaking": ("^", "tab:green"),
+    "branch-point": ("D", "tab:brown"),
+}
+
+
+def _runs(flags: np.ndarray):
+    """(start, stop) index ranges of equal flags, overlapping by one point."""
+    start = 0
+    for i in range(1, flags.size + 1):
+        if i == flags.size or flags[i] != flags[start]:
+            yield start, min(i + 1, flags.size), bool(flags[start])
+            start = i
+
+
+def draw_frequency_energy(ax, results, *, stability: str = "stable") -> None:
+    """Draw branches (BranchResult) on ``ax``; ``stability`` names the flag used."""
+    seen = set()
+    for k, r in enumerate(results):
+        color = f"C{k}"
+        label = r.meta.get("label", f"branch {k}")
+        flags = np.asarray(getattr(r, stability), bool)
+        for a, b, ok in _runs(flags):
+            ax.plot(
+                r.energy[a:b],
+                r.frequency[a:b],
+                ls="-" if ok else ":",
+                lw=1.8 if ok else 1.3,
+                color=color,
+                label=label if a == 0 else None,
+            )
+        for e in r.events:
+            marker, c = _MARK.get(e["kind"], ("x", "k"))
+            ax.plot(
+                e["energy"],
+                e["frequency"],
+                marker,
+                color=c,
+                ms=6,
+                mfc="none",
+                label=e["kind"] if e["kind"] not in seen else None,
+            )
+            seen.add(e["kind"])
+    ax.set_xscale("log")
+    ax.set_xlabel("total energy $H$")
+    ax.set_ylabel(r"frequency $\omega = 2\pi/T$")
+    ax.grid(alpha=0.3, which="both")
+
+
+def plot_frequency_energy(results, *, title: str | None = None, stability: str = "stable"):
+    """Frequency-energy plot of one or more branches (solid: stable, dotted: unstable).
+
+    Parameters
+    ----------
+    results : sequence of BranchResult
+    title : str, optional
+    stability : "stable", "stable_inplane" or "stable_transverse"
+    """
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(7.5, 4.8), layout="constrained")
+    ax = fig.add_subplot()
+    draw_frequency_energy(ax, results, stability=stability)
+    ax.legend(fontsize=8, loc="best")
+    ax.set_title(title or "frequency-energy plot (solid: stable, dotted: unstable)", fontsize=10)
+    return fig
+
+
+def draw_transverse(ax, result, scan=None) -> None:
+    """phi_half of the coupled mode (``result``, continued in beta) and of the fixed
+    container (``scan``, a :class:`~sinktheory.floquet.StabilityScan`) on ``ax``."""
+    from ..floquet_plot import _draw_scan
+
+    if scan is not None:
+        _draw_scan(ax, scan, "")
+        for line in ax.get_lines()[:1]:
+            line.set_label(r"fixed container $\phi_{T/2}$ (Fig. 7)")
+    x = result.value
+    h = result.phi_half[:, 0] if result.phi_half.size else np.full(x.size, np.nan)
+    ax.plot(
+        x, np.clip(h, -1e300, 1e300), color="tab:blue", lw=1.6, label=r"coupled NNM $\phi_{T/2}$"
+    )
+    unstable = ~np.asarray(result.stable_inplane, bool)
+    if unstable.any():
+        ax.plot(x[unstable], h[unstable], ".", color="tab:red", ms=3, label="in-plane unstable")
+    if scan is None:
+        ax.set_yscale("symlog", linthresh=1.0)
+        for y in (-1.0, 1.0):
+            ax.axhline(y, color="tab:red", lw=0.8, ls="--")
+    ax.set_xlabel(r"$\beta$")
+    ax.set_ylabel(r"$\phi_{T/2}$ (symlog)")
+    ax.legend(fontsize=7, loc="best")
+
+
+def plot_transverse(result, scan=None, *, chaos=None, title: str | None = None):
+    """The coupled mode's transverse stability against beta beside the paper's phi(beta).
+
+    Parameters
+    ----------
+    result : BranchResult
+        A branch continued in beta with ``half_traces=True``.
+    scan : StabilityScan, optional
+        The fixed-container chart (:func:`sinktheory.floquet.scan`) over the same betas.
+    chaos : callable or (beta, values, label), optional
+        Hook for a chaos map: ``chaos(ax)`` draws on a panel below, or arrays to plot.
+    """
+    from matplotlib.figure import Figure
+
+    rows = 2 if chaos is not None else 1
+    fig = Figure(figsize=(8, 4.2 * rows), layout="constrained")
+    ax = fig.add_subplot(rows, 1, 1)
+    draw_transverse(ax, result, scan)
+    m = result.meta
+    ax.set_title(
+        title
+        or f"transverse stability of the coupled normal mode, {m.get('system')}, "
+        f"H = {m.get('energy', float('nan')):.4g}",
+        fontsize=10,
+    )
+    if chaos is not None:
+        cax = fig.add_subplot(rows, 1, 2, sharex=ax)
+        if callable(chaos):
+            chaos(cax)
+        else:
+            beta, values, label = chaos
+            cax.plot(beta, values, color="k", lw=1, label=label)
+            cax.legend(fontsize=8)
+        cax.set_xlabel(r"$\beta$")
+    return fig
+
+
+def plot_nnm(results, beta_result=None, scan=None, *, chaos=None):
+    """The frequency-energy plot and, beside it, the transverse chart against beta."""
+    from matplotlib.figure import Figure
+
+    cols = 2 if beta_result is not None else 1
+    fig = Figure(figsize=(7 * cols, 5), layout="constrained")
+    ax = fig.add_subplot(1, cols, 1)
+    draw_frequency_energy(ax, results)
+    ax.legend(fontsize=7, loc="best")
+    ax.set_title("frequency-energy plot (solid: stable, dotted: unstable)", fontsize=10)
+    if beta_result is not None:
+        bx = fig.add_subplot(1, cols, 2)
+        draw_transverse(bx, beta_result, scan)
+        bx.set_title(
+            f"transverse stability against beta, H = {beta_result.meta.get('energy', 0):.4g}",
+            fontsize=10,
+        )
+        if chaos is not None and callable(chaos):
+            chaos(bx.twinx())
+    return fig

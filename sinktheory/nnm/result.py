@@ -1,0 +1,199 @@
+"""Labelled arrays of a continued branch: :class:`BranchResult` (dict / xarray).
+
+Arrays are indexed by ``point`` (along the branch, in continuation order); multipliers
+by ``point`` and ``multiplier`` (complex, sorted by real then imaginary part).  JSON has
+no complex numbers, so :meth:`BranchResult.as_dict` writes each multiplier as
+``[re, im]``; :meth:`BranchResult.to_dataset` keeps them complex.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+def _pad(rows: list[np.ndarray]) -> np.ndarray:
+    width = max((r.size for r in rows), default=0)
+    out = np.full((len(rows), width), complex("nan"))
+    for i, r in enumerate(rows):
+        out[i, : r.size] = r
+    return out
+
+
+def _json(x):
+    if isinstance(x, float | np.floating):
+        return float(x) if math.isfinite(x) else None
+    return x
+
+
+@dataclass(frozen=True)
+class BranchResult:
+    """One branch of periodic orbits as labelled arrays.
+
+    Attributes
+    ----------
+    meta : dict
+        system, parameters, continuation parameter, steps, scheme, stop reason, ...
+    value : (P,) continuation parameter (energy or the well parameter)
+    energy, period, frequency : (P,)
+    sigma, residual, trivial_error : (P,) checks (unfolding parameter, max |Phi(z0) - z0|,
+        distance of the trivial multipliers from 1)
+    stable, stable_inplane, stable_transverse : (P,) bool
+    nontrivial, transverse, multipliers : (P, m) complex
+    z0 : (P, 2D) start states
+    phi_half : (P, k) transverse half-period half-traces (nan when not computed)
+    symmetry_error : (P,) max |z(T/2) + z0| (nan when not computed)
+    events : list of dict (kind, index, value, energy, frequency, multiplier)
+    """
+
+    meta: dict
+    value: np.ndarray
+    energy: np.ndarray
+    period: np.ndarray
+    frequency: np.ndarray
+    sigma: np.ndarray
+    residual: np.ndarray
+    trivial_error: np.ndarray
+    stable: np.ndarray
+    stable_inplane: np.ndarray
+    stable_transverse: np.ndarray
+    nontrivial: np.ndarray
+    transverse: np.ndarray
+    multipliers: np.ndarray
+    z0: np.ndarray
+    phi_half: np.ndarray
+    symmetry_error: np.ndarray
+    events: list = field(default_factory=list)
+
+    @classmethod
+    def from_branch(cls, branch, *, half_traces: bool = False, **meta) -> BranchResult:
+        """Collect a :class:`~sinktheory.nnm.continuation.Branch` (``half_traces``: also
+        the transverse phi_half of every point, one more half-period run each)."""
+        orbits = branch.orbits
+        fl = [o.floquet for o in orbits]
+        k = len(orbits[0].z0) // 2 - len(orbits[0].free) // 2 if orbits else 0
+        phi = np.full((len(orbits), k), np.nan)
+        sym = np.full(len(orbits), np.nan)
+        if half_traces and k and orbits[0].steps % 2 == 0:
+            for i, o in enumerate(orbits):
+                phi[i] = o.transverse_half_traces()
+                sym[i] = o.half_period()[2]
+        p = branch.problem
+        info = {
+            "system": p.system.system,
+            "params": dict(zip(p.system.parameter_names, p.system.params.tolist(), strict=True)),
+            "parameter": p.parameter,
+            "steps": p.steps,
+            "scheme": p.system.scheme,
+            "free": [int(i) for i in p.free],
+            "stop_reason": branch.stop_reason,
+        }
+        if p.parameter != "energy":
+            info["energy"] = p.energy
+        info.update(meta)
+        events = [
+            {
+                "kind": e.kind,
+                "index": e.index,
+                "value": e.value,
+                "energy": e.orbit.energy,
+                "frequency": e.orbit.frequency,
+                "multiplier": [float(np.real(e.multiplier)), float(np.imag(e.multiplier))],
+            }
+            for e in branch.events
+        ]
+        return cls(
+            meta=info,
+            value=branch.values,
+            energy=branch.energy,
+            period=branch.period,
+            frequency=branch.frequency,
+            sigma=np.array([o.sigma for o in orbits]),
+            residual=np.array([o.residual for o in orbits]),
+            trivial_error=np.array([f.trivial_error for f in fl]),
+            stable=np.array([f.stable for f in fl]),
+            stable_inplane=np.array([f.stable_inplane for f in fl]),
+            stable_transverse=np.array([f.stable_transverse for f in fl]),
+            nontrivial=_pad([f.nontrivial for f in fl]),
+            transverse=_pad([f.transverse for f in fl]),
+            multipliers=_pad([f.all for f in fl]),
+            z0=np.array([o.z0 for o in orbits]),
+            phi_half=phi,
+            symmetry_error=sym,
+            events=events,
+        )
+
+    @property
+    def points(self) -> int:
+        return int(self.value.size)
+
+    def as_dict(self) -> dict:
+        """JSON-ready: lists, complex numbers as [re, im], nan/inf as None."""
+
+        def arr(a):
+            a = np.asarray(a)
+            if np.iscomplexobj(a):
+                return [[[_json(float(z.real)), _json(float(z.imag))] for z in row] for row in a]
+            return [_json(x) if not isinstance(x, list) else x for x in a.tolist()]
+
+        out = dict(self.meta)
+        for name in (
+            "value",
+            "energy",
+            "period",
+            "frequency",
+            "sigma",
+            "residual",
+            "trivial_error",
+            "stable",
+            "stable_inplane",
+            "stable_transverse",
+            "nontrivial",
+            "transverse",
+        ):
+            out[name] = arr(getattr(self, name))
+        out["phi_half"] = [[_json(float(x)) for x in row] for row in self.phi_half]
+        out["symmetry_error"] = [_json(float(x)) for x in self.symmetry_error]
+        out["events"] = self.events
+        out["max_trivial_error"] = float(np.max(self.trivial_error)) if self.points else None
+        out["max_abs_sigma"] = float(np.max(np.abs(self.sigma))) if self.points else None
+        return out
+
+    def to_dataset(self):
+        """An :class:`xarray.Dataset` (xarray imported here)."""
+        import xarray as xr
+
+        point = np.arange(self.points)
+        data = {
+            name: ("point", getattr(self, name))
+            for name in (
+                "energy",
+                "period",
+                "frequency",
+                "sigma",
+                "residual",
+                "trivial_error",
+                "stable",
+                "stable_inplane",
+                "stable_transverse",
+                "symmetry_error",
+            )
+        }
+        data[self.meta["parameter"] if self.meta["parameter"] != "energy" else "value"] = (
+            "point",
+            self.value,
+        )
+        data["nontrivial"] = (("point", "inplane_multiplier"), self.nontrivial)
+        data["transverse"] = (("point", "transverse_multiplier"), self.transverse)
+        data["multipliers"] = (("point", "multiplier"), self.multipliers)
+        data["z0"] = (("point", "state"), self.z0)
+        data["phi_half"] = (("point", "particle"), self.phi_half)
+        attrs = {
+            k: (str(v) if isinstance(v, dict | list) else v)
+            for k, v in self.meta.items()
+            if v is not None
+        }
+        attrs["events"] = str(self.events)
+        return xr.Dataset(data, coords={"point": point}, attrs=attrs)
