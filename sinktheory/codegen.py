@@ -172,118 +172,6 @@ def _well_module() -> str:
     return "".join(parts)
 
 
-def _dynamics_module() -> str:
-    """Accelerations and energy of the container + k particles in separable coordinates."""
-    u = sp.Symbol("u", real=True)
-    parts = [
-        _BANNER,
-        '"""Equations of motion and energy of the container and k particles.\n\n'
-        "Coordinates are those of :func:`sinktheory.symbolic.separable_hamiltonian`: container\n"
-        "X with momentum PX, particle j at absolute x-coordinate u[j] = X + x_j and y[j], with\n"
-        "momenta pu[j], py[j].  The Hamiltonian is kinetic(momenta) + potential(coordinates),\n"
-        "masses (1, mu, mu, ...), so symplectic splitting methods apply.\n"
-        '"""\n',
-        "import math  # noqa: F401\n\nimport numba\n\nfrom ._support import ipow  # noqa: F401\n\n",
-    ]
-    sh = S.separable_hamiltonian(1, "flat")
-    m_container, m_particle = sh.masses[0], sh.masses[1]
-    kin_container = sh.kinetic.subs({p: 0 for p in sh.momenta[1:]})
-    kin_particle = sp.expand(sh.kinetic - kin_container)
-    # rename the k = 1 momenta to the kernel's argument names
-    PX, pu_j, py_j = sp.symbols("PX pu_j py_j", real=True)
-    kin_container = kin_container.subs(sh.momenta[0], PX)
-    kin_particle = kin_particle.subs({sh.momenta[1]: pu_j, sh.momenta[2]: py_j})
-    pot_container = S.X**2 / 2
-    aX_container = _kernel_printer.doprint(-sp.diff(pot_container, S.X) / m_container)
-    inner_of: dict[str, list[str]] = {}
-    for shape in S.SHAPES:
-        sh_shape = S.separable_hamiltonian(1, shape)
-        diff = (
-            sh_shape.potential.subs({sh_shape.coordinates[1]: u})
-            - pot_container
-            - S.potential(shape, u - S.X, S.y)
-        )
-        probe = {S.X: sp.Rational(1, 3), u: sp.Rational(1, 2), S.y: sp.Rational(-1, 5)}
-        probe |= {S.alpha: sp.Rational(1, 2), S.beta: sp.Rational(3, 10), S.gamma: 2}
-        if any(diff.subs(probe).subs(S.n, k) != 0 for k in (1, 2, 5)):
-            raise AssertionError("separable potential is not X^2/2 + sum V(u - X, y)")
-        Vx, Vy = S.gradient_in_ratios(shape)
-        # x = u - X: chain rule for the per-particle potential V(u - X, y)
-        dV = {q: Vx * sp.diff(u - S.X, q) + Vy * sp.diff(S.y, q) for q in (S.X, u, S.y)}
-        aX_particle = -dV[S.X] / m_container
-        outs = [aX_particle, -dV[u] / m_particle, -dV[S.y] / m_particle]
-        lines = _body(outs, _atoms_prelude(shape, outs))
-        # the loop: per-particle contributions, container spring added once
-        *assign, ret = lines
-        inner = [*assign, ret.replace("return ", "daX, au[j], ay[j] = ")]
-        inner_of[shape] = inner
-        body = [
-            f"aX = {aX_container}",
-            "for j in range(u.shape[0]):",
-            "    x = u[j] - X",
-            "    y = yy[j]",
-            *("    " + s for s in inner),
-            "    aX += daX",
-            "return aX",
-        ]
-        parts.append(
-            "\n\n"
-            + _njit_function(
-                f"accelerations_{shape}",
-                ("X", "u", "yy", "alpha", "beta", "gamma", "n", "mu", "au", "ay"),
-                f"Fill au, ay with the particles' accelerations ({shape} well); return the "
-                "container's.",
-                body,
-            )
-        )
-        V = S.potential_of_ratios()
-        pot_lines = _body([V], _atoms_prelude(shape, [V]))
-        *passign, pret = pot_lines
-        e_body = [
-            f"H = {_kernel_printer.doprint(kin_container + pot_container)}",
-            "for j in range(u.shape[0]):",
-            "    x = u[j] - X",
-            "    y = yy[j]",
-            "    pu_j = pu[j]",
-            "    py_j = py[j]",
-            *("    " + s for s in passign),
-            f"    H += {_kernel_printer.doprint(kin_particle)} + " + pret.replace("return ", ""),
-            "return H",
-        ]
-        parts.append(
-            "\n\n"
-            + _njit_function(
-                f"energy_{shape}",
-                ("X", "PX", "u", "yy", "pu", "py", "alpha", "beta", "gamma", "n", "mu"),
-                f"Total energy (the Hamiltonian) of container and particles ({shape} well).",
-                e_body,
-            )
-        )
-    body = [
-        f"aX = {aX_container}",
-        "for j in range(u.shape[0]):",
-        "    x = u[j] - X",
-        "    y = yy[j]",
-        "    if symmetric:",
-        *("        " + s for s in inner_of["symmetric"]),
-        "    else:",
-        *("        " + s for s in inner_of["flat"]),
-        "    aX += daX",
-        "return aX",
-    ]
-    parts.append(
-        "\n\n"
-        + _njit_function(
-            "accelerations",
-            ("symmetric", "X", "u", "yy", "alpha", "beta", "gamma", "n", "mu", "au", "ay"),
-            "accelerations_flat or accelerations_symmetric in one kernel (one call site, so a "
-            "stepping loop can inline it).",
-            body,
-        )
-    )
-    return "".join(parts)
-
-
 def _scalar_function(name: str, args: Sequence[str], expr: sp.Expr, doc: str) -> str:
     return _njit_function(name, args, doc, _body([expr]))
 
@@ -453,7 +341,6 @@ def render() -> dict[str, str]:
         "__init__.py": _INIT,
         "_support.py": _SUPPORT,
         "well.py": _well_module(),
-        "dynamics.py": _dynamics_module(),
         "oscillator.py": _oscillator_module(),
     }
 

@@ -50,10 +50,6 @@ class SplittingScheme:
         Drift weights (s of them, summing to 1).
     b : tuple of float
         Kick weights (s + 1 of them, summing to 1).
-    h_omega : float
-        Default step times the fastest frequency (see
-        :func:`sinktheory.simulate.default_step`); calibrated on the paper's workloads, as
-        described at :data:`SCHEMES`.
     reference : str
         Where the coefficients come from.
     """
@@ -62,7 +58,6 @@ class SplittingScheme:
     order: int
     a: tuple[float, ...]
     b: tuple[float, ...]
-    h_omega: float
     reference: str
 
     @property
@@ -153,72 +148,53 @@ _BM6_B = _symmetric_even(
 )
 
 
-def _scheme(name, order, ab, h_omega, reference) -> SplittingScheme:
+def _scheme(name, order, ab, reference) -> SplittingScheme:
     a, b = ab
-    return SplittingScheme(name, order, tuple(a), tuple(b), h_omega, reference)
+    return SplittingScheme(name, order, tuple(a), tuple(b), reference)
 
 
-#: Every scheme by name.  ``h_omega`` (step x fastest frequency, see
-#: :func:`sinktheory.simulate.default_step`) was calibrated on the paper's workloads over
-#: 150-1500 periods.  Two limits matter: accuracy on the stiffest case (flat, alpha = 1/2,
-#: beta = 0.3, n = 10, k = 5), where the energy error at a fixed h omega is largest, and a
-#: stability/resonance cliff of the high-order schemes when one particle holds nearly all
-#: the energy (k = 1, beta = 0.3, n = 4: blanes-moan6 jumps from 3e-11 at h omega = 0.64 to
-#: 1.8e-8 at 0.8, and to 2.5e-7 at 1.2 for beta = -0.5).  Beyond the cliff the largest error
-#: over a run is erratic (it is set by the worst wall encounter, which changes with dt), so
-#: the defaults keep a margin below it.  Measured largest relative energy errors at n = 10,
-#: k = 5 over 300 periods at (or just above) these values: ~3e-9 (yoshida4), ~1e-9
-#: (blanes-moan4, yoshida6), ~1e-11 (blanes-moan6), ~3e-10 (suzuki-umeno8); Verlet would
-#: need ~10^6 steps per period for 1e-8 and its default gives ~1e-7.  Only the default is
-#: held to <= 1e-8 by ``tests/test_simulate.py`` over the paper's parameter ranges.
+#: Every scheme by name.  The step each needs for a given energy error is calibrated in
+#: :mod:`sinktheory.stepsize`.
 SCHEMES: dict[str, SplittingScheme] = {
     s.name: s
     for s in (
-        _scheme(
-            "verlet", 2, ((1.0,), (0.5, 0.5)), 0.006, "Stoermer-Verlet (leapfrog), kick-drift-kick"
-        ),
+        _scheme("verlet", 2, ((1.0,), (0.5, 0.5)), "Stoermer-Verlet (leapfrog), kick-drift-kick"),
         _scheme(
             "yoshida4",
             4,
             _composition(_YOSHIDA4),
-            0.06,
             "Yoshida, Phys. Lett. A 150 (1990) 262: triple jump (Hairer-Lubich-Wanner eq. II.4.4)",
         ),
         _scheme(
             "blanes-moan4",
             4,
             (_BM4_A, _BM4_B),
-            0.3,
             "Blanes & Moan, J. Comput. Appl. Math. 142 (2002) 313, Table 3, SRKN_6^b",
         ),
         _scheme(
             "yoshida6",
             6,
             _composition(_YOSHIDA6),
-            0.25,
             "Yoshida, Phys. Lett. A 150 (1990) 262, Table 1, solution A",
         ),
         _scheme(
             "blanes-moan6",
             6,
             (_BM6_A, _BM6_B),
-            0.6,
             "Blanes & Moan, J. Comput. Appl. Math. 142 (2002) 313, Table 3, SRKN_11^b",
         ),
         _scheme(
             "suzuki-umeno8",
             8,
             _composition(_SUZUKI_UMENO8),
-            0.5,
             "McLachlan, SIAM J. Sci. Comput. 16 (1995) 151 / Suzuki & Umeno (1993), order 8, "
             "15 stages; Hairer-Lubich-Wanner GNI Sect. V.3.2",
         ),
     )
 }
 
-#: The default scheme: the fewest force evaluations per period at relative energy error
-#: <= 1e-8 on the paper's workloads among those tried (see benchmarks/bench_simulate.py
-#: for the work-precision comparison).
+#: The scheme used when a step ``dt`` is given without a method (with a tolerance, the
+#: cheapest scheme is chosen by :func:`sinktheory.stepsize.choose`).
 DEFAULT_SCHEME = "blanes-moan6"
 
 

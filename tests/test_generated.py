@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 from sinktheory import codegen
 from sinktheory import symbolic as S
-from sinktheory._generated import dynamics, oscillator, well
+from sinktheory._generated import oscillator, well
 
 KERNELS = {
     "flat": (well.potential_flat, well.gradient_flat, well.hessian_flat),
@@ -108,61 +108,6 @@ def test_gradient_is_the_derivative_of_the_potential_kernel(shape):
             gx, gy = grad(x, y, 0.5, 0.3, 1.0, n)
             assert gx == pytest.approx(float(dx), rel=RTOL)
             assert gy == pytest.approx(float(dy), rel=RTOL)
-
-
-@pytest.mark.parametrize("shape", S.SHAPES)
-def test_accelerations_and_energy_match_the_separable_hamiltonian(shape):
-    """k = 2: accelerations = -dH/dq / mass and energy = H, from S.separable_hamiltonian."""
-    k = 2
-    sh = S.separable_hamiltonian(k, shape)
-    X, u1, u2, y1, y2 = sh.coordinates
-    n, vals = (
-        3,
-        {
-            S.alpha: sp.Rational(1, 2),
-            S.beta: sp.Rational(1, 5),
-            S.gamma: 1,
-            S.mu: sp.Rational(1, 10),
-        },
-    )
-    H = (sh.kinetic + sh.potential).subs(S.n, n).subs(vals)
-    state = {
-        X: sp.Rational(3, 10),
-        u1: sp.Rational(4, 10),
-        u2: sp.Rational(1, 10),
-        y1: sp.Rational(-1, 5),
-        y2: sp.Rational(1, 3),
-    }
-    moms = dict(
-        zip(
-            sh.momenta,
-            [
-                sp.Rational(1, 7),
-                sp.Rational(-1, 9),
-                sp.Rational(1, 11),
-                sp.Rational(1, 13),
-                sp.Rational(-1, 3),
-            ],
-            strict=True,
-        )
-    )
-    acc_exact = [
-        (-sp.diff(H, q) / m).subs(vals).subs(state | moms)
-        for q, m in zip(sh.coordinates, sh.masses, strict=True)
-    ]
-    f = {s: float(v) for s, v in (state | moms).items()}
-    u = np.array([f[u1], f[u2]])
-    yy = np.array([f[y1], f[y2]])
-    au, ay = np.zeros(2), np.zeros(2)
-    acc = getattr(dynamics, f"accelerations_{shape}")
-    aX = acc(f[X], u, yy, 0.5, 0.2, 1.0, n, 0.1, au, ay)
-    got = [aX, au[0], au[1], ay[0], ay[1]]
-    for g, e in zip(got, acc_exact, strict=True):
-        assert g == pytest.approx(float(e), rel=RTOL)
-    energy = getattr(dynamics, f"energy_{shape}")
-    P, p1, p2, q1, q2 = (f[p] for p in sh.momenta)
-    e_kernel = energy(f[X], P, u, yy, np.array([p1, p2]), np.array([q1, q2]), 0.5, 0.2, 1.0, n, 0.1)
-    assert e_kernel == pytest.approx(float(H.subs(state | moms)), rel=RTOL)
 
 
 finite = st.floats(-1.0, 1.0, allow_nan=False)

@@ -1,0 +1,95 @@
+"""Work-precision calibration behind ``simulate(tol=...)`` (sinktheory.stepsize).
+
+For every splitting scheme and a ladder of step x frequency products h*omega_max, run the
+paper's workloads (flat alpha = 1/2 with beta in {-0.5, 0.3} and n in {4, 10}; symmetric
+alpha = 1, beta = 0.1, n = 6; k in {1, 5}; m = 0.2; 2 runs x PERIODS periods) and record the
+largest relative total-energy error.  The error model is err = C (h omega)^p with the
+scheme's order p; C is the largest err / (h omega)^p seen over the workloads (an envelope,
+not a fit), and h omega_max is the largest product at which every workload stayed finite
+and within 10x of the model.  The script prints the table that goes into
+``sinktheory/stepsize.py`` (CALIBRATION) and the raw measurements.
+
+    python benchmarks/calibrate_steps.py [PERIODS]
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+
+import numpy as np
+
+from sinktheory import RunSettings, Sink, Well
+from sinktheory.errors import NumericalError
+from sinktheory.integrators import SCHEMES
+from sinktheory.simulate import simulate
+from sinktheory.stepsize import aligned_step, stiffness_frequency
+
+WELLS = [Well(0.5, b, n) for b in (-0.5, 0.3) for n in (4, 10)] + [
+    Well(1.0, 0.1, 6, shape="symmetric")
+]
+LADDER = {
+    "verlet": [0.004, 0.008, 0.016, 0.03],
+    "yoshida4": [0.03, 0.06, 0.12, 0.2],
+    "blanes-moan4": [0.1, 0.2, 0.3, 0.45, 0.6],
+    "yoshida6": [0.1, 0.2, 0.3, 0.4],
+    "blanes-moan6": [0.3, 0.45, 0.6, 0.75, 0.9],
+    "suzuki-umeno8": [0.2, 0.35, 0.5, 0.65],
+}
+
+
+def measure(periods: int) -> dict[str, list[tuple[float, float]]]:
+    """(h omega, worst error over the workloads) per scheme."""
+    out: dict[str, list[tuple[float, float]]] = {}
+    for name, ladder in LADDER.items():
+        rows = []
+        for h_omega in ladder:
+            worst = 0.0
+            for well in WELLS:
+                for k in (1, 5):
+                    sink = Sink(well, particles=k, mass=0.2)
+                    omega = stiffness_frequency(sink, 0.5)
+                    dt, _ = aligned_step(h_omega / omega)
+                    try:
+                        res = simulate(
+                            sink,
+                            RunSettings(runs=2, periods=periods, seed=3),
+                            method=name,
+                            dt=dt,
+                            energy_bound=1e-2,
+                            progress=False,
+                        )
+                        err = res.max_relative_energy_error
+                    except NumericalError:
+                        err = math.inf
+                    worst = max(worst, err)
+            rows.append((h_omega, worst))
+            print(f"{name:14s} h*omega = {h_omega:<6g} worst error {worst:.3g}", flush=True)
+        out[name] = rows
+    return out
+
+
+def envelope(rows, order):
+    """(C, h omega_max) from the measurements (see the module docstring)."""
+    finite = [(h, e) for h, e in rows if math.isfinite(e) and e > 0]
+    C = max(e / h**order for h, e in finite[:2])  # the two smallest steps: asymptotic regime
+    ok = [h for h, e in finite if e <= 10 * C * h**order]
+    return C, max(ok) if ok else min(h for h, _ in rows)
+
+
+def main() -> None:
+    periods = int(sys.argv[1]) if len(sys.argv) > 1 else 300
+    t = time.perf_counter()
+    data = measure(periods)
+    print(f"\nmeasured in {time.perf_counter() - t:.0f} s over {periods} periods\n")
+    print("CALIBRATION = {")
+    for name, rows in data.items():
+        C, h_max = envelope(rows, SCHEMES[name].order)
+        print(f'    "{name}": ({C:.3g}, {h_max:g}),')
+    print("}")
+    np.set_printoptions(precision=3)
+
+
+if __name__ == "__main__":
+    main()

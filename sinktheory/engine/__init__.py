@@ -1,0 +1,1 @@
+"""The compiled ensemble engine: generated per system, vectorised across runs."""

@@ -1,0 +1,271 @@
+"""The system-independent stepper that every generated engine module ends with.
+
+This file is not imported: :mod:`sinktheory.engine.printer` copies the text below the
+``template starts`` marker after the system's kernels (``accelerations``, ``hessian``,
+``tangent_kick``, ``energies``, ``members_of``, ``hessian_rows`` and the constant
+``SHARED``), so that numba compiles and caches one module per system with every call
+inlinable.  Keeping it a real Python file lets linters and readers see it whole.
+
+Data layout (structure of arrays, runs last and contiguous): ``q[i, r]``, ``v[i, r]`` are
+coordinate / velocity i of run r; ``dq[i, m, r]``, ``dv[i, m, r]`` deviation vector m.  A
+*segment* is ``steps`` steps of size ``dt`` (one container period for the sink); the energy
+audit, the renormalisation of deviation vectors and all per-segment records happen at
+segment ends.  Runs are processed in blocks; a block is copied into contiguous local arrays,
+advanced, and copied back.  The arithmetic of a run does not depend on which block or thread
+it is in (no reductions across runs, no fast-math reassociation), so the numbers are
+bitwise the same for any block size and thread count.
+"""
+
+# ruff: noqa: F821
+import math
+
+import numba
+import numpy as np
+
+# --- template starts
+RUNNING, DRIFT, NONFINITE = 0, 1, 2
+NO_TANGENT, ORTHONORMALISE, NORMALISE = 0, 1, 2
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _renormalise(dq, dv, logs, orthogonalise):
+    """Modified Gram-Schmidt (or plain normalisation) of the deviation vectors of each
+    run; the log of each norm is added to logs[m, run]."""
+    D, M, B = dq.shape
+    acc = np.empty(B)
+    for m in range(M):
+        if orthogonalise:
+            for l in range(m):
+                for b in range(B):
+                    acc[b] = 0.0
+                for i in range(D):
+                    for b in range(B):
+                        acc[b] += dq[i, l, b] * dq[i, m, b] + dv[i, l, b] * dv[i, m, b]
+                for i in range(D):
+                    for b in range(B):
+                        dq[i, m, b] -= acc[b] * dq[i, l, b]
+                        dv[i, m, b] -= acc[b] * dv[i, l, b]
+        for b in range(B):
+            acc[b] = 0.0
+        for i in range(D):
+            for b in range(B):
+                acc[b] += dq[i, m, b] * dq[i, m, b] + dv[i, m, b] * dv[i, m, b]
+        for b in range(B):
+            norm = math.sqrt(acc[b])
+            logs[m, b] += math.log(norm)
+            acc[b] = 1.0 / norm
+        for i in range(D):
+            for b in range(B):
+                dq[i, m, b] *= acc[b]
+                dv[i, m, b] *= acc[b]
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _log_norm_first(dq, dv, logs, out):
+    """ln |deviation vector 0| of each run, renormalisations included."""
+    D, _, B = dq.shape
+    for b in range(B):
+        out[b] = 0.0
+    for i in range(D):
+        for b in range(B):
+            out[b] += dq[i, 0, b] * dq[i, 0, b] + dv[i, 0, b] * dv[i, 0, b]
+    for b in range(B):
+        out[b] = logs[0, b] + 0.5 * math.log(out[b])
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _gali(dq, dv, k, out):
+    """GALI_k: the volume spanned by the first k unit deviation vectors of each run (the
+    product of the Gram-Schmidt norms)."""
+    D, _, B = dq.shape
+    w = np.empty((2 * D, k, B))
+    for m in range(k):
+        for i in range(D):
+            for b in range(B):
+                w[i, m, b] = dq[i, m, b]
+                w[D + i, m, b] = dv[i, m, b]
+    acc = np.empty(B)
+    for b in range(B):
+        out[b] = 1.0
+    for m in range(k):
+        for l in range(m):
+            for b in range(B):
+                acc[b] = 0.0
+            for i in range(2 * D):
+                for b in range(B):
+                    acc[b] += w[i, l, b] * w[i, m, b]
+            for i in range(2 * D):
+                for b in range(B):
+                    w[i, m, b] -= acc[b] * w[i, l, b]
+        for b in range(B):
+            acc[b] = 0.0
+        for i in range(2 * D):
+            for b in range(B):
+                acc[b] += w[i, m, b] * w[i, m, b]
+        for b in range(B):
+            norm = math.sqrt(acc[b])
+            out[b] *= norm
+            acc[b] = 1.0 / norm if norm > 0.0 else 0.0
+        for i in range(2 * D):
+            for b in range(B):
+                w[i, m, b] *= acc[b]
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audit, rec):
+    """Advance one block of runs over segments [seg0, seg1); see the module docstring.
+
+    scheme = (a, b, dt, steps): drift and kick weights of the splitting method, step,
+    steps per segment.  tangent = (mode, renorm, gali_k, megno, t0), t0 the time at which
+    the deviation vectors started (for MEGNO).  audit = (h0, bound,
+    status, fail_segment, fail_energy, worst).  rec = (shared, members, trajectory, stride,
+    logs, gali, megno), per-segment records indexed [run, segment] (empty when unused).
+    Returns the segment reached (seg1, or the first with a failure in this block).
+    """
+    ah, bh, dt, steps = scheme
+    mode, renorm, gali_k, megno, t0 = tangent
+    h0, bound, status, fail_segment, fail_energy, worst = audit
+    rec_shared, rec_members, traj, stride, rec_logs, rec_gali, rec_megno = rec
+    D, B = q.shape
+    M = dq.shape[1]
+    s = ah.shape[0]
+    a = np.empty((D, B))
+    h = np.empty((hessian_rows(D), B))
+    total = np.empty(B)
+    shared = np.empty(B)
+    K = members_of(D)
+    members = np.empty((K, B))
+    work = np.empty(B)
+    accelerations(q, a, P)
+    if M > 0:
+        hessian(q, h, P)
+    for seg in range(seg0, seg1):
+        for step in range(steps):
+            for stage in range(s + 1):
+                c = bh[stage] * dt
+                for i in range(D):
+                    for b in range(B):
+                        v[i, b] += c * a[i, b]
+                if M > 0:
+                    tangent_kick(h, dq, dv, c, P)
+                if stage == s:
+                    break
+                c = ah[stage] * dt
+                for i in range(D):
+                    for b in range(B):
+                        q[i, b] += c * v[i, b]
+                for i in range(D):
+                    for m in range(M):
+                        for b in range(B):
+                            dq[i, m, b] += c * dv[i, m, b]
+                accelerations(q, a, P)
+                if M > 0:
+                    hessian(q, h, P)
+            g = seg * steps + step + 1
+            if mode != NO_TANGENT and renorm > 0 and g % renorm == 0 and step + 1 < steps:
+                _renormalise(dq, dv, logs, mode == ORTHONORMALISE)
+            if megno:
+                _log_norm_first(dq, dv, logs, work)
+                for b in range(B):
+                    meg[0, b] += 0.5 * dt * (meg[1, b] + work[b])
+                    meg[1, b] = work[b]
+            if stride > 0 and g % stride == 0:
+                for b in range(B):
+                    row = traj[r0 + b, g // stride]
+                    for i in range(SHARED):
+                        row[i] = q[i, b]
+                        row[SHARED + i] = v[i, b]
+                    for i in range(SHARED, D):
+                        row[SHARED + i] = q[i, b]
+                        row[D + i] = v[i, b]
+        if mode != NO_TANGENT:
+            _renormalise(dq, dv, logs, mode == ORTHONORMALISE)
+        energies(q, v, P, total, shared, members)
+        failed = False
+        for b in range(B):
+            r = r0 + b
+            H = total[b]
+            scale = abs(h0[r]) if h0[r] != 0.0 else 1.0
+            if not math.isfinite(H):
+                status[r] = NONFINITE
+            else:
+                err = abs(H - h0[r]) / scale
+                worst[r] = max(worst[r], err)
+                if err > bound:
+                    status[r] = DRIFT
+            if status[r] != RUNNING:
+                fail_segment[r] = seg + 1
+                fail_energy[r] = H
+                failed = True
+        if rec_shared.shape[1] > 0:
+            for b in range(B):
+                rec_shared[r0 + b, seg + 1] = shared[b]
+        if rec_members.shape[1] > 0:
+            for b in range(B):
+                for j in range(K):
+                    rec_members[r0 + b, seg + 1, j] = members[j, b]
+        if rec_logs.shape[1] > 0:
+            for b in range(B):
+                for m in range(M):
+                    rec_logs[r0 + b, seg + 1, m] = logs[m, b]
+        if gali_k > 0:
+            _gali(dq, dv, gali_k, work)
+            for b in range(B):
+                rec_gali[r0 + b, seg + 1] = work[b]
+        if megno:
+            t = t0 + (seg + 1) * steps * dt
+            for b in range(B):
+                rec_megno[r0 + b, seg + 1] = 2.0 * meg[1, b] - 2.0 * meg[0, b] / t
+        if failed:
+            return seg + 1
+    return seg1
+
+
+@numba.njit(cache=True, parallel=True, error_model="numpy")
+def advance(Q, V, DQ, DV, P, scheme, seg0, seg1, block, tangent, logs, meg, audit, rec):
+    """Advance every run (columns of Q, V) over segments [seg0, seg1), blocks of ``block``
+    runs spread over threads; blocks holding a stopped run are skipped."""
+    status = audit[2]
+    R = Q.shape[1]
+    nblocks = (R + block - 1) // block
+    for ib in numba.prange(nblocks):
+        r0 = ib * block
+        r1 = min(R, r0 + block)
+        skip = False
+        for r in range(r0, r1):
+            if status[r] != RUNNING:
+                skip = True
+        if skip:
+            continue
+        q = Q[:, r0:r1].copy()
+        v = V[:, r0:r1].copy()
+        dq = DQ[:, :, r0:r1].copy()
+        dv = DV[:, :, r0:r1].copy()
+        lg = logs[:, r0:r1].copy()
+        mg = meg[:, r0:r1].copy()
+        _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, lg, mg, audit, rec)
+        Q[:, r0:r1] = q
+        V[:, r0:r1] = v
+        DQ[:, :, r0:r1] = dq
+        DV[:, :, r0:r1] = dv
+        logs[:, r0:r1] = lg
+        meg[:, r0:r1] = mg
+
+
+@numba.njit(cache=True, error_model="numpy")
+def block_energies(Q, V, P):
+    """(total, shared, members) energies of every run: (R,), (R,), (K, R)."""
+    R = Q.shape[1]
+    total = np.empty(R)
+    shared = np.empty(R)
+    members = np.empty((members_of(Q.shape[0]), R))
+    energies(np.ascontiguousarray(Q), np.ascontiguousarray(V), P, total, shared, members)
+    return total, shared, members
+
+
+@numba.njit(cache=True, error_model="numpy")
+def block_accelerations(Q, P):
+    """Accelerations of every run (D, R)."""
+    a = np.empty(Q.shape)
+    accelerations(np.ascontiguousarray(Q), a, P)
+    return a

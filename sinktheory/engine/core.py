@@ -1,0 +1,296 @@
+"""One engine for ensembles, tangent vectors and monodromy matrices.
+
+:class:`Ensemble` owns the state of R runs of one generated system (positions and
+velocities, structure of arrays, runs last), optionally M deviation vectors per run, and
+advances them with a symmetric splitting scheme in segments of ``steps`` steps.  At each
+segment end it audits the total energy of every run and records what was asked for.  The
+deviation vectors follow the exact derivative of the same splitting step (the kick's
+derivative uses the Hessian, the drift is linear), so the tangent map of a step is its
+Jacobian and is symplectic; this is what the chaos indicators and the periodic-orbit
+monodromy use.
+
+Examples
+--------
+>>> import numpy as np
+>>> from sinktheory.integrators import get_scheme
+>>> ens = Ensemble("henon_heiles", np.array([[0.0], [0.1]]), np.array([[0.3], [0.0]]), [])
+>>> out = ens.run(get_scheme("blanes-moan6"), dt=0.01, steps=100, segments=3)
+>>> bool(out.worst.max() < 1e-12), out.shared.shape
+(True, (1, 4))
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numba
+import numpy as np
+
+from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
+from ..progress import ProgressBar
+from .cache import load
+
+#: Tangent modes: none (raw deviation vectors, e.g. a monodromy matrix), Gram-Schmidt
+#: orthonormalisation at every renormalisation (Lyapunov spectrum), or independent
+#: normalisation (GALI/SALI, maximal exponent).
+TANGENT_MODES = {"none": 0, "orthonormalise": 1, "normalise": 2}
+_RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
+#: Runs per block: enough for the vector units, small enough for the L1/L2 caches.
+DEFAULT_BLOCK = 64
+
+
+@dataclass(frozen=True)
+class Records:
+    """What :meth:`Ensemble.run` recorded at the segment ends 0..S (index 0 = start).
+
+    shared : (R, S + 1) energy of the shared coordinates (the container), or None
+    members : (R, S + 1, K) energy of each member (particle), or None
+    trajectory : (R, samples, 2D) states every ``stride`` steps (sample 0 = start), or None
+    logs : (R, S + 1, M) accumulated log growth of each deviation vector, or None
+    gali : (R, S + 1) GALI_k of the first k deviation vectors, or None
+    megno : (R, S + 1) MEGNO Y(t) of deviation vector 0, or None
+    worst : (R,) largest relative energy error of each run over the segments
+    """
+
+    shared: np.ndarray | None
+    members: np.ndarray | None
+    trajectory: np.ndarray | None
+    logs: np.ndarray | None
+    gali: np.ndarray | None
+    megno: np.ndarray | None
+    worst: np.ndarray
+
+
+class Ensemble:
+    """R runs of a generated system, with optional deviation vectors.
+
+    Parameters
+    ----------
+    system : str
+        Engine name (see :func:`sinktheory.engine.cache.load`), e.g. ``sink_flat_n4_k5``.
+    q, v : array (D, R)
+        Positions and velocities (masses as in the system; for the sink, absolute ones).
+    params : sequence of float
+        The system's runtime parameters (sink: alpha, beta, gamma, mu).
+    dq, dv : array (D, M, R), optional
+        Deviation vectors (M of them per run).
+    tangent : {"none", "orthonormalise", "normalise"}
+        What happens to the deviation vectors at each renormalisation.
+    reference_energy : array (R,), optional
+        H0 of the energy audit (default: the energy of the start state).
+    """
+
+    def __init__(
+        self,
+        system: str,
+        q,
+        v,
+        params,
+        *,
+        dq=None,
+        dv=None,
+        tangent: str = "none",
+        reference_energy=None,
+    ):
+        self.module = load(system)
+        self.system = system
+        # copies: the engine advances its state in place and must not touch the caller's
+        self.q = np.array(q, dtype=float, order="C")
+        self.v = np.array(v, dtype=float, order="C")
+        D, R = self.q.shape
+        mod = self.module
+        C = mod.MEMBER_COORDS
+        if self.v.shape != self.q.shape or D < mod.SHARED or (C and (D - mod.SHARED) % C):
+            raise ParameterError(
+                "q, v",
+                f"shapes {self.q.shape}, {self.v.shape}",
+                f"(D, R) each with D = {mod.SHARED} + {C} x members",
+            )
+        self.params = np.ascontiguousarray(params, dtype=float)
+        if dq is None:
+            dq = np.zeros((D, 0, R))
+            dv = np.zeros((D, 0, R))
+        self.dq = np.array(dq, dtype=float, order="C")
+        self.dv = np.array(dv, dtype=float, order="C")
+        if self.dq.shape != self.dv.shape or self.dq.shape[::2] != (D, R):
+            raise ParameterError("dq, dv", f"shapes {self.dq.shape}", f"({D}, M, {R}) each")
+        if tangent not in TANGENT_MODES:
+            raise ParameterError("tangent", tangent, f"one of {tuple(TANGENT_MODES)}")
+        self.tangent = tangent
+        M = self.dq.shape[1]
+        self.logs = np.zeros((M, R))
+        self.meg = np.zeros((2, R))
+        self.status = np.zeros(R, dtype=np.int64)
+        self.time = 0.0
+        self.tangent_start = 0.0
+        self.segments_done = 0
+        total = self.energies()[0]
+        self.h0 = total if reference_energy is None else np.asarray(reference_energy, float)
+        if M and tangent != "none":
+            # start from unit vectors so that the logs measure growth from |delta(0)| = 1
+            norms = np.sqrt((self.dq**2).sum(0) + (self.dv**2).sum(0))
+            if np.any(norms == 0) or not np.all(np.isfinite(norms)):
+                raise ParameterError(
+                    "dq, dv", "a zero or non-finite deviation vector", "non-zero finite vectors"
+                )
+            self.dq /= norms
+            self.dv /= norms
+
+    @property
+    def runs(self) -> int:
+        return self.q.shape[1]
+
+    @property
+    def vectors(self) -> int:
+        return self.dq.shape[1]
+
+    def energies(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(total (R,), shared (R,), members (K, R)) energies of the current state."""
+        return self.module.block_energies(self.q, self.v, self.params)
+
+    def run(
+        self,
+        scheme,
+        *,
+        dt: float,
+        steps: int,
+        segments: int,
+        record: tuple[str, ...] = ("shared",),
+        stride: int = 0,
+        renorm: int = 0,
+        gali: int = 0,
+        megno: bool = False,
+        bound: float = math.inf,
+        block: int | None = None,
+        progress: bool | None = False,
+        label: str = "engine ",
+        unit: str = "segment",
+    ) -> Records:
+        """Advance ``segments`` segments of ``steps`` steps of size ``dt``.
+
+        ``record`` is a subset of {"shared", "members", "trajectory", "logs"}; ``stride``
+        steps between trajectory samples; ``renorm`` steps between renormalisations of the
+        deviation vectors inside a segment (0: only at segment ends); ``gali`` = k records
+        GALI_k; ``megno`` records MEGNO of vector 0.  A run whose relative energy error
+        exceeds ``bound`` or whose state becomes non-finite stops the engine with
+        :class:`~sinktheory.errors.EnergyDriftError` / :class:`NonFiniteStateError` naming
+        the run and the time (the earliest failure, whatever the threads); ``unit`` is
+        what the messages call a segment.
+        """
+        R, M, D = self.runs, self.vectors, self.q.shape[0]
+        K = self.module.members_of(D)
+        S = int(segments)
+        if gali > M or (megno and M == 0):
+            raise ParameterError("gali", gali, f"at most the number of deviation vectors ({M})")
+        rec = {
+            "shared": np.zeros((R, S + 1 if "shared" in record else 0)),
+            "members": np.zeros((R, S + 1 if "members" in record else 0, K)),
+            "logs": np.zeros((R, S + 1 if "logs" in record else 0, M)),
+            "gali": np.zeros((R, S + 1 if gali else 0)),
+            "megno": np.zeros((R, S + 1 if megno else 0)),
+        }
+        total, shared, members = self.energies()
+        if "shared" in record:
+            rec["shared"][:, 0] = shared
+        if "members" in record:
+            rec["members"][:, 0] = members.T
+        if "logs" in record:
+            rec["logs"][:, 0] = self.logs.T
+        samples = S * steps // stride + 1 if stride > 0 and "trajectory" in record else 0
+        traj = np.zeros((R, samples, 2 * D))
+        if samples:
+            Sh = self.module.SHARED
+            traj[:, 0] = np.concatenate(
+                [self.q[:Sh].T, self.v[:Sh].T, self.q[Sh:].T, self.v[Sh:].T], axis=1
+            )
+        stride = stride if samples else 0
+        if gali:
+            rec["gali"][:, 0] = 1.0
+        if megno:
+            rec["megno"][:, 0] = 2.0  # the limit of Y(t) as t -> 0 (ln|delta| ~ linear)
+        ah, bh = scheme.arrays()
+        fail_segment = np.zeros(R, dtype=np.int64)
+        fail_energy = np.zeros(R)
+        worst = np.zeros(R)
+        mode = TANGENT_MODES[self.tangent]
+        block = self._block(block)
+        chunk = max(1, math.ceil(S / 100))
+        bar = ProgressBar(S, enabled=progress is not False, label=label)
+        threads = numba.get_num_threads()
+        numba.set_num_threads(max(1, min(threads, -(-R // block))))
+        seg_base = self.segments_done
+        try:
+            for start in range(0, S, chunk):
+                stop = min(S, start + chunk)
+                self.module.advance(
+                    self.q,
+                    self.v,
+                    self.dq,
+                    self.dv,
+                    self.params,
+                    (ah, bh, float(dt), int(steps)),
+                    start,
+                    stop,
+                    block,
+                    (mode, int(renorm), int(gali), bool(megno), self.time - self.tangent_start),
+                    self.logs,
+                    self.meg,
+                    (self.h0, float(bound), self.status, fail_segment, fail_energy, worst),
+                    (
+                        rec["shared"],
+                        rec["members"],
+                        traj,
+                        int(stride),
+                        rec["logs"],
+                        rec["gali"],
+                        rec["megno"],
+                    ),
+                )
+                self._raise_on_failure(fail_segment, fail_energy, dt * steps, seg_base, bound, unit)
+                bar.update(stop - start)
+        finally:
+            numba.set_num_threads(threads)
+            bar.close()
+        self.segments_done += S
+        self.time += S * steps * dt
+        return Records(
+            shared=rec["shared"] if "shared" in record else None,
+            members=rec["members"] if "members" in record else None,
+            trajectory=traj if samples else None,
+            logs=rec["logs"] if "logs" in record else None,
+            gali=rec["gali"] if gali else None,
+            megno=rec["megno"] if megno else None,
+            worst=worst,
+        )
+
+    def _block(self, block: int | None) -> int:
+        """Runs per block: the default, but never fewer blocks than threads."""
+        if block is not None:
+            return max(1, int(block))
+        threads = numba.get_num_threads()
+        per_thread = -(-self.runs // threads)
+        return max(1, min(DEFAULT_BLOCK, per_thread))
+
+    def _raise_on_failure(self, fail_segment, fail_energy, segment_time, seg_base, bound, unit):
+        """Raise for the earliest failure (segment, then run): the same whatever the
+        block size or thread count."""
+        failed = np.flatnonzero(self.status != _RUNNING)
+        if failed.size == 0:
+            return
+        order = np.lexsort((failed, fail_segment[failed]))
+        r = int(failed[order[0]])
+        seg = int(fail_segment[r])
+        t = self.time + seg * segment_time
+        h0 = float(self.h0[r])
+        where = f"run {r} at t = {t:.6g} ({unit} {seg_base + seg})"
+        if self.status[r] == _NONFINITE:
+            raise NonFiniteStateError(
+                f"{where}: the state became non-finite (total energy {float(fail_energy[r])!r}, "
+                f"started at {h0!r}); the step is too large for this stiffness"
+            )
+        err = abs(fail_energy[r] - h0) / (abs(h0) or 1.0)
+        raise EnergyDriftError(
+            f"{where}: relative total-energy error {err:.3g} > bound {bound:.3g} "
+            f"(H = {float(fail_energy[r])!r}, H0 = {h0!r}); use a smaller dt or tolerance"
+        )

@@ -1,0 +1,297 @@
+"""Print the compiled engine of one :class:`~sinktheory.engine.systems.SeparableSystem`.
+
+The module it writes has four system kernels, each working on a block of B runs laid out
+structure-of-arrays (q[i, b]: coordinate i of run b, runs contiguous), so the loops over
+runs vectorise:
+
+``accelerations(q, a, P)``
+    a = -M^-1 grad U(q).
+``hessian(q, h, P)``
+    the local Hessian entries of every term (what the tangent map needs).
+``tangent_kick(h, dq, dv, c, P)``
+    dv += -c M^-1 Hess U(q) dq for every deviation vector: the exact derivative of the kick
+    v += c a(q), so the tangent map of a splitting step is the step's Jacobian and is
+    symplectic.
+``energies(q, v, P, total, shared, members)``
+    H per run, the shared part (container) and each member's part (particle).
+
+followed by the system-independent stepper of :mod:`sinktheory.engine._stepper`.  Integer
+powers are printed as products by repeated squaring with the exponent fixed in the text, so
+the compiler sees straight-line code; divisions by the same denominator become one
+reciprocal (SymPy's CSE of x/D and x D^-k).  Build time only: needs SymPy.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import sympy as sp
+
+from ..codegen import KernelPrinter
+from .systems import SeparableSystem, Term
+
+STEPPER = Path(__file__).with_name("_stepper.py")
+
+
+class EnginePrinter(KernelPrinter):
+    """Kernel printer with integer exponents unrolled into products."""
+
+    def _print_Pow(self, expr, rational=False):  # noqa: D102 - printer protocol
+        exp = expr.exp
+        if exp.is_Integer and abs(int(exp)) >= 3:
+            k = int(exp)
+            text = _chain(self.parenthesize(expr.base, 1000), abs(k))
+            return f"(1.0/{text})" if k < 0 else text
+        return super()._print_Pow(expr, rational=rational)
+
+
+def _chain(b: str, k: int) -> str:
+    """b^k as a product by repeated squaring (the compiler merges the repeated squares)."""
+    if k == 1:
+        return b
+    if k % 2 == 0:
+        h = _chain(b, k // 2)
+        return f"({h}*{h})"
+    return f"({_chain(b, k - 1)}*{b})"
+
+
+_printer = EnginePrinter({"fully_qualified_modules": True, "standard": "python3"})
+
+
+def _p(e) -> str:
+    return _printer.doprint(sp.sympify(e))
+
+
+def _cse(outputs: list[sp.Expr], prefix: str) -> tuple[list[str], list[str]]:
+    reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols(prefix), optimizations="basic")
+    return [f"{s.name} = {_p(e)}" for s, e in reps], [_p(e) for e in reduced]
+
+
+def _local_lines(term: Term) -> list[str]:
+    """Local coordinates from the (already loaded) system coordinates, then the atoms."""
+    lines = [f"{l.name} = {_p(m)}" for l, m in zip(term.local, term.maps, strict=True) if l != m]
+    return lines + [f"{a.name} = {_p(e)}" for a, e in term.atoms]
+
+
+def _index(system: SeparableSystem, coord: sp.Symbol) -> str:
+    """Row of ``coord`` in q: a number for shared coordinates, an expression in j else."""
+    if coord in system.shared:
+        return str(system.shared.index(coord))
+    c = system.member.index(coord)
+    return f"{len(system.shared)} + {c} * K + j"
+
+
+def _coords_of(system: SeparableSystem, member: bool) -> tuple[sp.Symbol, ...]:
+    return system.shared + (system.member if member else ())
+
+
+def _load(system: SeparableSystem, member: bool, array: str = "q") -> list[str]:
+    return [f"{c.name} = {array}[{_index(system, c)}, b]" for c in _coords_of(system, member)]
+
+
+def _jacobian(term: Term, coords) -> list[list[sp.Expr]]:
+    """dl_i / dq_c (constants: the maps are linear)."""
+    jac = [[sp.diff(m, c) for c in coords] for m in term.maps]
+    if any(not e.is_number for row in jac for e in row):
+        raise ValueError("a term's local coordinates must be linear in the coordinates")
+    return jac
+
+
+def _masses(system: SeparableSystem) -> dict[sp.Symbol, sp.Expr]:
+    masses = dict(zip(system.shared, system.shared_masses, strict=True))
+    return masses | dict(zip(system.member, system.member_masses, strict=True))
+
+
+def _inverse_masses(system: SeparableSystem) -> tuple[dict[sp.Symbol, sp.Symbol], list[str]]:
+    """Symbols im_<coordinate> for 1/m and the lines that compute them once per call."""
+    masses = _masses(system)
+    names = {c: sp.Symbol(f"im_{c.name}") for c in masses}
+    return names, [f"{names[c].name} = {_p(1 / m)}" for c, m in masses.items()]
+
+
+def _params(system: SeparableSystem) -> list[str]:
+    return [f"{p.name} = P[{i}]" for i, p in enumerate(system.params)]
+
+
+def _loop(body: list[str], member: bool, runs_var: str = "B") -> list[str]:
+    """``for b`` (and ``for j`` over members) around ``body``."""
+    inner = [f"for b in range({runs_var}):", *("    " + s for s in body)]
+    if member:
+        return ["for j in range(K):", *("    " + s for s in inner)]
+    return inner
+
+
+def _terms(system: SeparableSystem):
+    yield from ((t, False) for t in system.shared_terms)
+    yield from ((t, True) for t in system.member_terms)
+
+
+def _function(name: str, args: str, doc: str, body: list[str]) -> str:
+    deco = '@numba.njit(cache=True, error_model="numpy")'
+    text = "\n".join("    " + s for s in [f'"""{doc}"""', *body])
+    return f"\n\n{deco}\ndef {name}({args}):\n{text}\n"
+
+
+def _accelerations(system: SeparableSystem, im) -> str:
+    body = ["D = q.shape[0]", "B = q.shape[1]", "K = members_of(D)"]
+    body += ["for i in range(D):", "    for b in range(B):", "        a[i, b] = 0.0"]
+    for term, member in _terms(system):
+        coords = _coords_of(system, member)
+        jac = _jacobian(term, coords)
+        outs = []
+        for c_i, c in enumerate(coords):
+            force = -sum(jac[l_i][c_i] * term.gradient[l_i] for l_i in range(len(term.local)))
+            outs.append(im[c] * force)
+        assign, values = _cse(outs, "t")
+        inner = _load(system, member) + _local_lines(term) + assign
+        for c, val in zip(coords, values, strict=True):
+            if val != "0":
+                inner.append(f"a[{_index(system, c)}, b] += {val}")
+        body += _loop(inner, member)
+    return body
+
+
+def _hessian_rows(system: SeparableSystem):
+    """(term, member, first row in h) for every term, rows per shared part, rows per member.
+
+    Member term entries sit at first + e K + j (first counted in units of K rows)."""
+    row, rows = 0, []
+    for term in system.shared_terms:
+        rows.append((term, False, row))
+        row += len(term.hessian)
+    shared_rows, per_member = row, 0
+    for term in system.member_terms:
+        rows.append((term, True, per_member))
+        per_member += len(term.hessian)
+    return rows, shared_rows, per_member
+
+
+def _h_index(system, member, first, e) -> str:
+    if member:
+        return f"SHARED_HESSIAN + {first + e} * K + j"
+    return str(first + e)
+
+
+def _hessian(system: SeparableSystem) -> list[str]:
+    body = ["B = q.shape[1]", "K = members_of(q.shape[0])"]
+    for term, member, first in _hessian_rows(system)[0]:
+        assign, values = _cse(list(term.hessian), "t")
+        inner = _load(system, member) + _local_lines(term) + assign
+        inner += [
+            f"h[{_h_index(system, member, first, e)}, b] = {val}" for e, val in enumerate(values)
+        ]
+        body += _loop(inner, member)
+    return body
+
+
+def _tangent_kick(system: SeparableSystem, im) -> list[str]:
+    body = ["M = dq.shape[1]", "B = dq.shape[2]", "K = members_of(dq.shape[0])"]
+    body += ["for m in range(M):"]
+    for term, member, first in _hessian_rows(system)[0]:
+        coords = _coords_of(system, member)
+        jac = _jacobian(term, coords)
+        L = len(term.local)
+        hsym = {}
+        e = 0
+        for i in range(L):
+            for k in range(i, L):
+                hsym[(i, k)] = hsym[(k, i)] = sp.Symbol(f"h{e}")
+                e += 1
+        d = [sp.Symbol(f"d_{c.name}") for c in coords]
+        dl = [sum(jac[i][c] * d[c] for c in range(len(coords))) for i in range(L)]
+        df = [sum(hsym[(i, k)] * dl[k] for k in range(L)) for i in range(L)]
+        outs = [
+            -im[c] * sp.Symbol("c") * sum(jac[i][ci] * df[i] for i in range(L))
+            for ci, c in enumerate(coords)
+        ]
+        assign, values = _cse(outs, "t")
+        inner = [f"h{x} = h[{_h_index(system, member, first, x)}, b]" for x in range(e)]
+        inner += [f"d_{c.name} = dq[{_index(system, c)}, m, b]" for c in coords]
+        inner += assign
+        for c, val in zip(coords, values, strict=True):
+            if val != "0":
+                inner.append(f"dv[{_index(system, c)}, m, b] += {val}")
+        body += ["    " + s for s in _loop(inner, member)]
+    return body
+
+
+def _energies(system: SeparableSystem) -> list[str]:
+    masses = _masses(system)
+    body = ["B = q.shape[1]", "K = members_of(q.shape[0])"]
+    shared_kin = " + ".join(
+        f"0.5*({_p(m)})*v[{i}, b]*v[{i}, b]" for i, m in enumerate(system.shared_masses)
+    )
+    body += ["for b in range(B):", f"    shared[b] = {shared_kin}"]
+    if system.member:
+        kin = " + ".join(
+            f"0.5*({_p(masses[c])})*v[{_index(system, c)}, b]*v[{_index(system, c)}, b]"
+            for c in system.member
+        )
+        body += _loop([f"members[j, b] = {kin}"], True)
+    for term, member in _terms(system):
+        assign, (value,) = _cse([term.value], "t")
+        inner = _load(system, member) + _local_lines(term) + assign
+        inner.append(f"{'members[j, b]' if member else 'shared[b]'} += {value}")
+        body += _loop(inner, member)
+    body += ["for b in range(B):", "    total[b] = shared[b]"]
+    if system.member:
+        body += _loop(["total[b] += members[j, b]"], True)
+    return body
+
+
+def render(system: SeparableSystem, banner: str) -> str:
+    """Source text of the engine module of ``system``."""
+    im, im_lines = _inverse_masses(system)
+    params = _params(system)
+    _, shared_rows, member_rows = _hessian_rows(system)
+    C = len(system.member)
+    head = (
+        f"{banner}"
+        f'"""Engine of the separable system {system.name!r} (generated; see '
+        'sinktheory.engine.printer)."""\n'
+        "import math  # noqa: F401\n\nimport numba\nimport numpy as np\n\n"
+        f"SHARED = {len(system.shared)}\nMEMBER_COORDS = {C}\nNPARAMS = {len(system.params)}\n"
+        f"SHARED_HESSIAN = {shared_rows}\nMEMBER_HESSIAN = {member_rows}\n"
+    )
+    sizes = _function(
+        "members_of",
+        "D",
+        "Number of members K of a state with D coordinates (D = SHARED + MEMBER_COORDS K).",
+        [f"return (D - SHARED) // {C}" if C else "return 0"],
+    ) + _function(
+        "hessian_rows",
+        "D",
+        "Rows of the Hessian buffer for a state with D coordinates.",
+        ["return SHARED_HESSIAN + MEMBER_HESSIAN * members_of(D)"],
+    )
+    parts = [
+        head,
+        sizes,
+        _function(
+            "accelerations",
+            "q, a, P",
+            "a = -M^-1 grad U(q) for a block q[coordinate, run].",
+            params + im_lines + _accelerations(system, im),
+        ),
+        _function(
+            "hessian",
+            "q, h, P",
+            "Local Hessian entries of every potential term, h[entry, run].",
+            params + _hessian(system),
+        ),
+        _function(
+            "tangent_kick",
+            "h, dq, dv, c, P",
+            "dv[:, m] += -c M^-1 Hess U dq[:, m]: the derivative of the kick v += c a(q).",
+            params + im_lines + _tangent_kick(system, im),
+        ),
+        _function(
+            "energies",
+            "q, v, P, total, shared, members",
+            "Total energy H, its shared (container) part and each member's part, per run.",
+            params + _energies(system),
+        ),
+    ]
+    stepper = STEPPER.read_text()
+    stepper = stepper[stepper.index("# --- template starts") :]
+    return "".join(parts) + "\n\n" + stepper

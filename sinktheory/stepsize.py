@@ -1,0 +1,162 @@
+"""Tolerance-driven choice of splitting scheme and step for the simulator.
+
+The relative total-energy error of a symmetric splitting scheme of order p over a run of
+the sink is modelled as
+
+    err(h) = C_s (h omega_max)^p,    h omega_max <= cliff_s,
+
+where omega_max is the fastest frequency the energy allows
+(:func:`stiffness_frequency`).  C_s and the cliff (the largest product
+before the high-order compositions lose their order near wall collisions, or resonate) are
+measured by ``python benchmarks/calibrate_steps.py`` on the paper's workloads (flat
+alpha = 1/2, beta in {-0.5, 0.3}, n in {4, 10}; symmetric alpha = 1, beta = 0.1, n = 6;
+k in {1, 5}; m = 0.2; 2 runs x 300 periods): C_s is the largest err / (h omega)^p seen, an
+envelope over the workloads rather than a fit, so the predicted error bounds what was
+measured.  For a tolerance, every scheme gets the largest step its model allows, and the
+scheme with the fewest force evaluations per period wins.
+
+Where it stops being trustworthy: the calibration covers 1e-11 <= tol <= 1e-5 on wells of
+the paper's kind over a few hundred to 1500 periods; outside (much longer runs, other
+energies, k > 5, extreme n) the energy audit still guards every run, and a run over its
+bound stops with :class:`~sinktheory.errors.EnergyDriftError` rather than returning numbers.
+
+Examples
+--------
+>>> from sinktheory import Sink, Well
+>>> c = choose(Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2), 0.5, 1e-8)
+>>> c.method, c.steps_per_period > 100, bool(c.predicted_error <= 1e-8)
+('blanes-moan6', True, True)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from . import validation as v
+from ._generated import well as _well
+from .errors import ParameterError
+from .integrators import SCHEMES, get_scheme
+
+if TYPE_CHECKING:
+    from .model import Sink
+
+#: The container's period T = 2 pi (mass 1, spring 1).
+PERIOD = 2.0 * math.pi
+_HESSIAN = {"flat": _well.hessian_flat, "symmetric": _well.hessian_symmetric}
+
+#: (C_s, cliff_s) per scheme, from ``python benchmarks/calibrate_steps.py 300`` (see the
+#: module docstring); measured 2026-11-23 on the 2-core development machine.
+CALIBRATION: dict[str, tuple[float, float]] = {
+    "verlet": (1.0, 0.03),
+    "yoshida4": (1.0, 0.2),
+    "blanes-moan4": (1.0, 0.6),
+    "yoshida6": (1.0, 0.4),
+    "blanes-moan6": (1.0, 0.9),
+    "suzuki-umeno8": (1.0, 0.65),
+}
+#: The default tolerance of :func:`sinktheory.simulate.simulate`.
+DEFAULT_TOL = 1e-8
+#: Tolerances the calibration supports (round-off floor below, no accuracy above).
+TOL_RANGE = (1e-12, 1e-4)
+
+
+def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float:
+    """Fastest oscillation frequency the total ``energy`` allows (an upper estimate).
+
+    No particle can hold more potential energy than the total, so it stays in the basin
+    V <= energy.  The deepest penetration of the wall is on the basin's boundary: along
+    ``angles`` rays in the quadrant x, y >= 0 (V is even in x and in y) the first crossing
+    V = energy is located (grid, then bisection), and there the largest eigenvalue of the
+    Hessian (generated kernel) is taken.  The particle's relative coordinate oscillates
+    with the reduced mass mu M/(mu + M), M = 1, so omega^2 = lambda_max (1/mu + 1).  The
+    container's own frequency is 1.
+
+    Examples
+    --------
+    >>> from sinktheory import Sink, Well
+    >>> w = stiffness_frequency(Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2), 0.5)
+    >>> 50 < w < 500
+    True
+    """
+    well = sink.well
+    x_max, y_max = well.reach(energy)
+    theta = np.linspace(0.0, 0.5 * math.pi, angles)[:, None]
+    radius = np.linspace(0.0, math.hypot(x_max, y_max), 400)[None, :]
+    inside = well.potential(radius * np.cos(theta), radius * np.sin(theta)) <= energy
+    first_out = np.argmin(inside, axis=1)  # the basin is star-shaped enough: first exit
+    lo, hi = radius[0, first_out - 1], radius[0, first_out]
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        below = well.potential(mid * np.cos(theta[:, 0]), mid * np.sin(theta[:, 0])) <= energy
+        lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+    hessian = _HESSIAN[well.shape]
+    largest = 0.0
+    for r, t in zip(hi, theta[:, 0], strict=True):
+        vxx, vxy, vyy = hessian(
+            r * math.cos(t), r * math.sin(t), well.alpha, well.beta, well.gamma, well.n
+        )
+        largest = max(largest, float(np.linalg.eigvalsh([[vxx, vxy], [vxy, vyy]])[-1]))
+    return max(1.0, math.sqrt(largest * (1.0 / sink.mu + 1.0)))
+
+
+def aligned_step(dt: float) -> tuple[float, int]:
+    """The largest step <= dt dividing T = 2 pi evenly, and the number of steps per period."""
+    steps = max(1, math.ceil(PERIOD / v.positive("dt", dt) - 1e-9))
+    return PERIOD / steps, steps
+
+
+@dataclass(frozen=True)
+class StepChoice:
+    """The scheme and step picked for a tolerance, with the model's predicted error."""
+
+    method: str
+    dt: float
+    steps_per_period: int
+    h_omega: float
+    predicted_error: float
+    force_evaluations_per_period: int
+
+
+def check_tol(tol: float) -> float:
+    """``tol`` as a float inside :data:`TOL_RANGE` (ParameterError naming ``tol`` otherwise)."""
+    tol = v.positive("tol", tol)
+    lo, hi = TOL_RANGE
+    if not lo <= tol <= hi:
+        raise ParameterError("tol", tol, f"between {lo:g} and {hi:g}")
+    return tol
+
+
+def step_for(method: str, omega: float, tol: float) -> StepChoice:
+    """The largest step of ``method`` whose modelled error at ``omega`` is <= ``tol``."""
+    scheme = get_scheme(method)
+    C, cliff = CALIBRATION[scheme.name]
+    h_omega = min(cliff, (tol / C) ** (1.0 / scheme.order))
+    dt, steps = aligned_step(h_omega / omega)
+    h_used = dt * omega
+    return StepChoice(
+        scheme.name,
+        dt,
+        steps,
+        h_used,
+        C * h_used**scheme.order,
+        steps * scheme.stages,
+    )
+
+
+def cost_table(sink: Sink, energy: float, tol: float, methods=None) -> list[StepChoice]:
+    """Each scheme's largest step for ``tol`` at total ``energy`` in ``sink``, cheapest
+    (fewest force evaluations per period) first."""
+    tol = check_tol(tol)
+    omega = stiffness_frequency(sink, energy)
+    options = [step_for(name, omega, tol) for name in (methods or SCHEMES)]
+    return sorted(options, key=lambda c: (c.force_evaluations_per_period, c.method))
+
+
+def choose(sink: Sink, energy: float, tol: float, method: str | None = None) -> StepChoice:
+    """The cheapest scheme and step reaching relative energy error ``tol`` (or the step of
+    ``method`` if given), for total ``energy`` in ``sink``."""
+    return cost_table(sink, energy, tol, None if method is None else [method])[0]
