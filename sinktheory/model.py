@@ -35,6 +35,23 @@ from ._generated import well as _well
 from .errors import ParameterError
 
 SHAPES = ("flat", "symmetric")
+#: Largest 2 n E / gamma accepted: the wall ratios' powers s^(2n) = 2 n V / gamma of a
+#: particle of energy E stay far inside float64 range (1.8e308).
+MAX_SCALED_ENERGY = 1e300
+#: Smallest relative wall distance (alpha - beta) / max(alpha, |beta|): below it
+#: D(s) = alpha + beta (s^2 - 1) loses more than half its digits to cancellation.
+MIN_RELATIVE_WALL_DISTANCE = 1e-8
+#: Smallest mass mu = m / k of one particle: its inverse (in every acceleration) and the
+#: stiffness omega^2 ~ V'' / mu must stay finite and resolvable by a time step.
+MIN_MU = 1e-12
+#: Largest ensemble and run length: beyond them seeding the runs, or one energy record,
+#: alone takes minutes or gigabytes.
+MAX_RUNS = 10**7
+MAX_PERIODS = 10**9
+#: An optimistic cost of one particle step (measured 5e-7 s on 2 cores in 2026-11), used
+#: to refuse ensembles that could not finish within MAX_SECONDS (30 days).
+SECONDS_PER_PARTICLE_STEP = 1e-7
+MAX_SECONDS = 30 * 86400.0
 #: Largest wall stiffness accepted.  Kernels stay finite far beyond it; the limit keeps
 #: integer powers s^(2n) of wall ratios |s| <= 1.5 well inside float64 range.
 MAX_N = 1000
@@ -98,6 +115,17 @@ class Well:
                 f"< alpha = {self.alpha!r}",
                 why="the wall distance alpha - beta must be > 0",
             )
+        scale = max(self.alpha, abs(self.beta))
+        if self.alpha - self.beta < MIN_RELATIVE_WALL_DISTANCE * scale:
+            limit = self.alpha - MIN_RELATIVE_WALL_DISTANCE * scale
+            raise ParameterError(
+                "beta",
+                self.beta,
+                f"<= {limit!r} (alpha - beta >= {MIN_RELATIVE_WALL_DISTANCE:g} x "
+                f"max(alpha, |beta|))",
+                why=f"the wall distance alpha - beta = {self.alpha - self.beta:.3g} would be "
+                "lost to rounding in D(s) = alpha + beta (s^2 - 1)",
+            )
 
     # --- geometry -------------------------------------------------------------------
     @property
@@ -136,6 +164,14 @@ class Well:
         (0.5..., 1.189...)
         """
         e = v.positive("energy", energy)
+        if 2 * self.n * e / self.gamma > MAX_SCALED_ENERGY:
+            limit = MAX_SCALED_ENERGY * self.gamma / (2 * self.n)
+            raise ParameterError(
+                "energy",
+                energy,
+                f"a finite number in (0, {limit:.6g}] (2 n E / gamma <= {MAX_SCALED_ENERGY:g})",
+                why="above it the wall terms (x/D)^(2n) of the potential overflow float range",
+            )
         c = float(_axis_reach_factor(e, self.gamma, self.n))
         D = self.denominator
         if self.shape == "flat":
@@ -179,6 +215,33 @@ class Well:
         lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
         best = _golden_minimum(minus_width, float(lo), float(hi), 1e-12)
         return -min(minus_width(best), minus_width(grid[i]))
+
+    def check_position(self, name: str, x: float, y: float) -> None:
+        """Raise ParameterError naming ``name`` unless (x, y) is a finite point inside the
+        walls: wall ratios |x| / D(y) < 1 and, for the flat shape, |y| < 1, for the
+        symmetric one |y| / D(x) < 1.
+
+        Examples
+        --------
+        >>> Well(0.5, 0.3, 4).check_position("initial", 0.3, 0.0)  # doctest: +ELLIPSIS
+        Traceback (most recent call last):
+        ...
+        sinktheory.errors.ParameterError: initial = (0.3, 0.0) is not allowed: must be a \
+point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
+        """
+        x, y = float(x), float(y)
+        allowed = "a point inside the walls (wall ratios < 1)"
+        if not (math.isfinite(x) and math.isfinite(y)):
+            raise ParameterError(name, (x, y), allowed)
+        dy = float(self.denominator(y))
+        ratios = [abs(x) / dy if dy > 0 else math.inf]
+        if self.shape == "flat":
+            ratios.append(abs(y))
+        else:
+            dx = float(self.denominator(x))
+            ratios.append(abs(y) / dx if dx > 0 else math.inf)
+        if not max(ratios) < 1:
+            raise ParameterError(name, (x, y), allowed, why=f"wall ratio {max(ratios):.3g} there")
 
     def check_energy(self, energy: float) -> None:
         """Raise ParameterError unless a particle with ``energy`` stays in a regular well."""
@@ -293,6 +356,14 @@ class Sink:
             self, "particles", v.positive_int("particles", self.particles, maximum=1000)
         )
         object.__setattr__(self, "mass", v.positive("mass", self.mass))
+        if self.mass / self.particles < MIN_MU:
+            raise ParameterError(
+                "mass",
+                self.mass,
+                f">= {MIN_MU:g} x particles = {MIN_MU * self.particles:g}",
+                why=f"each particle's mass m / k must be >= {MIN_MU:g}: lighter ones make "
+                "the accelerations and the stiffness of the walls overflow",
+            )
 
     @property
     def mu(self) -> float:
@@ -327,8 +398,16 @@ class RunSettings:
     def __post_init__(self) -> None:
         set_ = object.__setattr__
         set_(self, "energy", v.positive("energy", self.energy))
-        set_(self, "runs", v.positive_int("runs", self.runs))
-        set_(self, "periods", v.positive_int("periods", self.periods))
+        set_(
+            self,
+            "runs",
+            v.positive_int("runs", self.runs, maximum=MAX_RUNS, why=_runs_cost),
+        )
+        set_(
+            self,
+            "periods",
+            v.positive_int("periods", self.periods, maximum=MAX_PERIODS, why=_periods_cost),
+        )
         set_(self, "seed", v.positive_int("seed", self.seed, minimum=0))
         set_(self, "box", v.positive("box", self.box))
 
@@ -338,5 +417,93 @@ class RunSettings:
         return self.energy + sink.particles * corner
 
     def check(self, sink: Sink) -> None:
-        """Raise ParameterError unless every particle stays in a regular part of the well."""
+        """Raise ParameterError unless the particles start inside the walls, every
+        particle stays in a regular part of the well, and the ensemble fits in memory."""
+        self.check_box(sink.well)
         sink.well.check_energy(self.total_energy_bound(sink))
+        self.check_memory(sink)
+
+    def check_box(self, well: Well) -> None:
+        """Raise ParameterError unless the start box (-box, box)^2 lies inside the walls:
+        at its corner the wall ratios x / D(y) (and y / D(x), or y itself for the flat
+        shape) are below 1."""
+        b = self.box
+        d = float(well.denominator(b))
+        ratio = b / d if d > 0 else math.inf
+        if well.shape == "flat":
+            ratio = max(ratio, b)
+        if not ratio < 1:
+            wall = well.wall_distance
+            raise ParameterError(
+                "box",
+                self.box,
+                f"< {min(wall, 1.0):.6g}, inside the walls of the well",
+                why=f"the start box reaches wall ratio {ratio:.3g} >= 1 at its corner "
+                f"(wall distance alpha - beta = {wall:.3g})",
+            )
+
+    def memory_bytes(self, sink: Sink, record: tuple[str, ...] = ("container",)) -> int:
+        """Bytes the ensemble's state and ``record`` take (estimate: the state three
+        times, one float per run and period for ``container``, k for ``particles``)."""
+        state = 3 * self.runs * (2 + 4 * sink.particles) * 8
+        per_period = {"container": 1, "particles": sink.particles}
+        records = sum(per_period.get(r, 0) for r in record)
+        return state + self.runs * (self.periods + 1) * records * 8
+
+    def check_memory(self, sink: Sink, record: tuple[str, ...] = ("container",)) -> None:
+        """Raise ParameterError (naming runs or periods, whichever is larger) when the
+        ensemble would need more than half of this machine's memory."""
+        name = "periods" if self.periods > self.runs else "runs"
+        per_period = {"container": 1, "particles": sink.particles}
+        records = max(1, sum(per_period.get(r, 0) for r in record))
+        other = self.runs if name == "periods" else self.periods + 1
+        largest = max(1, v.memory_limit() // (8 * records * other) - (name == "periods"))
+        v.fits_memory(
+            name,
+            getattr(self, name),
+            self.memory_bytes(sink, record),
+            f"{self.runs} run(s) x {self.periods} period(s) of {sink.particles} particle(s)",
+            f"<= {largest} with {'runs' if name == 'periods' else 'periods'} = "
+            f"{getattr(self, 'runs' if name == 'periods' else 'periods')}",
+        )
+
+
+def check_work(settings: RunSettings, sink: Sink, steps_per_period: int) -> None:
+    """Raise ParameterError naming ``periods`` (or ``runs``) when the ensemble would take
+    longer than :data:`MAX_SECONDS` at an optimistic :data:`SECONDS_PER_PARTICLE_STEP`."""
+    steps = settings.runs * settings.periods * steps_per_period * sink.particles
+    seconds = steps * SECONDS_PER_PARTICLE_STEP
+    if seconds > MAX_SECONDS:
+        name = "periods" if settings.periods > settings.runs else "runs"
+        raise ParameterError(
+            name,
+            getattr(settings, name),
+            f"small enough that runs x periods x steps per period x particles <= "
+            f"{MAX_SECONDS / SECONDS_PER_PARTICLE_STEP:.3g}",
+            why=f"{settings.runs} run(s) x {settings.periods} period(s) x {steps_per_period} "
+            f"step(s) x {sink.particles} particle(s) would take at least {seconds:.3g} s "
+            f"(about {seconds / 86400:.3g} days)",
+        )
+
+
+def _runs_cost(runs: int) -> str:
+    r = _float(runs)
+    return (
+        f"seeding {r:.3g} runs alone takes about {r * 2e-6:.3g} s and their states "
+        f"at least {v.nbytes_text(r * 48.0)}"
+    )
+
+
+def _periods_cost(periods: int) -> str:
+    p = _float(periods)
+    return (
+        f"one run's energy record of {p:.3g} periods takes {v.nbytes_text(p * 8.0)}, and "
+        f"at >= 100 steps per period its integration about {p * 100 * 1e-7:.3g} s"
+    )
+
+
+def _float(i: int) -> float:
+    try:
+        return float(i)
+    except OverflowError:
+        return math.inf

@@ -27,9 +27,21 @@ from pathlib import Path
 from .errors import ParameterError
 
 
+def _is_bool(value: object) -> bool:
+    """True for Python and numpy booleans (which float() would quietly turn into 0 or 1)."""
+    kind = type(value)
+    return isinstance(value, bool) or (kind.__module__ == "numpy" and kind.__name__ in BOOLS)
+
+
+#: Names of numpy's boolean scalar type (numpy 1: ``bool_``; numpy 2: ``bool``).
+BOOLS = ("bool_", "bool")
+
+
 def finite(name: str, value: object) -> float:
     """A finite real number (bools are refused)."""
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+    if _is_bool(value):
+        raise ParameterError(name, value, "a finite real number (not a bool)")
+    if not isinstance(value, numbers.Real):
         try:
             value = float(value)  # numpy scalars, mpmath mpf, numeric strings
         except (TypeError, ValueError):
@@ -61,12 +73,22 @@ def nonnegative(name: str, value: object) -> float:
     return _finite_where(name, value, lambda x: x >= 0, "a finite number >= 0")
 
 
-def positive_int(name: str, value: object, *, minimum: int = 1, maximum: int | None = None) -> int:
-    """An integer in ``[minimum, maximum]`` (floats with an integral value are accepted)."""
+def positive_int(
+    name: str,
+    value: object,
+    *,
+    minimum: int = 1,
+    maximum: int | None = None,
+    why=None,
+) -> int:
+    """An integer in ``[minimum, maximum]`` (floats with an integral value are accepted).
+
+    ``why(i)``, if given, explains in the message why an integer above ``maximum`` is
+    refused (a memory or time estimate, say)."""
     allowed = (
         f"an integer >= {minimum}" if maximum is None else (f"an integer in [{minimum}, {maximum}]")
     )
-    if isinstance(value, bool):
+    if _is_bool(value):
         raise ParameterError(name, value, allowed)
     if isinstance(value, numbers.Integral):
         i = int(value)
@@ -78,6 +100,8 @@ def positive_int(name: str, value: object, *, minimum: int = 1, maximum: int | N
         if not math.isfinite(x) or x != int(x):
             raise ParameterError(name, value, allowed)
         i = int(x)
+    if maximum is not None and i > maximum:
+        raise ParameterError(name, value, allowed, why=why(i) if why else None)
     if i < minimum or (maximum is not None and i > maximum):
         raise ParameterError(name, value, allowed)
     return i
@@ -85,7 +109,7 @@ def positive_int(name: str, value: object, *, minimum: int = 1, maximum: int | N
 
 def choice(name: str, value: object, options: tuple[str, ...]) -> str:
     """One of a fixed set of names."""
-    if value not in options:
+    if not isinstance(value, str) or value not in options:
         raise ParameterError(name, value, "one of " + ", ".join(repr(o) for o in options))
     return str(value)
 
@@ -107,3 +131,72 @@ def writable_directory(name: str, value: object, directory: str | os.PathLike) -
         ) from None
     os.close(fd)
     os.unlink(probe)
+
+
+def memory_limit() -> int:
+    """Bytes one computation may allocate: half the machine's physical memory (8 GiB
+    when that cannot be read)."""
+    try:
+        return os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE") // 2
+    except (AttributeError, ValueError, OSError):
+        return 8 * 2**30
+
+
+def nbytes_text(n: float) -> str:
+    """A byte count for people: ``'7.28 TiB'``.
+
+    Examples
+    --------
+    >>> nbytes_text(8e12), nbytes_text(512)
+    ('7.28 TiB', '512 B')
+    """
+    for unit, size in (("EiB", 2**60), ("PiB", 2**50), ("TiB", 2**40), ("GiB", 2**30)):
+        if n >= size:
+            return f"{n / size:.3g} {unit}"
+    if n >= 2**20:
+        return f"{n / 2**20:.3g} MiB"
+    return f"{n:.0f} B"
+
+
+def fits_memory(name: str, value: object, nbytes: float, what: str, allowed: str) -> None:
+    """Refuse ``value`` of ``name`` when ``what`` would need more than :func:`memory_limit`
+    bytes; the message gives the estimate."""
+    limit = memory_limit()
+    if nbytes > limit:
+        raise ParameterError(
+            name,
+            value,
+            allowed,
+            why=f"{what} would need about {nbytes_text(nbytes)} of memory, over the "
+            f"{nbytes_text(limit)} allowed (half of this machine's memory)",
+        )
+
+
+#: Most integration steps in one container period T = 2 pi (a step >= 6.3e-9).
+MAX_STEPS_PER_PERIOD = 10**9
+
+
+def time_step(name: str, value: object, period: float = 2 * math.pi) -> float:
+    """A step dt > 0 with at most :data:`MAX_STEPS_PER_PERIOD` steps per ``period``.
+
+    Examples
+    --------
+    >>> time_step("dt", 0.01)
+    0.01
+    >>> time_step("dt", 1e-300)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: dt = 1e-300 is not allowed: must be a number >= 6.28e-09 \
+(at most 1000000000 steps per period T = 2 pi) (it would take 6.28e+300 steps per period)
+    """
+    dt = positive(name, value)
+    smallest = period / MAX_STEPS_PER_PERIOD
+    if dt < smallest:
+        raise ParameterError(
+            name,
+            value,
+            f"a number >= {smallest:.3g} (at most {MAX_STEPS_PER_PERIOD} steps per period "
+            "T = 2 pi)",
+            why=f"it would take {period / dt:.3g} steps per period",
+        )
+    return dt

@@ -279,3 +279,111 @@ def test_light_commands_import_no_plotting_or_arrays(args):
     loaded = loaded_by(args)
     assert not any(m.startswith(h) for m in loaded for h in HEAVY), loaded
     assert "scipy.optimize" not in loaded and "scipy.integrate" not in loaded, loaded
+
+
+# --------------------------------------------------------------------------- sizes
+SIZES = [
+    ([*SIM, "--energy", "1e308"], "energy", "1.25e+299"),
+    ([*SIM, "--mass", "1e-320"], "mass", ">= 1e-12"),
+    ([*SIM, "--mass", "5e-12", "--particles", "10"], "mass", "1e-11"),
+    (["sink", *WELL, "--mass", "1e-320"], "mass", ">= 1e-12"),
+    (["well", *WELL, "--energy", "1e308"], "energy", "overflow"),
+    ([*SIM[:-5], "--periods", "2", "--initial", "1e308", "0", "--quiet"], "--initial", "walls"),
+    ([*SIM[:-5], "--periods", "2", "--initial", "0.21", "0", "--quiet"], "--initial", "walls"),
+    ([*SIM[:-5], "--periods", "2", "--initial", "0", "nan", "--quiet"], "--initial", "walls"),
+    ([*SIM, "--initial", "0", "0"], "--runs", "1 with --initial"),
+    ([*SIM, "--dt", "1e-320"], "--dt", "steps per period"),
+    ([*SIM, "--dt", "1e-300"], "--dt", "steps per period"),
+    ([*SIM, "--dt", "1e-9"], "--dt", "steps per period"),
+    ([*SIM[:-5], "--runs", "2", "--periods", "1e12", "--quiet"], "periods", "TiB"),
+    ([*SIM[:-5], "--runs", "2", "--periods", "1e308", "--quiet"], "periods", "[1, 1000000000]"),
+    ([*SIM[:-5], "--runs", "1e12", "--periods", "2", "--quiet"], "runs", "TiB"),
+    ([*SIM[:-5], "--runs", "1e308", "--periods", "2", "--quiet"], "runs", "[1, 10000000]"),
+    ([*SIM[:-5], "--runs", "100000", "--periods", "100000", "--quiet"], "runs", "memory"),
+    (
+        [*SIM[:-5], "--runs", "1000", "--periods", "1e6", "--dt", "1e-6", "--quiet"],
+        "periods",
+        "days",
+    ),
+    (["sink", *WELL, "--runs", "1e12"], "runs", "[1, 10000000]"),
+    (["sink", *WELL, "--periods", "1e12"], "periods", "[1, 1000000000]"),
+    (["sink", *WELL, "--runs", "10000000", "--periods", "1000000000"], "periods", "memory"),
+]
+
+
+@pytest.mark.parametrize(("argv", "name", "says"), SIZES, ids=lambda a: " ".join(a)[-44:])
+def test_sizes_refused_up_front_naming_the_parameter(
+    argv, name, says, capsys, tmp_path, monkeypatch
+):
+    line = refused(argv, capsys, tmp_path, monkeypatch, name)
+    assert says in line
+
+
+HOSTILE_WELLS = [
+    (["sink", "--alpha", "0.5", "--beta", "0.499999999999", "--n", "4"], "beta"),
+    (["well", "--alpha", "0.5", "--beta", "0.499999999999", "--n", "4"], "beta"),
+    (["simulate", "--alpha", "0.5", "--beta", "0.499999999999", "--n", "4", "--quiet"], "beta"),
+    (["simulate", "--alpha", "1e-12", "--beta", "0", "--n", "4", "--quiet"], "box"),
+    (["sink", "--alpha", "1e-12", "--beta", "0", "--n", "4"], "box"),
+    (["sink", "--alpha", "0.5", "--beta", "0.495", "--n", "4"], "box"),  # wall at 0.005
+    (["sink", "--alpha", "1e-12", "--beta", "-1e-12", "--n", "4"], "box"),
+]
+
+
+@pytest.mark.parametrize(("argv", "name"), HOSTILE_WELLS, ids=lambda a: " ".join(a)[-40:])
+def test_hostile_wells_refused(argv, name, capsys, tmp_path, monkeypatch):
+    refused(argv, capsys, tmp_path, monkeypatch, name)
+
+
+def test_well_with_tiny_but_exact_wall_distance_is_described(capsys):
+    """alpha = 1e-12, beta = 0 is a valid (tiny) well; only a simulation in it is refused."""
+    code, out, err = run_cli(["well", "--alpha", "1e-12", "--beta", "0", "--n", "4"], capsys)
+    assert code == 0, err
+    assert "1e-12" in out
+
+
+# --------------------------------------------------------------------------- Python API
+def test_bools_are_not_numbers():
+    import numpy as np
+
+    from sinktheory import RunSettings, Sink, Well
+
+    cases = [
+        (lambda: Well(alpha=True, beta=0.3, n=4), "alpha"),
+        (lambda: Well(alpha=0.5, beta=False, n=4), "beta"),
+        (lambda: Well(alpha=0.5, beta=0.3, n=True), "n"),
+        (lambda: Well(alpha=0.5, beta=0.3, n=4, gamma=np.True_), "gamma"),
+        (lambda: Well(alpha=0.5, beta=0.3, n=4, shape=1), "shape"),
+        (lambda: Sink(Well(0.5, 0.3, 4), particles=True), "particles"),
+        (lambda: Sink(Well(0.5, 0.3, 4), mass=True), "mass"),
+        (lambda: RunSettings(runs=True), "runs"),
+        (lambda: RunSettings(energy=np.bool_(True)), "energy"),
+    ]
+    for make, name in cases:
+        with pytest.raises(ParameterError) as info:
+            make()
+        assert info.value.name == name
+
+
+def test_model_limits_name_parameter_value_and_range():
+    from sinktheory import RunSettings, Sink, Well
+    from sinktheory.model import check_work
+
+    with pytest.raises(ParameterError, match=r"beta = 0.499999999999 .* <= 0.4999999"):
+        Well(0.5, 0.499999999999, 4)
+    Well(0.5, 0.49999, 4)  # a narrow but resolvable well is fine
+    with pytest.raises(ParameterError, match="energy = 1e[+]308"):
+        Well(0.5, 0.3, 4).reach(1e308)
+    with pytest.raises(ParameterError, match="mass = 1e-320"):
+        Sink(Well(0.5, 0.3, 4), mass=1e-320)
+    with pytest.raises(ParameterError, match=r"runs = 1000000000000 .*\[1, 10000000\]"):
+        RunSettings(runs=10**12)
+    with pytest.raises(ParameterError, match=r"periods = 1e\+308"):
+        RunSettings(periods=1e308)
+    with pytest.raises(ParameterError, match="box = 0.01"):
+        RunSettings().check(Sink(Well(1e-12, 0.0, 4)))
+    with pytest.raises(ParameterError, match="memory"):
+        RunSettings(runs=10**7, periods=10**9).check(Sink(Well(0.5, 0.3, 4)))
+    with pytest.raises(ParameterError, match="days"):
+        check_work(RunSettings(runs=100, periods=10**6), Sink(Well(0.5, 0.3, 4)), 10**6)
+    RunSettings(runs=25, periods=1500).check(Sink(Well(0.5, 0.3, 4), particles=5))

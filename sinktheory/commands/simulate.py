@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 from pathlib import Path
 
 import numpy as np
@@ -16,8 +17,9 @@ import numpy as np
 from .. import __version__
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES
-from ..model import RunSettings, Sink
+from ..model import RunSettings, Sink, check_work
 from ..simulate import ENERGY_BOUND, SimulationResult, simulate
+from ..validation import time_step
 from . import HELP as HELPS
 from ._common import (
     Output,
@@ -71,25 +73,43 @@ def _npz_path(value: str | None) -> Path | None:
     return output_file("--out", value, (".npz",))
 
 
-def _initial(values: list | None, particles: int) -> np.ndarray | None:
+def _initial(values: list | None, sink: Sink) -> np.ndarray | None:
     if values is None:
         return None
+    particles = sink.particles
     if len(values) != 2 * particles:
         raise ParameterError(
             "--initial",
             f"{len(values)} number(s)",
             f"2 x particles = {2 * particles} numbers (x y for each particle)",
         )
-    return np.array(values, dtype=float).reshape(particles, 2)
+    positions = np.array(values, dtype=float).reshape(particles, 2)
+    for x, y in positions:
+        sink.well.check_position("--initial", x, y)
+    return positions
+
+
+def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, initial) -> None:
+    """Refuse, before any work, what cannot run: --runs with --initial, a step too small,
+    an ensemble too large for memory or too long to finish (estimates in the message)."""
+    if initial is not None and args.runs not in (None, 1):
+        raise ParameterError(
+            "--runs", args.runs, "1 with --initial (one set of positions starts one run)"
+        )
+    settings.check_memory(sink, ("container",))
+    if args.dt is not None:
+        dt = time_step("--dt", args.dt)
+        check_work(settings, sink, math.ceil(2 * math.pi / dt - 1e-9))
 
 
 def run(args: argparse.Namespace) -> Output:
     plot = png_path("--plot", args.plot)
     out = _npz_path(args.out)
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
-    initial = _initial(args.initial, sink.particles)
+    initial = _initial(args.initial, sink)
     runs = args.runs if args.runs is not None else (1 if initial is not None else 25)
     settings = RunSettings(energy=args.energy, runs=runs, periods=args.periods, seed=args.seed)
+    _check_size(args, sink, settings, initial)
     result = simulate(
         sink,
         settings,
