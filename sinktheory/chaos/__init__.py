@@ -23,7 +23,7 @@ Examples
 >>> from sinktheory import RunSettings, Sink, Well
 >>> from sinktheory.chaos import chaos
 >>> res = chaos(Sink(Well(0.5, 0.3, 4), particles=1, mass=0.2),
-...             RunSettings(runs=2, periods=50, seed=3), spectrum=True)
+...             RunSettings(runs=2, periods=50, seed=3), spectrum=True, dt=0.01)
 >>> res.spectrum.shape, bool(abs(res.pair_sums).max() < 0.05)
 ((2, 6), True)
 """

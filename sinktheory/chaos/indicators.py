@@ -89,6 +89,7 @@ def indicators(
     gali: int = 0,
     megno: bool = False,
     transverse: tuple | None = None,
+    vectors: tuple | None = None,
     method: str = DEFAULT_SCHEME,
     renorm: int = 0,
     seed: int = 0,
@@ -120,6 +121,9 @@ def indicators(
     transverse : (q, v, mask), optional
         Start states (D, R) on an invariant subspace and the phase-space directions
         (bool, 2D) transverse to it: the growth of one vector confined to them.
+    vectors : (dq, dv) arrays (D, M, R), optional
+        Start deviation vectors instead of the seeded random orthonormal ones (M at least
+        the number needed: 2D for the spectrum, k for GALI_k, 1 else).
     method : str
         Splitting scheme (:data:`sinktheory.integrators.SCHEMES`).
     renorm : int >= 0
@@ -154,7 +158,14 @@ def indicators(
         "reference_energy": reference_energy,
     }
     count = max(2 * D if spectrum else 0, gali, 1)
-    dq, dv = random_vectors(D, count, R, seed)
+    if vectors is None:
+        dq, dv = random_vectors(D, count, R, seed)
+    else:
+        dq, dv = (np.asarray(a, float) for a in vectors)
+        if dq.shape != dv.shape or dq.shape[0] != D or dq.shape[2] != R or dq.shape[1] < count:
+            raise ParameterError(
+                "vectors", f"arrays of shapes {dq.shape}, {dv.shape}", f"({D}, >= {count}, {R})"
+            )
     times = dt * steps * np.arange(segments + 1)
     worst = np.zeros(R)
     out: dict = {}

@@ -16,7 +16,8 @@ Examples
 --------
 >>> from sinktheory import RunSettings, Sink, Well
 >>> sink = Sink(Well(alpha=0.5, beta=0.3, n=4), particles=1, mass=0.2)
->>> res = chaos(sink, RunSettings(runs=2, periods=20, seed=1), gali=2, transverse=True)
+>>> res = chaos(sink, RunSettings(runs=2, periods=20, seed=1), gali=2, transverse=True,
+...             dt=0.01)
 >>> res.lambda1.shape, res.gali.shape, res.transverse.shape
 ((2,), (2, 21), (2,))
 >>> bool(res.run_errors.max() < 1e-6)

@@ -104,7 +104,7 @@ def finite_difference_jacobian(
 
     Each of the 2D coordinates of each run is displaced by +-h (times max(1, |z_i|)); the
     4 D R displaced states run as one ensemble.  Truncation error O(h^2), round-off
-    O(eps |M| / h): about 1e-9 |M| for h = 1e-6.
+    O(eps |M| / h); for one period of the sink about 1e-8 |M| at h = 1e-6.
 
     Returns
     -------

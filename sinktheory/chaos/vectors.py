@@ -74,5 +74,6 @@ def random_vectors(
     W = np.zeros((2 * dim, count, runs))
     for r in range(runs):
         g = np.random.default_rng(vector_seed(seed, r))
-        W[mask, :, r] = orthonormalise(g.standard_normal((free, count)))
+        # a full square draw, so vector m does not depend on how many are asked for
+        W[mask, :, r] = orthonormalise(g.standard_normal((free, free))[:, :count])
     return np.ascontiguousarray(W[:dim]), np.ascontiguousarray(W[dim:])
