@@ -73,8 +73,11 @@ def mode_guess(sink: Sink, mode: str, energy: float) -> tuple[np.ndarray, float]
     L = w.alpha - w.beta
     z0 = np.zeros(2 * (1 + 2 * k))
     if mode == "container":
-        # container displaced, particles at the well's centre (x = 0), all at rest
-        z0[0] = z0[1 : 1 + k] = math.sqrt(2 * energy)
+        # container displaced, all at rest; the particles at absolute rest at u = 0 while
+        # the walls allow it (x = -X), else just inside the trailing wall
+        X0 = math.sqrt(2 * energy)
+        z0[0] = X0
+        z0[1 : 1 + k] = max(0.0, X0 - 0.9 * L)
         return z0, 2 * math.pi
     # the particles against the free container (spring neglected): centre of mass at
     # rest, X = -m x / (1 + m), u = x / (1 + m), reduced mass mu / (1 + m) per particle
