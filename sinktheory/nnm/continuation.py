@@ -71,7 +71,7 @@ class Event:
 
 @dataclass
 class Branch:
-    """A continued family of periodic orbits (see :mod:`.result` for labelled arrays)."""
+    """A continued family of periodic orbits (labelled arrays: :mod:`sinktheory.nnm.result`)."""
 
     problem: ShootingProblem = field(repr=False)
     orbits: list[Orbit] = field(default_factory=list, repr=False)
@@ -404,3 +404,68 @@ def switch_branch(
     first = problem.orbit(u, data, it)
     t0 = direction
     return _continue(problem, first, J, ds, None, max_points, 1, *stop, locate, t0=t0)
+
+
+def merge(backward: Branch, forward: Branch) -> Branch:
+    """One branch from two continuations that start at the same orbit (``backward`` is
+    reversed; the shared first orbit is kept once; event indices follow)."""
+    nb = len(backward.orbits)
+    out = Branch(forward.problem)
+    out.orbits = backward.orbits[::-1] + forward.orbits[1:]
+    out.tangents = [-t for t in backward.tangents[::-1]] + forward.tangents[1:]
+    for e in backward.events:
+        e.index = nb - 2 - e.index
+    for e in forward.events:
+        e.index = nb - 1 + e.index
+    out.events = backward.events[::-1] + forward.events
+    out.stop_reason = f"backward: {backward.stop_reason}; forward: {forward.stop_reason}"
+    return out
+
+
+def continue_both(
+    sink,
+    mode: str,
+    *,
+    parameter: str = "energy",
+    energy: float,
+    stop: tuple[float, float],
+    steps: int = 400,
+    points: int = 120,
+    ds: float = 0.1,
+    half_traces: bool = False,
+    subspace: str = "plane",
+):
+    """The sink's normal mode ``mode`` through ``energy`` continued both ways in
+    ``parameter`` (see :func:`continue_orbits`), as a
+    :class:`~sinktheory.nnm.result.BranchResult`.
+
+    Parameters
+    ----------
+    sink : Sink
+        Container, particles and well (the start value of a well parameter).
+    mode : "container" or "particle"
+        Start guess (:func:`sinktheory.nnm.modes.mode_guess`).
+    half_traces : bool
+        Also compute the transverse half-period half-traces phi_T/2 at every point.
+    """
+    from .modes import mode_guess, sink_flow
+
+    system = sink_flow(sink)
+    z0, T = mode_guess(sink, mode, energy)
+    kw = dict(steps=steps, parameter=parameter, energy=energy, stop=stop, ds=ds)
+    back = continue_orbits(system, z0, T, direction=-1, max_points=points, subspace=subspace, **kw)
+    fwd = continue_orbits(system, z0, T, direction=1, max_points=points, subspace=subspace, **kw)
+    branch = merge(back, fwd)
+    w = sink.well
+    return branch.result(
+        half_traces=half_traces,
+        mode=mode,
+        shape=w.shape,
+        alpha=w.alpha,
+        beta=w.beta,
+        n=w.n,
+        gamma=w.gamma,
+        particles=sink.particles,
+        mass=sink.mass,
+        label=f"{mode} mode",
+    )

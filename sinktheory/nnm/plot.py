@@ -45,8 +45,9 @@ def _runs(flags: np.ndarray):
             start = i
 
 
-def draw_frequency_energy(ax, results, *, stability: str = "stable") -> None:
-    """Draw branches (BranchResult) on ``ax``; ``stability`` names the flag used."""
+def draw_frequency_energy(ax, results, *, stability: str = "stable_inplane") -> None:
+    """Draw branches (BranchResult) on ``ax``: line style from the flag ``stability``
+    (solid: stable), small crosses where the orbit is transversally unstable."""
     seen = set()
     for k, r in enumerate(results):
         color = f"C{k}"
@@ -61,6 +62,18 @@ def draw_frequency_energy(ax, results, *, stability: str = "stable") -> None:
                 color=color,
                 label=label if a == 0 else None,
             )
+        tu = ~np.asarray(r.stable_transverse, bool)
+        if tu.any() and r.transverse.size and stability != "stable":
+            ax.plot(
+                r.energy[tu],
+                r.frequency[tu],
+                "x",
+                color=color,
+                ms=3,
+                alpha=0.6,
+                label="transversally unstable" if "tu" not in seen else None,
+            )
+            seen.add("tu")
         for e in r.events:
             marker, c = _MARK.get(e["kind"], ("x", "k"))
             ax.plot(
@@ -79,8 +92,9 @@ def draw_frequency_energy(ax, results, *, stability: str = "stable") -> None:
     ax.grid(alpha=0.3, which="both")
 
 
-def plot_frequency_energy(results, *, title: str | None = None, stability: str = "stable"):
-    """Frequency-energy plot of one or more branches (solid: stable, dotted: unstable).
+def plot_frequency_energy(results, *, title: str | None = None, stability: str = "stable_inplane"):
+    """Frequency-energy plot of one or more branches (solid: stable in the plane,
+    dotted: unstable; crosses: transversally unstable).
 
     Parameters
     ----------
@@ -94,7 +108,9 @@ def plot_frequency_energy(results, *, title: str | None = None, stability: str =
     ax = fig.add_subplot()
     draw_frequency_energy(ax, results, stability=stability)
     ax.legend(fontsize=8, loc="best")
-    ax.set_title(title or "frequency-energy plot (solid: stable, dotted: unstable)", fontsize=10)
+    ax.set_title(
+        title or "frequency-energy plot (solid: in-plane stable, dotted: unstable)", fontsize=10
+    )
     return fig
 
 

@@ -1,0 +1,149 @@
+"""``sinktheory nnm``: normal modes of the container and its particles (issue 15).
+
+Continues the synchronous normal mode of the container + k particles on the plane
+y_j = 0 (both shapes) by shooting on the engine's exact tangent map, with all Floquet
+multipliers (in-plane and transverse) and located folds, period doublings and
+symmetry-breaking points.
+
+* ``--continue energy``: the branch through ``--energy`` in both directions over
+  ``--range LO HI`` (energies); ``--plot`` draws the frequency-energy plot with stability.
+* ``--continue beta``: at fixed total energy (default gamma/(2n) per particle, the
+  amplitude A0 = 1 of the paper's fixed-container mode), from ``--beta`` over
+  ``--range LO HI`` (betas); each point carries the transverse half-period half-trace
+  phi_T/2; ``--plot`` draws it beside the paper's fixed-container phi_T/2(beta) (Fig. 7).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+from ..errors import ParameterError
+from . import HELP as HELPS
+from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
+
+NAME = "nnm"
+HELP = HELPS[NAME]
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_well_arguments(parser)
+    g = parser.add_argument_group("normal mode")
+    g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
+    g.add_argument(
+        "--mass", type=number, default=0.2, help="total particle mass m > 0 (default 0.2)"
+    )
+    g.add_argument(
+        "--mode",
+        default=None,
+        help="container or particle: the start guess (default: container for energy, "
+        "particle for beta)",
+    )
+    g.add_argument(
+        "--continue",
+        dest="continue_in",
+        required=True,
+        help="energy or beta (or alpha, gamma: any well parameter at fixed energy)",
+    )
+    g.add_argument("--energy", type=number, help="total energy H of the start orbit")
+    g.add_argument(
+        "--range", nargs=2, type=number, metavar=("LO", "HI"), help="continuation interval"
+    )
+    g.add_argument("--steps", type=number, default=400, help="steps per period, even (400)")
+    g.add_argument("--points", type=number, default=120, help="points per direction (120)")
+    g.add_argument("--ds", type=number, default=0.1, help="first arclength step (0.1)")
+    g.add_argument("--plot", metavar="FILE.png", help="frequency-energy / transverse chart")
+    add_json(parser)
+
+
+def _check(args) -> None:
+    if args.continue_in not in ("energy", "alpha", "beta", "gamma"):
+        raise ParameterError("continue", args.continue_in, "energy, beta, alpha or gamma")
+    if args.mode not in (None, "container", "particle"):
+        raise ParameterError("mode", args.mode, "container or particle")
+    if not isinstance(args.steps, int) or args.steps < 8 or args.steps % 2:
+        raise ParameterError("steps", args.steps, "an even integer >= 8")
+    if not isinstance(args.points, int) or not 2 <= args.points <= 10_000:
+        raise ParameterError("points", args.points, "an integer in [2, 10000]")
+    if not (isinstance(args.ds, int | float) and math.isfinite(args.ds) and args.ds > 0):
+        raise ParameterError("ds", args.ds, "a positive number")
+    if args.energy is not None and not (math.isfinite(args.energy) and args.energy > 0):
+        raise ParameterError("energy", args.energy, "a finite positive energy")
+    if args.range is not None:
+        lo, hi = args.range
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+            raise ParameterError("range", args.range, "two finite numbers LO < HI")
+        if args.continue_in == "energy" and lo <= 0:
+            raise ParameterError("range", args.range, "positive energies")
+
+
+def run(args: argparse.Namespace) -> Output:
+    from ..model import Sink
+
+    _check(args)
+    well = well_from_args(args)
+    sink = Sink(well, particles=args.particles, mass=args.mass)
+    plot = png_path("plot", args.plot)
+    param = args.continue_in
+    mode = args.mode or ("container" if param == "energy" else "particle")
+    if param == "energy":
+        energy = args.energy if args.energy is not None else 1e-3
+        lo, hi = args.range if args.range is not None else (1e-4, 10.0)
+        if not lo <= energy <= hi:
+            raise ParameterError("energy", energy, f"inside --range [{lo:g}, {hi:g}]")
+    else:
+        energy = (
+            args.energy if args.energy is not None else sink.particles * well.gamma / (2 * well.n)
+        )
+        start = getattr(well, param)
+        default = {"beta": (-1.0, well.alpha - 0.02), "alpha": (well.beta + 0.02, 2.0)}
+        lo, hi = args.range if args.range is not None else default.get(param, (0.1, 10.0))
+        if not lo <= start <= hi:
+            raise ParameterError(param, start, f"inside --range [{lo:g}, {hi:g}]")
+    from ..nnm.continuation import continue_both
+
+    result = continue_both(
+        sink,
+        mode,
+        parameter=param,
+        energy=energy,
+        stop=(lo, hi),
+        steps=args.steps,
+        points=args.points,
+        ds=args.ds,
+        half_traces=param != "energy",
+    )
+    data = result.as_dict()
+    ev = ", ".join(f"{e['kind']} at {e['value']:.6g}" for e in result.events) or "none"
+    text = (
+        f"{mode} mode of {sink.particles} particle(s), {well.shape} well alpha = {well.alpha:g}, "
+        f"beta = {well.beta:g}, n = {well.n}, m = {sink.mass:g}; continued in {param} over "
+        f"[{result.value.min():.6g}, {result.value.max():.6g}] ({result.points} orbits)\n"
+        f"  frequency {result.frequency.min():.6g} .. {result.frequency.max():.6g}; "
+        f"stable at {int(result.stable.sum())} of {result.points} points\n"
+        f"  events: {ev}\n"
+        f"  checks: max trivial-multiplier error {data['max_trivial_error']:.2e}, "
+        f"max |sigma| {data['max_abs_sigma']:.2e}"
+    )
+    out = Output(data, text)
+    if plot is not None:
+        from ..nnm import plot as nplot
+
+        if param == "energy":
+            fig = nplot.plot_frequency_energy([result])
+        else:
+            scan = None
+            if param == "beta":
+                from ..floquet import model_problem
+                from ..floquet import scan as fscan
+
+                scan = fscan(
+                    model_problem(well.alpha, well.n, gamma=well.gamma, shape=well.shape),
+                    float(result.value.min()),
+                    float(result.value.max()),
+                    200,
+                )
+            fig = nplot.plot_transverse(result, scan)
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        data["plot"] = str(plot)
+    return out
