@@ -23,6 +23,7 @@ HELP = {
     "reproduce": "redraw the paper's figures and write report.md with each claim checked",
     "floquet": "Floquet stability of the normal mode y = 0: phi(beta) charts with located "
     "boundaries",
+    "nnm": "normal modes of container + particles: continuation, multipliers, FEP plots",
     "sweep": "parameter sweep (floquet, bifurcation, ensemble) into a resumable Zarr store",
 }
 NAMES = tuple(HELP)
