@@ -33,6 +33,8 @@ pages, so a module that was moved or deleted leaves no stale page behind.
 from __future__ import annotations
 
 import argparse
+import functools
+import inspect
 import json
 import os
 import re
@@ -40,6 +42,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import types
 from pathlib import Path
 
 from docutils import nodes
@@ -60,13 +63,20 @@ API_GENERATED = DOCS / "api" / "generated"
 _cache: dict[str, object] = {}
 
 
+@functools.cache
 def _namespace() -> dict:
+    """Names for the expressions: the model's functions memoised (pages reuse results)."""
     import sympy as sp
 
-    from sinktheory import symbolic as S
+    from sinktheory import symbolic
 
-    ns = {name: getattr(S, name) for name in dir(S) if not name.startswith("_")}
-    ns.update(S=S, sp=sp)
+    ns = {}
+    for name in dir(symbolic):
+        if name.startswith("_"):
+            continue
+        value = getattr(symbolic, name)
+        ns[name] = functools.cache(value) if inspect.isfunction(value) else value
+    ns.update(S=types.SimpleNamespace(**ns), sp=sp)
     return ns
 
 
@@ -90,8 +100,7 @@ def _symbol_names() -> dict:
 def _evaluate(expr: str, extra: dict | None = None):
     key = expr + repr(sorted((extra or {}).items()))
     if key not in _cache:
-        ns = _namespace()
-        ns.update(extra or {})
+        ns = {**_namespace(), **(extra or {})}
         _cache[key] = eval(expr, ns)  # noqa: S307 - our own pages, our own expressions
     return _cache[key]
 
@@ -156,7 +165,7 @@ def _section(directive: SphinxDirective, title: str, label: str) -> nodes.sectio
 
 
 def _formatter(prog: str) -> argparse.HelpFormatter:
-    return argparse.HelpFormatter(prog, width=88, max_help_position=30)
+    return argparse.HelpFormatter(prog, width=78, max_help_position=30)
 
 
 def _subparsers(parser: argparse.ArgumentParser) -> dict[str, argparse.ArgumentParser]:
@@ -192,6 +201,12 @@ def _options(parser: argparse.ArgumentParser) -> nodes.definition_list:
     return dl
 
 
+def _usage_block(text: str) -> nodes.literal_block:
+    block = nodes.literal_block(text, text)
+    block["language"] = "text"
+    return block
+
+
 class CliReference(SphinxDirective):
     has_content = False
 
@@ -203,7 +218,7 @@ class CliReference(SphinxDirective):
         out: list[nodes.Node] = []
         usage = parser.format_usage().strip()
         out.append(nodes.paragraph(parser.description or "", parser.description or ""))
-        out.append(nodes.literal_block(usage, usage))
+        out.append(_usage_block(usage))
         out.append(_options(parser))
         for name, sub in _subparsers(parser).items():
             sub.formatter_class = _formatter
@@ -211,7 +226,7 @@ class CliReference(SphinxDirective):
             if sub.description:
                 section += nodes.paragraph(sub.description, sub.description)
             text = sub.format_usage().strip()
-            section += nodes.literal_block(text, text)
+            section += _usage_block(text)
             section += _options(sub)
             out.append(section)
         return out
