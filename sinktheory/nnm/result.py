@@ -100,7 +100,9 @@ class BranchResult:
                 "value": e.value,
                 "energy": e.orbit.energy,
                 "frequency": e.orbit.frequency,
-                "multiplier": [float(np.real(e.multiplier)), float(np.imag(e.multiplier))],
+                "multiplier": None
+                if np.isnan(e.multiplier)
+                else [float(np.real(e.multiplier)), float(np.imag(e.multiplier))],
             }
             for e in branch.events
         ]
