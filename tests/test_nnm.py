@@ -9,7 +9,7 @@ References and tolerances:
   the recoil changes it by O(mu) (measured -0.27 mu), so mu = 1e-8 leaves ~3e-9.
 * linear limit: Kerschen's system at H = 1e-8 has frequencies 1 and sqrt(3) to O(H).
 * backbone of NNM1: a harmonic balance with 9 odd cosine harmonics solved by scipy
-  (alternating frequency-time residual) at the continuation's energies, frequency to 1e-7
+  (alternating frequency-time residual) at the continuation's energies, frequency to
   relative 1e-9 (measured 8e-13 up to H = 34: scheme error at 256 steps and series
   truncation both below it).
 * multipliers: the monodromy by central differences of scipy's DOP853 flow at rtol 1e-12
