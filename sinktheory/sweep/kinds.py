@@ -17,6 +17,11 @@ ensemble       :func:`sinktheory.simulate.simulate`, seeded     mean_energy (per
                with the point's seed                            stderr (period),
                                                                 max_relative_energy_error,
                                                                 dt_used
+design         :func:`sinktheory.design.point.compute`: an       absorbed (horizon), passage
+               ensemble, lambda_1 and the design measures       (level), long-time share and
+               (:mod:`sinktheory.design.measures`)              equipartition verdict, spread,
+                                                                lambda1, excursion, rqa_*,
+                                                                each with its ``*_se``
 =============  ==============================================  ===============================
 
 The bifurcation section starts from a fixed state and does not use the seed.  An ensemble
@@ -263,6 +268,69 @@ def _ensemble(p: dict, seed: int) -> dict[str, Any]:
     }
 
 
+# --------------------------------------------------------------------------- design
+def _design_check(p: dict) -> None:
+    from ..design.point import check  # the design package is loaded when a design runs
+
+    check(p)
+
+
+def _design(p: dict, seed: int) -> dict[str, Any]:
+    from ..design.point import compute
+
+    return compute(p, seed)
+
+
+def _design_coords(p: dict) -> dict[str, np.ndarray]:
+    from ..design.measures import ABSORBED_LEVELS, horizons_of
+
+    return {
+        "horizon": np.array(horizons_of(p["horizons"], p["periods"])),
+        "level": np.array(ABSORBED_LEVELS),
+        "period": np.arange(p["periods"] + 1),
+    }
+
+
+def _design_results() -> dict[str, Result]:
+    scalar = {
+        "long_time_mean": "long-time container energy (mean of the runs' time averages)",
+        "equipartition": "equipartition share E_total / (1 + k (1 + 1/n))",
+        "equipartition_z": "(long_time_mean - equipartition) / long_time_se",
+        "verdict": "0 equipartition, +1 above it (drain incomplete), -1 below (within sigmas)",
+        "depth": "long-time fraction of E0 absorbed, 1 - long_time_mean / E0",
+        "spread": "run-to-run std of the runs' long-time means",
+        "excursion": "longest excursion (periods) of <E> back above the risk level",
+        "lambda1": "largest Lyapunov exponent (per unit time), mean of lyapunov_runs runs",
+        "rqa_recurrence_rate": "RQA of <E>: recurrence rate",
+        "rqa_determinism": "RQA of <E>: determinism",
+        "rqa_laminarity": "RQA of <E>: laminarity",
+        "rqa_trapping_time": "RQA of <E>: trapping time (periods)",
+        "rqa_mean_recurrence_time": "RQA of <E>: mean recurrence time (periods)",
+    }
+    out = {
+        "absorbed": Result(("horizon",), "float64", "1 - <E>(hT)/E0"),
+        "absorbed_se": Result(("horizon",), "float64", "standard error of absorbed"),
+        "passage": Result(("level",), "float64", "first period with <E> < (1 - level) E0"),
+        "passage_se": Result(("level",), "float64", "bootstrap standard error of passage"),
+        "passage_reach": Result(("level",), "float64", "share of bootstrap resamples reaching it"),
+    }
+    for name, text in scalar.items():
+        out[name] = Result((), "float64", text)
+        if name not in ("equipartition", "equipartition_z", "verdict"):
+            out[f"{name}_se"] = Result((), "float64", f"standard error of {name}")
+    out["long_time_se"] = out.pop("long_time_mean_se")
+    out["total_energy"] = Result((), "float64", "total energy H0 (mean over runs)")
+    out["max_relative_energy_error"] = Result((), "float64", "largest |H - H0|/H0 of all runs")
+    out["dt_used"] = Result((), "float64", "integration step used")
+    out["mean_energy"] = Result(("period",), "float64", "ensemble mean <E>(jT)")
+    out["stderr"] = Result(("period",), "float64", "standard error of <E>(jT)")
+    return out
+
+
+#: Default tolerance of the design kind: ensemble statistics carry standard errors of
+#: ~1e-2, so an energy error of 1e-6 is ample, and the step is about half as costly.
+DESIGN_TOL = 1e-6
+
 KINDS = {
     "floquet": Kind(
         "floquet",
@@ -311,6 +379,37 @@ KINDS = {
         _ensemble,
         lambda p: {"period": np.arange(p["periods"] + 1)},
         cost=lambda p: SECONDS_PER_PERIOD * p["periods"] * p["runs"] * p["particles"],
+    ),
+    "design": Kind(
+        "design",
+        {
+            **WELL,
+            "alpha": Param(float, 0.5),
+            **SINK,
+            "runs": Param(int, 25),
+            "periods": Param(int, 1500, sweepable=False),
+            "box": Param(float, 0.01),
+            "tol": Param(float, DESIGN_TOL),
+            "energy_bound": Param(float, None),
+            "horizons": Param(str, "auto", sweepable=False),
+            "transient": Param(int, None),
+            "sigmas": Param(float, 3.0),
+            "risk_level": Param(float, 0.5),
+            "rqa_eps": Param(float, 0.01),
+            "bootstrap": Param(int, 100),
+            "lyapunov_runs": Param(int, 10),
+            "lyapunov_periods": Param(int, 100),
+            "replica": Param(int, 0),
+        },
+        _design_results(),
+        _design_check,
+        _design,
+        _design_coords,
+        cost=lambda p: (
+            SECONDS_PER_PERIOD
+            * p["particles"]
+            * (p["periods"] * p["runs"] + 2 * p["lyapunov_periods"] * p["lyapunov_runs"])
+        ),
     ),
 }
 

@@ -1,0 +1,353 @@
+"""Design measures of one energy absorber: how much, how fast, how reliably.
+
+Everything is computed from the container energy of an ensemble sampled once per period,
+E[r, j] = E(jT) (runs r = 0..R-1, j = 0..P), in the paper's units (container mass 1,
+spring 1, period T = 2 pi), energies relative to the container's initial energy E0:
+
+* **absorbed fraction** at a horizon h: 1 - <E>(hT)/E0, with the standard error of the
+  ensemble mean (:func:`sinktheory.sinkstats.ensemble_mean`);
+* **first-passage times**: the first period at which <E> < (1 - a) E0 for a = 50 % and
+  80 % absorbed (:func:`sinktheory.sinkstats.first_fall_below`); NaN when never reached;
+* **long-time share**: the time average of E after ``transient`` periods, mean over runs
+  +- standard error (:func:`sinktheory.sinkstats.sink_measures`), against the
+  equipartition prediction E/(1 + k(1 + 1/n)) with a verdict (:data:`VERDICTS`);
+* **run-to-run spread**: the standard deviation of the runs' long-time averages;
+* **recurrence risk**: the longest excursion of <E> back above the level (1 - a_risk) E0
+  after it first fell below it (periods; 0 if it never came back, NaN if it never fell
+  below), and the recurrence quantification of <E> (:func:`sinktheory.recurrence.rqa`,
+  eps a fixed fraction of E0 so that designs compare).
+
+Standard errors of the quantities that are not plain means (first-passage times, the
+excursion and the RQA measures of <E>) come from a bootstrap over runs: ``bootstrap``
+resamples of the R runs with replacement, each giving a resampled <E>(jT) and the measure
+of it; the standard error is the standard deviation (ddof = 1) of the resampled values
+that are finite.  The resampling is seeded from the point's seed, so it is reproducible.
+The standard error of the spread s is s / sqrt(2 (R - 1)) (normal approximation).
+
+Examples
+--------
+>>> import numpy as np
+>>> e = np.array([[0.5, 0.3, 0.2, 0.1, 0.3, 0.1], [0.5, 0.2, 0.1, 0.1, 0.1, 0.1]])
+>>> m = design_measures(e, e0=0.5, total_energy=0.5, particles=1, n=4, horizons=(1, 5),
+...                     transient=2, bootstrap=20, seed=0)
+>>> m.absorbed.round(3).tolist(), m.passage.tolist()  # <E> = 0.5, 0.25, 0.15, 0.1, 0.2, 0.1
+([0.5, 0.8], [2.0, nan])
+>>> m.excursion, m.verdict_name, round(m.long_time_mean, 4), round(m.equipartition, 4)
+(0.0, 'equipartition', 0.1375, 0.2222)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from .. import validation as v
+from ..errors import ParameterError
+from ..sinkstats import ensemble_mean, sink_measures
+
+#: Fractions of E0 absorbed whose first-passage times are measured.
+ABSORBED_LEVELS = (0.5, 0.8)
+#: <E> below (1 - level) E0, as the fraction of E0 it compares with (exact decimals).
+_REMAINING = {a: round(1.0 - a, 12) for a in ABSORBED_LEVELS}
+#: Verdict codes of the long-time share against equipartition: within ``sigmas`` standard
+#: errors (0), the container keeps more (+1: the drain is incomplete), or less (-1).
+VERDICTS = {0: "equipartition", 1: "above", -1: "below"}
+#: RQA measures of <E> kept per design.
+RQA_MEASURES = (
+    "recurrence_rate",
+    "determinism",
+    "laminarity",
+    "trapping_time",
+    "mean_recurrence_time",
+)
+#: Tag mixed into the point seed for the bootstrap (independent of the runs' seeds).
+BOOTSTRAP_TAG = 0xB007
+
+
+@dataclass(frozen=True)
+class DesignMeasures:
+    """The measures of one design (see the module docstring); ``*_se`` standard errors.
+
+    Attributes
+    ----------
+    horizons : ndarray (H,) of int
+        Periods at which the absorbed fraction is given.
+    absorbed, absorbed_se : ndarray (H,)
+        1 - <E>(hT)/E0 and its standard error.
+    levels : ndarray (2,)
+        Absorbed fractions of the first-passage times (:data:`ABSORBED_LEVELS`).
+    passage, passage_se : ndarray (2,)
+        First period at which <E> < (1 - level) E0 (NaN if never) and its bootstrap s.e.
+    passage_reach : ndarray (2,)
+        Share of the bootstrap resamples that reached the level (1: robust, < 1: the
+        first passage depends on which runs are in the ensemble).
+    long_time_mean, long_time_se : float
+        Long-time container energy (after ``transient`` periods).
+    equipartition : float
+        E_total / (1 + k (1 + 1/n)).
+    equipartition_z : float
+        (long_time_mean - equipartition) / long_time_se (inf when the s.e. is 0).
+    verdict : int
+        -1, 0 or +1 (:data:`VERDICTS`) with the threshold ``sigmas``.
+    depth, depth_se : float
+        Long-time fraction of E0 absorbed, 1 - long_time_mean / E0.
+    spread, spread_se : float
+        Run-to-run spread (std, ddof = 1) of the runs' long-time means, in energy units.
+    excursion, excursion_se : float
+        Longest excursion (periods) of <E> back above (1 - risk_level) E0 after its first
+        passage below it.
+    rqa, rqa_se : dict name -> float
+        :data:`RQA_MEASURES` of <E> with eps = rqa_eps E0 (Theiler window 1).
+    transient, sigmas, risk_level, rqa_eps : the settings used
+    """
+
+    horizons: np.ndarray
+    absorbed: np.ndarray
+    absorbed_se: np.ndarray
+    levels: np.ndarray
+    passage: np.ndarray
+    passage_se: np.ndarray
+    passage_reach: np.ndarray
+    long_time_mean: float
+    long_time_se: float
+    equipartition: float
+    equipartition_z: float
+    verdict: int
+    depth: float
+    depth_se: float
+    spread: float
+    spread_se: float
+    excursion: float
+    excursion_se: float
+    rqa: dict
+    rqa_se: dict
+    transient: int
+    sigmas: float
+    risk_level: float
+    rqa_eps: float
+
+    @property
+    def verdict_name(self) -> str:
+        return VERDICTS[self.verdict]
+
+    def as_dict(self) -> dict:
+        """Plain Python values (lists for arrays), JSON-ready except for NaN/inf."""
+        out = {}
+        for f in fields(self):
+            x = getattr(self, f.name)
+            out[f.name] = x.tolist() if isinstance(x, np.ndarray) else x
+        out["verdict_name"] = self.verdict_name
+        return out
+
+
+def horizons_of(text: str | Sequence[int], periods: int) -> tuple[int, ...]:
+    """The horizons (periods) of the absorbed fraction: ``"auto"`` (P/10, P/3, P), or
+    integers 1..P given as a sequence or a string separated by ``+`` or ``,``.
+
+    Examples
+    --------
+    >>> horizons_of("auto", 1500), horizons_of("100+500", 1500), horizons_of([7], 10)
+    ((150, 500, 1500), (100, 500), (7,))
+    """
+    periods = v.positive_int("periods", periods)
+    if isinstance(text, str):
+        if text.strip() == "auto":
+            values = sorted({max(1, periods // 10), max(1, periods // 3), periods})
+            return tuple(values)
+        parts = [p for p in text.replace(",", "+").split("+")]
+        if not parts or any(not p.strip() for p in parts):
+            raise ParameterError(
+                "horizons", text, "'auto' or periods separated by '+', e.g. 100+500+1500"
+            )
+        try:
+            values = [float(p) for p in parts]
+        except ValueError:
+            raise ParameterError(
+                "horizons", text, "'auto' or periods separated by '+', e.g. 100+500+1500"
+            ) from None
+    else:
+        values = list(text)
+    out = [v.positive_int("horizons", x, maximum=periods) for x in values]
+    if len(set(out)) != len(out) or not out:
+        raise ParameterError("horizons", text, "distinct periods (at least one)")
+    return tuple(sorted(out))
+
+
+def _bootstrap_means(e: np.ndarray, replicates: int, seed: int) -> np.ndarray:
+    """Resampled ensemble means (B, P + 1): runs drawn with replacement."""
+    runs = e.shape[0]
+    rng = np.random.default_rng(np.random.SeedSequence([int(seed), BOOTSTRAP_TAG]))
+    idx = rng.integers(0, runs, size=(replicates, runs))
+    counts = np.zeros((replicates, runs))
+    np.add.at(counts, (np.arange(replicates)[:, None], idx), 1.0)
+    return counts @ e / runs
+
+
+def _passage(mean: np.ndarray, threshold: float) -> float:
+    below = np.flatnonzero(mean < threshold)
+    return float(below[0]) if below.size else math.nan
+
+
+def longest_excursion(mean, threshold: float) -> float:
+    """Longest run of consecutive periods with ``mean`` >= ``threshold`` after the first
+    period with ``mean`` < ``threshold`` (0 if none; NaN if it never falls below).
+
+    Examples
+    --------
+    >>> longest_excursion([0.5, 0.2, 0.3, 0.3, 0.1, 0.3], 0.25)
+    2.0
+    >>> longest_excursion([0.5, 0.4], 0.25)
+    nan
+    """
+    m = np.asarray(mean, dtype=float)
+    below = np.flatnonzero(m < threshold)
+    if not below.size:
+        return math.nan
+    above = m[below[0] :] >= threshold
+    best = run = 0
+    for flag in above:
+        run = run + 1 if flag else 0
+        best = max(best, run)
+    return float(best)
+
+
+def _se(values: np.ndarray) -> float:
+    """Standard deviation (ddof = 1) of the finite values (NaN if fewer than two)."""
+    x = np.asarray(values, dtype=float)
+    x = x[np.isfinite(x)]
+    return float(x.std(ddof=1)) if x.size > 1 else math.nan
+
+
+def _rqa(series: np.ndarray, eps: float) -> dict:
+    from ..recurrence import rqa  # imports numba kernels and matplotlib's Figure: lazily
+
+    r = rqa(series, eps=eps)
+    return {name: float(getattr(r, name)) for name in RQA_MEASURES}
+
+
+def design_measures(
+    energy_runs,
+    *,
+    e0: float,
+    total_energy: float,
+    particles: int,
+    n: int,
+    horizons: Sequence[int],
+    transient: int | None = None,
+    sigmas: float = 3.0,
+    risk_level: float = 0.5,
+    rqa_eps: float = 0.01,
+    bootstrap: int = 100,
+    seed: int = 0,
+) -> DesignMeasures:
+    """The design measures of an ensemble (see the module docstring).
+
+    Parameters
+    ----------
+    energy_runs : array (R, P + 1)
+        Container energy E(jT) of every run.
+    e0, total_energy : float > 0
+        Initial container energy and the conserved total (mean over runs of H0).
+    particles, n : int
+        k and the wall stiffness (equipartition prediction).
+    horizons : sequence of int in 1..P
+        Periods at which to give the absorbed fraction.
+    transient : int, optional
+        First period of the long-time window (default P // 2).
+    sigmas : float > 0
+        Verdict threshold in standard errors (default 3, as in the reproduction report).
+    risk_level : float in (0, 1)
+        Absorbed fraction whose level the recurrence risk watches (default 0.5).
+    rqa_eps : float > 0
+        RQA neighbourhood as a fraction of E0 (default 0.01, as for Fig. 9).
+    bootstrap : int >= 2
+        Bootstrap resamples of the runs for the standard errors.
+    seed : int >= 0
+        Seed of the bootstrap (mixed with :data:`BOOTSTRAP_TAG`).
+
+    Returns
+    -------
+    DesignMeasures
+    """
+    e0 = v.positive("e0", e0)
+    sigmas = v.positive("sigmas", sigmas)
+    risk_level = v.positive("risk_level", risk_level)
+    if not risk_level < 1:
+        raise ParameterError("risk_level", risk_level, "a fraction in (0, 1)")
+    rqa_eps = v.positive("rqa_eps", rqa_eps)
+    bootstrap = v.positive_int("bootstrap", bootstrap, minimum=2)
+    e = np.asarray(energy_runs, dtype=float)
+    s = sink_measures(
+        e,
+        e0=e0,
+        total_energy=total_energy,
+        particles=particles,
+        n=n,
+        transient=transient,
+        fractions=tuple(_REMAINING.values()),
+    )
+    P = e.shape[1] - 1
+    horizons = np.array(horizons_of(list(horizons), P), dtype=int)
+    mean, stderr = ensemble_mean(e)
+    runs = e.shape[0]
+
+    # first passages (the sinkstats values) and their bootstrap
+    first = s.first_below
+    passage = np.array(
+        [math.nan if first[f] is None else float(first[f]) for f in _REMAINING.values()]
+    )
+    boot = _bootstrap_means(e, bootstrap, seed)
+    b_pass = np.array([[_passage(b, f * e0) for f in _REMAINING.values()] for b in boot])  # (B, 2)
+    passage_se = np.array(
+        [_se(b_pass[:, i]) if np.isfinite(passage[i]) else math.nan for i in range(2)]
+    )
+    reach = np.isfinite(b_pass).mean(axis=0)
+
+    # long-time share and its verdict
+    se = s.long_time_stderr
+    diff = s.long_time_mean - s.equipartition
+    z = diff / se if se > 0 else (0.0 if diff == 0 else math.copysign(math.inf, diff))
+    verdict = 0 if abs(z) <= sigmas else (1 if z > 0 else -1)
+
+    # recurrence risk
+    level = (1.0 - risk_level) * e0
+    excursion = longest_excursion(mean, level)
+    excursion_se = (
+        _se(np.array([longest_excursion(b, level) for b in boot]))
+        if np.isfinite(excursion)
+        else math.nan
+    )
+    eps = rqa_eps * e0
+    rq = _rqa(mean, eps)
+    b_rqa = [_rqa(b, eps) for b in boot]
+    rq_se = {name: _se(np.array([r[name] for r in b_rqa])) for name in RQA_MEASURES}
+
+    return DesignMeasures(
+        horizons=horizons,
+        absorbed=1.0 - mean[horizons] / e0,
+        absorbed_se=stderr[horizons] / e0,
+        levels=np.array(ABSORBED_LEVELS),
+        passage=passage,
+        passage_se=passage_se,
+        passage_reach=reach,
+        long_time_mean=s.long_time_mean,
+        long_time_se=se,
+        equipartition=s.equipartition,
+        equipartition_z=float(z),
+        verdict=verdict,
+        depth=1.0 - s.long_time_mean / e0,
+        depth_se=se / e0,
+        spread=s.run_spread,
+        spread_se=s.run_spread / math.sqrt(2 * (runs - 1)) if runs > 1 else math.nan,
+        excursion=excursion,
+        excursion_se=excursion_se,
+        rqa=rq,
+        rqa_se=rq_se,
+        transient=s.transient,
+        sigmas=sigmas,
+        risk_level=risk_level,
+        rqa_eps=rqa_eps,
+    )

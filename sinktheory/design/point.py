@@ -1,0 +1,159 @@
+"""One design point of the ``design`` sweep kind: the ensemble, lambda_1 and the measures.
+
+:func:`compute` is a pure function of (parameters, point seed): the ensemble is
+:func:`sinktheory.simulate.simulate` with ``RunSettings(seed=point seed)`` recording the
+container energy, the measures are :func:`~sinktheory.design.measures.design_measures`
+(bootstrap seeded from the same seed), and lambda_1 is the mean over the first
+``lyapunov_runs`` runs (same start positions) of :func:`sinktheory.chaos.chaos` over
+``lyapunov_periods`` periods -- a finite-time estimate per unit time (times T = 2 pi:
+the growth exponent per period).  ``lyapunov_runs = 0`` leaves it out (NaN).
+
+Examples
+--------
+>>> p = {"shape": "flat", "alpha": 0.5, "beta": 0.3, "n": 4, "gamma": 1.0,
+...      "particles": 1, "mass": 0.2, "energy": 0.5, "runs": 2, "periods": 12,
+...      "box": 0.01, "tol": 1e-6, "energy_bound": None, "horizons": "6+12",
+...      "transient": None, "sigmas": 3.0, "risk_level": 0.5, "rqa_eps": 0.01,
+...      "bootstrap": 10, "lyapunov_runs": 0, "lyapunov_periods": 10, "replica": 0}
+>>> check(p)
+>>> out = compute(p, seed=5)
+>>> out["absorbed"].shape, out["mean_energy"].shape, bool(np.isnan(out["lambda1"]))
+((2,), (13,), True)
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from .. import validation as v
+from ..errors import ParameterError
+from ..model import RunSettings, Sink, Well
+from ..stepsize import check_tol
+from .measures import RQA_MEASURES, design_measures, horizons_of
+
+
+def sink_of(p: dict) -> Sink:
+    """The :class:`~sinktheory.model.Sink` of a design point."""
+    well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
+    return Sink(well, particles=p["particles"], mass=p["mass"])
+
+
+def settings_of(p: dict, seed: int) -> RunSettings:
+    """The ensemble's :class:`~sinktheory.model.RunSettings` (seeded with the point seed)."""
+    return RunSettings(
+        energy=p["energy"], runs=p["runs"], periods=p["periods"], seed=seed, box=p["box"]
+    )
+
+
+def check(p: dict) -> None:
+    """Raise ParameterError for anything the point cannot run with."""
+    sink = sink_of(p)
+    settings_of(p, 0).check(sink)
+    check_tol(p["tol"])
+    if p["energy_bound"] is not None:
+        v.positive("energy_bound", p["energy_bound"])
+    horizons_of(p["horizons"], p["periods"])
+    if p["transient"] is not None:
+        v.positive_int("transient", p["transient"], minimum=0, maximum=p["periods"] - 1)
+    v.positive("sigmas", p["sigmas"])
+    if not 0 < v.positive("risk_level", p["risk_level"]) < 1:
+        raise ParameterError("risk_level", p["risk_level"], "a fraction in (0, 1)")
+    v.positive("rqa_eps", p["rqa_eps"])
+    v.positive_int("bootstrap", p["bootstrap"], minimum=2)
+    v.positive_int("lyapunov_runs", p["lyapunov_runs"], minimum=0, maximum=p["runs"])
+    if p["lyapunov_runs"]:
+        v.positive_int("lyapunov_periods", p["lyapunov_periods"])
+        RunSettings(
+            energy=p["energy"], runs=p["lyapunov_runs"], periods=p["lyapunov_periods"]
+        ).check(sink)
+    if p["runs"] < 2:
+        raise ParameterError("runs", p["runs"], "at least 2 (standard errors need two runs)")
+
+
+def lyapunov(p: dict, seed: int) -> tuple[float, float]:
+    """Mean lambda_1 (per unit time) of the first ``lyapunov_runs`` runs and its s.e.
+
+    NaN, NaN when ``lyapunov_runs`` is 0 or :mod:`sinktheory.chaos` cannot be imported.
+    """
+    if not p["lyapunov_runs"]:
+        return math.nan, math.nan
+    try:
+        from ..chaos import chaos
+    except ImportError:  # the chaos capability is optional for the explorer
+        return math.nan, math.nan
+    settings = RunSettings(
+        energy=p["energy"],
+        runs=p["lyapunov_runs"],
+        periods=p["lyapunov_periods"],
+        seed=seed,
+        box=p["box"],
+    )
+    res = chaos(sink_of(p), settings, progress=False)
+    lam = np.asarray(res.lambda1, dtype=float)
+    se = float(lam.std(ddof=1) / math.sqrt(lam.size)) if lam.size > 1 else math.nan
+    return float(lam.mean()), se
+
+
+def compute(p: dict, seed: int) -> dict[str, Any]:
+    """Everything the ``design`` kind stores for one point (see :data:`RESULT_NAMES`)."""
+    from ..simulate import simulate
+
+    sink = sink_of(p)
+    res = simulate(
+        sink,
+        settings_of(p, seed),
+        tol=p["tol"],
+        energy_bound=p["energy_bound"],
+        record=("container",),
+        progress=False,
+    )
+    e = res.container_energy
+    total = float(res.initial_energy.mean())
+    m = design_measures(
+        e,
+        e0=p["energy"],
+        total_energy=total,
+        particles=p["particles"],
+        n=p["n"],
+        horizons=horizons_of(p["horizons"], p["periods"]),
+        transient=p["transient"],
+        sigmas=p["sigmas"],
+        risk_level=p["risk_level"],
+        rqa_eps=p["rqa_eps"],
+        bootstrap=p["bootstrap"],
+        seed=seed,
+    )
+    lam, lam_se = lyapunov(p, seed)
+    mean, stderr = res.ensemble_energy()
+    out: dict[str, Any] = {
+        "absorbed": m.absorbed,
+        "absorbed_se": m.absorbed_se,
+        "passage": m.passage,
+        "passage_se": m.passage_se,
+        "passage_reach": m.passage_reach,
+        "long_time_mean": m.long_time_mean,
+        "long_time_se": m.long_time_se,
+        "equipartition": m.equipartition,
+        "equipartition_z": m.equipartition_z,
+        "verdict": float(m.verdict),
+        "depth": m.depth,
+        "depth_se": m.depth_se,
+        "spread": m.spread,
+        "spread_se": m.spread_se,
+        "excursion": m.excursion,
+        "excursion_se": m.excursion_se,
+        "lambda1": lam,
+        "lambda1_se": lam_se,
+        "total_energy": total,
+        "max_relative_energy_error": res.max_relative_energy_error,
+        "dt_used": res.dt,
+        "mean_energy": mean,
+        "stderr": stderr,
+    }
+    for name in RQA_MEASURES:
+        out[f"rqa_{name}"] = m.rqa[name]
+        out[f"rqa_{name}_se"] = m.rqa_se[name]
+    return {k: np.asarray(x, dtype=float) for k, x in out.items()}
