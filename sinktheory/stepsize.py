@@ -53,7 +53,8 @@ _HESSIAN = {"flat": _well.hessian_flat, "symmetric": _well.hessian_symmetric}
 #: 300 periods: verlet 1e-7 at 0.006, yoshida4 3e-9 at 0.06, blanes-moan4 1e-9 at 0.3,
 #: yoshida6 1e-9 at 0.25, suzuki-umeno8 3e-10 at 0.5; blanes-moan6 held to 1e-8 at 0.6 over
 #: the paper's ranges, with its resonance cliff between 0.64 and 0.8; the cliffs are those
-#: defaults, known to be safe), to be replaced by the output of ``python benchmarks/calibrate_steps.py 300``.
+#: defaults, known to be safe), to be replaced by the output of
+#: ``python benchmarks/calibrate_steps.py 300``.
 CALIBRATION: dict[str, tuple[float, float]] = {
     "verlet": (2.8e-3, 0.006),
     "yoshida4": (2.3e-4, 0.06),
