@@ -24,6 +24,7 @@ HELP = {
     "floquet": "Floquet stability of the normal mode y = 0: phi(beta) charts with located "
     "boundaries",
     "nnm": "normal modes of container + particles: continuation, multipliers, FEP plots",
+    "chaos": "Lyapunov exponents, GALI/SALI, MEGNO and the transverse exponent of y = 0",
     "sweep": "parameter sweep (floquet, bifurcation, ensemble) into a resumable Zarr store",
 }
 NAMES = tuple(HELP)

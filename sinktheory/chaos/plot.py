@@ -1,0 +1,100 @@
+"""Convergence plots of the chaos indicators (matplotlib is imported when drawing).
+
+Examples
+--------
+>>> import numpy as np
+>>> from sinktheory.chaos import indicators
+>>> q, v = np.array([[0.0], [-0.25]]), np.array([[0.42081], [0.0]])
+>>> res = indicators("henon_heiles", q, v, [], dt=0.05, steps=20, segments=40, gali=2)
+>>> fig = convergence_figure(res, window=10)
+>>> len(fig.axes)
+2
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .result import ChaosResult
+
+#: GALI values below this are round-off (unit vectors parallel to machine precision).
+FLOOR = 1e-16
+
+
+def convergence_figure(result: ChaosResult, *, window: int | None = None, title: str = ""):
+    """Finite-time exponents against time, with the ensemble mean +- standard error.
+
+    Top: lambda_1(t) = ln|delta_1| / t of every run (thin), their mean with its standard-
+    error band, the mean over windows of ``window`` segments (default: S / 20) as steps,
+    and the other exponents of the spectrum (means) when computed; the transverse exponent
+    when computed.  Bottom (when computed): GALI_k (log scale) and the time-averaged
+    MEGNO <Y>.  Time in units of the segment (for the sink, the period T = 2 pi).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from matplotlib.figure import Figure
+
+    lower = result.gali is not None or result.megno is not None
+    fig = Figure(figsize=(8, 7 if lower else 4.5), layout="constrained")
+    axes = fig.subplots(2 if lower else 1, 1, squeeze=False)[:, 0]
+    seg = result.times[1] - result.times[0]
+    t = result.times[1:] / seg
+    ax = axes[0]
+    ft = result.finite_time_lambda1
+    for run in ft[: min(len(ft), 50)]:
+        ax.plot(t, run, color="0.6", lw=0.5, alpha=0.6)
+    m, se = result.mean("finite_time_lambda1")
+    ax.fill_between(t, m - se, m + se, color="C0", alpha=0.3, lw=0)
+    ax.plot(t, m, color="C0", lw=1.5, label=r"$\lambda_1(t)$, mean $\pm$ s.e.")
+    w = max(1, len(t) // 20) if window is None else int(window)
+    ends, wl = result.window_exponents(w)
+    if len(ends):
+        wm = wl.mean(axis=0)
+        ax.step(ends / seg, wm, where="pre", color="C3", lw=1.0, label=f"windows of {w}")
+    if result.spectrum_logs is not None:
+        ftl = result.spectrum_logs[:, 1:] / (result.times[1:] - result.times[0])[None, :, None]
+        means = ftl.mean(axis=0)
+        for i in range(1, means.shape[1]):
+            ax.plot(t, means[:, i], lw=0.8, color="C2")
+        ax.plot([], [], color="C2", lw=0.8, label=r"$\lambda_2 \ldots \lambda_{2D}$ (means)")
+    if result.transverse_logs is not None:
+        tr = result.transverse_logs[:, 1:] / (result.times[1:] - result.times[0])
+        ax.plot(t, tr.mean(axis=0), color="C1", lw=1.2, ls="--", label="transverse (y = 0)")
+    ax.axhline(0.0, color="k", lw=0.5)
+    ax.set_xscale("log")
+    ax.set_xlabel(r"$t$ / segment" if "period" not in result.parameters else r"$t/T$")
+    ax.set_ylabel("finite-time exponent (per unit time)")
+    ax.legend(loc="upper right", fontsize="small")
+    ax.grid(alpha=0.3)
+    if title:
+        ax.set_title(title)
+    if lower:
+        ax2 = axes[1]
+        tt = result.times / seg
+        if result.gali is not None:
+            g = np.clip(result.gali, FLOOR, None)  # exact zeros: parallel to round-off
+            for run in g[: min(len(g), 50)]:
+                ax2.plot(tt, run, color="C0", lw=0.6, alpha=0.6)
+            ax2.plot([], [], color="C0", label=f"GALI$_{{{result.gali_order}}}$")
+            ax2.axhline(FLOOR, color="k", lw=0.5, ls=":")
+            ax2.set_yscale("log")
+            ax2.set_ylabel(f"GALI$_{{{result.gali_order}}}$")
+        if result.megno is not None:
+            target = ax2.twinx() if result.gali is not None else ax2
+            mm = result.mean_megno
+            for run in mm[: min(len(mm), 50)]:
+                target.plot(tt, run, color="C1", lw=0.6, alpha=0.6)
+            target.axhline(2.0, color="C1", lw=0.5, ls=":")
+            target.set_ylabel(r"$\langle Y\rangle$ (MEGNO)")
+            target.plot([], [], color="C1", label=r"$\langle Y\rangle$")
+            target.legend(loc="center right", fontsize="small")
+        ax2.set_xlabel(r"$t/T$" if "period" in result.parameters else r"$t$ / segment")
+        ax2.grid(alpha=0.3)
+    return fig
+
+
+def plot_convergence(result: ChaosResult, path, **kwargs) -> None:
+    """Draw :func:`convergence_figure` to ``path`` (PNG)."""
+    convergence_figure(result, **kwargs).savefig(path, dpi=120)

@@ -1,0 +1,134 @@
+"""``sinktheory chaos``: Lyapunov exponents, GALI/SALI, MEGNO and the transverse exponent.
+
+The runs are those ``sinktheory simulate`` starts for the same options (same seed, same
+positions); exponents are per unit time (the container period is T = 2 pi), each with its
+ensemble mean and standard error std(ddof=1)/sqrt(R) (0 for a single run).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+import numpy as np
+
+from ..integrators import DEFAULT_SCHEME, SCHEMES
+from ..model import RunSettings, Sink
+from . import HELP as HELPS
+from ._common import (
+    Output,
+    add_json,
+    add_sink_arguments,
+    add_well_arguments,
+    number,
+    png_path,
+    well_from_args,
+)
+
+NAME = "chaos"
+HELP = HELPS[NAME]
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_well_arguments(parser)
+    add_sink_arguments(parser)
+    c = parser.add_argument_group("indicators (lambda_1 is always computed)")
+    c.add_argument("--spectrum", action="store_true", help="the full Lyapunov spectrum (QR)")
+    c.add_argument(
+        "--gali", type=number, default=0, metavar="K", help="GALI_K (K >= 2; 2 adds SALI)"
+    )
+    c.add_argument("--megno", action="store_true", help="MEGNO Y(t) and its time average")
+    c.add_argument(
+        "--transverse", action="store_true", help="transverse exponent of the invariant y = 0"
+    )
+    i = parser.add_argument_group("integrator")
+    i.add_argument(
+        "--method",
+        default=DEFAULT_SCHEME,
+        help=f"one of {', '.join(SCHEMES)} (default {DEFAULT_SCHEME})",
+    )
+    i.add_argument("--dt", type=number, default=None, help="step (default: from the stiffness)")
+    i.add_argument(
+        "--renorm",
+        type=number,
+        default=0,
+        help="steps between renormalisations inside a period (default 0: once per period)",
+    )
+    o = parser.add_argument_group("output")
+    o.add_argument("--plot", help="draw the convergence of the exponents to FILE.png")
+    o.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_json(parser)
+
+
+def _fmt(mean, se) -> str:
+    return f"{mean:.6g} +- {se:.2g}"
+
+
+def run(args: argparse.Namespace) -> Output:
+    from ..chaos import chaos
+
+    plot = png_path("--plot", args.plot)
+    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    result = chaos(
+        sink,
+        settings,
+        spectrum=args.spectrum,
+        gali=args.gali,
+        megno=args.megno,
+        transverse=args.transverse,
+        method=args.method,
+        dt=args.dt,
+        renorm=args.renorm,
+        progress=not args.quiet,
+    )
+    data = result.as_dict()
+    w = sink.well
+    p = result.parameters
+    lines = [
+        f"{w.shape} well alpha={w.alpha:g} beta={w.beta:g} n={w.n} gamma={w.gamma:g}; "
+        f"k={sink.particles}, m={sink.mass:g}; {settings.runs} run(s) x {settings.periods} "
+        f"period(s), {p['method']}, dt = {p['dt']:.6g}; max relative energy error "
+        f"{data['max_relative_energy_error']:.3g}",
+        "exponents per unit time (x T = 2 pi for per period); mean +- standard error",
+        f"lambda_1 = {_fmt(*result.mean('lambda1'))}",
+    ]
+    if result.spectrum is not None:
+        m, se = result.mean("spectrum")
+        lines.append("spectrum: " + ", ".join(_fmt(a, b) for a, b in zip(m, se, strict=True)))
+        lines.append(
+            f"pairs lambda_i + lambda_(2D+1-i): largest |sum| {np.abs(result.pair_sums).max():.2g}"
+            f" (1/t = {1 / result.duration:.2g})"
+        )
+    if result.gali is not None:
+        g = result.gali[:, -1]
+        lines.append(
+            f"GALI_{result.gali_order}(t_end): median {np.median(g):.3g}, "
+            f"{int(np.sum(g < 1e-8))} of {len(g)} run(s) below 1e-8"
+        )
+        if result.sali is not None:
+            lines.append(f"SALI(t_end): median {np.median(result.sali[:, -1]):.3g}")
+    if result.megno is not None:
+        m = data["mean_megno"]
+        lines.append(
+            f"<Y>(t_end) (time-averaged MEGNO; 2 = quasi-periodic) = {m['mean']:.6g} +- "
+            f"{m['stderr']:.2g}"
+        )
+    if result.transverse is not None:
+        lines.append(f"transverse exponent of y = 0: {_fmt(*result.mean('transverse'))}")
+    writers = {}
+    if plot is not None:
+
+        def draw(path):
+            from ..chaos.plot import plot_convergence
+
+            plot_convergence(
+                result,
+                path,
+                title=rf"{w.shape}, $\alpha$={w.alpha:g}, $\beta$={w.beta:g}, n={w.n}, "
+                rf"k={sink.particles}, m={sink.mass:g}; {settings.runs} run(s)",
+            )
+
+        writers[plot] = draw
+    data["period"] = 2 * math.pi
+    return Output(data, "\n".join(lines), writers)
