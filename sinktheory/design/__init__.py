@@ -7,7 +7,7 @@ local processes or Dask, resumable, Zarr) and measures it (:mod:`.measures`); th
 designs are then ranked (:mod:`.ranking`), charted (:mod:`.plots`, matplotlib imported
 there only) and reported (:mod:`.report`).
 
-* :func:`~sinktheory.design.explore.explore` -- run (or resume) a design sweep;
+* :func:`~sinktheory.design.explorer.explore` -- run (or resume) a design sweep;
 * :func:`~sinktheory.design.measures.design_measures` -- the measures of one ensemble;
 * :func:`~sinktheory.design.ranking.rank` -- Pareto layers and the ranked table;
 * :func:`~sinktheory.design.report.write_report` -- charts, table and ``report.md``;
@@ -21,8 +21,8 @@ from importlib import import_module
 _LAZY = {
     "DesignMeasures": "measures",
     "design_measures": "measures",
-    "explore": "explore",
-    "DesignRun": "explore",
+    "explore": "explorer",
+    "DesignRun": "explorer",
     "rank": "ranking",
     "pareto_front": "ranking",
     "write_report": "report",

@@ -240,7 +240,7 @@ def design_measures(
     sigmas: float = 3.0,
     risk_level: float = 0.5,
     rqa_eps: float = 0.01,
-    bootstrap: int = 100,
+    bootstrap: int = 50,
     seed: int = 0,
 ) -> DesignMeasures:
     """The design measures of an ensemble (see the module docstring).

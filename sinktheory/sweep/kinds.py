@@ -396,7 +396,7 @@ KINDS = {
             "sigmas": Param(float, 3.0),
             "risk_level": Param(float, 0.5),
             "rqa_eps": Param(float, 0.01),
-            "bootstrap": Param(int, 100),
+            "bootstrap": Param(int, 50),
             "lyapunov_runs": Param(int, 10),
             "lyapunov_periods": Param(int, 100),
             "replica": Param(int, 0),

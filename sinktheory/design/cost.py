@@ -1,0 +1,218 @@
+"""How long a design sweep will take: a quick calibration of the per-point cost.
+
+The cost of a point is dominated by the integration: (steps per period) x (runs) x
+(periods) steps of a system with 1 + 2k degrees of freedom, plus the same for the
+lambda_1 ensemble with its tangent vector.  :func:`estimate` times a short run (after a
+warm-up that compiles or loads the engine) at the point with the most work, in this
+process on one thread, and scales it to every point by
+
+    work(point) = steps_per_period x (1 + 2k) x (runs x periods
+                  + TANGENT x lyapunov_runs x lyapunov_periods),
+
+with the steps per period from :func:`sinktheory.stepsize.choose` (no integration needed)
+and ``TANGENT`` the measured cost of a chaos step relative to a plain one, plus a fixed
+overhead per point (the measures on data of the point's size, with their bootstrap and
+RQA, and the step choice), timed as well.  Times are wall-clock, so the current load of
+the machine is included; the total is divided by the number of workers.  It is an
+estimate: the per-step cost depends on k and on the scheme.
+
+Examples
+--------
+>>> from sinktheory.sweep.plan import Sweep
+>>> s = Sweep.make("design", {"beta": 0.3, "n": 4, "particles": [1, 2], "runs": 2,
+...                           "periods": 10, "lyapunov_runs": 0, "bootstrap": 5})
+>>> est = estimate(s, workers=1, seconds=0.2)
+>>> est.points, est.total_seconds > 0
+(2, True)
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..stepsize import choose
+from .point import settings_of, sink_of
+
+#: Cost of one step with a tangent vector (chaos) relative to a plain step: measured
+#: 2.4 (flat n = 4, k = 5: 10 x 100 periods of chaos against 25 x 100 of simulate,
+#: whose step is also 1.4x shorter) on the development machine; the calibration measures
+#: it again when lambda_1 is asked for.
+TANGENT = 2.4
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """Estimated time of a design sweep.
+
+    Attributes
+    ----------
+    points : int
+        Points to compute.
+    total_seconds : float
+        Estimated wall time on ``workers`` processes.
+    per_point : ndarray
+        Estimated seconds of each point on one core.
+    seconds_per_unit : float
+        Measured seconds per unit of work (step x degree of freedom x run).
+    overhead : float
+        Measured seconds per point besides the integration (measures, step choice).
+    tangent : float
+        Cost of a chaos step relative to a plain one (measured or :data:`TANGENT`).
+    calibration_point : dict
+        Where the cost was measured.
+    calibration_seconds : float
+        How long the calibration took (warm-up included).
+    workers : int
+    """
+
+    points: int
+    total_seconds: float
+    per_point: np.ndarray
+    seconds_per_unit: float
+    overhead: float
+    tangent: float
+    calibration_point: dict
+    calibration_seconds: float
+    workers: int
+
+    def describe(self) -> str:
+        p = self.calibration_point
+        where = ", ".join(f"{k} = {p[k]}" for k in ("shape", "beta", "n", "particles"))
+        return (
+            f"estimated {_duration(self.total_seconds)} for {self.points} point(s) on "
+            f"{self.workers} worker(s) (mean {self.per_point.mean():.3g} s per point on one "
+            f"core; calibrated at {where} in {self.calibration_seconds:.1f} s)"
+        )
+
+
+def _duration(seconds: float) -> str:
+    if seconds < 120:
+        return f"{seconds:.0f} s"
+    if seconds < 7200:
+        return f"{seconds / 60:.1f} min"
+    return f"{seconds / 3600:.2f} h"
+
+
+def work(point: dict, tangent: float = TANGENT) -> float:
+    """Units of work of a point (see the module docstring)."""
+    steps = choose(sink_of(point), point["energy"], point["tol"]).steps_per_period
+    dof = 1 + 2 * point["particles"]
+    runs = point["runs"] * point["periods"]
+    runs += tangent * point["lyapunov_runs"] * point["lyapunov_periods"]
+    return float(steps * dof * runs)
+
+
+def _time_simulate(point: dict, runs: int, periods: int) -> tuple[float, float]:
+    """(seconds, units) of a short ensemble at ``point``."""
+    from ..simulate import simulate
+
+    p = {**point, "runs": runs, "periods": periods}
+    sink = sink_of(p)
+    start = time.perf_counter()
+    res = simulate(sink, settings_of(p, 0), tol=p["tol"], progress=False)
+    seconds = time.perf_counter() - start
+    return seconds, res.steps_per_period * (1 + 2 * p["particles"]) * runs * periods
+
+
+def _time_chaos(point: dict, runs: int, periods: int) -> tuple[float, float]:
+    from ..chaos import chaos
+
+    p = {**point, "runs": runs, "periods": periods}
+    start = time.perf_counter()
+    chaos(sink_of(p), settings_of(p, 0), progress=False)
+    seconds = time.perf_counter() - start
+    steps = choose(sink_of(p), p["energy"], p["tol"]).steps_per_period
+    return seconds, steps * (1 + 2 * p["particles"]) * runs * periods
+
+
+def _overhead(point: dict) -> float:
+    """Seconds of a point's work besides the integration: the measures on synthetic data
+    of the point's size, and the step choice (once more for lambda_1)."""
+    from .measures import design_measures, horizons_of
+
+    rng = np.random.default_rng(0)
+    e = point["energy"] * (0.5 + 0.1 * rng.standard_normal((point["runs"], point["periods"] + 1)))
+    start = time.perf_counter()
+    design_measures(
+        e,
+        e0=point["energy"],
+        total_energy=point["energy"],
+        particles=point["particles"],
+        n=point["n"],
+        horizons=horizons_of(point["horizons"], point["periods"]),
+        bootstrap=point["bootstrap"],
+    )
+    choose(sink_of(point), point["energy"], point["tol"])
+    seconds = time.perf_counter() - start
+    if point["lyapunov_runs"]:
+        start = time.perf_counter()
+        choose(sink_of(point), point["energy"], point["tol"])
+        seconds += time.perf_counter() - start
+    return seconds
+
+
+def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=None) -> Estimate:
+    """Estimate the time of ``sweep`` (a design :class:`~sinktheory.sweep.plan.Sweep`).
+
+    Parameters
+    ----------
+    sweep : Sweep
+        A checked design sweep.
+    workers : int, optional
+        Processes the sweep will use (default: all cores).
+    seconds : float
+        Rough CPU seconds to spend timing (after the warm-up).
+    todo : array of int, optional
+        Indices of the points still to compute (default: all).
+
+    Returns
+    -------
+    Estimate
+    """
+    import numba
+
+    started = time.perf_counter()
+    workers = workers or os.cpu_count() or 1
+    todo = np.arange(sweep.grid.size) if todo is None else np.asarray(todo, dtype=int)
+    points = [sweep.grid.point(int(i)) for i in todo]
+    if not points:
+        return Estimate(0, 0.0, np.zeros(0), 0.0, 0.0, TANGENT, {}, 0.0, workers)
+    units = np.array([work(p, 1.0) for p in points])  # plain steps first, to pick the point
+    heaviest = points[int(np.argmax(units))]
+    threads = numba.get_num_threads()
+    numba.set_num_threads(1)  # as in a sweep's worker processes
+    try:
+        _time_simulate(heaviest, 2, 1)  # warm-up: compiles or loads the engine
+        t1, _ = _time_simulate(heaviest, 2, 2)
+        periods = max(2, min(heaviest["periods"], int(2 * seconds / max(t1, 1e-6))))
+        t, u = _time_simulate(heaviest, 2, periods)
+        per_unit = t / u
+        tangent = TANGENT
+        if heaviest["lyapunov_runs"]:
+            _time_chaos(heaviest, 2, 1)
+            tc, uc = _time_chaos(heaviest, 2, max(2, periods // 3))
+            tangent = (tc / uc) / per_unit
+        overhead = _overhead(heaviest)
+    finally:
+        numba.set_num_threads(threads)
+    per_point = np.array([work(p, tangent) for p in points]) * per_unit + overhead
+    # the work shared over the workers, but never less than the longest point
+    total = max(float(per_point.sum()) / min(workers, len(points)), float(per_point.max()))
+    return Estimate(
+        points=len(points),
+        total_seconds=total,
+        per_point=per_point,
+        seconds_per_unit=per_unit,
+        overhead=overhead,
+        tangent=float(tangent),
+        calibration_point=heaviest,
+        calibration_seconds=time.perf_counter() - started,
+        workers=workers,
+    )
+
+
+__all__ = ["TANGENT", "Estimate", "estimate", "work"]

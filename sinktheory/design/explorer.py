@@ -1,0 +1,156 @@
+"""Run (or resume) a design sweep and get the measures, the ranking and the report.
+
+:func:`explore` is the Python side of ``sinktheory design``: a grid over shape, alpha,
+beta, n, k (``particles``), m (``mass``) and E0 (``energy``) -- each a value or a list --
+computed on the sweep layer (:func:`sinktheory.sweep.runner.execute`: this process, local
+processes or a Dask cluster; a Zarr store written point by point and resumable).
+
+Examples
+--------
+>>> run = explore({"beta": 0.3, "n": 4, "particles": [1, 2], "runs": 2, "periods": 12,
+...                "horizons": "6+12", "lyapunov_runs": 0, "bootstrap": 10},
+...               workers=1, progress=False, estimate_first=False)
+>>> run.computed, [r["particles"] for r in run.ranked][:2] in ([1, 2], [2, 1])
+(2, True)
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .ranking import rank
+
+#: The design parameters a user sweeps (any other parameter of the kind may be given too).
+DESIGN_PARAMS = ("shape", "alpha", "beta", "n", "particles", "mass", "energy")
+
+
+@dataclass(frozen=True)
+class DesignRun:
+    """A finished design sweep.
+
+    Attributes
+    ----------
+    dataset : xarray.Dataset
+        The results over the swept parameters (see :mod:`sinktheory.sweep.kinds`, kind
+        ``design``).
+    ranked : list of dict
+        :func:`~sinktheory.design.ranking.rank` of the dataset (best first).
+    store : Path or None
+    computed, skipped : int
+        Points computed by this call and points already done in the store.
+    seconds : float
+    where : str
+    estimate : Estimate or None
+        The calibrated estimate made before starting (None if not asked for).
+    """
+
+    dataset: Any
+    ranked: list
+    store: Path | None
+    computed: int
+    skipped: int
+    seconds: float
+    where: str
+    estimate: Any = None
+
+
+def plan(params: Mapping[str, Any], seed: int = 0):
+    """The checked design :class:`~sinktheory.sweep.plan.Sweep` (ParameterError if bad)."""
+    from ..sweep.plan import Sweep
+
+    return Sweep.make("design", params, seed)
+
+
+def todo_of(sweep, store: str | Path | None, resume: bool) -> np.ndarray:
+    """Indices of the points still to compute (all of them unless resuming a store)."""
+    if store is None or not resume or not Path(store).exists():
+        return np.arange(sweep.grid.size)
+    from ..sweep.store import SweepStore
+
+    target = SweepStore.open(store, sweep)
+    try:
+        done = np.asarray(target.done()).reshape(-1)
+    finally:
+        target.close()
+    return np.flatnonzero(~done)
+
+
+def explore(
+    params: Mapping[str, Any],
+    seed: int = 0,
+    *,
+    store: str | Path | None = None,
+    scheduler: Any = None,
+    workers: int | None = None,
+    resume: bool = False,
+    progress: bool = True,
+    estimate_first: bool = True,
+    report: str | Path | None = None,
+    top: int = 10,
+) -> DesignRun:
+    """Explore a grid of absorber designs.
+
+    Parameters
+    ----------
+    params : dict
+        name -> value or list of values: the design parameters :data:`DESIGN_PARAMS` and
+        any setting of the ``design`` kind (runs, periods, horizons, tol, transient,
+        sigmas, risk_level, rqa_eps, bootstrap, lyapunov_runs, lyapunov_periods, ...).
+        beta and n are required.
+    seed : int >= 0
+        Sweep seed (point i gets ``SeedSequence(seed, spawn_key=(i,))``).
+    store : path, optional
+        Zarr store (None: in memory).
+    scheduler, workers, resume, progress
+        As for :func:`sinktheory.sweep.run_sweep`.
+    estimate_first : bool
+        Calibrate and print the estimated time on stderr before starting.
+    report : path, optional
+        Directory to write the charts, the ranked table and ``report.md`` into.
+    top : int
+        Rows of the recommended designs in the report.
+
+    Returns
+    -------
+    DesignRun
+    """
+    from ..sweep.runner import execute
+
+    sweep = plan(params, seed)
+    est = None
+    if estimate_first:
+        from .cost import estimate
+
+        est = estimate(sweep, workers=workers, todo=todo_of(sweep, store, resume))
+        if est.points:
+            print(est.describe(), file=sys.stderr, flush=True)
+    done = execute(
+        sweep,
+        store=store,
+        scheduler=scheduler,
+        workers=workers,
+        resume=resume,
+        progress=progress,
+    )
+    ranked = rank(done.dataset)
+    run = DesignRun(
+        done.dataset,
+        ranked,
+        done.store,
+        done.computed,
+        done.skipped,
+        done.seconds,
+        done.where,
+        est,
+    )
+    if report is not None:
+        from .report import write_report
+
+        write_report(run.dataset, report, ranked=ranked, top=top, run=run)
+    return run

@@ -1,0 +1,158 @@
+"""Ranking designs: speed, depth and reliability, Pareto layers, a table of recommendations.
+
+Three objectives per design (all from the ``design`` sweep's results):
+
+* **speed** -- the first-passage time (periods) of <E> below 50 % of E0 (``passage`` at
+  level 0.5); a design that never gets there is infinitely slow;
+* **depth** -- the long-time fraction of E0 absorbed, 1 - <E>_long / E0 (``depth``);
+* **reliability** -- the run-to-run spread of the long-time means relative to E0
+  (``spread / energy``); smaller is more reliable.
+
+A design dominates another if it is no worse in all three and better in one.  The
+Pareto layers are found by repeatedly peeling off the non-dominated designs (layer 1 is the
+Pareto front).  The ranked table orders designs by layer, then by depth (deepest first),
+then by speed; the first rows are the recommended designs.
+
+Examples
+--------
+>>> import numpy as np
+>>> speed = np.array([10.0, 20.0, 5.0, np.inf])
+>>> depth = np.array([0.6, 0.7, 0.5, 0.1])
+>>> spread = np.array([0.02, 0.02, 0.03, 0.01])
+>>> pareto_layers(speed, depth, spread).tolist()
+[1, 1, 1, 1]
+>>> pareto_layers(speed, depth, np.array([0.02, 0.02, 0.03, 0.04])).tolist()
+[1, 1, 1, 2]
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+#: Columns of the ranked table: (column, dataset variable, its standard error or None).
+COLUMNS = (
+    ("depth", "depth", "depth_se"),
+    ("t50", ("passage", 0.5), ("passage_se", 0.5)),
+    ("t80", ("passage", 0.8), ("passage_se", 0.8)),
+    ("spread/E0", "rel_spread", "rel_spread_se"),
+    ("<E>_long", "long_time_mean", "long_time_se"),
+    ("equipartition", "equipartition", None),
+    ("excursion", "excursion", "excursion_se"),
+    ("lambda1", "lambda1", "lambda1_se"),
+    ("DET", "rqa_determinism", "rqa_determinism_se"),
+)
+
+
+def pareto_layers(speed, depth, spread) -> np.ndarray:
+    """Pareto layer (1 = front) of each design: minimise speed and spread, maximise depth.
+
+    NaN counts as the worst value of its objective.
+    """
+    s = np.where(np.isfinite(speed), speed, np.inf).astype(float)
+    d = np.where(np.isfinite(depth), depth, -np.inf).astype(float)
+    r = np.where(np.isfinite(spread), spread, np.inf).astype(float)
+    costs = np.stack([s, -d, r], axis=1)  # all minimised
+    layer = np.zeros(len(s), dtype=int)
+    left = np.arange(len(s))
+    current = 1
+    while left.size:
+        c = costs[left]
+        no_worse = (c[:, None, :] <= c[None, :, :]).all(axis=2)  # [i, j]: i no worse than j
+        better = (c[:, None, :] < c[None, :, :]).any(axis=2)
+        dominated = (no_worse & better).any(axis=0)
+        layer[left[~dominated]] = current
+        left = left[dominated]
+        current += 1
+    return layer
+
+
+def pareto_front(speed, depth, spread) -> np.ndarray:
+    """Boolean mask of the non-dominated designs (layer 1)."""
+    return pareto_layers(speed, depth, spread) == 1
+
+
+def design_table(ds) -> list[dict]:
+    """One row per computed design point: its parameters and measures (plain floats).
+
+    ``ds`` is the dataset of a design sweep (:func:`sinktheory.design.explorer.explore`
+    or ``xarray.open_zarr`` of its store).  Points not done are left out.
+    """
+    ds = ds.load()
+    dims = [d for d in ds.done.dims]
+    fixed = {
+        k: ds.attrs[k]
+        for k in ("shape", "alpha", "beta", "n", "particles", "mass", "energy")
+        if k in ds.attrs
+    }
+    rows = []
+    for index in np.ndindex(*ds.done.shape):
+        where = dict(zip(dims, index, strict=True))
+        point = ds.isel(where)
+        if not bool(point.done):
+            continue
+        row = {**fixed, **{d: _plain(point[d].values) for d in dims}}
+        e0 = float(row["energy"])
+        for name in (
+            "depth",
+            "depth_se",
+            "long_time_mean",
+            "long_time_se",
+            "equipartition",
+            "equipartition_z",
+            "verdict",
+            "spread",
+            "spread_se",
+            "excursion",
+            "excursion_se",
+            "lambda1",
+            "lambda1_se",
+            "rqa_recurrence_rate",
+            "rqa_determinism",
+            "rqa_determinism_se",
+            "max_relative_energy_error",
+        ):
+            row[name] = float(point[name])
+        row["rel_spread"] = row["spread"] / e0
+        row["rel_spread_se"] = row["spread_se"] / e0
+        for level in point.level.values:
+            lv = float(level)
+            row[("passage", lv)] = float(point.passage.sel(level=level))
+            row[("passage_se", lv)] = float(point.passage_se.sel(level=level))
+            row[("passage_reach", lv)] = float(point.passage_reach.sel(level=level))
+        for h in point.horizon.values:
+            row[("absorbed", int(h))] = float(point.absorbed.sel(horizon=h))
+            row[("absorbed_se", int(h))] = float(point.absorbed_se.sel(horizon=h))
+        rows.append(row)
+    return rows
+
+
+def rank(ds) -> list[dict]:
+    """The designs of a sweep, best first, each with ``layer`` (Pareto layer) and ``rank``.
+
+    Ordered by Pareto layer of (speed, depth, spread/E0), then depth (deepest first), then
+    speed (fastest first).
+    """
+    rows = design_table(ds)
+    if not rows:
+        return []
+    speed = np.array([r[("passage", 0.5)] for r in rows])
+    depth = np.array([r["depth"] for r in rows])
+    spread = np.array([r["rel_spread"] for r in rows])
+    layers = pareto_layers(speed, depth, spread)
+    for r, layer in zip(rows, layers, strict=True):
+        r["layer"] = int(layer)
+    rows.sort(key=lambda r: (r["layer"], -_num(r["depth"], -math.inf), _num(r[("passage", 0.5)])))
+    for i, r in enumerate(rows, 1):
+        r["rank"] = i
+    return rows
+
+
+def _num(x: float, bad: float = math.inf) -> float:
+    return x if math.isfinite(x) else bad
+
+
+def _plain(x):
+    x = np.asarray(x).item()
+    return x

@@ -1,0 +1,222 @@
+"""The design report: ranked designs, charts and ``report.md`` in one directory.
+
+:func:`write_report` writes into a directory:
+
+* ``report.md`` -- what was swept, the rules behind every number, the recommended designs
+  with their numbers and standard errors, the equipartition verdicts, the cost;
+* ``designs.csv`` -- every computed design, ranked, with all its measures;
+* ``pareto.png`` -- speed against depth against reliability (:func:`.plots.pareto_chart`);
+* ``heatmap_<y>_<x>.png`` -- one per pair of swept parameters (:func:`.plots.heatmap`);
+* ``energy.png`` -- <E>(jT) of the recommended designs.
+
+Examples
+--------
+>>> rows = [{"rank": 1, "layer": 1, "n": 4, "depth": 0.6, "depth_se": 0.01}]
+>>> fmt(rows[0]["depth"], rows[0]["depth_se"])
+'0.600 ± 0.010'
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .measures import VERDICTS
+from .ranking import rank
+
+
+def fmt(x: float, se: float | None = None, digits: int = 3) -> str:
+    """``x ± se`` with ``digits`` decimals ('never' for NaN values)."""
+    if x is None or not math.isfinite(x):
+        return "never" if x is not None and math.isnan(x) else str(x)
+    text = f"{x:.{digits}f}"
+    if se is not None and math.isfinite(se):
+        text += f" ± {se:.{digits}f}"
+    return text
+
+
+def _dims(ds) -> list[str]:
+    return list(ds.done.dims)
+
+
+def _label(value) -> str:
+    if isinstance(value, float | np.floating):
+        return f"{float(value):g}"
+    return str(value)
+
+
+def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
+    """The markdown table of the ``top`` ranked designs."""
+    head = (
+        ["rank", "layer"]
+        + dims
+        + [
+            "depth",
+            "t50 / T",
+            "t80 / T",
+            "spread / E0",
+            "<E> long",
+            "equipartition",
+            "verdict",
+            "excursion / T",
+            "lambda_1",
+            "DET",
+        ]
+    )
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for r in ranked[:top]:
+        cells = [str(r["rank"]), str(r["layer"])] + [_label(r[d]) for d in dims]
+        cells += [
+            fmt(r["depth"], r["depth_se"]),
+            fmt(r[("passage", 0.5)], r[("passage_se", 0.5)], 0),
+            fmt(r[("passage", 0.8)], r[("passage_se", 0.8)], 0),
+            fmt(r["rel_spread"], r["rel_spread_se"]),
+            fmt(r["long_time_mean"], r["long_time_se"], 4),
+            fmt(r["equipartition"], None, 4),
+            VERDICTS[int(r["verdict"])] + f" (z = {r['equipartition_z']:.1f})",
+            fmt(r["excursion"], r["excursion_se"], 0),
+            fmt(r["lambda1"], r["lambda1_se"]) if math.isfinite(r["lambda1"]) else "n/a",
+            fmt(r["rqa_determinism"], r["rqa_determinism_se"]),
+        ]
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
+def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figures=()) -> str:
+    """The markdown report of a design sweep (see the module docstring)."""
+    ranked = rank(ds) if ranked is None else ranked
+    dims = _dims(ds)
+    a = ds.attrs
+    done = int(np.asarray(ds.done).sum())
+    total = int(np.asarray(ds.done).size)
+    lines = ["# Design explorer: energy absorbers", ""]
+    swept = ", ".join(f"{d} = {', '.join(_label(v) for v in ds[d].values)}" for d in dims)
+    fixed = ", ".join(
+        f"{k} = {a[k]}"
+        for k in ("shape", "alpha", "beta", "n", "gamma", "particles", "mass", "energy")
+        if k in a
+    )
+    lines += [
+        f"- swept: {swept or 'nothing (one design)'}",
+        f"- fixed: {fixed}",
+        f"- ensemble per design: {a.get('runs')} runs x {a.get('periods')} periods "
+        f"(T = 2 pi), tol {a.get('tol')}, sweep seed {a.get('sweep_seed')}; "
+        f"{done} of {total} designs computed",
+        "- horizons of the absorbed fraction: "
+        + ", ".join(f"{int(h)} T" for h in ds.horizon.values),
+        f"- lambda_1: {a.get('lyapunov_runs')} runs x {a.get('lyapunov_periods')} periods "
+        "(sinktheory.chaos; finite-time estimate per unit time)",
+    ]
+    if run is not None:
+        lines.append(
+            f"- this call: {run.computed} computed, {run.skipped} already stored, "
+            f"{run.seconds:.1f} s on {run.where}"
+            + (f"; {run.estimate.describe()}" if run.estimate is not None else "")
+        )
+    worst = float(np.nanmax(np.asarray(ds.max_relative_energy_error))) if done else math.nan
+    lines += [f"- largest relative energy error of any run: {worst:.2g}", ""]
+
+    lines += ["## Recommended designs", ""]
+    if not ranked:
+        lines += ["No design has been computed yet.", ""]
+    else:
+        lines += table_rows(ranked, dims, top) + [""]
+        lines += [
+            "Ranking: Pareto layers of (speed = t50, depth, reliability = spread / E0), "
+            "then depth (deepest first), then speed.  Layer 1 is the Pareto front: no other "
+            "design is at least as fast, as deep and as reliable and better in one.",
+            "",
+        ]
+        h = [int(x) for x in ds.horizon.values]
+        lines += ["### Absorbed fraction 1 - <E>(hT)/E0 of the recommended designs", ""]
+        lines += ["| rank | " + " | ".join(f"h = {x}" for x in h) + " |", "|---|" + "---|" * len(h)]
+        for r in ranked[:top]:
+            cells = [fmt(r[("absorbed", x)], r[("absorbed_se", x)]) for x in h]
+            lines.append(f"| {r['rank']} | " + " | ".join(cells) + " |")
+        lines.append("")
+
+    lines += ["## Equipartition verdicts", ""]
+    if ranked:
+        counts = {name: 0 for name in VERDICTS.values()}
+        for r in ranked:
+            counts[VERDICTS[int(r["verdict"])]] += 1
+        lines.append(
+            "Long-time <E> against E_total / (1 + k(1 + 1/n)): "
+            + ", ".join(f"{v}: {c}" for v, c in counts.items())
+            + f" (within {a.get('sigmas')} standard errors: equipartition; above: the drain "
+            "is incomplete over the run; below: the container keeps less than the share)."
+        )
+        if any(float(r.get("beta", a.get("beta", 1.0))) == 0.0 for r in ranked):
+            lines += [
+                "",
+                "At beta = 0 both wells are separable, V = (x^2n + y^2n)/(2n alpha^2n) (the "
+                "flat well with gamma = 1), so each particle's y-motion decouples from the "
+                "container and keeps its (tiny) initial energy: the microcanonical share of "
+                "the x-subsystem is E_x / (1 + k(1 + 1/n)/2), and E/(1 + k(1 + 1/n)) cannot "
+                "be reached.  Expect 'above' there.",
+            ]
+        lines.append("")
+
+    lines += [
+        "## How each number is made",
+        "",
+        "- depth: 1 - <E>_long / E0, <E>_long the mean over runs of each run's time average "
+        f"from period {a.get('transient') if a.get('transient') is not None else 'P/2'} on, "
+        "± its standard error across runs;",
+        "- t50, t80: first period with <E> below 50 % / 20 % of E0 (50 % / 80 % absorbed); "
+        "standard error by a bootstrap over runs; 'never' if not reached in the run;",
+        "- spread: standard deviation of the runs' long-time averages (s.e. s/sqrt(2(R-1)));",
+        "- excursion: the longest stretch (periods) of <E> back above "
+        f"{1 - float(a.get('risk_level', 0.5)):g} E0 after first falling below it "
+        "(recurrence risk; bootstrap s.e.);",
+        f"- DET: determinism of the recurrence plot of <E> with eps = {a.get('rqa_eps')} E0 "
+        "(bootstrap s.e.); the store also holds RR, LAM, TT and the mean recurrence time;",
+        "- lambda_1: mean ± s.e. over runs of the largest Lyapunov exponent from the tangent "
+        "map (sinktheory.chaos), same start positions as the first runs of the ensemble.",
+        "",
+    ]
+    if figures:
+        lines += ["## Charts", ""] + [f"![{f}]({f})" for f in figures] + [""]
+    return "\n".join(lines)
+
+
+def write_csv(ranked: list, dims: list[str], path: Path) -> None:
+    """Every ranked design with all its measures, one row each."""
+    if not ranked:
+        Path(path).write_text("")
+        return
+    keys = ["rank", "layer"] + dims + [k for k in ranked[0] if k not in ("rank", "layer", *dims)]
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow([k if isinstance(k, str) else f"{k[0]}@{k[1]:g}" for k in keys])
+        for r in ranked:
+            w.writerow([r.get(k) for k in keys])
+
+
+def write_report(ds, directory, *, ranked: list | None = None, top: int = 10, run=None) -> Path:
+    """Write the charts, ``designs.csv`` and ``report.md`` of a design sweep into
+    ``directory`` (created if needed).  Returns the path of ``report.md``."""
+    from . import plots
+
+    out = Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    ds = ds.load()
+    ranked = rank(ds) if ranked is None else ranked
+    dims = _dims(ds)
+    figures = []
+    if ranked:
+        plots.pareto_chart(ranked).savefig(out / "pareto.png", dpi=110)
+        figures.append("pareto.png")
+        plots.energy_curves(ds, ranked).savefig(out / "energy.png", dpi=110)
+        figures.append("energy.png")
+        if dims:
+            for name, fig in plots.heatmaps(ds).items():
+                fig.savefig(out / name, dpi=110)
+                figures.append(name)
+    write_csv(ranked, dims, out / "designs.csv")
+    path = out / "report.md"
+    path.write_text(report_text(ds, ranked, top=top, run=run, figures=figures))
+    return path
