@@ -58,8 +58,10 @@ def heatmap(ds, x: str, y: str | None = None):
 
     Other swept parameters are reduced to their best value; points not done are blank.
     """
+    from matplotlib import patheffects
     from matplotlib.figure import Figure
 
+    outline = [patheffects.withStroke(linewidth=2, foreground="w")]
     mask = ds.done
     others = [d for d in swept(ds) if d not in (x, y)]
     fig = Figure(figsize=(4.2 * len(HEAT), 3.6), layout="constrained")
@@ -83,7 +85,11 @@ def heatmap(ds, x: str, y: str | None = None):
             ax.set_yticks([])
         for (i, j), val in np.ndenumerate(values):
             if np.isfinite(val) and values.size <= 64:
-                ax.text(j, i, f"{val:.3g}", ha="center", va="center", fontsize=7, color="w")
+                ax.text(
+                    j, i, f"{val:.3g}", ha="center", va="center", fontsize=7, path_effects=outline
+                )
+        if not np.isfinite(values).any():
+            ax.text(0.5, 0.5, "never reached", transform=ax.transAxes, ha="center")
         ax.set_title(title)
     rest = f"; best over {', '.join(others)}" if others else ""
     fig.suptitle(f"Design measures over {x}" + (f" and {y}" if y else "") + rest)

@@ -114,7 +114,7 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
         lines.append(
             f"- this call: {run.computed} computed, {run.skipped} already stored, "
             f"{run.seconds:.1f} s on {run.where}"
-            + (f"; {run.estimate.describe()}" if run.estimate is not None else "")
+            + (f"; {est.describe()}" if (est := getattr(run, "estimate", None)) else "")
         )
     worst = float(np.nanmax(np.asarray(ds.max_relative_energy_error))) if done else math.nan
     lines += [f"- largest relative energy error of any run: {worst:.2g}", ""]

@@ -1,0 +1,223 @@
+"""``sinktheory design``: explore absorber designs over a grid; rank, chart and report them.
+
+Each design option takes one value, a list ``V1,V2,...`` or a range ``LO:HI:COUNT``
+(``--shape flat,symmetric --beta -0.3:0.3:5 --n 4,6,10 --particles 1,3,5``).  Every point
+of the grid runs an ensemble (``--runs`` x ``--periods``) on the sweep layer (local
+processes or a Dask cluster) into the Zarr store ``--out``, point by point; a killed run
+is continued by the same command with ``--resume``.  Before starting, the per-point cost
+is calibrated and the estimated time printed on stderr; a progress bar follows.  With
+``--report DIR`` the heat maps, the Pareto chart, ``designs.csv`` (the ranked designs)
+and ``report.md`` are written there.  Bad input: one line on stderr, exit status 2, no
+store and no report.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from pathlib import Path
+
+from ..errors import ParameterError
+from ..sweep.grid import parse_param
+from ..validation import writable_directory
+from . import HELP as HELPS
+from ._common import Output, add_json, as_directory, number, output_directory
+
+NAME = "design"
+HELP = HELPS[NAME]
+
+#: option -> design parameter (each takes a value, a list or a range)
+GRID = {
+    "shape": "shape",
+    "alpha": "alpha",
+    "beta": "beta",
+    "n": "n",
+    "gamma": "gamma",
+    "particles": "particles",
+    "mass": "mass",
+    "energy": "energy",
+}
+#: option -> setting of the design kind (one value each)
+SETTINGS = (
+    "runs",
+    "periods",
+    "tol",
+    "transient",
+    "sigmas",
+    "risk_level",
+    "rqa_eps",
+    "bootstrap",
+    "lyapunov_runs",
+    "lyapunov_periods",
+    "box",
+)
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    g = parser.add_argument_group("designs (VALUE, V1,V2,... or LO:HI:COUNT)")
+    g.add_argument("--shape", default="flat", help="flat, symmetric or flat,symmetric")
+    g.add_argument("--alpha", default="0.5", help="alpha > 0 (default 0.5)")
+    g.add_argument("--beta", required=True, help="beta < alpha")
+    g.add_argument("--n", required=True, help="wall stiffness, integers >= 1")
+    g.add_argument("--gamma", default="1.0", help="well strength > 0 (default 1)")
+    g.add_argument("--particles", default="1", help="k, integers >= 1 (default 1)")
+    g.add_argument("--mass", default="0.2", help="total particle mass m > 0 (default 0.2)")
+    g.add_argument("--energy", default="0.5", help="container energy E0 > 0 (default 0.5)")
+    r = parser.add_argument_group("ensemble and measures (one value each)")
+    r.add_argument("--runs", type=number, default=25, help="runs per design (default 25)")
+    r.add_argument("--periods", type=number, default=1500, help="periods T (default 1500)")
+    r.add_argument(
+        "--horizons",
+        default="auto",
+        help="periods of the absorbed fraction, e.g. 100,500,1500 (default P/10, P/3, P)",
+    )
+    r.add_argument("--tol", type=number, default=1e-6, help="energy tolerance (default 1e-6)")
+    r.add_argument("--transient", type=number, default=None, help="start of the long-time window")
+    r.add_argument("--sigmas", type=number, default=3.0, help="verdict threshold in s.e.")
+    r.add_argument("--risk-level", type=number, default=0.5, help="absorbed level of the risk")
+    r.add_argument("--rqa-eps", type=number, default=0.01, help="RQA eps / E0 (default 0.01)")
+    r.add_argument("--bootstrap", type=number, default=50, help="bootstrap resamples (50)")
+    r.add_argument(
+        "--lyapunov-runs", type=number, default=10, help="runs for lambda_1 (0: none; 10)"
+    )
+    r.add_argument("--lyapunov-periods", type=number, default=100, help="periods (100)")
+    r.add_argument("--box", type=number, default=0.01, help="start box half-width (0.01)")
+    r.add_argument("--seed", type=number, default=0, help="sweep seed >= 0 (default 0)")
+    o = parser.add_argument_group("where")
+    o.add_argument("--out", required=True, metavar="STORE", help="Zarr store of the results")
+    o.add_argument("--report", default=None, metavar="DIR", help="charts, table, report.md")
+    o.add_argument("--top", type=number, default=10, help="designs in the report (10)")
+    o.add_argument("--resume", action="store_true", help="continue the sweep in STORE")
+    o.add_argument("--scheduler", default=None, metavar="ADDRESS", help="Dask scheduler")
+    o.add_argument("--workers", type=number, default=None, help="local processes (all cores)")
+    o.add_argument("--no-estimate", action="store_true", help="skip the cost calibration")
+    o.add_argument("--quiet", action="store_true", help="no estimate line, no progress bar")
+    add_json(parser)
+
+
+def params_of(args: argparse.Namespace) -> dict:
+    """The design grid and settings of the options (names of the ``design`` kind)."""
+    params = {}
+    for option, name in GRID.items():
+        text = str(getattr(args, option))
+        _, values = parse_param(f"{name}={text}")
+        params[name] = values
+    for name in SETTINGS:
+        value = getattr(args, name)
+        if value is not None:
+            params[name] = value
+    horizons = str(args.horizons).strip()
+    params["horizons"] = horizons.replace(",", "+")
+    return params
+
+
+def run(args: argparse.Namespace) -> Output:
+    if not str(args.out).strip():
+        raise ParameterError("out", args.out, "the path of a Zarr store (not empty)")
+    writable_directory("out", args.out, Path(args.out).parent)
+    report = output_directory("report", args.report)
+    top = args.top
+    if isinstance(top, bool) or not isinstance(top, int) or top < 1:
+        raise ParameterError("top", top, "an integer >= 1")
+    store = Path(args.out)
+    if store.exists() and not args.resume:
+        raise ParameterError("out", args.out, "a new store", why="it exists; --resume continues it")
+    from ..design.explorer import DesignRun, plan, todo_of  # xarray, zarr: when exploring
+    from ..design.ranking import rank
+    from ..sweep.runner import execute
+
+    sweep = plan(params_of(args), args.seed)
+    todo = todo_of(sweep, store, args.resume)
+    est = None
+    if todo.size and not args.no_estimate:
+        from ..design.cost import estimate
+
+        est = estimate(sweep, workers=args.workers, todo=todo)
+        if not args.quiet:
+            print(f"sinktheory design: {est.describe()}", file=sys.stderr, flush=True)
+    done = execute(
+        sweep,
+        store=store,
+        scheduler=args.scheduler,
+        workers=args.workers,
+        resume=args.resume,
+        progress=not args.quiet,
+    )
+    ds = done.dataset
+    ranked = rank(ds)
+    dims = list(ds.done.dims)
+    best = [_row(r, dims) for r in ranked[:top]]
+    data = {
+        "store": str(done.store),
+        "report": None if report is None else str(report),
+        "dims": sweep.dims,
+        "points": sweep.grid.size,
+        "computed": done.computed,
+        "skipped": done.skipped,
+        "seconds": done.seconds,
+        "estimated_seconds": None if est is None else est.total_seconds,
+        "where": done.where,
+        "seed": sweep.seed,
+        "fingerprint": sweep.fingerprint,
+        "designs": best,
+    }
+    lines = [
+        sweep.describe(),
+        f"{done.computed} design(s) computed, {done.skipped} already done, in "
+        f"{done.seconds:.1f} s on {done.where}"
+        + ("" if est is None else f" (estimated {est.total_seconds:.0f} s)"),
+        f"results: {done.store} (xarray.open_zarr)",
+        "best designs (depth = long-time fraction of E0 absorbed, t50 in periods):",
+    ]
+    for r in best[:5]:
+        where = ", ".join(f"{d} = {r[d]}" for d in dims)
+        lines.append(
+            f"  #{r['rank']} (Pareto layer {r['layer']}) {where}: depth {_n(r['depth'])} "
+            f"+- {_n(r['depth_se'])}, t50 {_n(r['t50'], 0, 'never')}, spread/E0 "
+            f"{_n(r['rel_spread'])}, {r['verdict']}"
+        )
+    writers = {}
+    if report is not None:
+        from ..design.report import write_report
+
+        run = DesignRun(
+            ds, ranked, done.store, done.computed, done.skipped, done.seconds, done.where, est
+        )
+        writers[report] = as_directory(
+            lambda path: write_report(ds, path, ranked=ranked, top=top, run=run)
+        )
+        lines.append(f"report: {report / 'report.md'}")
+    return Output(data, "\n".join(lines), writers)
+
+
+def _n(x: float | None, digits: int = 3, missing: str = "n/a") -> str:
+    return missing if x is None else f"{x:.{digits}f}"
+
+
+def _row(r: dict, dims: list[str]) -> dict:
+    """A ranked design as JSON-ready plain values (NaN and inf as null)."""
+    from ..design.measures import VERDICTS
+
+    def f(x):
+        return x if isinstance(x, float) and math.isfinite(x) else None
+
+    return {
+        "rank": r["rank"],
+        "layer": r["layer"],
+        **{d: r[d] for d in dims},
+        "depth": f(r["depth"]),
+        "depth_se": f(r["depth_se"]),
+        "t50": f(r[("passage", 0.5)]),
+        "t50_se": f(r[("passage_se", 0.5)]),
+        "t80": f(r[("passage", 0.8)]),
+        "t80_se": f(r[("passage_se", 0.8)]),
+        "rel_spread": f(r["rel_spread"]),
+        "long_time_mean": f(r["long_time_mean"]),
+        "long_time_se": f(r["long_time_se"]),
+        "equipartition": f(r["equipartition"]),
+        "verdict": VERDICTS[int(r["verdict"])],
+        "excursion": f(r["excursion"]),
+        "lambda1": f(r["lambda1"]),
+        "lambda1_se": f(r["lambda1_se"]),
+    }
