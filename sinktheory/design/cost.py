@@ -165,7 +165,7 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     workers : int, optional
         Processes the sweep will use (default: all cores).
     seconds : float
-        Rough CPU seconds to spend timing (after the warm-up).
+        Rough seconds to spend timing each ensemble (after the warm-up).
     todo : array of int, optional
         Indices of the points still to compute (default: all).
 
@@ -186,15 +186,19 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     threads = numba.get_num_threads()
     numba.set_num_threads(1)  # as in a sweep's worker processes
     try:
+        # the engine is vectorised across runs: time the point's own number of runs
+        runs = heaviest["runs"]
         _time_simulate(heaviest, 2, 1)  # warm-up: compiles or loads the engine
-        t1, _ = _time_simulate(heaviest, 2, 2)
-        periods = max(2, min(heaviest["periods"], int(2 * seconds / max(t1, 1e-6))))
-        t, u = _time_simulate(heaviest, 2, periods)
+        t1, _ = _time_simulate(heaviest, runs, 1)
+        periods = max(2, min(heaviest["periods"], int(seconds / max(t1, 1e-6))))
+        t, u = _time_simulate(heaviest, runs, periods)
         per_unit = t / u
         tangent = TANGENT
         if heaviest["lyapunov_runs"]:
+            lruns = heaviest["lyapunov_runs"]
             _time_chaos(heaviest, 2, 1)
-            tc, uc = _time_chaos(heaviest, 2, max(2, periods // 3))
+            lperiods = max(2, min(heaviest["lyapunov_periods"], periods))
+            tc, uc = _time_chaos(heaviest, lruns, lperiods)
             tangent = (tc / uc) / per_unit
         overhead = _overhead(heaviest)
     finally:
