@@ -90,8 +90,12 @@ import numpy as np
 from . import validation as v
 from ._generated import oscillator as _osc
 from .errors import BracketError, ParameterError
-from .hill import DEFAULT_RTOL, QuarterPeriod, integrate_quarter_period
+from .hill import DEFAULT_RTOL, QuarterPeriod, check_amplitude, integrate_quarter_period
 from .model import MAX_N, Well
+
+#: Largest |lambda| A0^2 accepted: at 1e10 one quarter period takes about 1 s; at 1e12
+#: it exceeds the integration's budget of 1e6 steps (measured, n = 4).
+MAX_LAMBDA = 1e10
 
 LN2 = math.log(2.0)
 #: Tolerance in the parameter of every located boundary and resonance.
@@ -133,15 +137,36 @@ class HillProblem:
         return "lam" if self.kind == "pure" else "beta"
 
     def check(self, values) -> np.ndarray:
-        """Validate parameter values; returns them as a 1-d float array."""
-        arr = np.atleast_1d(np.asarray(values, dtype=float))
+        """Validate parameter values; returns them as a 1-d float array.
+
+        Besides the model's own checks: the amplitude must keep A0^(2n-2) and A0^2 in
+        float range (:func:`sinktheory.hill.check_amplitude`), and the effective
+        parameter |lambda| A0^2 must be <= :data:`MAX_LAMBDA`, beyond which the
+        quarter-period integration cannot finish within its step budget.
+        """
+        try:
+            arr = np.atleast_1d(np.asarray(values, dtype=float))
+        except (TypeError, ValueError):
+            raise ParameterError(
+                self.parameter, values, "a non-empty 1-d list of numbers"
+            ) from None
         if arr.ndim != 1 or arr.size == 0:
             raise ParameterError(self.parameter, values, "a non-empty 1-d list of numbers")
+        check_amplitude(self.n, self.amplitude)
         for value in (arr.min(), arr.max()):
             if self.kind == "pure":
                 v.finite("lam", value)
             else:
                 Well(self.alpha, float(value), self.n, gamma=self.gamma, shape=self.kind)
+            lam = float(self.lam(np.array([value]))[0])
+            if abs(lam) * self.amplitude**2 > MAX_LAMBDA:
+                raise ParameterError(
+                    self.parameter,
+                    float(value),
+                    f"a value with |lambda| A0^2 <= {MAX_LAMBDA:g}",
+                    why=f"lambda = {lam:.3g} at amplitude A0 = {self.amplitude:g}: the "
+                    "quarter-period integration would exceed its step budget",
+                )
         if self.kind == "symmetric" and self.n == 1:
             for beta in arr:
                 self._check_symmetric_reach(float(beta))
@@ -537,6 +562,10 @@ def scan(problem: HillProblem, lo: float, hi: float, count: int) -> StabilitySca
     >>> [(round(a, 9), round(b, 9)) for a, b in s.stable_intervals]
     [(0.0, 1.316022911)]
     """
+    if not isinstance(problem, HillProblem):
+        raise ParameterError(
+            "problem", problem, "a HillProblem (from pure_problem or model_problem)"
+        )
     lo = v.finite("lo", lo)
     hi = v.finite("hi", hi)
     count = v.positive_int("count", count, minimum=2, maximum=1_000_000)

@@ -92,6 +92,36 @@ _E3 = np.ascontiguousarray(_dop.E3)
 _E5 = np.ascontiguousarray(_dop.E5)
 
 
+def check_amplitude(n: int, amplitude: float) -> float:
+    """The amplitude A0 > 0, refused unless A0^(2n-2) and A0^2 are normal floats.
+
+    The model's Hill coefficient is scaled by A0^(2-2n) and the pure equation's parameter
+    by A0^2; an amplitude whose powers underflow or overflow would divide by zero or
+    silently change the equation.
+
+    Examples
+    --------
+    >>> check_amplitude(4, 2.0)
+    2.0
+    >>> check_amplitude(4, 1e-100)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: amplitude = 1e-100 is not allowed: must be in [1e-50, 1e+50] \
+for n = 4 (A0^6 and A0^2 must stay within float range)
+    """
+    a = v.positive("amplitude", amplitude)
+    power = max(2, 2 * int(n) - 2)
+    bound = 10.0 ** (300 / power)
+    if not 1.0 / bound <= a <= bound:
+        raise ParameterError(
+            "amplitude",
+            amplitude,
+            f"in [{1.0 / bound:.6g}, {bound:.6g}] for n = {n}",
+            why=f"A0^{2 * int(n) - 2} and A0^2 must stay within float range",
+        )
+    return a
+
+
 class HillIntegrationError(NumericalError):
     """The quarter-period integration did not finish within its step budget."""
 
@@ -323,7 +353,7 @@ def integrate_quarter_period(
     """
     n = v.positive_int("n", n)
     kind = v.choice("kind", kind, KINDS)
-    amplitude = v.positive("amplitude", amplitude)
+    amplitude = check_amplitude(n, amplitude)
     rtol = v.positive("rtol", rtol)
     if not 1e-15 <= rtol <= 1e-3:
         raise ParameterError("rtol", rtol, "in [1e-15, 1e-3]")
@@ -444,7 +474,7 @@ def monodromy_solve_ivp(
 
     n = v.positive_int("n", n)
     k = KINDS.index(v.choice("kind", kind, KINDS))
-    amplitude = v.positive("amplitude", amplitude)
+    amplitude = check_amplitude(n, amplitude)
     param = v.finite("param", param)
     half_periods = v.positive_int("half_periods", half_periods)
     t_end = half_periods * float(_osc.period(n, 1.0)) / 2.0

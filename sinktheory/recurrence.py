@@ -46,7 +46,7 @@ DEFAULT_RATE = 0.05
 
 
 def _series(energy) -> np.ndarray:
-    e = np.asarray(energy, dtype=float)
+    e = v.real_array("energy", energy, "a 1-D series of length >= 2")
     if e.ndim != 1 or e.size < 2:
         raise ParameterError("energy", f"array of shape {e.shape}", "a 1-D series of length >= 2")
     if not np.all(np.isfinite(e)):

@@ -200,3 +200,29 @@ def time_step(name: str, value: object, period: float = 2 * math.pi) -> float:
             why=f"it would take {period / dt:.3g} steps per period",
         )
     return dt
+
+
+def real_array(name: str, value: object, allowed: str = "an array of real numbers"):
+    """``value`` as a float ndarray; ParameterError naming ``name`` if it cannot be one
+    (text, None inside a list, ragged nesting, complex numbers).
+
+    Examples
+    --------
+    >>> real_array("t", [0, 1.5]).tolist()
+    [0.0, 1.5]
+    >>> real_array("t", "abc")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: t = 'abc' is not allowed: must be an array of real numbers
+    """
+    import warnings
+
+    import numpy as np
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", np.exceptions.ComplexWarning)
+            return np.asarray(value, dtype=float)
+    except (TypeError, ValueError, np.exceptions.ComplexWarning):
+        shown = value if isinstance(value, str | int | float | type(None)) else type(value).__name__
+        raise ParameterError(name, shown, allowed) from None

@@ -7,6 +7,7 @@ parameter, no traceback, and leave the working directory as it was.
 import os
 from pathlib import Path
 
+import numpy as np
 import pytest
 from _cli import run_cli
 
@@ -387,3 +388,72 @@ def test_model_limits_name_parameter_value_and_range():
     with pytest.raises(ParameterError, match="days"):
         check_work(RunSettings(runs=100, periods=10**6), Sink(Well(0.5, 0.3, 4)), 10**6)
     RunSettings(runs=25, periods=1500).check(Sink(Well(0.5, 0.3, 4), particles=5))
+
+
+# --------------------------------------------------------------------------- numerics
+NUMERIC = [
+    (
+        ["floquet", "--alpha", "0.5", "--beta", "0.1", "--n", "4", "--amplitude", "1e-320"],
+        "amplitude",
+    ),
+    (
+        ["floquet", "--alpha", "0.5", "--beta", "0.1", "--n", "4", "--amplitude", "1e-100"],
+        "amplitude",
+    ),
+    (
+        ["floquet", "--alpha", "0.5", "--beta", "0.1", "--n", "1000", "--amplitude", "2"],
+        "amplitude",
+    ),
+    (["floquet", "--lam", "1e3", "--n", "4", "--amplitude", "1e300"], "amplitude"),
+    (["floquet", "--lam", "-1e308", "--n", "4"], "lam"),
+    (["floquet", "--lam", "1e12", "--n", "4"], "lam"),
+    (["floquet", "--lam-range", "-1e308", "0", "3", "--n", "4"], "lam"),
+    (["floquet", "--alpha", "0.5", "--beta", "-1e300", "--n", "4"], "beta"),
+    (["period", "--n", "1000", "--amplitude", "1", "--digits", "10000"], "digits"),
+    (["period", "--n", "4", "--amplitude", "1", "--digits", "1001"], "digits"),
+]
+
+
+@pytest.mark.parametrize(("argv", "name"), NUMERIC, ids=lambda a: " ".join(a)[-40:])
+def test_numerically_hostile_input_refused(argv, name, capsys, tmp_path, monkeypatch):
+    refused(argv, capsys, tmp_path, monkeypatch, name)
+
+
+def test_api_type_errors_are_parameter_errors():
+    import numpy as np
+
+    from sinktheory.floquet import model_problem, pure_problem, scan
+    from sinktheory.hill import integrate_quarter_period
+    from sinktheory.oscillator import exact_shape, exact_solution, period
+    from sinktheory.recurrence import rqa
+
+    cases = [
+        (lambda: scan("x", 0.0, 1.0, 3), "problem"),
+        (lambda: scan(None, 0.0, 1.0, 3), "problem"),
+        (lambda: pure_problem(4).evaluate("x"), "lam"),
+        (lambda: model_problem(0.5, 4).evaluate([[0.1], [0.2, 0.3]]), "beta"),
+        (lambda: model_problem(0.5, 4, amplitude=1e-320).evaluate([0.1]), "amplitude"),
+        (lambda: integrate_quarter_period(4, np.array([1.0]), amplitude=1e-100), "amplitude"),
+        (lambda: exact_solution("x", 2, 1.0), "t"),
+        (lambda: exact_solution([0.0, "a"], 2, 1.0), "t"),
+        (lambda: exact_shape("x", 2), "tau"),
+        (lambda: period(4, amplitude=1, dps=10_000), "dps"),
+        (lambda: rqa("abc", eps=0.1), "energy"),
+        (lambda: rqa([1j, 2j], eps=0.1), "energy"),
+        (lambda: rqa([[1.0, 2.0], [3.0]], eps=0.1), "energy"),
+    ]
+    for make, name in cases:
+        with pytest.raises(ParameterError) as info:
+            make()
+        assert info.value.name == name, (name, info.value)
+
+
+def test_amplitude_range_keeps_valid_charts():
+    """The amplitude bound is not too tight: A0 = 1.2 at n = 1000 and A0 = 1e-30 at n = 1
+    still give finite multipliers; and only Lam A0^2 matters for the pure equation."""
+    from sinktheory.floquet import model_problem, pure_problem
+
+    assert np.isfinite(model_problem(0.5, 1000, amplitude=1.2).evaluate([0.1]).log_abs_phi[0])
+    a = pure_problem(3, amplitude=2.0).evaluate([0.3]).phi_half[0]
+    b = pure_problem(3, amplitude=1.0).evaluate([1.2]).phi_half[0]
+    assert a == pytest.approx(b, rel=1e-9)

@@ -6,14 +6,13 @@ import argparse
 
 import mpmath
 
+from ..oscillator import _check_dps as check_dps
 from ..oscillator import oscillator
-from ..validation import positive_int
 from . import HELP as HELPS
 from ._common import Output, add_json, number
 
 NAME = "period"
 HELP = HELPS[NAME]
-MAX_DIGITS = 10_000
 
 
 def decimal_text(text: str) -> str:
@@ -32,7 +31,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> Output:
-    digits = positive_int("digits", args.digits, maximum=MAX_DIGITS)
+    digits = check_dps(args.digits, "digits")
     o = oscillator(args.n, amplitude=args.amplitude, energy=args.energy, dps=digits)
 
     def text(x: mpmath.mpf) -> str:
