@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
 import sys
 from pathlib import Path
 
@@ -54,7 +55,16 @@ SETTINGS = (
 )
 
 
+#: Values, not options: negative numbers and lists or ranges that start with one
+#: (``--beta -0.5:0.4:11``, ``--beta -0.2,0.3``), besides what the main parser accepts.
+NEGATIVE_VALUE = re.compile(
+    r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?([,:][-+.\deE,:]*)?$|^-(inf|infinity|nan)$",
+    re.IGNORECASE,
+)
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser._negative_number_matcher = NEGATIVE_VALUE  # argparse's hook for "-1" values
     g = parser.add_argument_group("designs (VALUE, V1,V2,... or LO:HI:COUNT)")
     g.add_argument("--shape", default="flat", help="flat, symmetric or flat,symmetric")
     g.add_argument("--alpha", default="0.5", help="alpha > 0 (default 0.5)")
