@@ -287,3 +287,24 @@ def test_bad_input():
         chaos(FLAT1, RunSettings(runs=1, periods=1), renorm=-1)
     with pytest.raises(ParameterError, match="initial"):
         chaos(FLAT1, RunSettings(runs=2, periods=1), initial=[(0.0, 0.0)])
+
+
+# --------------------------------------------------------------------------- sweep kind
+def test_chaos_sweep_kind_is_the_api_at_the_point_seed():
+    from sinktheory.sweep import run_sweep
+
+    ds = run_sweep(
+        "chaos",
+        {"alpha": 0.5, "beta": [0.1, 0.3], "n": 4, "runs": 3, "periods": 10, "dt": DT,
+         "transverse": 1},
+        workers=1,
+        progress=False,
+    )  # fmt: skip
+    for i, beta in enumerate((0.1, 0.3)):
+        seed = int(ds.point_seed.values[i])
+        res = chaos(Sink(Well(0.5, beta, 4), 1, 0.2), RunSettings(runs=3, periods=10, seed=seed),
+                    transverse=True, dt=DT)  # fmt: skip
+        np.testing.assert_array_equal(ds.lambda1_runs.values[i], res.lambda1)
+        assert ds.lambda1.values[i] == pytest.approx(res.lambda1.mean(), rel=1e-15)
+        assert ds.transverse.values[i] == pytest.approx(res.transverse.mean(), rel=1e-15)
+    assert np.isnan(ds.gali.values).all()
