@@ -308,3 +308,28 @@ def test_chaos_sweep_kind_is_the_api_at_the_point_seed():
         assert ds.lambda1.values[i] == pytest.approx(res.lambda1.mean(), rel=1e-15)
         assert ds.transverse.values[i] == pytest.approx(res.transverse.mean(), rel=1e-15)
     assert np.isnan(ds.gali.values).all()
+
+
+def test_chaos_map_verdicts_and_agreement():
+    """The verdict rule on a synthetic map: chaotic iff mean - 2 s.e. > 3 ln t / t."""
+    import xarray as xr
+
+    from sinktheory.chaos.maps import agreement, threshold
+
+    thr = threshold(100)
+    assert thr == pytest.approx(3 * math.log(200 * math.pi) / (200 * math.pi))
+    ds = xr.Dataset(
+        {
+            "lambda1": ("beta", [0.5, 2 * thr, 0.5 * thr, 0.4]),
+            "lambda1_se": ("beta", [0.01, thr, 0.0, 0.01]),
+            "transverse": ("beta", [0.5, 0.0, 0.0, 0.0]),
+            "transverse_se": ("beta", [0.01, 0.0, 0.0, 0.0]),
+        },
+        coords={"beta": [0.0, 0.1, 0.2, 0.3]},
+        attrs={"periods": 100},
+    )
+    a = agreement(ds, stable=np.array([False, True, True, True]))
+    # chaotic: betas 0 and 3 (beta 1 is within 2 s.e. of the threshold)
+    assert a["chaotic"] == 2
+    assert a["floquet"] == 0.75  # beta 3 chaotic although Floquet-stable
+    assert a["transverse"] == 0.75  # beta 3 chaotic with a regular transverse exponent

@@ -1,0 +1,174 @@
+"""Chaos maps: lambda_1(beta) through the sweep layer, against the Floquet theory of y = 0.
+
+A chaos map is a ``chaos`` sweep (:mod:`sinktheory.sweep.kinds`) over beta: at each beta
+an ensemble of R runs started as in ``simulate`` (container at X = sqrt(2 E0), particles
+at rest in the box around the centre), lambda_1 per run from the tangent map and the
+transverse exponent of y = 0, with mean and standard error.
+
+Verdict and its statistical basis.  On a regular orbit deviations grow at most linearly
+(shear), so the finite-time exponent decays like ln t / t (tests/test_chaos.py: the
+integrable case gives lambda_1 t / ln t ~ 1).  A beta is called *chaotic* when the mean
+lambda_1 exceeds that envelope with margin, by two standard errors:
+
+    mean - 2 s.e. > THRESHOLD_FACTOR ln(t) / t,    t = P T,
+
+and *regular* otherwise.  The Floquet theory predicts regular motion where y = 0 is stable
+(with the container fixed); the agreement is the share of betas where the two verdicts
+coincide.  The transverse exponent's verdict (the same test on it) measures how much of the
+chaos comes from the instability of y = 0 itself.
+
+Examples
+--------
+>>> import numpy as np
+>>> ds = chaos_map(0.5, 4, [0.1, 0.3], runs=2, periods=10, dt=0.01, workers=1)
+>>> v = verdicts(ds)
+>>> v["chaotic"].shape, float(v["threshold"]) > 0
+((2,), True)
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+#: The finite-time exponent of a regular orbit is ~ ln t / t; a chaotic verdict needs the
+#: mean minus two standard errors above this factor times ln t / t.
+THRESHOLD_FACTOR = 3.0
+
+
+def chaos_map(
+    alpha: float,
+    n: int,
+    betas,
+    *,
+    shape: str = "flat",
+    particles: int = 1,
+    mass: float = 0.2,
+    energy: float = 0.5,
+    runs: int = 8,
+    periods: int = 300,
+    transverse: bool = True,
+    dt: float | None = None,
+    seed: int = 0,
+    workers: int | None = None,
+    store=None,
+    progress: bool = False,
+):
+    """lambda_1 (and the transverse exponent) over ``betas``: an xarray Dataset with
+    dimension beta (see :data:`sinktheory.sweep.kinds.KINDS` ``["chaos"]``)."""
+    from ..sweep import run_sweep
+
+    params = {
+        "alpha": alpha,
+        "beta": [float(b) for b in betas],
+        "n": n,
+        "shape": shape,
+        "particles": particles,
+        "mass": mass,
+        "energy": energy,
+        "runs": runs,
+        "periods": periods,
+        "transverse": int(bool(transverse)),
+        "dt": dt,
+    }
+    return run_sweep("chaos", params, seed=seed, workers=workers, store=store, progress=progress)
+
+
+def threshold(periods: int) -> float:
+    """THRESHOLD_FACTOR ln(t) / t at t = periods x 2 pi (per unit time)."""
+    t = periods * 2.0 * math.pi
+    return THRESHOLD_FACTOR * math.log(t) / t
+
+
+def verdicts(ds) -> dict:
+    """Chaotic / regular per beta from lambda_1 and from the transverse exponent."""
+    thr = threshold(int(ds.attrs["periods"]))
+    lam, se = ds.lambda1.values, ds.lambda1_se.values
+    out = {"threshold": thr, "chaotic": lam - 2 * se > thr}
+    if "transverse" in ds and np.isfinite(ds.transverse.values).all():
+        out["transverse_chaotic"] = ds.transverse.values - 2 * ds.transverse_se.values > thr
+    return out
+
+
+def agreement(ds, stable: np.ndarray) -> dict:
+    """Shares of betas where the chaos map agrees with (a) Floquet stability of y = 0
+    (stable <-> regular) and (b) the transverse exponent's verdict."""
+    v = verdicts(ds)
+    out = {
+        "threshold": v["threshold"],
+        "betas": int(ds.beta.size),
+        "chaotic": int(v["chaotic"].sum()),
+        "floquet": float(np.mean(np.asarray(stable) == ~v["chaotic"])),
+    }
+    if "transverse_chaotic" in v:
+        out["transverse"] = float(np.mean(v["transverse_chaotic"] == v["chaotic"]))
+    return out
+
+
+def draw_map(ds, stable_intervals, ax, *, title: str = "") -> None:
+    """lambda_1(beta) with its +-2 s.e. band, the transverse exponent, the verdict
+    threshold, and the Floquet-stable intervals of y = 0 shaded."""
+    beta = ds.beta.values
+    lam, se = ds.lambda1.values, ds.lambda1_se.values
+    for a, b in stable_intervals:
+        ax.axvspan(a, b, color="tab:green", alpha=0.15, lw=0)
+    ax.fill_between(beta, lam - 2 * se, lam + 2 * se, color="C0", alpha=0.3, lw=0)
+    ax.plot(beta, lam, "o-", color="C0", ms=3, lw=1, label=r"$\lambda_1$ $\pm$ 2 s.e.")
+    if "transverse" in ds and np.isfinite(ds.transverse.values).all():
+        ax.plot(beta, ds.transverse.values, "s--", color="C1", ms=2.5, lw=0.8,
+                label="transverse (y = 0)")  # fmt: skip
+    ax.axhline(threshold(int(ds.attrs["periods"])), color="k", lw=0.6, ls=":",
+               label=f"{THRESHOLD_FACTOR:g} ln t / t")  # fmt: skip
+    ax.plot([], [], color="tab:green", alpha=0.4, lw=6, label="Floquet-stable y = 0")
+    ax.set_xlabel(r"$\beta$")
+    ax.set_ylabel(r"$\lambda_1$ (per unit time)")
+    ax.set_xlim(beta.min(), beta.max())
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize="small", loc="upper left")
+    if title:
+        ax.set_title(title, fontsize="medium")
+
+
+#: The panels of Figs. 3 and 11: (label, alpha, n, shape).
+PANELS = {
+    3: [("flat, n = 2", 0.5, 2, "flat"), ("flat, n = 10", 0.5, 10, "flat")],
+    11: [("symmetric, n = 6", 1.0, 6, "symmetric")],
+}
+
+
+def figure_maps(figure: int, *, points: int = 24, runs: int = 4, periods: int = 100,
+                workers: int | None = None, progress: bool = False):  # fmt: skip
+    """Chaos maps for the panels of Fig. 3 or Fig. 11 with the Floquet-stable intervals.
+
+    Returns (matplotlib Figure, {panel label: agreement dict}).  beta covers the range the
+    scene uses: [-0.7, 0.45] for Fig. 3, the betas where the symmetric well holds E = 0.5
+    (less 0.01 at each edge) for Fig. 11.
+    """
+    from matplotlib.figure import Figure
+
+    from ..floquet import model_problem, scan
+    from ..model import confining_betas
+
+    panels = PANELS[figure]
+    fig = Figure(figsize=(7.5, 3.6 * len(panels)), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(len(panels), 1))
+    report = {}
+    for (label, alpha, n, shape), ax in zip(panels, axes, strict=True):
+        if figure == 11:
+            ranges = [(a + 0.01, b - 0.01) for a, b in confining_betas(alpha, n, 0.5, shape=shape)]
+        else:
+            ranges = [(-0.7, 0.45)]
+        total = sum(b - a for a, b in ranges)
+        betas = np.concatenate(
+            [np.linspace(a, b, max(2, round(points * (b - a) / total))) for a, b in ranges]
+        )
+        ds = chaos_map(alpha, n, betas, shape=shape, runs=runs, periods=periods,
+                       workers=workers, progress=progress)  # fmt: skip
+        problem = model_problem(alpha, n, shape=shape)
+        floq = scan(problem, ranges[0][0], ranges[-1][1], 400)
+        stable = problem.evaluate(betas).stable
+        report[label] = agreement(ds, stable)
+        title = f"Fig. {figure}, {label}: {runs} runs x {periods} periods per beta"
+        draw_map(ds, floq.stable_intervals, ax, title=title)
+    return fig, report
