@@ -101,10 +101,18 @@ def positive_int(
             raise ParameterError(name, value, allowed)
         i = int(x)
     if maximum is not None and i > maximum:
-        raise ParameterError(name, value, allowed, why=why(i) if why else None)
+        shown = value if len(str(i)) <= 20 else _compact(i)  # not 300 digits of an int
+        raise ParameterError(name, shown, allowed, why=why(i) if why else None)
     if i < minimum or (maximum is not None and i > maximum):
         raise ParameterError(name, value, allowed)
     return i
+
+
+def _compact(i: int) -> float:
+    try:
+        return float(i)
+    except OverflowError:
+        return math.inf
 
 
 def choice(name: str, value: object, options: tuple[str, ...]) -> str:

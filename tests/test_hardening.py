@@ -457,3 +457,62 @@ def test_amplitude_range_keeps_valid_charts():
     a = pure_problem(3, amplitude=2.0).evaluate([0.3]).phi_half[0]
     b = pure_problem(3, amplitude=1.0).evaluate([1.2]).phi_half[0]
     assert a == pytest.approx(b, rel=1e-9)
+
+
+# --------------------------------------------------------------------------- sweeps
+SWEEP = ["sweep", "floquet", "--param", "alpha=0.5", "--param", "n=4", "--out", "s.zarr"]
+ENSEMBLE = ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=0.1", "--param", "n=4"]
+BIF = ["sweep", "bifurcation", "--param", "alpha=0.5", "--param", "beta=0.1", "--param", "n=4"]
+SWEEPS = [
+    ([*SWEEP, "--param", "beta=0.1:0.2:1000000000000"], "beta", "COUNT <= 1000000"),
+    ([*SWEEP, "--param", "beta=0.1:0.2:1e12"], "beta", "COUNT"),
+    ([*BIF, "--param", "count=1e12", "--out", "s.zarr"], "count", "[1, 1000000000]"),
+    ([*BIF, "--param", "transient=1e308", "--out", "s.zarr"], "transient", "1000000000"),
+    ([*ENSEMBLE, "--param", "periods=1e308", "--out", "s.zarr"], "periods", "1000000000"),
+    ([*ENSEMBLE, "--param", "replica=-1", "--out", "s.zarr"], "replica", ">= 0"),
+    ([*ENSEMBLE, "--param", "replica=-1,0", "--out", "s.zarr"], "replica", ">= 0"),
+    ([*ENSEMBLE, "--param", "dt=1e-300", "--out", "s.zarr"], "dt", "steps per period"),
+    ([*ENSEMBLE, "--param", "runs=1e12", "--out", "s.zarr"], "runs", "[1, 10000000]"),
+    (
+        [*SWEEP[:-2], "--param", "beta=0:0.4:1001", "--param", "gamma=1:2:1001", "--out", "s"],
+        "beta",
+        "at most 1000000 points",
+    ),
+]
+
+
+@pytest.mark.parametrize(("argv", "name", "says"), SWEEPS, ids=lambda a: " ".join(a)[-40:])
+def test_sweep_sizes_refused(argv, name, says, capsys, tmp_path, monkeypatch):
+    assert says in refused(argv, capsys, tmp_path, monkeypatch, name)
+
+
+def test_sweep_results_must_fit_in_memory(capsys, tmp_path, monkeypatch):
+    from sinktheory import validation
+
+    monkeypatch.setattr(validation, "memory_limit", lambda: 2**30)  # a 2 GiB machine
+    argv = [*BIF[:4], "--param", "n=4", "--param", "beta=0.1,0.2", "--param", "count=100000000"]
+    argv += ["--out", "s.zarr"]
+    assert "1.49 GiB of memory" in refused(argv, capsys, tmp_path, monkeypatch, "count")
+
+
+def test_run_sweep_argument_types():
+    from sinktheory.sweep import run_sweep
+
+    ok = {"alpha": 0.5, "beta": 0.1, "n": 4}
+    cases = [
+        (lambda: run_sweep("floquet", "x"), "params"),
+        (lambda: run_sweep("floquet", None), "params"),
+        (lambda: run_sweep("floquet", [("alpha", 0.5)]), "params"),
+        (lambda: run_sweep(None, ok), "kind"),
+        (lambda: run_sweep("floquet", ok, store=3), "store"),
+        (lambda: run_sweep("floquet", ok, store=""), "store"),
+        (lambda: run_sweep("floquet", ok, store="/proc/s.zarr"), "store"),
+        (lambda: run_sweep("floquet", ok, seed=True), "seed"),
+        (lambda: run_sweep("floquet", ok, resume="yes"), "resume"),
+        (lambda: run_sweep("floquet", {**ok, "alpha": True}), "alpha"),
+        (lambda: run_sweep("ensemble", {**ok, "replica": -1}), "replica"),
+    ]
+    for make, name in cases:
+        with pytest.raises(ParameterError) as info:
+            make()
+        assert info.value.name == name, (name, info.value)

@@ -27,6 +27,7 @@ import xarray as xr
 
 from .. import __version__
 from .. import validation as v
+from ..errors import ParameterError
 from .grid import Grid, fingerprint, point_seed
 from .kinds import Kind, get_kind
 
@@ -48,10 +49,15 @@ class Sweep:
     def make(cls, kind: str, params: Mapping[str, Any], seed: int = 0) -> Sweep:
         """Check ``params`` (name -> value or list of values) for ``kind`` at every point."""
         k = get_kind(kind)
+        if not isinstance(params, Mapping):
+            raise ParameterError(
+                "params", params, "a mapping of parameter names to values or lists of values"
+            )
         seed = v.positive_int("seed", seed, minimum=0)
         grid = Grid.from_params(k.complete(params))
         for index in range(grid.size):
             k.check(grid.point(index))
+        _check_memory(k, grid)
         spec, digest = fingerprint(k.name, grid, seed)
         return cls(k, grid, seed, spec, digest)
 
@@ -119,6 +125,37 @@ class Sweep:
         """One line: kind, swept dimensions and fixed parameters."""
         swept = ", ".join(f"{n} ({s})" for n, s in self.dims.items()) or "no swept parameter"
         return f"{self.kind.name} sweep over {swept}; fixed {json.dumps(self.fixed)}"
+
+
+#: Parameters that set the length of a result dimension (their value + offset).
+_DIM_LENGTH = {"sample": ("count", 0), "period": ("periods", 1)}
+
+
+def _check_memory(kind: Kind, grid: Grid) -> None:
+    """Refuse a sweep whose results would not fit in memory, before anything is allocated
+    (the result dimensions' lengths are read off their parameters, not built)."""
+    point = grid.point(0)
+    per_point = 0
+    longest = None
+    for spec in kind.results.values():
+        size = 1
+        for dim in spec.dims:
+            if dim in _DIM_LENGTH:
+                name, offset = _DIM_LENGTH[dim]
+                size *= point[name] + offset
+                longest = name
+            else:
+                size *= len(kind.extra_coords(point)[dim])
+        per_point += size
+    name = longest or (grid.names[0] if grid.names else "params")
+    value = point.get(name, f"{grid.size} points")
+    v.fits_memory(
+        name,
+        value,
+        8.0 * per_point * grid.size,
+        f"{grid.size} point(s) x {per_point} value(s) per point",
+        "smaller: the sweep's results must fit in memory",
+    )
 
 
 def _coordinate(values: tuple) -> np.ndarray:

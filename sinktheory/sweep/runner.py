@@ -52,7 +52,7 @@ from ..errors import NumericalError, ParameterError
 from ..progress import ProgressBar
 from .kinds import KINDS, Kind
 from .plan import Sweep
-from .store import MemoryStore, SweepStore
+from .store import MemoryStore, SweepStore, _checked_path
 
 #: Below this many seconds of estimated work, local processes are not worth starting.
 POOL_THRESHOLD = 2.0
@@ -142,6 +142,10 @@ def execute(
     """Run a checked :class:`~sinktheory.sweep.plan.Sweep` (see :func:`run_sweep`)."""
     start = time.perf_counter()
     workers = None if workers is None else v.positive_int("workers", workers)
+    if not isinstance(resume, bool):
+        raise ParameterError("resume", resume, "True or False")
+    if store is not None:
+        store = _checked_path(store)  # before reaching a scheduler or computing anything
     # reach the scheduler first: a bad address must not leave a new store behind
     with _Engine(scheduler, workers) as engine:
         if store is None:
