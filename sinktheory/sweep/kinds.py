@@ -415,6 +415,102 @@ KINDS = {
 }
 
 
+# --------------------------------------------------------------------------- chaos
+def _chaos_check(p: dict) -> None:
+    from ..chaos.indicators import check_gali
+
+    _ensemble_check(p)
+    v.positive_int("renorm", p["renorm"], minimum=0)
+    v.positive_int("transverse", p["transverse"], minimum=0, maximum=1)
+    check_gali(p["gali"], 1 + 2 * p["particles"])
+
+
+def _chaos(p: dict, seed: int) -> dict[str, Any]:
+    """lambda_1 (and the transverse exponent, GALI_k, <Y>) of an ensemble seeded with the
+    point's seed (:func:`sinktheory.chaos.chaos`): mean and standard error over the runs."""
+    from ..chaos import chaos
+
+    res = chaos(
+        _sink(p),
+        _settings(p, seed),
+        gali=p["gali"],
+        megno=bool(p["megno"]),
+        transverse=bool(p["transverse"]),
+        method=p["method"],
+        dt=p["dt"],
+        renorm=p["renorm"],
+        energy_bound=p["energy_bound"],
+        progress=False,
+    )
+    nan = float("nan")
+    out = {
+        "lambda1_runs": res.lambda1,
+        "max_relative_energy_error": float(res.run_errors.max()),
+        "dt_used": float(res.parameters["dt"]),
+    }
+    finals = {
+        "lambda1": res.lambda1,
+        "transverse": res.transverse,
+        "gali": None if res.gali is None else res.gali[:, -1],
+        "mean_megno": None if res.megno is None else res.mean_megno[:, -1],
+    }
+    for name, per_run in finals.items():
+        if per_run is None:
+            out[name], out[f"{name}_se"] = nan, nan
+        else:
+            out[name] = float(np.mean(per_run))
+            out[f"{name}_se"] = (
+                float(np.std(per_run, ddof=1) / np.sqrt(per_run.size)) if per_run.size > 1 else 0.0
+            )
+    return out
+
+
+def _chaos_results() -> dict[str, Result]:
+    text = {
+        "lambda1": "maximal Lyapunov exponent per unit time, mean over the runs",
+        "transverse": "transverse exponent of y = 0 (NaN unless transverse = 1)",
+        "gali": "GALI_k at the end, mean over the runs (NaN unless gali = k >= 2)",
+        "mean_megno": "time-averaged MEGNO <Y> at the end (NaN unless megno = 1)",
+    }
+    out = {}
+    for name, description in text.items():
+        out[name] = Result((), "float64", description)
+        out[f"{name}_se"] = Result((), "float64", f"standard error of {name} over the runs")
+    out["lambda1_runs"] = Result(("run",), "float64", "lambda_1 of each run")
+    out["max_relative_energy_error"] = Result((), "float64", "largest |H - H0|/H0 of all runs")
+    out["dt_used"] = Result((), "float64", "integration step used")
+    return out
+
+
+#: The ``chaos`` kind (issue 12): chaos maps over any model parameter; lambda_1 from the
+#: symplectic tangent map, costing ~3 plain runs (twice that with the transverse runs).
+KINDS["chaos"] = Kind(
+    "chaos",
+    {
+        **WELL,
+        **SINK,
+        "runs": Param(int, 8, sweepable=False),
+        "periods": Param(int, 300),
+        "box": Param(float, 0.01),
+        "method": Param(str, DEFAULT_SCHEME, tuple(SCHEMES)),
+        "dt": Param(float, None),
+        "energy_bound": Param(float, ENERGY_BOUND),
+        "renorm": Param(int, 0),
+        "gali": Param(int, 0),
+        "megno": Param(int, 0),
+        "transverse": Param(int, 0),
+        "replica": Param(int, 0),
+    },
+    _chaos_results(),
+    _chaos_check,
+    _chaos,
+    lambda p: {"run": np.arange(p["runs"])},
+    cost=lambda p: (
+        3 * (1 + p["transverse"]) * SECONDS_PER_PERIOD * p["periods"] * p["runs"] * p["particles"]
+    ),
+)
+
+
 def get_kind(name: str) -> Kind:
     """The kind called ``name`` (ParameterError naming ``kind`` otherwise)."""
     return KINDS[v.choice("kind", name, tuple(KINDS))]
