@@ -13,6 +13,7 @@ import inspect
 import os
 import pkgutil
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -28,11 +29,16 @@ DOCS = ROOT / "docs"
 
 @pytest.fixture(scope="module")
 def site(tmp_path_factory) -> Path:
+    """Build a copy of docs/ (the build writes generated pages next to its sources, and
+    two test runs at once must not share them) and return the HTML directory."""
     out = tmp_path_factory.mktemp("docs")
+    ignore = shutil.ignore_patterns("_build", "_autogen", "generated", "__pycache__")
+    shutil.copytree(DOCS, out / "docs", ignore=ignore)
+    (out / "derivations").symlink_to(ROOT / "derivations")  # for literalinclude
     env = {k: v for k, v in os.environ.items() if k != "SINKTHEORY_DOCS_REUSE_GALLERY"}
     env["MPLBACKEND"] = "Agg"
     cmd = [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-b", "html"]
-    cmd += ["-d", str(out / "doctrees"), str(DOCS), str(out / "html")]
+    cmd += ["-d", str(out / "doctrees"), str(out / "docs"), str(out / "html")]
     r = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True, timeout=900)
     warnings = [line for line in r.stderr.splitlines() if "WARNING" in line or "ERROR" in line]
     assert r.returncode == 0 and not warnings, (
