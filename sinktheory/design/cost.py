@@ -37,6 +37,11 @@ import numpy as np
 from ..stepsize import choose
 from .point import settings_of, sink_of
 
+#: Seconds to generate and compile the engine of one well shape and n the first time
+#: (30-60 s measured on the development machine under load); added once per engine that
+#: is not in the cache yet.
+COMPILE_SECONDS = 45.0
+
 #: Cost of one step with a tangent vector (chaos) relative to a plain step: measured
 #: 2.4 (flat n = 4, k = 5: 10 x 100 periods of chaos against 25 x 100 of simulate,
 #: whose step is also 1.4x shorter) on the development machine; the calibration measures
@@ -60,6 +65,9 @@ class Estimate:
         Measured seconds per unit of work (step x degree of freedom x run).
     overhead : float
         Measured seconds per point besides the integration (measures, step choice).
+    compile_seconds : float
+        :data:`COMPILE_SECONDS` for each engine (shape, n) not compiled yet (included in
+        ``total_seconds``).
     tangent : float
         Cost of a chaos step relative to a plain one (measured or :data:`TANGENT`).
     calibration_point : dict
@@ -74,6 +82,7 @@ class Estimate:
     per_point: np.ndarray
     seconds_per_unit: float
     overhead: float
+    compile_seconds: float
     tangent: float
     calibration_point: dict
     calibration_seconds: float
@@ -85,7 +94,13 @@ class Estimate:
         return (
             f"estimated {_duration(self.total_seconds)} for {self.points} point(s) on "
             f"{self.workers} worker(s) (mean {self.per_point.mean():.3g} s per point on one "
-            f"core; calibrated at {where} in {self.calibration_seconds:.1f} s)"
+            f"core; calibrated at {where} in {self.calibration_seconds:.1f} s"
+            + (
+                f"; includes {self.compile_seconds:.0f} s to compile new engines"
+                if self.compile_seconds
+                else ""
+            )
+            + ")"
         )
 
 
@@ -127,6 +142,19 @@ def _time_chaos(point: dict, runs: int, periods: int) -> tuple[float, float]:
     seconds = time.perf_counter() - start
     steps = choose(sink_of(p), p["energy"], p["tol"]).steps_per_period
     return seconds, steps * (1 + 2 * p["particles"]) * runs * periods
+
+
+def uncompiled(engines) -> list[tuple[str, int]]:
+    """The (shape, n) engines whose compiled code is not in the engine cache yet."""
+    from ..engine.cache import _digest, cache_dir, sink_name
+
+    folder = cache_dir() / "__pycache__"
+    digest = _digest()
+    return sorted(
+        (shape, n)
+        for shape, n in engines
+        if not any(folder.glob(f"{sink_name(shape, n)}_{digest}.*.nbi"))
+    )
 
 
 def _overhead(point: dict) -> float:
@@ -180,7 +208,7 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     todo = np.arange(sweep.grid.size) if todo is None else np.asarray(todo, dtype=int)
     points = [sweep.grid.point(int(i)) for i in todo]
     if not points:
-        return Estimate(0, 0.0, np.zeros(0), 0.0, 0.0, TANGENT, {}, 0.0, workers)
+        return Estimate(0, 0.0, np.zeros(0), 0.0, 0.0, 0.0, TANGENT, {}, 0.0, workers)
     units = np.array([work(p, 1.0) for p in points])  # plain steps first, to pick the point
     heaviest = points[int(np.argmax(units))]
     threads = numba.get_num_threads()
@@ -206,12 +234,15 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     per_point = np.array([work(p, tangent) for p in points]) * per_unit + overhead
     # the work shared over the workers, but never less than the longest point
     total = max(float(per_point.sum()) / min(workers, len(points)), float(per_point.max()))
+    compiling = COMPILE_SECONDS * len(uncompiled({(p["shape"], p["n"]) for p in points}))
+    total += compiling
     return Estimate(
         points=len(points),
         total_seconds=total,
         per_point=per_point,
         seconds_per_unit=per_unit,
         overhead=overhead,
+        compile_seconds=compiling,
         tangent=float(tangent),
         calibration_point=heaviest,
         calibration_seconds=time.perf_counter() - started,
