@@ -11,7 +11,9 @@ there only) and reported (:mod:`.report`).
 * :func:`~sinktheory.design.measures.design_measures` -- the measures of one ensemble;
 * :func:`~sinktheory.design.ranking.rank` -- Pareto layers and the ranked table;
 * :func:`~sinktheory.design.report.write_report` -- charts, table and ``report.md``;
-* :func:`~sinktheory.design.cost.estimate` -- the time a grid will take (calibrated).
+* :func:`~sinktheory.design.cost.estimate` -- the time a grid will take (calibrated);
+* :func:`~sinktheory.design.inelastic.simulate_inelastic` -- inelastic wall contact
+  (reference integrator, audited dissipation, equivalent damping ratio).
 
 Modules are loaded on first use, so importing the command line stays light.
 """
@@ -28,6 +30,7 @@ _LAZY = {
     "write_report": "report",
     "estimate": "cost",
     "Estimate": "cost",
+    "simulate_inelastic": "inelastic",
 }
 
 

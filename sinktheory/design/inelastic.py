@@ -105,7 +105,7 @@ class InelasticResult:
     initial_energy : ndarray (R,)
         H(0).
     audit_errors : ndarray (R,)
-        max_j |H + W - H(0)| / H(0) of each run.
+        ``max_j |H + W - H(0)| / H(0)`` of each run.
     max_audit_error : float
     damping_ratio : ndarray (R,)
         zeta_eq of each run over the whole run (0 when nothing was dissipated).
@@ -187,7 +187,7 @@ def simulate_inelastic(
     dissipative_stage : bool
         False leaves D out altogether (the conservative reference of the bitwise check).
     energy_bound : float > 0
-        Largest |H + W - H0| / H0 tolerated at a period end.
+        Largest ``|H + W - H0| / H0`` tolerated at a period end.
 
     Returns
     -------

@@ -17,7 +17,7 @@ ensemble       :func:`sinktheory.simulate.simulate`, seeded     mean_energy (per
                with the point's seed                            stderr (period),
                                                                 max_relative_energy_error,
                                                                 dt_used
-design         :func:`sinktheory.design.point.compute`: an       absorbed (horizon), passage
+design         :func:`sinktheory.design.point.compute`: an      absorbed (horizon), passage
                ensemble, lambda_1 and the design measures       (level), long-time share and
                (:mod:`sinktheory.design.measures`)              equipartition verdict, spread,
                                                                 lambda1, excursion, rqa_*,
