@@ -37,10 +37,11 @@ import numpy as np
 from ..stepsize import choose
 from .point import settings_of, sink_of
 
-#: Seconds to generate and compile the engine of one well shape and n the first time
-#: (30-60 s measured on the development machine under load); added once per engine that
-#: is not in the cache yet.
-COMPILE_SECONDS = 45.0
+#: Seconds to generate and compile the engine of one well shape and n the first time,
+#: with its tangent-map functions for lambda_1 (30-60 s each on the development machine
+#: under load; a 36-design demo that compiled three engines took 200 s against an
+#: estimate of 54 s made with 45 s per engine); added once per engine not yet cached.
+COMPILE_SECONDS = 90.0
 
 #: Cost of one step with a tangent vector (chaos) relative to a plain step: measured
 #: 2.4 (flat n = 4, k = 5: 10 x 100 periods of chaos against 25 x 100 of simulate,
