@@ -516,3 +516,197 @@ def test_run_sweep_argument_types():
         with pytest.raises(ParameterError) as info:
             make()
         assert info.value.name == name, (name, info.value)
+
+
+# --------------------------------------------------------------------------- store damage
+FLOQUET = {"alpha": 0.5, "beta": [-0.3, -0.2, -0.1, 0.1, 0.2, 0.3], "n": [2, 10]}
+
+
+def make_store(path):
+    import xarray as xr
+
+    from sinktheory.sweep import run_sweep
+
+    run_sweep("floquet", FLOQUET, store=path, workers=1, progress=False)
+    return xr.open_zarr(path).load()
+
+
+def resume(path, repair=True):
+    import xarray as xr
+
+    from sinktheory.sweep import execute
+    from sinktheory.sweep.plan import Sweep
+
+    sweep = Sweep.make("floquet", FLOQUET)
+    done = execute(sweep, store=path, resume=True, repair=repair, progress=False)
+    return done.computed, xr.open_zarr(path).load()
+
+
+def flip_bit(file: Path, at: int = -3) -> None:
+    data = bytearray(file.read_bytes())
+    data[at] ^= 0x10
+    file.write_bytes(bytes(data))
+
+
+def test_store_keeps_a_checksum_per_point(tmp_path):
+    from sinktheory.sweep.plan import Sweep
+    from sinktheory.sweep.store import _point_checksums
+
+    path = tmp_path / "s.zarr"
+    ds = make_store(path)
+    sweep = Sweep.make("floquet", FLOQUET)
+    rows = {name: ds[name].values.reshape(12, -1) for name in sweep.kind.results}
+    expected = _point_checksums(sweep, rows).reshape(6, 2)
+    assert np.array_equal(ds.checksum.values, expected) and bool((expected != 0).all())
+
+
+@pytest.mark.parametrize("array", ["lam", "phi_half", "stable", "checksum"])
+def test_deleted_chunk_is_detected_and_its_points_recomputed(array, tmp_path):
+    path = tmp_path / "s.zarr"
+    pristine = make_store(path)
+    (path / array / "c" / "0" / "0").unlink()
+    computed, after = resume(path, repair=False)
+    # the one chunk holds every point of this small grid; a deleted chunk reads back as
+    # its fill value (NaN, or False: the points whose flag really was False still match)
+    lost = int(pristine.stable.sum()) if array == "stable" else 12
+    assert computed == lost
+    assert bool(after.done.all())
+    for name in ("lam", "phi_half", "phi", "stable", "rotation_number", "checksum"):
+        np.testing.assert_array_equal(after[name].values, pristine[name].values)
+    assert resume(path)[0] == 0  # repaired: nothing left to do
+
+
+def test_changed_value_is_detected_and_only_its_point_recomputed(tmp_path):
+    """A bit flipped in a stored value (the chunk still decodes) is found by the point's
+    checksum; only that point is recomputed."""
+    import zarr
+
+    path = tmp_path / "s.zarr"
+    pristine = make_store(path)
+    group = zarr.open_group(path, mode="r+")
+    lam = group["lam"][...]
+    bits = lam.view(np.uint64)
+    bits[2, 1] ^= np.uint64(1)  # the last bit of one value
+    group["lam"][...] = lam
+    assert group["lam"][2, 1] != pristine.lam.values[2, 1]
+    computed, after = resume(path, repair=False)
+    assert computed == 1
+    np.testing.assert_array_equal(after.lam.values, pristine.lam.values)
+
+
+@pytest.mark.parametrize("damage", ["flip", "truncate"])
+@pytest.mark.parametrize("array", ["lam", "done"])
+def test_undecodable_chunk_refused_or_repaired(damage, array, tmp_path):
+    path = tmp_path / "s.zarr"
+    pristine = make_store(path)
+    chunk = path / array / "c" / "0" / "0"
+    if damage == "flip":
+        flip_bit(chunk)
+    else:
+        chunk.write_bytes(chunk.read_bytes()[:5])
+    try:
+        computed, _ = resume(path, repair=False)
+    except ParameterError as e:  # the chunk no longer decodes
+        assert "damaged" in str(e)
+    else:  # it decodes (a flipped bit in the payload): the checksums found it
+        assert computed >= 1
+    computed, after = resume(path, repair=True)
+    assert bool(after.done.all())
+    np.testing.assert_array_equal(after.lam.values, pristine.lam.values)
+    np.testing.assert_array_equal(after.phi.values, pristine.phi.values)
+
+
+@pytest.mark.parametrize("coordinate", ["beta/c/0", "n/c/0", "point_seed/c/0/0"])
+def test_damaged_coordinate_chunk_refuses_the_store(coordinate, tmp_path):
+    path = tmp_path / "s.zarr"
+    make_store(path)
+    flip_bit(path / coordinate)
+    name = coordinate.split("/")[0]
+    with pytest.raises(ParameterError, match=f"damaged: the coordinate {name} differs"):
+        resume(path, repair=True)
+
+
+def test_deleted_coordinate_chunk_refuses_the_store(tmp_path):
+    path = tmp_path / "s.zarr"
+    make_store(path)
+    (path / "beta" / "c" / "0").unlink()
+    with pytest.raises(ParameterError, match="coordinate beta differs"):
+        resume(path)
+
+
+def test_only_damaged_chunks_are_recomputed(tmp_path):
+    """A grid spread over several chunks: delete one, only its points are recomputed."""
+    import xarray as xr
+
+    from sinktheory.sweep import execute, store
+    from sinktheory.sweep.plan import Sweep
+
+    params = {"alpha": 0.5, "beta": list(np.linspace(-0.3, 0.3, 9)), "n": 4}
+    sweep = Sweep.make("floquet", params)
+    path = tmp_path / "s.zarr"
+    old = store.CHUNK_VALUES
+    store.CHUNK_VALUES = 3  # chunks of three points
+    try:
+        execute(sweep, store=path, workers=1, progress=False)
+        pristine = xr.open_zarr(path).load()
+        (path / "lam" / "c" / "1").unlink()
+        done = execute(sweep, store=path, resume=True, progress=False)
+    finally:
+        store.CHUNK_VALUES = old
+    assert done.computed == 3
+    np.testing.assert_array_equal(xr.open_zarr(path).lam.values, pristine.lam.values)
+
+
+def test_store_damage_through_the_cli(capsys, tmp_path, monkeypatch):
+    import json
+
+    monkeypatch.chdir(tmp_path)
+    argv = ["sweep", "floquet", "--param", "alpha=0.5", "--param", "beta=-0.2,0.1"]
+    argv += ["--param", "n=4", "--out", "s.zarr", "--quiet", "--json"]
+    assert run_cli(argv, capsys)[0] == 0
+    (tmp_path / "s.zarr" / "phi" / "c" / "0").unlink()
+    code, out, err = run_cli([*argv, "--resume"], capsys)
+    assert code == 0, err
+    assert json.loads(out)["computed"] == 2
+    chunk = tmp_path / "s.zarr" / "phi" / "c" / "0"
+    chunk.write_bytes(chunk.read_bytes()[:5])
+    code, out, err = run_cli([*argv, "--resume"], capsys)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "damaged" in err
+    code, out, err = run_cli([*argv, "--resume", "--repair"], capsys)
+    assert code == 0 and json.loads(out)["computed"] == 2, err
+    flip_bit(tmp_path / "s.zarr" / "beta" / "c" / "0")
+    code, out, err = run_cli([*argv, "--resume"], capsys)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "coordinate beta" in err
+
+
+def test_simultaneous_creation_is_a_clean_refusal(tmp_path, monkeypatch):
+    """Two drivers create one new store: the one that renames second is refused."""
+    from sinktheory.sweep import run_sweep, store
+
+    path = tmp_path / "s.zarr"
+    real_rename = os.rename
+
+    raced = []
+
+    def other_driver_first(src, dst):
+        if Path(dst) == path and not raced:  # the other driver's store lands first
+            raced.append(True)
+            run_sweep(
+                "floquet",
+                {"alpha": 0.5, "beta": [0.1, 0.2], "n": 4},
+                store=path,
+                workers=1,
+                progress=False,
+            )
+        return real_rename(src, dst)
+
+    monkeypatch.setattr(store.os, "rename", other_driver_first)
+    with pytest.raises(ParameterError, match="another process created it"):
+        run_sweep(
+            "floquet",
+            {"alpha": 0.5, "beta": [0.1, 0.2], "n": 4},
+            store=path,
+            workers=1,
+            progress=False,
+        )
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".s.zarr.creating")]

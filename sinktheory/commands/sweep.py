@@ -47,6 +47,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--resume", action="store_true", help="continue the sweep in STORE (missing points only)"
     )
+    parser.add_argument(
+        "--repair",
+        action="store_true",
+        help="with --resume: remove chunks that no longer decode and recompute their points",
+    )
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     add_json(parser)
     parser.epilog = "parameters of each KIND: " + "; ".join(
@@ -79,6 +84,7 @@ def run(args: argparse.Namespace) -> Output:
         scheduler=args.scheduler,
         workers=args.workers,
         resume=args.resume,
+        repair=args.repair,
         progress=not args.quiet,
     )
     data = {

@@ -83,6 +83,7 @@ def run_sweep(
     workers: int | None = None,
     resume: bool = False,
     progress: bool = True,
+    repair: bool = False,
 ) -> xr.Dataset:
     """Compute ``kind`` at every point of the grid ``params``; return labelled results.
 
@@ -106,6 +107,10 @@ def run_sweep(
         made by a different sweep is refused.  Without it an existing store is refused.
     progress : bool
         Progress bar on stderr (points done, rate, time left; only on a terminal).
+    repair : bool
+        On resuming, remove chunks that no longer decode and recompute their points
+        instead of refusing the store.  (Points whose stored results no longer match
+        their checksum are always recomputed; damaged coordinates always refuse.)
 
     Returns
     -------
@@ -127,6 +132,7 @@ def run_sweep(
         workers=workers,
         resume=resume,
         progress=progress,
+        repair=repair,
     ).dataset
 
 
@@ -138,12 +144,14 @@ def execute(
     workers: int | None = None,
     resume: bool = False,
     progress: bool = True,
+    repair: bool = False,
 ) -> SweepRun:
     """Run a checked :class:`~sinktheory.sweep.plan.Sweep` (see :func:`run_sweep`)."""
     start = time.perf_counter()
     workers = None if workers is None else v.positive_int("workers", workers)
-    if not isinstance(resume, bool):
-        raise ParameterError("resume", resume, "True or False")
+    for name, flag in (("resume", resume), ("repair", repair)):
+        if not isinstance(flag, bool):
+            raise ParameterError(name, flag, "True or False")
     if store is not None:
         store = _checked_path(store)  # before reaching a scheduler or computing anything
     # reach the scheduler first: a bad address must not leave a new store behind
@@ -151,7 +159,7 @@ def execute(
         if store is None:
             target = MemoryStore(sweep)
         elif resume and Path(store).exists():
-            target = SweepStore.open(store, sweep)
+            target = SweepStore.open(store, sweep, repair=repair)
         else:
             target = SweepStore.create(store, sweep)
         tasks = _tasks(sweep, target.done())

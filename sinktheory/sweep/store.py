@@ -23,6 +23,16 @@ Why a killed sweep never corrupts the store or loses a finished point:
 * resuming reads every array once: a store whose chunks do not decode, whose arrays are
   missing or misshapen, or whose fingerprint does not match its description is refused
   as damaged rather than silently extended;
+* every point gets a checksum (BLAKE2b-64 of its stored results, in the ``checksum``
+  variable, written after the data and before the flag); resuming recomputes the
+  checksum of every done point and flags the points that no longer match (a flipped
+  bit, a deleted chunk read back as fill values) not done, so they are computed again;
+  coordinates (swept values, result coordinates, ``point_seed``) are compared with the
+  sweep's own and a difference refuses the store; a chunk that no longer decodes
+  refuses it too, unless resumed with ``repair``, which removes that chunk and
+  recomputes its points;
+* two drivers creating one new store at once: the second rename fails and that driver
+  is refused with a ParameterError (the store of the first stays whole);
 * while a driver writes, it holds an exclusive lock (``flock``) on a file in the store, so
   a second driver is refused; the system drops the lock when the process dies.
 
@@ -49,6 +59,7 @@ from __future__ import annotations
 
 import fcntl
 import hashlib
+import itertools
 import json
 import math
 import os
@@ -69,6 +80,8 @@ from .plan import MARK, Sweep
 
 #: File in the store locked by the process writing to it.
 LOCK = ".sweep.lock"
+#: Variable holding each point's checksum: BLAKE2b (64 bits) of its stored results.
+CHECKSUM = "checksum"
 #: Target number of values in one chunk of a result array.
 CHUNK_VALUES = 4096
 
@@ -82,6 +95,10 @@ class SweepStore:
         self.group = group
         self._lock = _lock(path)
         self._arrays = {name: group[name] for name in (*sweep.kind.results, "done")}
+        #: per-point checksums (None: a store made before they were kept)
+        self._checksum = group[CHECKSUM] if CHECKSUM in group else None
+        #: points found damaged on opening and flagged not done (recomputed on resume)
+        self.repaired = 0
 
     # --- creating and opening -----------------------------------------------------------
     @classmethod
@@ -97,8 +114,14 @@ class SweepStore:
         tmp = path.parent / f".{path.name}.creating-{uuid.uuid4().hex}"
         try:
             template = sweep.dataset(_empty_results(sweep), np.zeros(sweep.grid.shape, bool))
+            template[CHECKSUM] = (
+                sweep.grid.names,
+                np.zeros(sweep.grid.shape, np.uint64),
+                {"description": "BLAKE2b-64 of the point's stored results (0: none yet)"},
+            )
             encoding = {name: {"chunks": _chunks(sweep, name)} for name in sweep.kind.results}
             encoding["done"] = {"chunks": _flag_chunks(sweep)}
+            encoding[CHECKSUM] = {"chunks": _flag_chunks(sweep)}
             with warnings.catch_warnings():  # consolidated metadata: not (yet) in the v3 spec
                 warnings.filterwarnings("ignore", message="Consolidated metadata")
                 template.to_zarr(tmp, mode="w-", compute=False, encoding=encoding)
@@ -118,7 +141,7 @@ class SweepStore:
         return cls(path, sweep, zarr.open_group(path, mode="r+"))
 
     @classmethod
-    def open(cls, path: str | Path, sweep: Sweep) -> SweepStore:
+    def open(cls, path: str | Path, sweep: Sweep, *, repair: bool = False) -> SweepStore:
         """Open the store at ``path`` to resume ``sweep``; refuse anything else.
 
         Raises ParameterError naming ``store`` when the path is not a Zarr group, is not a
@@ -148,16 +171,23 @@ class SweepStore:
                 "a store made by this same sweep (kind, grid, fixed parameters, seed)",
                 why=_difference(json.loads(spec), json.loads(sweep.spec)),
             )
+        store = None
         try:
             store = cls(path, sweep, group)
             for name, array in store._arrays.items():
                 expected = sweep.grid.shape if name == "done" else sweep.shape(name)
                 if array.shape != expected:
                     raise ValueError(f"{name} has shape {array.shape}, expected {expected}")
+            store._verify(repair)
+            for array in store._arrays.values():
                 _read_all(array)  # every chunk decodes: no finished point is unreadable
-        except ParameterError:  # locked by another process
+        except ParameterError:  # locked by another process, or damaged coordinates
+            if store is not None:
+                store.close()
             raise
         except Exception as e:  # noqa: BLE001 - a missing or unreadable array is damage
+            if store is not None:
+                store.close()
             raise ParameterError(
                 "store", str(path), "an intact sweep store", why=f"damaged: {e}"
             ) from None
@@ -177,7 +207,86 @@ class SweepStore:
         """
         for name, value in results.items():
             _vset(self._arrays[name], *selection(self.sweep, indices, value))
+        if self._checksum is not None:
+            sums = _point_checksums(self.sweep, results)
+            _vset(self._checksum, *selection(self.sweep, indices, sums))
         _vset(self._arrays["done"], *selection(self.sweep, indices, np.ones(len(indices), bool)))
+
+    # --- checks on resuming ---------------------------------------------------------------
+    def _verify(self, repair: bool) -> None:
+        """Check the coordinates against the sweep and every done point against its checksum.
+
+        A coordinate that differs from the sweep's own (swept values, result coordinates,
+        ``point_seed``) refuses the store: it cannot be recomputed point by point.  A done
+        point whose stored results no longer match its checksum (a flipped bit, a deleted
+        chunk read back as fill values) is flagged not done, so it is computed again.  A
+        chunk that does not decode refuses the store, or with ``repair`` is removed and
+        its points are flagged not done.
+        """
+        self._check_coordinates()
+        if repair:
+            self._drop_undecodable()
+        if self._checksum is None:
+            return
+        names = list(self.sweep.kind.results)
+        stored = {name: np.asarray(self._arrays[name][...]) for name in names}
+        size = self.sweep.grid.size
+        flat = {name: value.reshape(size, -1) for name, value in stored.items()}
+        expected = _point_checksums(self.sweep, flat).reshape(self.sweep.grid.shape)
+        done = self.done()
+        damaged = done & (np.asarray(self._checksum[...]) != expected)
+        if damaged.any():
+            self._arrays["done"][...] = done & ~damaged
+            self.repaired += int(damaged.sum())
+
+    def _check_coordinates(self) -> None:
+        expected = {**self.sweep.coords(), "point_seed": self.sweep.point_seeds()}
+        for name, values in expected.items():
+            try:
+                stored = np.asarray(self.group[name][...])
+                same = stored.shape == np.shape(values) and bool(
+                    np.all(stored.astype(str) == np.asarray(values).astype(str))
+                    if stored.dtype.kind in "OUST"
+                    else np.array_equal(stored, np.asarray(values))
+                )
+            except Exception as e:  # noqa: BLE001 - unreadable is damaged
+                same, why = False, f": {e}"
+            else:
+                why = ""
+            if not same:
+                raise ParameterError(
+                    "store",
+                    str(self.path),
+                    "an intact sweep store",
+                    why=f"damaged: the coordinate {name} differs from the sweep's{why}",
+                )
+
+    def _drop_undecodable(self) -> None:
+        """Remove result or flag chunks that do not decode; flag their points not done."""
+        ndim = len(self.sweep.grid.shape)
+        reset = np.zeros(self.sweep.grid.shape, dtype=bool)
+        arrays = {**self._arrays}
+        if self._checksum is not None:
+            arrays[CHECKSUM] = self._checksum
+        for name, array in arrays.items():
+            lead = zip(array.shape[:ndim], array.chunks[:ndim], strict=True)
+            grid = [range(0, n, c) for n, c in lead]
+            for start in itertools.product(*grid):
+                region = tuple(
+                    slice(i, i + c) for i, c in zip(start, array.chunks[:ndim], strict=True)
+                )
+                try:
+                    array[region]
+                except Exception:  # noqa: BLE001 - a codec error: this chunk is damaged
+                    index = [i // c for i, c in zip(start, array.chunks[:ndim], strict=True)]
+                    index += [0] * (len(array.shape) - ndim)
+                    key = "/".join(["c", *map(str, index)]) if array.shape else "c"
+                    (self.path / name / key).unlink(missing_ok=True)
+                    reset[region] = True
+        if reset.any():
+            flags = self._arrays["done"]
+            flags[...] = np.asarray(flags[...], dtype=bool) & ~reset
+            self.repaired += int(reset.sum())
 
     def dataset(self) -> xr.Dataset:
         """The stored results, opened lazily with ``xarray.open_zarr``."""
@@ -283,6 +392,27 @@ def _lock(path: Path):
             "store", str(path), "a store no other sweep is writing to", why="it is locked"
         ) from None
     return handle
+
+
+def _point_checksums(sweep: Sweep, results: dict[str, Any]) -> np.ndarray:
+    """BLAKE2b-64 of each point's results as stored (``results[name]`` has one row per
+    point); never 0, which marks a point not written."""
+    names = list(sweep.kind.results)
+    rows = [
+        np.ascontiguousarray(
+            np.asarray(results[name], dtype=sweep.kind.results[name].dtype).reshape(
+                len(results[names[0]]), -1
+            )
+        )
+        for name in names
+    ]
+    out = np.empty(len(rows[0]), dtype=np.uint64)
+    for i in range(len(out)):
+        h = hashlib.blake2b(digest_size=8)
+        for row in rows:
+            h.update(row[i].tobytes())
+        out[i] = int.from_bytes(h.digest(), "little") or 1
+    return out
 
 
 def _checked_path(path: str | Path) -> Path:
