@@ -4,9 +4,9 @@ For every splitting scheme and a ladder of step x frequency products h*omega_max
 paper's workloads (flat alpha = 1/2 with beta in {-0.5, 0.3} and n in {4, 10}; symmetric
 alpha = 1, beta = 0.1, n = 6; k in {1, 5}; m = 0.2; 2 runs x PERIODS periods) and record the
 largest relative total-energy error.  The error model is err = C (h omega)^p with the
-scheme's order p; C is the largest err / (h omega)^p seen over the workloads (an envelope,
-not a fit), and h omega_max is the largest product at which every workload stayed finite
-and within 10x of the model.  The script prints the table that goes into
+scheme's order p; h omega_max (the cliff) is the largest product at which the worst error
+over the workloads is still within 10x of the order-p law through the smallest product, and
+C is the largest err / (h omega)^p at or below the cliff (an envelope, not a fit).  The script prints the table that goes into
 ``sinktheory/stepsize.py`` (CALIBRATION) and the raw measurements.
 
     python benchmarks/calibrate_steps.py [PERIODS]
@@ -71,11 +71,17 @@ def measure(periods: int) -> dict[str, list[tuple[float, float]]]:
 
 
 def envelope(rows, order):
-    """(C, h omega_max) from the measurements (see the module docstring)."""
-    finite = [(h, e) for h, e in rows if math.isfinite(e) and e > 0]
-    C = max(e / h**order for h, e in finite[:2])  # the two smallest steps: asymptotic regime
-    ok = [h for h, e in finite if e <= 10 * C * h**order]
-    return C, max(ok) if ok else min(h for h, _ in rows)
+    """(C, h omega_max) from the measurements (see the module docstring).
+
+    The cliff is the largest measured product at which the error is still within 10x of
+    the order-p law fitted at the smallest one; C is then the largest err / (h omega)^p
+    at or below the cliff, so the model bounds every measurement it is used for.
+    """
+    finite = sorted((h, e) for h, e in rows if math.isfinite(e) and e > 0)
+    h0, e0 = finite[0]
+    cliff = max(h for h, e in finite if e <= 10 * e0 * (h / h0) ** order)
+    C = max(e / h**order for h, e in finite if h <= cliff)
+    return C, cliff
 
 
 def main() -> None:

@@ -48,20 +48,16 @@ if TYPE_CHECKING:
 PERIOD = 2.0 * math.pi
 _HESSIAN = {"flat": _well.hessian_flat, "symmetric": _well.hessian_symmetric}
 
-#: (C_s, cliff_s) per scheme.  Interim values derived from the step x frequency defaults
-#: measured in the previous engine's calibration (largest energy errors at n = 10, k = 5 over
-#: 300 periods: verlet 1e-7 at 0.006, yoshida4 3e-9 at 0.06, blanes-moan4 1e-9 at 0.3,
-#: yoshida6 1e-9 at 0.25, suzuki-umeno8 3e-10 at 0.5; blanes-moan6 held to 1e-8 at 0.6 over
-#: the paper's ranges, with its resonance cliff between 0.64 and 0.8; the cliffs are those
-#: defaults, known to be safe), to be replaced by the output of
-#: ``python benchmarks/calibrate_steps.py 300``.
+#: (C_s, cliff_s) per scheme, from ``python benchmarks/calibrate_steps.py 300`` on the new
+#: engine (2026-11-23, 2445 s on the 2-core development machine; the raw worst errors per
+#: step x frequency product are printed by the script).
 CALIBRATION: dict[str, tuple[float, float]] = {
-    "verlet": (2.8e-3, 0.006),
-    "yoshida4": (2.3e-4, 0.06),
-    "blanes-moan4": (1.2e-7, 0.3),
-    "yoshida6": (4.1e-6, 0.25),
-    "blanes-moan6": (2.1e-7, 0.6),
-    "suzuki-umeno8": (7.7e-8, 0.5),
+    "verlet": (3.08e-2, 0.03),
+    "yoshida4": (1.30e-2, 0.2),
+    "blanes-moan4": (7.56e-6, 0.6),
+    "yoshida6": (8.76e-4, 0.4),
+    "blanes-moan6": (2.24e-7, 0.9),
+    "suzuki-umeno8": (2.89e-6, 0.65),
 }
 #: The default tolerance of :func:`sinktheory.simulate.simulate`.
 DEFAULT_TOL = 1e-8

@@ -1,0 +1,71 @@
+"""Tolerance-driven steps: the calibrated error model keeps its promise on workloads it was
+not calibrated on, picks the cheapest scheme, and refuses what it cannot promise.
+
+The reference is the conserved Hamiltonian itself (the energy audit of each run), on wells
+outside the calibration set of benchmarks/calibrate_steps.py (flat beta = -0.2, n = 6; the
+symmetric well at beta = -0.1; k = 2 and 3).
+"""
+
+import math
+
+import pytest
+
+from sinktheory import ParameterError, RunSettings, Sink, Well
+from sinktheory.integrators import SCHEMES, get_scheme
+from sinktheory.simulate import simulate
+from sinktheory.stepsize import CALIBRATION, TOL_RANGE, choose, cost_table
+
+UNSEEN = [
+    Sink(Well(0.5, -0.2, 6), particles=3, mass=0.2),
+    Sink(Well(1.0, -0.1, 6, shape="symmetric"), particles=2, mass=0.2),
+]
+
+
+def test_every_scheme_is_calibrated():
+    assert set(CALIBRATION) == set(SCHEMES)
+    assert all(c > 0 and 0 < cliff < 1 for c, cliff in CALIBRATION.values())
+
+
+@pytest.mark.parametrize("sink", UNSEEN, ids=["flat-b-0.2-n6-k3", "symmetric-b-0.1-n6-k2"])
+@pytest.mark.parametrize("tol", [1e-6, 1e-9])
+def test_tolerance_is_met_on_unseen_wells(sink, tol):
+    res = simulate(sink, RunSettings(runs=2, periods=150, seed=8), tol=tol, progress=False)
+    assert res.tol == tol
+    assert res.max_relative_energy_error <= tol
+    assert res.container_energy.min() < 0.45  # the particles really took up energy
+
+
+def test_choice_is_the_cheapest_and_cost_falls_with_tolerance():
+    sink = UNSEEN[0]
+    costs = []
+    for tol in (1e-11, 1e-9, 1e-7, 1e-5):
+        table = cost_table(sink, 0.5, tol)
+        best = choose(sink, 0.5, tol)
+        assert best == table[0]
+        assert all(
+            best.force_evaluations_per_period <= c.force_evaluations_per_period for c in table
+        )
+        assert all(c.predicted_error <= tol * (1 + 1e-12) for c in table)
+        costs.append(best.force_evaluations_per_period)
+        # the step really is the scheme's: stages x steps per period
+        s = get_scheme(best.method)
+        assert best.force_evaluations_per_period == s.stages * best.steps_per_period
+        assert best.dt * best.steps_per_period == pytest.approx(2 * math.pi, rel=1e-14)
+    assert costs == sorted(costs, reverse=True)
+
+
+@pytest.mark.parametrize("tol", [0.0, -1e-8, TOL_RANGE[0] / 10, TOL_RANGE[1] * 10, math.nan])
+def test_bad_tolerance_is_refused_naming_tol(tol):
+    with pytest.raises(ParameterError, match=r"^tol = "):
+        simulate(UNSEEN[0], RunSettings(runs=1, periods=1), tol=tol, progress=False)
+
+
+def test_tol_and_dt_together_are_refused():
+    with pytest.raises(ParameterError, match="tol"):
+        simulate(UNSEEN[0], RunSettings(runs=1, periods=1), tol=1e-8, dt=1e-3, progress=False)
+
+
+def test_forced_method_gets_its_own_step_for_the_tolerance():
+    res = simulate(UNSEEN[0], RunSettings(runs=1, periods=20, seed=1), method="yoshida4", tol=1e-7)
+    assert res.method == "yoshida4"
+    assert res.max_relative_energy_error <= 1e-7
