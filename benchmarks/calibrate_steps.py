@@ -6,8 +6,9 @@ alpha = 1, beta = 0.1, n = 6; k in {1, 5}; m = 0.2; 2 runs x PERIODS periods) an
 largest relative total-energy error.  The error model is err = C (h omega)^p with the
 scheme's order p; h omega_max (the cliff) is the largest product at which the worst error
 over the workloads is still within 10x of the order-p law through the smallest product, and
-C is the largest err / (h omega)^p at or below the cliff (an envelope, not a fit).  The script prints the table that goes into
-``sinktheory/stepsize.py`` (CALIBRATION) and the raw measurements.
+C is the largest err / (h omega)^p at or below the cliff (an envelope, not a fit).  The
+script prints the table that goes into ``sinktheory/stepsize.py`` (CALIBRATION) and the raw
+measurements.
 
     python benchmarks/calibrate_steps.py [PERIODS]
 """
