@@ -75,6 +75,15 @@ def chaos_map(
     return run_sweep("chaos", params, seed=seed, workers=workers, store=store, progress=progress)
 
 
+def beta_grid(ranges, points: int) -> np.ndarray:
+    """About ``points`` betas over the intervals ``ranges`` [(lo, hi), ...], shared in
+    proportion to their lengths (at least two per interval)."""
+    total = sum(b - a for a, b in ranges)
+    return np.concatenate(
+        [np.linspace(a, b, max(2, round(points * (b - a) / total))) for a, b in ranges]
+    )
+
+
 def threshold(periods: int) -> float:
     """THRESHOLD_FACTOR ln(t) / t at t = periods x 2 pi (per unit time)."""
     t = periods * 2.0 * math.pi
@@ -159,10 +168,7 @@ def figure_maps(figure: int, *, points: int = 24, runs: int = 4, periods: int = 
             ranges = [(a + 0.01, b - 0.01) for a, b in confining_betas(alpha, n, 0.5, shape=shape)]
         else:
             ranges = [(-0.7, 0.45)]
-        total = sum(b - a for a, b in ranges)
-        betas = np.concatenate(
-            [np.linspace(a, b, max(2, round(points * (b - a) / total))) for a, b in ranges]
-        )
+        betas = beta_grid(ranges, points)
         ds = chaos_map(alpha, n, betas, shape=shape, runs=runs, periods=periods,
                        workers=workers, progress=progress)  # fmt: skip
         problem = model_problem(alpha, n, shape=shape)

@@ -1,8 +1,13 @@
-"""Figs. 3 and 11: bifurcation diagrams over beta with the Floquet-unstable intervals.
+"""Figs. 3 and 11: bifurcation diagrams over beta with the Floquet-unstable intervals, and
+beside each the chaos map lambda_1(beta) that decides regular or irregular.
 
-Each panel needs single-particle sections (:mod:`sinktheory.bifurcation`, computed in
-parallel through the sweep layer :mod:`sinktheory.sweep`) and the stability scan of the
-normal mode (:mod:`sinktheory.floquet`); nothing else.
+Each panel needs single-particle sections (:mod:`sinktheory.bifurcation`), the maximal
+Lyapunov exponent and the transverse exponent of y = 0 on the same betas
+(:mod:`sinktheory.chaos.maps`), both computed through the sweep layer, and the stability
+scan of the fixed-container normal mode (:mod:`sinktheory.floquet`).  A beta is chaotic
+when the ensemble's lambda_1 minus two standard errors exceeds 3 ln t / t (a regular
+orbit's finite-time exponent decays like ln t / t); the report gives how often (a) the
+Floquet theory and (b) the transverse exponent agree with that verdict.
 """
 
 from __future__ import annotations
@@ -10,25 +15,25 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from ..bifurcation import BifurcationDiagram, plot_bifurcation
+from ..bifurcation import plot_bifurcation
+from ..chaos.maps import THRESHOLD_FACTOR, agreement, beta_grid, chaos_map, draw_map, verdicts
 from ..floquet import model_problem, scan
 from ..model import confining_betas
 from ..sweep import run_sweep
 from ..sweep.views import bifurcation_diagram
 from .base import FAILS, HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
-#: A section whose y spans more than this (10x the initial offset 0.01) is "irregular".
-SPREAD = 0.1
-#: Agreement between Floquet stability and regular sections needed for "holds";
+#: Agreement between Floquet stability and the chaos map needed for "holds";
 #: below LOW the claim "does not hold".
 AGREE, LOW = 0.8, 0.6
 
 
 def _fidelity(quick: bool) -> dict:
+    """Sections (count, transient periods) and chaos map (runs x periods) per beta."""
     return (
-        dict(count=40, transient=40, points=24)
+        dict(count=40, transient=40, points=24, runs=4, periods=60)
         if quick
-        else dict(count=150, transient=150, points=161)
+        else dict(count=150, transient=150, points=161, runs=6, periods=200)
     )
 
 
@@ -43,14 +48,11 @@ def _unstable(stable: list[tuple[float, float]], lo: float, hi: float):
     return out
 
 
-def _panel(alpha, n, shape, ranges, quick, ax):
-    """Sections over the valid beta ``ranges`` [(lo, hi), ...] (points shared in
-    proportion to length) and the Floquet scan over their whole span."""
+def _panel(alpha, n, shape, ranges, quick, ax, ax_map):
+    """Sections and the chaos map over the valid beta ``ranges`` [(lo, hi), ...] (points
+    shared in proportion to length) and the Floquet scan over their whole span."""
     f = _fidelity(quick)
-    total = sum(b - a for a, b in ranges)
-    betas = np.concatenate(
-        [np.linspace(a, b, max(2, round(f["points"] * (b - a) / total))) for a, b in ranges]
-    )
+    betas = beta_grid(ranges, f["points"])
     params = {
         "alpha": alpha,
         "beta": [float(b) for b in betas],
@@ -77,37 +79,50 @@ def _panel(alpha, n, shape, ranges, quick, ax):
         )
     for r in floq.resonances:
         ax.axvline(r, color="tab:blue", lw=0.8, ls=":")
-    return diagram, floq
-
-
-def _agreement(diagram: BifurcationDiagram, floq) -> tuple[float, np.ndarray]:
-    regular = np.ptp(diagram.section, axis=1) <= SPREAD
-    stable = floq.chart.problem.evaluate(diagram.beta).stable
-    return float(np.mean(regular == stable)), regular
+    cmap = chaos_map(alpha, n, betas, shape=shape, runs=f["runs"], periods=f["periods"])
+    title = f"{shape}, n = {n}: {f['runs']} runs x {f['periods']} periods per beta"
+    draw_map(cmap, floq.stable_intervals, ax_map, title=title)
+    return diagram, floq, cmap
 
 
 def _claims(panels, label_of) -> list[Claim]:
     claims = []
-    for (diagram, floq), label in zip(panels, label_of, strict=True):
-        agree, regular = _agreement(diagram, floq)
-        irregular_neg = bool(np.any(~regular[diagram.beta < 0]))
-        irregular_pos = bool(np.any(~regular[diagram.beta > 0]))
+    for (diagram, floq, cmap), label in zip(panels, label_of, strict=True):
+        v = verdicts(cmap)
+        chaotic = v["chaotic"]
+        stable = floq.chart.problem.evaluate(diagram.beta).stable
+        agree = agreement(cmap, stable)
+        basis = (
+            f"chaotic where the mean lambda_1 of {cmap.attrs['runs']} runs minus 2 standard "
+            f"errors exceeds {THRESHOLD_FACTOR:g} ln t / t = {v['threshold']:.3g} "
+            f"(t = {cmap.attrs['periods']} T)"
+        )
+        neg = bool(np.any(chaotic[diagram.beta < 0]))
+        pos = bool(np.any(chaotic[diagram.beta > 0]))
         claims.append(
             Claim(
                 f"{label}: irregular motion in both negative and positive beta intervals",
-                f"irregular sections (y spread > {SPREAD}) at beta < 0: {irregular_neg}, "
-                f"beta > 0: {irregular_pos}",
-                HOLDS if irregular_neg and irregular_pos else FAILS,
+                f"{basis}: {int(chaotic.sum())} of {chaotic.size} betas chaotic; at beta < 0: "
+                f"{neg}, beta > 0: {pos}",
+                HOLDS if neg and pos else FAILS,
             )
         )
         stable_txt = ", ".join(f"({a:.4f}, {b:.4f})" for a, b in floq.stable_intervals)
-        verdict = HOLDS if agree >= AGREE else (FAILS if agree < LOW else UNDECIDED)
+        share = agree["floquet"]
+        verdict = HOLDS if share >= AGREE else (FAILS if share < LOW else UNDECIDED)
+        transverse = (
+            f"; the transverse exponent of y = 0 (coupled container) agrees with the chaos "
+            f"map at {100 * agree['transverse']:.0f}%"
+            if "transverse" in agree
+            else ""
+        )
         claims.append(
             Claim(
                 f"{label}: Floquet stability of y = 0 matches the regular beta intervals",
-                f"Floquet-stable beta: {stable_txt or 'none'}; sections regular where stable "
-                f"and irregular where unstable at {100 * agree:.0f}% of {diagram.beta.size} "
-                f"beta values (holds >= {100 * AGREE:.0f}%, fails < {100 * LOW:.0f}%)",
+                f"Floquet-stable beta: {stable_txt or 'none'}; stable where the chaos map is "
+                f"regular and unstable where chaotic at {100 * share:.0f}% of "
+                f"{chaotic.size} betas (holds >= {100 * AGREE:.0f}%, fails < {100 * LOW:.0f}%)"
+                + transverse,
                 verdict,
             )
         )
@@ -115,11 +130,11 @@ def _claims(panels, label_of) -> list[Claim]:
 
 
 def _fig3(quick: bool) -> SceneResult:
-    fig = Figure(figsize=(7.5, 7.5), layout="constrained")
-    axes = fig.subplots(2, 1)
+    fig = Figure(figsize=(13, 7.5), layout="constrained")
+    axes = fig.subplots(2, 2)
     panels = [
-        _panel(0.5, n, "flat", [(-0.7, 0.45)], quick, ax)
-        for n, ax in zip((2, 10), axes, strict=True)
+        _panel(0.5, n, "flat", [(-0.7, 0.45)], quick, ax, ax_map)
+        for n, (ax, ax_map) in zip((2, 10), axes, strict=True)
     ]
     fig.suptitle(
         "Fig. 3: flat well, $\\alpha$ = 1/2, $\\gamma$ = 1, $k$ = 1, $m$ = 0.2; "
@@ -138,6 +153,7 @@ def _fig3(quick: bool) -> SceneResult:
             "beta": f"{f['points']} values in [-0.7, 0.45]",
             "transient": f["transient"],
             "section periods": f["count"],
+            "chaos map": f"{f['runs']} runs x {f['periods']} periods per beta",
             "start": "(x, y) = (0, 0.01) at rest, X(0) = 1",
         },
         _claims(panels, ("n = 2", "n = 10"))
@@ -159,11 +175,11 @@ def _fig3(quick: bool) -> SceneResult:
 
 
 def _fig11(quick: bool) -> SceneResult:
-    fig = Figure(figsize=(7.5, 4.2), layout="constrained")
-    ax = fig.subplots()
+    fig = Figure(figsize=(13, 4.2), layout="constrained")
+    ax, ax_map = fig.subplots(1, 2)
     valid = confining_betas(1.0, 6, 0.5, shape="symmetric")
     ranges = [(a + 0.01, b - 0.01) for a, b in valid]  # a margin from the edges of validity
-    panel = _panel(1.0, 6, "symmetric", ranges, quick, ax)
+    panel = _panel(1.0, 6, "symmetric", ranges, quick, ax, ax_map)
     fig.suptitle("Fig. 11: symmetric well, $\\alpha$ = 1, $\\gamma$ = 1, $n$ = 6, $k$ = 1")
     f = _fidelity(quick)
     return SceneResult(
@@ -178,6 +194,7 @@ def _fig11(quick: bool) -> SceneResult:
             + ", ".join(f"[{a:.4f}, {b:.4f}]" for a, b in ranges),
             "transient": f["transient"],
             "section periods": f["count"],
+            "chaos map": f"{f['runs']} runs x {f['periods']} periods per beta",
         },
         _claims([panel], ("symmetric, n = 6",))
         + [
@@ -198,11 +215,14 @@ def _fig11(quick: bool) -> SceneResult:
 
 
 FIG3 = Scene(
-    3, "bifurcation diagrams, flat well", "single-particle sweeps over beta + Floquet scan", _fig3
+    3,
+    "bifurcation diagrams, flat well",
+    "single-particle sweeps and chaos maps over beta + Floquet scan",
+    _fig3,
 )
 FIG11 = Scene(
     11,
     "bifurcation diagram, symmetric well",
-    "single-particle sweep over beta + Floquet scan",
+    "single-particle sweep and chaos map over beta + Floquet scan",
     _fig11,
 )
