@@ -141,26 +141,29 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
         hessian(q, h, P)
     for seg in range(seg0, seg1):
         for step in range(steps):
-            for stage in range(s + 1):
-                c = bh[stage] * dt
+            for stage in range(s):
+                # kick then drift, fused into one pass over the block
+                ck = bh[stage] * dt
+                cd = ah[stage] * dt
                 for i in range(D):
                     for b in range(B):
-                        v[i, b] += c * a[i, b]
+                        v[i, b] += ck * a[i, b]
+                        q[i, b] += cd * v[i, b]
                 if M > 0:
-                    tangent_kick(h, dq, dv, c, P)
-                if stage == s:
-                    break
-                c = ah[stage] * dt
-                for i in range(D):
-                    for b in range(B):
-                        q[i, b] += c * v[i, b]
-                for i in range(D):
-                    for m in range(M):
-                        for b in range(B):
-                            dq[i, m, b] += c * dv[i, m, b]
+                    tangent_kick(h, dq, dv, ck, P)
+                    for i in range(D):
+                        for m in range(M):
+                            for b in range(B):
+                                dq[i, m, b] += cd * dv[i, m, b]
                 accelerations(q, a, P)
                 if M > 0:
                     hessian(q, h, P)
+            ck = bh[s] * dt
+            for i in range(D):
+                for b in range(B):
+                    v[i, b] += ck * a[i, b]
+            if M > 0:
+                tangent_kick(h, dq, dv, ck, P)
             g = seg * steps + step + 1
             if mode != NO_TANGENT and renorm > 0 and g % renorm == 0 and step + 1 < steps:
                 _renormalise(dq, dv, logs, mode == ORTHONORMALISE)
