@@ -285,7 +285,7 @@ def _initial_values(sink, settings, initial, initial_state):
         settings.check(sink)
         positions = random_positions(settings, k)
     else:
-        positions = np.asarray(initial, dtype=float)
+        positions = v.real_array("initial", initial)
         if positions.shape == (k, 2):
             positions = positions[None]
         if positions.shape != (settings.runs, k, 2):
@@ -296,6 +296,8 @@ def _initial_values(sink, settings, initial, initial_state):
             )
         if not np.all(np.isfinite(positions)):
             raise ParameterError("initial", "non-finite positions", "finite numbers")
+        for x, y in positions.reshape(-1, 2):
+            sink.well.check_position("initial", float(x), float(y))
     values = start_state(sink, settings.energy, positions)
     h0 = total_energy(sink, values)
     sink.well.check_energy(float(np.max(h0)))
@@ -381,6 +383,7 @@ def simulate(
     if dt is not None and tol is not None:
         raise ParameterError("tol", tol, "None when dt is given (dt overrides the tolerance)")
     record = _check_record(record)
+    settings.check_memory(sink, record)
     if tol is not None:
         tol = check_tol(tol)
     if energy_bound is None:
@@ -394,9 +397,13 @@ def simulate(
         tol = tol or DEFAULT_TOL
         choice = choose(sink, float(np.max(h0)), tol, method)
         method, dt, steps = choice.method, choice.dt, choice.steps_per_period
+        if steps > v.MAX_STEPS_PER_PERIOD:
+            raise ParameterError(
+                "tol", tol, "a tolerance this well reaches in at most 1e9 steps per period"
+            )
     else:
         tol = None
-        dt, steps = aligned_step(dt)
+        dt, steps = aligned_step(v.time_step("dt", dt))
     scheme = get_scheme(method or DEFAULT_SCHEME)
     if "trajectory" in record:
         stride = max(1, steps // 32) if stride is None else v.positive_int("stride", stride)

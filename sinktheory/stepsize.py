@@ -101,7 +101,10 @@ def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float
             r * math.cos(t), r * math.sin(t), well.alpha, well.beta, well.gamma, well.n
         )
         largest = max(largest, float(np.linalg.eigvalsh([[vxx, vxy], [vxy, vyy]])[-1]))
-    return max(1.0, math.sqrt(largest * (1.0 / sink.mu + 1.0)))
+    omega = math.sqrt(largest * (1.0 / sink.mu + 1.0))
+    if not math.isfinite(omega):
+        raise ParameterError("energy", energy, "an energy whose wall stiffness is finite")
+    return max(1.0, omega)
 
 
 def aligned_step(dt: float) -> tuple[float, int]:

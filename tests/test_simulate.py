@@ -299,3 +299,18 @@ def test_cli_bad_input_exits_2(extra, capsys, tmp_path, monkeypatch):
     assert main(argv + extra) == 2
     assert capsys.readouterr().err.count("\n") == 1
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        (dict(initial="x"), "initial"),
+        (dict(initial=[(0.3, 0.0)]), "initial"),  # wall ratio 1.5: outside the well
+        (dict(dt=1e-300), "dt"),
+        (dict(dt=0.0), "dt"),
+    ],
+)
+def test_api_refuses_bad_starts_and_steps_naming_the_parameter(kwargs, name):
+    sink = Sink(Well(0.5, 0.3, 4), particles=1, mass=0.2)
+    with pytest.raises(ParameterError, match=rf"^{name} = "):
+        simulate(sink, RunSettings(runs=1, periods=1), progress=False, **kwargs)
