@@ -69,3 +69,21 @@ def test_forced_method_gets_its_own_step_for_the_tolerance():
     res = simulate(UNSEEN[0], RunSettings(runs=1, periods=20, seed=1), method="yoshida4", tol=1e-7)
     assert res.method == "yoshida4"
     assert res.max_relative_energy_error <= 1e-7
+
+
+def test_cli_tol_picks_scheme_and_step_and_reports_them(capsys):
+    import json
+
+    from _cli import run_cli
+
+    argv = ["simulate", "--alpha", "0.5", "--beta", "-0.2", "--n", "6", "--particles", "3"]
+    argv += ["--mass", "0.2", "--runs", "2", "--periods", "3", "--quiet", "--json"]
+    code, out, err = run_cli([*argv, "--tol", "1e-6"], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    expected = choose(UNSEEN[0], 0.5, 1e-6)
+    assert (data["method"], data["tol"]) == (expected.method, 1e-6)
+    assert data["steps_per_period"] == expected.steps_per_period
+    assert data["max_relative_energy_error"] <= 1e-6
+    code, out, err = run_cli([*argv, "--tol", "1e-2"], capsys)
+    assert code == 2 and out == "" and err.count("\n") == 1 and "tol = " in err

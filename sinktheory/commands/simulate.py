@@ -19,6 +19,7 @@ from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES
 from ..model import RunSettings, Sink, check_work
 from ..simulate import ENERGY_BOUND, SimulationResult, simulate
+from ..stepsize import DEFAULT_TOL, TOL_RANGE
 from ..validation import time_step
 from . import HELP as HELPS
 from ._common import (
@@ -52,15 +53,24 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     i = parser.add_argument_group("integrator")
     i.add_argument(
         "--method",
-        default=DEFAULT_SCHEME,
-        help=f"one of {', '.join(SCHEMES)} (default {DEFAULT_SCHEME})",
+        default=None,
+        help=f"one of {', '.join(SCHEMES)} (default: the cheapest for --tol; "
+        f"{DEFAULT_SCHEME} with --dt)",
     )
-    i.add_argument("--dt", type=number, default=None, help="step (default: from the stiffness)")
+    i.add_argument(
+        "--tol",
+        type=number,
+        default=None,
+        help=f"relative total-energy error wanted over the run, {TOL_RANGE[0]:g} to "
+        f"{TOL_RANGE[1]:g} (default {DEFAULT_TOL:g}): picks scheme and step",
+    )
+    i.add_argument("--dt", type=number, default=None, help="step, overriding --tol")
     i.add_argument(
         "--energy-bound",
         type=number,
-        default=ENERGY_BOUND,
-        help=f"stop when the relative total-energy error exceeds this (default {ENERGY_BOUND:g})",
+        default=None,
+        help=f"stop when the relative total-energy error exceeds this (default: the larger "
+        f"of {ENERGY_BOUND:g} and 100 x tol)",
     )
     o = parser.add_argument_group("output")
     o.add_argument("--out", help="save the recorded arrays and parameters to FILE.npz")
@@ -115,6 +125,7 @@ def run(args: argparse.Namespace) -> Output:
         settings,
         method=args.method,
         dt=args.dt,
+        tol=args.tol,
         initial=initial,
         record=("container", "final"),
         energy_bound=args.energy_bound,
@@ -129,6 +140,7 @@ def run(args: argparse.Namespace) -> Output:
         "periods": settings.periods,
         "method": result.method,
         "dt": result.dt,
+        "tol": result.tol,
         "steps_per_period": result.steps_per_period,
         "seed": settings.seed,
     }
