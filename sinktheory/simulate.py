@@ -296,8 +296,6 @@ def _initial_values(sink, settings, initial, initial_state):
             )
         if not np.all(np.isfinite(positions)):
             raise ParameterError("initial", "non-finite positions", "finite numbers")
-        for x, y in positions.reshape(-1, 2):
-            sink.well.check_position("initial", float(x), float(y))
     values = start_state(sink, settings.energy, positions)
     h0 = total_energy(sink, values)
     sink.well.check_energy(float(np.max(h0)))

@@ -305,7 +305,7 @@ def test_cli_bad_input_exits_2(extra, capsys, tmp_path, monkeypatch):
     "kwargs, name",
     [
         (dict(initial="x"), "initial"),
-        (dict(initial=[(0.3, 0.0)]), "initial"),  # wall ratio 1.5: outside the well
+        (dict(initial=[[0.0, 0.0, 0.0]]), "initial"),  # not (k, 2)
         (dict(dt=1e-300), "dt"),
         (dict(dt=0.0), "dt"),
     ],
