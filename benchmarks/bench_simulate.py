@@ -151,6 +151,9 @@ def heyoka_points(sink, full: RunSettings, periods: int) -> list[Point]:
         wall, out = _timed(
             lambda ta=ta, gen=gen: hy.ensemble_propagate_grid(ta, grid, full.runs, gen)
         )
+        outcomes = sorted({str(res[1]).split(".")[-1] for res in out})
+        if outcomes != ["time_limit"]:
+            print(f"  heyoka tol={tol:g}: propagation outcomes {outcomes}")
         worst = 0.0
         for i, res in enumerate(out):
             states = res[-1]
@@ -340,7 +343,10 @@ def _baseline_time(rev: str, runs: int, periods: int, choice) -> float:
         """
     )
     env = dict(os.environ, PYTHONPATH=str(folder))
-    res = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True, text=True)
+    # run inside the worktree: "python -c" puts the working directory first on sys.path
+    res = subprocess.run(
+        [sys.executable, "-c", script], env=env, cwd=folder, capture_output=True, text=True
+    )
     return float(res.stdout.strip().splitlines()[-1])
 
 
@@ -370,7 +376,7 @@ def plot(results: dict, scale: dict, counts, path: str) -> None:
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(15, 4.8), layout="constrained")
-    axes = fig.subplots(1, len(results) + 1)
+    axes = np.atleast_1d(fig.subplots(1, len(results) + 1))
     for ax, (label, (points, head, cpts)) in zip(axes, results.items(), strict=False):
         for solver in dict.fromkeys(p.solver for p in points):
             pts = sorted((p for p in points if p.solver == solver), key=lambda p: p.error)
@@ -400,6 +406,9 @@ def main(argv=None) -> int:
     parser.add_argument("--png", default="bench_simulate.png")
     parser.add_argument("--quick", action="store_true", help="short horizons (a smoke test)")
     parser.add_argument("--baseline", help="git revision whose engine joins the scaling chart")
+    parser.add_argument(
+        "--scaling-only", action="store_true", help="only the per-run cost against ensemble size"
+    )
     args = parser.parse_args(argv)
     full = RunSettings(runs=25, periods=1500, seed=0)
     sweep = RunSettings(runs=25, periods=300, seed=0)
@@ -414,7 +423,7 @@ def main(argv=None) -> int:
     }
     print(f"Workload: {full.runs} runs x {full.periods} periods, E0 = 0.5; {os.cpu_count()} cores")
     results = {}
-    for label, sink in workloads.items():
+    for label, sink in workloads.items() if not args.scaling_only else ():
         print(f"\n== {label}", flush=True)
         simulate(sink, RunSettings(runs=2, periods=1), progress=False)  # compile once
         points, head = ours(sink, full, sweep)
