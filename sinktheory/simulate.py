@@ -262,6 +262,36 @@ def _check_record(record: Sequence[str]) -> tuple[str, ...]:
     return tuple(v.choice("record", r, RECORDS) for r in record)
 
 
+def start_positions(sink: Sink, settings: RunSettings, initial=None) -> np.ndarray:
+    """Particle positions (R, k, 2) relative to the container: ``initial`` if given (shape
+    (k, 2) for one run or (R, k, 2)), else the seeded random ones of
+    :func:`random_positions`.
+
+    Examples
+    --------
+    >>> from sinktheory import Sink, Well
+    >>> start_positions(Sink(Well(0.5, 0.3, 4), 2, 0.2), RunSettings(runs=1), [(0, 0.01)] * 2)
+    array([[[0.  , 0.01],
+            [0.  , 0.01]]])
+    """
+    k = sink.particles
+    if initial is None:
+        settings.check(sink)
+        return random_positions(settings, k)
+    positions = v.real_array("initial", initial)
+    if positions.shape == (k, 2):
+        positions = positions[None]
+    if positions.shape != (settings.runs, k, 2):
+        raise ParameterError(
+            "initial",
+            f"an array of shape {positions.shape}",
+            f"positions of shape ({k}, 2) (for runs = 1) or ({settings.runs}, {k}, 2)",
+        )
+    if not np.all(np.isfinite(positions)):
+        raise ParameterError("initial", "non-finite positions", "finite numbers")
+    return positions
+
+
 def _initial_values(sink, settings, initial, initial_state):
     """(values, t0, reference energy, runs) from exactly one of the three starting modes."""
     k = sink.particles
@@ -281,22 +311,7 @@ def _initial_values(sink, settings, initial, initial_state):
             raise ParameterError("initial_state", "a state with non-finite values", "finite")
         sink.well.check_energy(float(np.max(total_energy(sink, values))))
         return values, initial_state.time, np.array(initial_state.reference_energy)
-    if initial is None:
-        settings.check(sink)
-        positions = random_positions(settings, k)
-    else:
-        positions = v.real_array("initial", initial)
-        if positions.shape == (k, 2):
-            positions = positions[None]
-        if positions.shape != (settings.runs, k, 2):
-            raise ParameterError(
-                "initial",
-                f"an array of shape {positions.shape}",
-                f"positions of shape ({k}, 2) (for runs = 1) or ({settings.runs}, {k}, 2)",
-            )
-        if not np.all(np.isfinite(positions)):
-            raise ParameterError("initial", "non-finite positions", "finite numbers")
-    values = start_state(sink, settings.energy, positions)
+    values = start_state(sink, settings.energy, start_positions(sink, settings, initial))
     h0 = total_energy(sink, values)
     sink.well.check_energy(float(np.max(h0)))
     return values, 0.0, h0

@@ -40,33 +40,13 @@ from ..simulate import (
     default_step,
     engine_name,
     engine_params,
-    random_positions,
     split_values,
+    start_positions,
     start_state,
     total_energy,
 )
 from .indicators import indicators
 from .result import ChaosResult
-
-
-def start_positions(sink: Sink, settings: RunSettings, initial=None) -> np.ndarray:
-    """Particle positions (R, k, 2): ``initial`` if given, else the seeded random ones."""
-    k = sink.particles
-    if initial is None:
-        settings.check(sink)
-        return random_positions(settings, k)
-    positions = np.asarray(initial, dtype=float)
-    if positions.shape == (k, 2):
-        positions = positions[None]
-    if positions.shape != (settings.runs, k, 2):
-        raise ParameterError(
-            "initial",
-            f"an array of shape {positions.shape}",
-            f"positions of shape ({k}, 2) (for runs = 1) or ({settings.runs}, {k}, 2)",
-        )
-    if not np.all(np.isfinite(positions)):
-        raise ParameterError("initial", "non-finite positions", "finite numbers")
-    return positions
 
 
 def transverse_mask(particles: int) -> np.ndarray:
