@@ -11,17 +11,11 @@ docstrings of every public module found at build time, and the gallery from
 """
 
 import sys
-import types
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "_ext"))
 
 import sinktheory  # noqa: E402
-
-# autosummary imports every submodule it finds, and sinktheory/__main__.py runs the
-# command line on import (with sphinx-build's arguments).  An empty stand-in keeps that
-# import inert; ``__main__`` is private and not documented anyway.
-sys.modules.setdefault("sinktheory.__main__", types.ModuleType("sinktheory.__main__"))
 
 project = "sinktheory"
 author = "the sinktheory authors"
@@ -65,29 +59,3 @@ html_theme_options = {
     "sidebar_width": "230px",
 }
 html_sidebars = {"**": ["about.html", "navigation.html", "searchbox.html"]}
-
-
-# --- narrow fixes for docstrings in modules this documentation does not own -----------
-#: object name -> [(text, replacement)] applied to its docstring before it is parsed.
-#: Each entry works around one reStructuredText error in a module that is being edited
-#: elsewhere; a replacement that no longer matches does nothing, so delete the entry once
-#: the docstring itself is fixed.
-DOCSTRING_FIXES = {
-    # simple table: the "design" row's last cell starts 2 columns right of its other
-    # lines, which docutils reads as an unterminated block quote
-    "sinktheory.sweep.kinds": [
-        (
-            ":func:`sinktheory.design.point.compute`: an       absorbed",
-            ":func:`sinktheory.design.point.compute`: an     absorbed",
-        )
-    ],
-}
-
-
-def _fix_docstring(app, what, name, obj, options, lines):
-    for text, replacement in DOCSTRING_FIXES.get(name, ()):
-        lines[:] = [line.replace(text, replacement) for line in lines]
-
-
-def setup(app):
-    app.connect("autodoc-process-docstring", _fix_docstring, priority=50)
