@@ -333,3 +333,16 @@ def test_chaos_map_verdicts_and_agreement():
     assert a["chaotic"] == 2
     assert a["floquet"] == 0.75  # beta 3 chaotic although Floquet-stable
     assert a["transverse"] == 0.75  # beta 3 chaotic with a regular transverse exponent
+
+
+def test_tol_sets_the_step_and_is_refused_with_dt():
+    from sinktheory.simulate import simulate
+
+    sink = Sink(Well(0.5, 0.3, 4), particles=1, mass=0.2)
+    settings = RunSettings(runs=1, periods=2, seed=3)
+    for tol in (1e-6, 1e-10):
+        res = chaos(sink, settings, tol=tol, method="blanes-moan6")
+        plain = simulate(sink, settings, tol=tol, method="blanes-moan6", progress=False)
+        assert res.parameters["steps_per_segment"] == plain.steps_per_period
+    with pytest.raises(ParameterError, match="^tol = "):
+        chaos(sink, settings, tol=1e-6, dt=0.01)

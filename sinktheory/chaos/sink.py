@@ -45,6 +45,7 @@ from ..simulate import (
     start_state,
     total_energy,
 )
+from ..stepsize import DEFAULT_TOL, check_tol
 from .indicators import indicators
 from .result import ChaosResult
 
@@ -67,6 +68,7 @@ def chaos(
     transverse: bool = False,
     method: str = DEFAULT_SCHEME,
     dt: float | None = None,
+    tol: float | None = None,
     renorm: int = 0,
     initial=None,
     energy_bound: float = ENERGY_BOUND,
@@ -91,6 +93,9 @@ def chaos(
         Transverse exponent of y = 0 (runs restarted with y_j = 0, see module docstring).
     method, dt, energy_bound
         Integrator and energy audit, as for ``simulate`` (dt aligned to T / steps).
+    tol : float, optional
+        Relative energy error the step of ``method`` is chosen for (default 1e-8, see
+        :mod:`sinktheory.stepsize`); ``dt`` overrides it.
     renorm : int >= 0
         Steps between extra renormalisations inside a period (0: once per period).
     initial : array (k, 2) or (R, k, 2), optional
@@ -125,10 +130,13 @@ def chaos(
         qt, vt = split_values(tvalues)
         trans = (qt, vt, transverse_mask(sink.particles))
     sink.well.check_energy(top)
+    if dt is not None and tol is not None:
+        raise ParameterError("tol", tol, "None when dt is given (dt overrides the tolerance)")
     if dt is None:
-        dt, steps = default_step(sink, top, scheme.name)
+        tol = DEFAULT_TOL if tol is None else check_tol(tol)
+        dt, steps = default_step(sink, top, scheme.name, tol)
     else:
-        dt, steps = aligned_step(dt)
+        dt, steps = aligned_step(val.time_step("dt", dt))
     q, v = split_values(values)
     w = sink.well
     return indicators(

@@ -47,7 +47,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=DEFAULT_SCHEME,
         help=f"one of {', '.join(SCHEMES)} (default {DEFAULT_SCHEME})",
     )
-    i.add_argument("--dt", type=number, default=None, help="step (default: from the stiffness)")
+    i.add_argument(
+        "--tol",
+        type=number,
+        default=None,
+        help="relative energy error the step is chosen for (default 1e-8)",
+    )
+    i.add_argument("--dt", type=number, default=None, help="step, overriding --tol")
     i.add_argument(
         "--renorm",
         type=number,
@@ -79,6 +85,7 @@ def run(args: argparse.Namespace) -> Output:
         transverse=args.transverse,
         method=args.method,
         dt=args.dt,
+        tol=args.tol,
         renorm=args.renorm,
         progress=not args.quiet,
     )
