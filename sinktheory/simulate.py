@@ -52,7 +52,7 @@ from .errors import ParameterError
 from .integrators import DEFAULT_SCHEME, get_scheme
 from .model import RunSettings, Sink
 from .sinkstats import ensemble_mean
-from .stepsize import DEFAULT_TOL, PERIOD, aligned_step, check_tol, choose
+from .stepsize import DEFAULT_TOL, PERIOD, check_tol, choose, resolve_step
 
 #: What :func:`simulate` can record.
 RECORDS = ("container", "particles", "trajectory", "final")
@@ -393,8 +393,6 @@ def simulate(
         raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
     if method is not None:
         method = get_scheme(method).name
-    if dt is not None and tol is not None:
-        raise ParameterError("tol", tol, "None when dt is given (dt overrides the tolerance)")
     record = _check_record(record)
     settings.check_memory(sink, record)
     if tol is not None:
@@ -406,18 +404,8 @@ def simulate(
     runs, periods = values.shape[0], settings.periods
     if dt is None and tol is None and initial_state is not None:
         dt, method = initial_state.dt, method or initial_state.method
-    if dt is None:
-        tol = tol or DEFAULT_TOL
-        choice = choose(sink, float(np.max(h0)), tol, method)
-        method, dt, steps = choice.method, choice.dt, choice.steps_per_period
-        if steps > v.MAX_STEPS_PER_PERIOD:
-            raise ParameterError(
-                "tol", tol, "a tolerance this well reaches in at most 1e9 steps per period"
-            )
-    else:
-        tol = None
-        dt, steps = aligned_step(v.time_step("dt", dt))
-    scheme = get_scheme(method or DEFAULT_SCHEME)
+    method, dt, steps, tol = resolve_step(sink, float(np.max(h0)), method=method, dt=dt, tol=tol)
+    scheme = get_scheme(method)
     if "trajectory" in record:
         stride = max(1, steps // 32) if stride is None else v.positive_int("stride", stride)
         samples = periods * steps // stride + 1

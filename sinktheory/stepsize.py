@@ -39,7 +39,7 @@ import numpy as np
 from . import validation as v
 from ._generated import well as _well
 from .errors import ParameterError
-from .integrators import SCHEMES, get_scheme
+from .integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
 
 if TYPE_CHECKING:
     from .model import Sink
@@ -164,3 +164,39 @@ def choose(sink: Sink, energy: float, tol: float, method: str | None = None) -> 
     """The cheapest scheme and step reaching relative energy error ``tol`` (or the step of
     ``method`` if given), for total ``energy`` in ``sink``."""
     return cost_table(sink, energy, tol, None if method is None else [method])[0]
+
+
+def resolve_step(
+    sink: Sink,
+    energy: float,
+    *,
+    method: str | None = None,
+    dt: float | None = None,
+    tol: float | None = None,
+) -> tuple[str, float, int, float | None]:
+    """(method, dt, steps per period, tol) from what a caller asked for.
+
+    ``dt`` overrides the tolerance (and then ``method`` defaults to
+    :data:`~sinktheory.integrators.DEFAULT_SCHEME`, tol is None); otherwise ``tol``
+    (default :data:`DEFAULT_TOL`) picks the step of ``method`` or, without one, the
+    cheapest scheme.  Giving both ``dt`` and ``tol`` is refused.
+
+    Examples
+    --------
+    >>> from sinktheory import Sink, Well
+    >>> m, dt, steps, tol = resolve_step(Sink(Well(0.5, 0.3, 4), 5, 0.2), 0.5)
+    >>> m, tol, abs(dt * steps - PERIOD) < 1e-12
+    ('blanes-moan6', 1e-08, True)
+    """
+    if dt is not None and tol is not None:
+        raise ParameterError("tol", tol, "None when dt is given (dt overrides the tolerance)")
+    if dt is not None:
+        dt, steps = aligned_step(v.time_step("dt", dt))
+        return get_scheme(method or DEFAULT_SCHEME).name, dt, steps, None
+    tol = DEFAULT_TOL if tol is None else check_tol(tol)
+    choice = choose(sink, energy, tol, method)
+    if choice.steps_per_period > v.MAX_STEPS_PER_PERIOD:
+        raise ParameterError(
+            "tol", tol, "a tolerance this well reaches in at most 1e9 steps per period"
+        )
+    return choice.method, choice.dt, choice.steps_per_period, tol

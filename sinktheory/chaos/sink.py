@@ -36,8 +36,6 @@ from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..model import RunSettings, Sink
 from ..simulate import (
     ENERGY_BOUND,
-    aligned_step,
-    default_step,
     engine_name,
     engine_params,
     split_values,
@@ -45,7 +43,7 @@ from ..simulate import (
     start_state,
     total_energy,
 )
-from ..stepsize import DEFAULT_TOL, check_tol
+from ..stepsize import resolve_step
 from .indicators import indicators
 from .result import ChaosResult
 
@@ -130,13 +128,7 @@ def chaos(
         qt, vt = split_values(tvalues)
         trans = (qt, vt, transverse_mask(sink.particles))
     sink.well.check_energy(top)
-    if dt is not None and tol is not None:
-        raise ParameterError("tol", tol, "None when dt is given (dt overrides the tolerance)")
-    if dt is None:
-        tol = DEFAULT_TOL if tol is None else check_tol(tol)
-        dt, steps = default_step(sink, top, scheme.name, tol)
-    else:
-        dt, steps = aligned_step(val.time_step("dt", dt))
+    _, dt, steps, _ = resolve_step(sink, top, method=scheme.name, dt=dt, tol=tol)
     q, v = split_values(values)
     w = sink.well
     return indicators(
