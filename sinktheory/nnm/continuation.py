@@ -43,7 +43,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import ParameterError
-from .shooting import Orbit, ShootingError, ShootingProblem, subspace_indices
+from .shooting import Orbit, ShootingError, ShootingProblem, checked_start, subspace_indices
 from .stability import classify
 from .system import FlowSystem
 
@@ -182,12 +182,7 @@ def continue_orbits(
     -------
     Branch
     """
-    z0 = np.asarray(z0, dtype=float)
-    if z0.shape != (2 * system.dim,):
-        raise ParameterError("z0", z0.shape, f"a state of length {2 * system.dim}")
-    h = system.energy(z0) if energy is None else float(energy)
-    if not h > 0:
-        raise ParameterError("energy", h, "a positive energy")
+    z0, h = checked_start(system, z0, energy)
     if direction not in (1, -1):
         raise ParameterError("direction", direction, "+1 or -1")
     lo, hi = map(float, stop)

@@ -349,6 +349,18 @@ def subspace_indices(system: FlowSystem, subspace: str | None) -> np.ndarray:
     raise ParameterError("subspace", subspace, "'full' or 'plane'")
 
 
+def checked_start(system, z0, energy=None) -> tuple[np.ndarray, float]:
+    """(z0 as a float state, target energy h): ParameterError unless z0 has the system's
+    length 2D and h (default: the energy of z0) is positive."""
+    z0 = np.asarray(z0, dtype=float)
+    if z0.shape != (2 * system.dim,):
+        raise ParameterError("z0", z0.shape, f"a state of length {2 * system.dim}")
+    h = system.energy(z0) if energy is None else float(energy)
+    if not h > 0:
+        raise ParameterError("energy", h, "a positive energy")
+    return z0, h
+
+
 def shoot(
     system: FlowSystem,
     z0,
@@ -387,12 +399,7 @@ def shoot(
     ShootingError
         If Newton does not converge.
     """
-    z0 = np.asarray(z0, dtype=float)
-    if z0.shape != (2 * system.dim,):
-        raise ParameterError("z0", z0.shape, f"a state of length {2 * system.dim}")
-    h = system.energy(z0) if energy is None else float(energy)
-    if not h > 0:
-        raise ParameterError("energy", h, "a positive energy")
+    z0, h = checked_start(system, z0, energy)
     free = subspace_indices(system, subspace)
     problem = ShootingProblem(
         system, int(steps), free, z0, "energy", h, phase, phase_index, phase_ref=z0.copy()
