@@ -112,7 +112,7 @@ def part2(periods: int, repeat: int, png: str | None) -> None:
         f"(simulate: {sim.max_relative_energy_error:.1e})"
     )
     if png:
-        from sinktheory.chaos.plot import plot_convergence
+        from sinktheory.plot.chaos import plot_convergence
 
         plot_convergence(sp, png, title="flat, alpha=0.5, beta=0.3, n=4, k=5, m=0.2; 25 runs")
         print(f"   convergence plot: {png}")

@@ -13,7 +13,7 @@ Jacobian of the discrete flow and is symplectic.  On top of it:
   the tangent map itself and its checks;
 * :func:`two_orbit_exponent` -- the two-trajectory (Benettin) estimate of lambda_1, an
   independent check that needs no tangent map;
-* :mod:`sinktheory.chaos.plot` -- convergence plots (imports matplotlib when called);
+* :mod:`sinktheory.plot.chaos` -- convergence plots (imports matplotlib when called);
 * :mod:`sinktheory.chaos.maps` -- chaos maps lambda_1(beta) on the sweep layer (the
   ``chaos`` sweep kind) against the Floquet-stable intervals, for Figs. 3 and 11.
 

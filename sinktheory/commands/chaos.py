@@ -127,7 +127,7 @@ def run(args: argparse.Namespace) -> Output:
     if plot is not None:
 
         def draw(path):
-            from ..chaos.plot import plot_convergence
+            from ..plot.chaos import plot_convergence
 
             plot_convergence(
                 result,

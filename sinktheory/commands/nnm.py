@@ -127,7 +127,7 @@ def run(args: argparse.Namespace) -> Output:
     )
     out = Output(data, text)
     if plot is not None:
-        from ..nnm import plot as nplot
+        from ..plot import nnm as nplot
 
         if param == "energy":
             fig = nplot.plot_frequency_energy([result])

@@ -5,8 +5,8 @@
 * ``report.md`` -- what was swept, the rules behind every number, the recommended designs
   with their numbers and standard errors, the equipartition verdicts, the cost;
 * ``designs.csv`` -- every computed design, ranked, with all its measures;
-* ``pareto.png`` -- speed against depth against reliability (:func:`.plots.pareto_chart`);
-* ``heatmap_<y>_<x>.png`` -- one per pair of swept parameters (:func:`.plots.heatmap`);
+* ``pareto.png`` -- speed against depth against reliability (:func:`sinktheory.plot.design.pareto_chart`);
+* ``heatmap_<y>_<x>.png`` -- one per pair of swept parameters (:func:`sinktheory.plot.design.heatmap`);
 * ``energy.png`` -- <E>(jT) of the recommended designs.
 
 Examples
@@ -199,7 +199,7 @@ def write_csv(ranked: list, dims: list[str], path: Path) -> None:
 def write_report(ds, directory, *, ranked: list | None = None, top: int = 10, run=None) -> Path:
     """Write the charts, ``designs.csv`` and ``report.md`` of a design sweep into
     ``directory`` (created if needed).  Returns the path of ``report.md``."""
-    from . import plots
+    from ..plot import design as plots
 
     out = Path(directory)
     out.mkdir(parents=True, exist_ok=True)

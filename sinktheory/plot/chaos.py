@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .result import ChaosResult
+from ..chaos.result import ChaosResult
 
 #: GALI values below this are round-off (unit vectors parallel to machine precision).
 FLOOR = 1e-16
