@@ -111,19 +111,56 @@ def test_horizons_refused():
 def test_pareto_layers_against_brute_force():
     rng = np.random.default_rng(5)
     speed, depth, spread = rng.integers(0, 5, (3, 40)).astype(float)
-    speed[::7] = np.nan  # never reached: worst
+    speed[::7] = np.nan  # never reached: below every design that reaches the level
     layers = pareto_layers(speed, depth, spread)
-    s = np.where(np.isnan(speed), np.inf, speed)
+    reached = ~np.isnan(speed)
 
     def dominates(i, j):
-        a, b = (s[i], -depth[i], spread[i]), (s[j], -depth[j], spread[j])
-        pairs = list(zip(a, b, strict=True))
+        if reached[i] != reached[j]:
+            return bool(reached[i])  # reaching the level beats never reaching it
+        a, b = (speed[i], -depth[i], spread[i]), (speed[j], -depth[j], spread[j])
+        pairs = [(x, y) for x, y in zip(a, b, strict=True) if not (np.isnan(x) and np.isnan(y))]
         return all(x <= y for x, y in pairs) and any(x < y for x, y in pairs)
 
     for j in range(40):
         # layer 1 iff nobody dominates j; layer L > 1 iff a design of layer L - 1 does
         doms = [layers[i] for i in range(40) if dominates(i, j)]
         assert layers[j] == (1 if not doms else max(doms) + 1)
+
+
+def test_designs_that_never_reach_half_are_never_on_the_front():
+    """A hand-made case: B and D never reach 50 % absorbed; B is the most reliable design
+    (smallest spread), which used to put it on the Pareto front beside A.  By hand: A
+    dominates C (faster, deeper, more reliable); B and D never reach the level, so they
+    come after A and C; B dominates D (deeper, more reliable)."""
+    #                     A     B       C     D
+    speed = np.array([10.0, np.nan, 20.0, np.nan])
+    depth = np.array([0.60, 0.30, 0.50, 0.20])
+    spread = np.array([0.05, 0.01, 0.10, 0.02])
+    assert pareto_layers(speed, depth, spread).tolist() == [1, 3, 2, 4]
+    # the ranked table follows the layers; the Pareto chart circles layer 1 only
+    ds = xr.Dataset(
+        {
+            "done": ("k", np.ones(4, bool)),
+            "passage": (("k", "level"), np.stack([speed, speed], axis=1)),
+            "passage_se": (("k", "level"), np.zeros((4, 2))),
+            "passage_reach": (("k", "level"), np.ones((4, 2))),
+            "absorbed": (("k", "horizon"), np.zeros((4, 1))),
+            "absorbed_se": (("k", "horizon"), np.zeros((4, 1))),
+            "depth": ("k", depth),
+            "spread": ("k", spread * 0.5),
+            **{name: ("k", np.zeros(4)) for name in (
+                "depth_se", "long_time_mean", "long_time_se", "equipartition",
+                "equipartition_z", "verdict", "spread_se", "excursion", "excursion_se",
+                "lambda1", "lambda1_se", "rqa_recurrence_rate", "rqa_determinism",
+                "rqa_determinism_se", "max_relative_energy_error")},
+        },  # fmt: skip
+        coords={"k": ["A", "B", "C", "D"], "level": [0.5, 0.8], "horizon": [10]},
+        attrs={"energy": 0.5},
+    )
+    ranked = rank(ds)
+    assert [r["k"] for r in ranked] == ["A", "C", "B", "D"]
+    assert [r["layer"] for r in ranked] == [1, 2, 3, 4]
 
 
 # --------------------------------------------------------------------------- the explorer

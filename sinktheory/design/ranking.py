@@ -3,26 +3,34 @@
 Three objectives per design (all from the ``design`` sweep's results):
 
 * **speed** -- the first-passage time (periods) of <E> below 50 % of E0 (``passage`` at
-  level 0.5); a design that never gets there is infinitely slow;
+  level 0.5);
 * **depth** -- the long-time fraction of E0 absorbed, 1 - <E>_long / E0 (``depth``);
 * **reliability** -- the run-to-run spread of the long-time means relative to E0
   (``spread / energy``); smaller is more reliable.
 
-A design dominates another if it is no worse in all three and better in one.  The
-Pareto layers are found by repeatedly peeling off the non-dominated designs (layer 1 is the
-Pareto front).  The ranked table orders designs by layer, then by depth (deepest first),
-then by speed; the first rows are the recommended designs.
+A design that never gets <E> below 50 % of E0 within the run has no first-passage time:
+it counts as the slowest of all, *whatever* its depth and spread -- every design that
+reaches 50 % dominates it (constrained domination: reaching the level is a feasibility
+condition, not one more coordinate a design can trade against reliability; a design that
+absorbs little is also very "reliable", and would otherwise sit on the front for that
+alone).  Among themselves, designs that reach the level, and designs that do not, are
+compared as usual: one dominates another if it is no worse in all three objectives (two
+for those that never reach it) and better in one.  The Pareto layers are found by
+repeatedly peeling off the non-dominated designs (layer 1 is the Pareto front), so every
+design that never reaches 50 % is in a deeper layer than every design that does.  The
+ranked table orders designs by layer, then by depth (deepest first), then by speed; the
+first rows are the recommended designs.
 
 Examples
 --------
 >>> import numpy as np
->>> speed = np.array([10.0, 20.0, 5.0, np.inf])
+>>> speed = np.array([10.0, 20.0, 5.0, np.nan])
 >>> depth = np.array([0.6, 0.7, 0.5, 0.1])
->>> spread = np.array([0.02, 0.02, 0.03, 0.01])
+>>> spread = np.array([0.02, 0.02, 0.03, 0.01])   # the last: the most reliable, never 50 %
 >>> pareto_layers(speed, depth, spread).tolist()
-[1, 1, 1, 1]
->>> pareto_layers(speed, depth, np.array([0.02, 0.02, 0.03, 0.04])).tolist()
 [1, 1, 1, 2]
+>>> pareto_layers(speed, np.array([0.6, 0.5, 0.5, 0.1]), spread).tolist()  # 0 beats 1
+[1, 2, 1, 3]
 """
 
 from __future__ import annotations
@@ -48,23 +56,28 @@ COLUMNS = (
 def pareto_layers(speed, depth, spread) -> np.ndarray:
     """Pareto layer (1 = front) of each design: minimise speed and spread, maximise depth.
 
-    NaN counts as the worst value of its objective.
+    A non-finite speed (never reached) is infeasible: dominated by every finite one (see
+    the module docstring).  A non-finite depth or spread counts as the worst value of its
+    objective.
     """
-    s = np.where(np.isfinite(speed), speed, np.inf).astype(float)
+    reached = np.isfinite(np.asarray(speed, dtype=float))
+    s = np.where(reached, speed, np.inf).astype(float)
     d = np.where(np.isfinite(depth), depth, -np.inf).astype(float)
     r = np.where(np.isfinite(spread), spread, np.inf).astype(float)
     costs = np.stack([s, -d, r], axis=1)  # all minimised
     layer = np.zeros(len(s), dtype=int)
-    left = np.arange(len(s))
     current = 1
-    while left.size:
-        c = costs[left]
-        no_worse = (c[:, None, :] <= c[None, :, :]).all(axis=2)  # [i, j]: i no worse than j
-        better = (c[:, None, :] < c[None, :, :]).any(axis=2)
-        dominated = (no_worse & better).any(axis=0)
-        layer[left[~dominated]] = current
-        left = left[dominated]
-        current += 1
+    # the designs that reach the level first, then those that never do, below all of them
+    for group in (np.flatnonzero(reached), np.flatnonzero(~reached)):
+        left = group
+        while left.size:
+            c = costs[left]
+            no_worse = (c[:, None, :] <= c[None, :, :]).all(axis=2)  # [i, j]: i no worse than j
+            better = (c[:, None, :] < c[None, :, :]).any(axis=2)
+            dominated = (no_worse & better).any(axis=0)
+            layer[left[~dominated]] = current
+            left = left[dominated]
+            current += 1
     return layer
 
 

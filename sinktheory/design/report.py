@@ -127,7 +127,9 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
         lines += [
             "Ranking: Pareto layers of (speed = t50, depth, reliability = spread / E0), "
             "then depth (deepest first), then speed.  Layer 1 is the Pareto front: no other "
-            "design is at least as fast, as deep and as reliable and better in one.",
+            "design is at least as fast, as deep and as reliable and better in one.  A "
+            "design that never reaches 50 % absorbed has no t50 and counts as slower than "
+            "every design that does: it comes after all of them, however reliable.",
             "",
         ]
         h = [int(x) for x in ds.horizon.values]

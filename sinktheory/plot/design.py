@@ -110,7 +110,8 @@ def pareto_chart(ranked: list, energy_label: str = "$E_0$"):
     circled and joined, error bars the standard errors.
 
     ``ranked`` is :func:`sinktheory.design.ranking.rank` of the sweep.  Designs that never
-    reach 50 % absorbed are drawn at the right edge with an open marker.
+    reach 50 % absorbed are drawn at the right edge with an open marker; they rank after
+    every design that does, so they are on the front only if no design reaches 50 %.
     """
     from matplotlib.figure import Figure
 
@@ -147,7 +148,7 @@ def pareto_chart(ranked: list, energy_label: str = "$E_0$"):
             edgecolors="0.3",
             s=30,
             zorder=2,
-            label="never 50 % absorbed",
+            label="never 50 % absorbed (ranked last)",
         )
     if reached.any():
         fig.colorbar(sc, ax=ax, label=f"run-to-run spread / {energy_label}")
