@@ -4,8 +4,8 @@ the most energy, fastest, most reliably.
 A design is a point (shape, alpha, beta, n, k, m, E0); the explorer runs an ensemble at
 every point of a grid on the sweep layer (:mod:`sinktheory.sweep`, kind ``design``:
 local processes or Dask, resumable, Zarr) and measures it (:mod:`.measures`); the
-designs are then ranked (:mod:`.ranking`), charted (:mod:`sinktheory.plot.design`, matplotlib imported
-there only) and reported (:mod:`.report`).
+designs are then ranked (:mod:`.ranking`), charted (:mod:`sinktheory.plot.design`,
+matplotlib imported there only) and reported (:mod:`.report`).
 
 * :func:`~sinktheory.design.explorer.explore` -- run (or resume) a design sweep;
 * :func:`~sinktheory.design.measures.design_measures` -- the measures of one ensemble;

@@ -5,8 +5,10 @@
 * ``report.md`` -- what was swept, the rules behind every number, the recommended designs
   with their numbers and standard errors, the equipartition verdicts, the cost;
 * ``designs.csv`` -- every computed design, ranked, with all its measures;
-* ``pareto.png`` -- speed against depth against reliability (:func:`sinktheory.plot.design.pareto_chart`);
-* ``heatmap_<y>_<x>.png`` -- one per pair of swept parameters (:func:`sinktheory.plot.design.heatmap`);
+* ``pareto.png`` -- speed against depth against reliability
+  (:func:`sinktheory.plot.design.pareto_chart`);
+* ``heatmap_<y>_<x>.png`` -- one per pair of swept parameters
+  (:func:`sinktheory.plot.design.heatmap`);
 * ``energy.png`` -- <E>(jT) of the recommended designs.
 
 Examples
