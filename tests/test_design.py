@@ -138,6 +138,10 @@ def test_designs_that_never_reach_half_are_never_on_the_front():
     depth = np.array([0.60, 0.30, 0.50, 0.20])
     spread = np.array([0.05, 0.01, 0.10, 0.02])
     assert pareto_layers(speed, depth, spread).tolist() == [1, 3, 2, 4]
+    zeros = ("depth_se", "long_time_mean", "long_time_se", "equipartition", "equipartition_z",
+             "verdict", "spread_se", "excursion", "excursion_se", "lambda1", "lambda1_se",
+             "rqa_recurrence_rate", "rqa_determinism", "rqa_determinism_se",
+             "max_relative_energy_error")  # fmt: skip
     # the ranked table follows the layers; the Pareto chart circles layer 1 only
     ds = xr.Dataset(
         {
@@ -149,12 +153,8 @@ def test_designs_that_never_reach_half_are_never_on_the_front():
             "absorbed_se": (("k", "horizon"), np.zeros((4, 1))),
             "depth": ("k", depth),
             "spread": ("k", spread * 0.5),
-            **{name: ("k", np.zeros(4)) for name in (
-                "depth_se", "long_time_mean", "long_time_se", "equipartition",
-                "equipartition_z", "verdict", "spread_se", "excursion", "excursion_se",
-                "lambda1", "lambda1_se", "rqa_recurrence_rate", "rqa_determinism",
-                "rqa_determinism_se", "max_relative_energy_error")},
-        },  # fmt: skip
+            **{name: ("k", np.zeros(4)) for name in zeros},
+        },
         coords={"k": ["A", "B", "C", "D"], "level": [0.5, 0.8], "horizon": [10]},
         attrs={"energy": 0.5},
     )
@@ -303,94 +303,3 @@ def test_negative_lists_and_ranges_are_values():
     )
     p = params_of(args)
     assert p["beta"][0] == -0.5 and len(p["beta"]) == 11 and p["particles"] == [-1, 3]
-
-
-# --------------------------------------------------------------------------- inelastic
-def _damped_reference(sink, settings, damping, periods):
-    """solve_ivp (DOP853, rtol 1e-12) of the same damped equations, with W and the
-    integral of E_c appended: an independent integrator of the same model."""
-    from scipy.integrate import solve_ivp
-
-    from sinktheory.simulate import first_order_rhs, random_positions, start_state
-
-    k, mu, w = sink.particles, sink.mu, sink.well
-    f = first_order_rhs(sink)
-
-    def rhs(t, z):
-        dz = np.concatenate((f(t, z[:-2]), [0.0, 0.0]))
-        X, Xd = z[0], z[1]
-        u, y = z[2 : 2 + k], z[2 + k : 2 + 2 * k]
-        ud, yd = z[2 + 2 * k : 2 + 3 * k], z[2 + 3 * k : 2 + 4 * k]
-        c = damping * 2 * w.n * np.asarray(w.potential(u - X, y), float) / w.gamma
-        rel = ud - Xd
-        dz[2 + 2 * k : 2 + 3 * k] -= c * rel / mu
-        dz[1] += np.sum(c * rel)
-        dz[2 + 3 * k : 2 + 4 * k] -= c * yd / mu
-        dz[-2] = np.sum(c * (rel**2 + yd**2))
-        dz[-1] = 0.5 * (Xd**2 + X**2)
-        return dz
-
-    z0 = start_state(sink, settings.energy, random_positions(settings, k))[0]
-    T = 2 * np.pi * periods
-    sol = solve_ivp(rhs, (0, T), np.concatenate((z0, [0.0, 0.0])), "DOP853",
-                    rtol=1e-12, atol=1e-14)  # fmt: skip
-    z = sol.y[:, -1]
-    return 0.5 * (z[1] ** 2 + z[0] ** 2), z[-2], z[-1]
-
-
-def test_inelastic_zero_damping_is_bitwise_conservative():
-    from sinktheory.design.inelastic import simulate_inelastic
-
-    sink = Sink(Well(0.5, 0.3, 4), particles=2, mass=0.2)
-    settings = RunSettings(runs=3, periods=2, seed=4)
-    on = simulate_inelastic(sink, settings, damping=0.0, dt=0.02)
-    off = simulate_inelastic(sink, settings, dissipative_stage=False, dt=0.02)
-    assert on.container_energy.tobytes() == off.container_energy.tobytes()
-    assert on.total_energy.tobytes() == off.total_energy.tobytes()
-    assert not on.dissipated.any() and not on.damping_ratio.any()
-    # the conservative stage is the simulator's scheme: same numbers up to round-off
-    # (two periods: chaos amplifies round-off by far less than 1e3 by then)
-    ref = simulate(sink, settings, method=on.method, dt=on.dt, progress=False)
-    np.testing.assert_allclose(off.container_energy, ref.container_energy, rtol=0, atol=1e-10)
-
-
-def test_inelastic_against_solve_ivp_second_order_and_audited():
-    from sinktheory.design.inelastic import simulate_inelastic
-
-    sink = Sink(Well(0.5, 0.3, 4), particles=1, mass=0.2)
-    settings = RunSettings(runs=1, periods=1, seed=2)
-    ec_ref, w_ref, int_ref = _damped_reference(sink, settings, 2.0, 1)
-    assert w_ref > 1e-3  # the contact dissipates noticeably over one period
-    errors = []
-    for steps in (200, 400):
-        res = simulate_inelastic(sink, settings, damping=2.0, dt=2 * np.pi / steps)
-        assert res.max_audit_error < 1e-8  # H + W = H0 up to the conservative stage
-        assert np.all(np.diff(res.dissipated, axis=1) >= 0)
-        dw, dec = res.dissipated[0, -1] - w_ref, res.container_energy[0, -1] - ec_ref
-        errors.append(abs(dw) + abs(dec))
-    assert errors[1] < 1e-4
-    assert errors[0] / errors[1] > 3.0  # second order: 4x per halving (3 allows noise)
-    zeta_ref = w_ref / (2 * int_ref)
-    assert res.damping_ratio[0] == pytest.approx(zeta_ref, rel=1e-3)
-
-
-def test_dissipative_stage_removes_exactly_the_work_it_counts():
-    """One D stage, several particles (they share the container): the engine's energy
-    falls by exactly the work W counted (positions frozen), momentum in x is kept."""
-    from sinktheory.design.inelastic import dissipate
-    from sinktheory.engine.cache import load
-    from sinktheory.simulate import engine_name, engine_params
-
-    sink = Sink(Well(0.5, 0.3, 4), particles=2, mass=0.2)
-    engine, params = load(engine_name(sink)), engine_params(sink)
-    rng = np.random.default_rng(0)
-    q, vel = rng.uniform(-0.3, 0.3, (5, 6)), rng.uniform(-1, 1, (5, 6))
-    after = vel.copy()
-    work = dissipate(sink, q, after, 2.0, 0.05)
-    h0, h1 = engine.block_energies(q, vel, params)[0], engine.block_energies(q, after, params)[0]
-    np.testing.assert_allclose(h0 - h1, work, rtol=1e-12, atol=1e-15)
-    assert np.all(work > 0)
-    mu = sink.mu
-    np.testing.assert_allclose(
-        vel[0] + mu * vel[1:3].sum(0), after[0] + mu * after[1:3].sum(0), rtol=1e-14
-    )

@@ -13,7 +13,7 @@ matplotlib imported there only) and reported (:mod:`.report`).
 * :func:`~sinktheory.design.report.write_report` -- charts, table and ``report.md``;
 * :func:`~sinktheory.design.cost.estimate` -- the time a grid will take (calibrated);
 * :func:`~sinktheory.design.inelastic.simulate_inelastic` -- inelastic wall contact
-  (reference integrator, audited dissipation, equivalent damping ratio).
+  (compiled integrator, audited dissipation, equivalent damping ratio).
 
 Modules are loaded on first use, so importing the command line stays light.
 """

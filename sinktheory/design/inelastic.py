@@ -1,4 +1,4 @@
-"""Inelastic particle-wall contact: a reference integrator with an audited dissipation.
+"""Inelastic particle-wall contact: a compiled integrator with an audited dissipation.
 
 The paper notes that real absorption is enhanced by inelastic collisions.  Here the
 contact of particle j with the soft wall dissipates through a viscous force on its
@@ -16,28 +16,31 @@ Integration (Strang splitting of the conservative and the dissipative vector fie
 
     step(h) = D(h/2) o S(h) o D(h/2)
 
-S is one step of the symplectic splitting scheme :mod:`sinktheory.integrators` uses for
-the conservative system (separable coordinates: the container X and the particles'
-absolute u_j = X + x_j, y_j).  D is the dissipative field with the positions frozen:
-it is linear in the velocities and, particle by particle, exactly solvable -- the
-relative velocity w = udot_j - Xdot decays as exp(-c (1 + mu)/mu t) with the total
-momentum mu udot_j + Xdot kept, and ydot_j as exp(-c t/mu).  D(tau) is the symmetric
-product of these exact pair flows (particles 1..k over tau/2, then k..1 over tau/2), so
-the composed step is symmetric and of second order.  With c0 constant this is the
-conformal-symplectic Strang splitting; with the contact weight s(q) it is a splitting
-into exactly integrated sub-flows, justified by that, by its order (tested) and by the
-audit below.
+S is one step of the symplectic splitting scheme the simulator uses for the conservative
+system (:func:`sinktheory.simulate.simulate`: same scheme, same step for a tolerance, the
+same generated force kernel of :mod:`sinktheory.engine`, the same arithmetic), in the
+separable coordinates (the container X and the particles' absolute u_j = X + x_j, y_j).
+D is the dissipative field with the positions frozen: it is linear in the velocities
+and, particle by particle, exactly solvable -- the relative velocity w = udot_j - Xdot
+decays as exp(-c (1 + mu)/mu t) with the total momentum mu udot_j + Xdot kept, and
+ydot_j as exp(-c t/mu).  D(tau) is the symmetric product of these exact pair flows
+(particles 1..k over tau/2, then k..1 over tau/2), so the composed step is symmetric and
+of second order.  With c0 constant this is the conformal-symplectic Strang splitting;
+with the contact weight s(q) it is a splitting into exactly integrated sub-flows,
+justified by that, by its order (tested) and by the audit below.  The weight is
+V(x_j, y_j) of the generated energy kernel (evaluated with zero velocities, so it is the
+potential term exactly).
 
 Audit: each exact pair flow removes exactly the kinetic energy it takes out (positions
 are frozen), so the dissipated work W is accumulated without approximation and
 
     H(t) + W(t) = H(0)
 
-holds to the conservative integrator's energy error; every run is checked at every
-period end, and a run over ``energy_bound`` raises
-:class:`~sinktheory.errors.EnergyDriftError`.  With c0 = 0 every velocity update adds
-an exact zero, so the results are bitwise those of the same integrator without the
-dissipative stage.
+holds to the conservative stage's energy error; every run is checked at every period end,
+and a run over ``energy_bound`` raises :class:`~sinktheory.errors.EnergyDriftError`
+naming the run and the time.  With c0 = 0 every velocity update adds an exact zero, so
+the results are bitwise those of :func:`sinktheory.simulate.simulate` with the same seed,
+scheme and step (tested).
 
 Equivalent damping ratio of the container: the zeta of a linear dashpot on the container
 (omega = 1) that would dissipate the same work over the same time,
@@ -45,11 +48,19 @@ Equivalent damping ratio of the container: the zeta of a linear dashpot on the c
     zeta_eq = W(t) / (2 omega  integral_0^t E_c dt)
 
 (for a lightly damped oscillator <Xdot^2> = E_c, whose dashpot power is 2 zeta omega
-Xdot^2).
+Xdot^2); the integral is the trapezoid rule over the steps.
 
-This is a NumPy reference (a Python loop over steps, vectorised over runs): fine for
-tests and short studies, too slow for 1500-period design sweeps; the engine change that
-would make it fast is described in the README's "Design explorer" section.
+Implementation: one numba function (``error_model="numpy"``, single-threaded, vectorised
+over runs: state arrays (coordinate, run), runs innermost) that calls the engine's
+generated kernels of the system (``accelerations``, ``energies``, passed in as compiled
+functions).  It is compiled once per process and engine (a few seconds; numba cannot
+cache a function whose arguments are other compiled functions).  Each run's arithmetic
+is independent of the other runs, so a seed gives the same numbers whatever the number
+of runs around it.  :mod:`sinktheory.design.inelastic_reference` is the NumPy version of
+the same splitting: the independent check of this kernel in the tests and the baseline
+of ``benchmarks/bench_inelastic.py``.
+
+Units: the paper's (container mass 1, spring 1, period T = 2 pi).
 
 Examples
 --------
@@ -59,12 +70,17 @@ Examples
 ...                          dt=0.02)
 >>> bool(res.max_audit_error < 1e-8), bool((res.dissipated[:, -1] > 0).all())
 (True, True)
+>>> zeta, se = res.equivalent_damping()
+>>> bool(zeta > 0), bool(se >= 0)
+(True, True)
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
+import numba
 import numpy as np
 
 from .. import validation as v
@@ -72,22 +88,18 @@ from ..engine.cache import load
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from ..integrators import get_scheme
 from ..model import RunSettings, Sink
+from ..progress import ProgressBar
 from ..simulate import (
     ENERGY_BOUND,
-    default_step,
     engine_name,
     engine_params,
     random_positions,
     split_values,
     start_state,
 )
-from ..stepsize import aligned_step
+from ..stepsize import check_tol, resolve_step
 
-#: Default scheme of the conservative stage: high order keeps the audit tight (it measures
-#: the conservative stage's energy error); the splitting itself is of order 2.
-INELASTIC_SCHEME = "blanes-moan6"
-#: Default energy tolerance of the conservative stage's step.
-INELASTIC_TOL = 1e-6
+_RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
 
 
 @dataclass(frozen=True)
@@ -109,7 +121,8 @@ class InelasticResult:
     max_audit_error : float
     damping_ratio : ndarray (R,)
         zeta_eq of each run over the whole run (0 when nothing was dissipated).
-    damping, dt, steps_per_period, method
+    damping, dt, steps_per_period, method, tol
+        What was integrated with (tol None when dt was given).
     """
 
     container_energy: np.ndarray
@@ -123,42 +136,223 @@ class InelasticResult:
     dt: float
     steps_per_period: int
     method: str
+    tol: float | None = None
+
+    def equivalent_damping(self) -> tuple[float, float]:
+        """zeta_eq of the container: mean over runs and its standard error (ddof = 1;
+        NaN for one run)."""
+        z = self.damping_ratio
+        se = float(z.std(ddof=1) / math.sqrt(z.size)) if z.size > 1 else math.nan
+        return float(z.mean()), se
 
 
-def contact_weight(sink: Sink, q: np.ndarray) -> np.ndarray:
-    """s_j = 2n V(x_j, y_j)/gamma of every particle, (k, R), from engine coordinates q."""
-    k = sink.particles
-    x = q[1 : 1 + k] - q[0]
-    y = q[1 + k : 1 + 2 * k]
+@dataclass(frozen=True)
+class Setup:
+    """Everything both integrators of the splitting start from (see :func:`setup`)."""
+
+    q: np.ndarray
+    vel: np.ndarray
+    h0: np.ndarray
+    engine: object
+    params: np.ndarray
+    scale: float
+    damping: float
+    bound: float
+    method: str
+    dt: float
+    steps: int
+    tol: float | None
+
+
+def setup(
+    sink: Sink,
+    settings: RunSettings | None,
+    damping: float,
+    method: str | None,
+    dt: float | None,
+    tol: float | None,
+    energy_bound: float | None,
+) -> Setup:
+    """Check the input and build the start state, the step and the audit bound exactly
+    as :func:`sinktheory.simulate.simulate` does (ParameterError for bad input)."""
+    settings = RunSettings() if settings is None else settings
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    if not isinstance(settings, RunSettings):
+        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
+    damping = v.nonnegative("damping", damping)
+    if method is not None:
+        method = get_scheme(method).name
+    if tol is not None:
+        tol = check_tol(tol)
+    if energy_bound is None:
+        energy_bound = max(ENERGY_BOUND, 100.0 * (tol or 1e-8))
+    bound = v.positive("energy_bound", energy_bound)
+    settings.check(sink)
+    values = start_state(sink, settings.energy, random_positions(settings, sink.particles))
+    q, vel = split_values(values)
+    engine = load(engine_name(sink))
+    params = engine_params(sink)
+    h0 = engine.block_energies(q, vel, params)[0]
+    sink.well.check_energy(float(np.max(h0)))
+    method, dt, steps, tol = resolve_step(sink, float(np.max(h0)), method=method, dt=dt, tol=tol)
     w = sink.well
-    return 2.0 * w.n * np.asarray(w.potential(x, y), dtype=float) / w.gamma
+    return Setup(q, vel, h0, engine, params, 2.0 * w.n / w.gamma, damping, bound, method, dt,
+                 steps, tol)  # fmt: skip
 
 
-def dissipate(sink: Sink, q, vel, damping: float, tau: float) -> np.ndarray:
-    """Apply D(tau) to the velocities ``vel`` (1 + 2k, R) in place; return the work (R,).
+def check_audit(total, work, h0, bound: float, period: int, dt: float, damping: float):
+    """Raise NonFiniteStateError / EnergyDriftError for the worst run at ``period``."""
+    if not np.all(np.isfinite(total)):
+        bad = int(np.flatnonzero(~np.isfinite(total))[0])
+        raise NonFiniteStateError(
+            f"run {bad}: non-finite state at t = {period} T (dt = {dt:.4g}, damping = "
+            f"{damping:g}); the step is too large for this stiffness"
+        )
+    err = np.abs(total + work - h0) / h0
+    if err.max() > bound:
+        r = int(np.argmax(err))
+        raise EnergyDriftError(
+            f"run {r}: |H + W - H0|/H0 = {err[r]:.3g} > {bound:.3g} at t = {period} T "
+            f"(dt = {dt:.4g}, damping = {damping:g}); use a smaller dt or tolerance"
+        )
 
-    Exact pair flows, particles 1..k over tau/2 then k..1 over tau/2 (see the module
-    docstring).  With ``damping`` = 0 every update adds an exact zero.
+
+def result(s: Setup, e_c, h_t, w_t, integral) -> InelasticResult:
+    """The :class:`InelasticResult` of the recorded arrays (``integral``: of E_c dt)."""
+    h0 = s.h0
+    audit = np.max(np.abs(h_t + w_t - h0[:, None]) / h0[:, None], axis=1)
+    work = w_t[:, -1]
+    positive = integral > 0
+    zeta = np.where(positive, work / (2.0 * np.where(positive, integral, 1.0)), 0.0)
+    return InelasticResult(
+        container_energy=e_c,
+        total_energy=h_t,
+        dissipated=w_t,
+        initial_energy=h0,
+        audit_errors=audit,
+        max_audit_error=float(audit.max()),
+        damping_ratio=zeta,
+        damping=s.damping,
+        dt=s.dt,
+        steps_per_period=s.steps,
+        method=s.method,
+        tol=s.tol,
+    )
+
+
+# --------------------------------------------------------------------------- compiled kernel
+@numba.njit(error_model="numpy")
+def _weights(energies, q, zero, P, scale, damping, c, total, shared, members):
+    """c[j, r] = damping * s_j: the contact coefficients at positions q (zero velocities
+    make the members' energies the potential terms exactly)."""
+    energies(q, zero, P, total, shared, members)
+    K, R = members.shape
+    for j in range(K):
+        for r in range(R):
+            c[j, r] = damping * (scale * members[j, r])
+
+
+@numba.njit(error_model="numpy")
+def _dissipate(v, c, mu, half, work):
+    """D(2 half) on the velocities v (D, R) in place; the work of each run into ``work``
+    (set, not added).  Exact pair flows, particles 1..K over ``half`` then K..1."""
+    K, R = c.shape
+    rel = 1.0 + mu
+    reduced = mu / rel
+    for r in range(R):
+        work[r] = 0.0
+    for jj in range(2 * K):
+        j = jj if jj < K else 2 * K - 1 - jj
+        for r in range(R):
+            # x: relative velocity decays, total momentum mu udot + Xdot kept
+            w = v[1 + j, r] - v[0, r]
+            shrink = -math.expm1(-c[j, r] * rel / mu * half)  # 1 - e, exactly 0 for c = 0
+            dw = -shrink * w
+            v[1 + j, r] += dw / rel
+            v[0, r] -= mu * dw / rel
+            w_new = w + dw
+            # y: the container does not move in y
+            yd = v[1 + K + j, r]
+            dy = math.expm1(-c[j, r] / mu * half) * yd  # (e - 1) ydot, exactly 0 for c = 0
+            v[1 + K + j, r] = yd + dy
+            work[r] += 0.5 * reduced * (w * w - w_new * w_new) + 0.5 * mu * (
+                yd * yd - (yd + dy) ** 2
+            )
+
+
+@numba.njit(error_model="numpy")
+def _advance(accelerations, energies, q, v, P, scheme, dissipation, j0, j1, audit, rec):
+    """Advance every run over periods j0+1..j1 in place; record at each period end.
+
+    scheme = (a, b, dt, steps); dissipation = (on, damping, scale, mu); audit = (h0,
+    bound, work, integral, ec_prev) (the last three carried between calls);
+    rec = (e_c, h_t, w_t) indexed [run, period].  Returns (status, period, run) of the
+    first period with a failing run (the worst one), or (0, j1, -1).
     """
-    k, mu = sink.particles, sink.mu
-    c = damping * contact_weight(sink, q)  # (k, R)
-    work = np.zeros(vel.shape[1])
-    half = 0.5 * tau
-    for j in list(range(k)) + list(range(k - 1, -1, -1)):
-        # x: relative velocity decays, total momentum mu udot + Xdot kept
-        w = vel[1 + j] - vel[0]
-        shrink = -np.expm1(-c[j] * (1.0 + mu) / mu * half)  # 1 - e, exactly 0 for c = 0
-        dw = -shrink * w
-        vel[1 + j] += dw / (1.0 + mu)
-        vel[0] -= mu * dw / (1.0 + mu)
-        w_new = w + dw
-        # y: the container does not move in y
-        yd = vel[1 + k + j].copy()  # (a view would see the update below)
-        dy = np.expm1(-c[j] / mu * half) * yd  # (e - 1) ydot, exactly 0 for c = 0
-        vel[1 + k + j] = yd + dy
-        reduced = mu / (1.0 + mu)
-        work += 0.5 * reduced * (w * w - w_new * w_new) + 0.5 * mu * (yd * yd - (yd + dy) ** 2)
-    return work
+    ah, bh, dt, steps = scheme
+    on, damping, scale, mu = dissipation
+    h0, bound, work, integral, ec_prev = audit
+    e_c, h_t, w_t = rec
+    D, R = q.shape
+    K = (D - 1) // 2
+    S = ah.shape[0]
+    acc = np.empty((D, R))
+    zero = np.zeros((D, R))
+    c = np.empty((K, R))
+    total = np.empty(R)
+    shared = np.empty(R)
+    members = np.empty((K, R))
+    local = np.empty(R)
+    half = 0.5 * (0.5 * dt)  # D(dt/2): pair flows over dt/4 each way
+    accelerations(q, acc, P)
+    if on:
+        _weights(energies, q, zero, P, scale, damping, c, total, shared, members)
+    for j in range(j0 + 1, j1 + 1):
+        for _ in range(steps):
+            if on:
+                _dissipate(v, c, mu, half, local)
+                for r in range(R):
+                    work[r] += local[r]
+            for stage in range(S):
+                ck = bh[stage] * dt
+                cd = ah[stage] * dt
+                for i in range(D):
+                    for r in range(R):
+                        v[i, r] += ck * acc[i, r]
+                        q[i, r] += cd * v[i, r]
+                accelerations(q, acc, P)
+            ck = bh[S] * dt
+            for i in range(D):
+                for r in range(R):
+                    v[i, r] += ck * acc[i, r]
+            if on:
+                _weights(energies, q, zero, P, scale, damping, c, total, shared, members)
+                _dissipate(v, c, mu, half, local)
+                for r in range(R):
+                    work[r] += local[r]
+            for r in range(R):
+                ec = 0.5 * (v[0, r] * v[0, r] + q[0, r] * q[0, r])
+                integral[r] += 0.5 * dt * (ec + ec_prev[r])
+                ec_prev[r] = ec
+        energies(q, v, P, total, shared, members)
+        worst = -1
+        status = _RUNNING
+        largest = -1.0
+        for r in range(R):
+            e_c[r, j] = shared[r]
+            h_t[r, j] = total[r]
+            w_t[r, j] = work[r]
+            if not math.isfinite(total[r]):
+                if status != _NONFINITE:
+                    status, worst = _NONFINITE, r
+            elif status != _NONFINITE:
+                err = abs(total[r] + work[r] - h0[r]) / h0[r]
+                if err > bound and err > largest:
+                    status, worst, largest = _DRIFT, r, err
+        if status != _RUNNING:
+            return status, j, worst
+    return _RUNNING, j1, -1
 
 
 def simulate_inelastic(
@@ -166,10 +360,12 @@ def simulate_inelastic(
     settings: RunSettings | None = None,
     *,
     damping: float = 0.0,
-    method: str = INELASTIC_SCHEME,
+    method: str | None = None,
     dt: float | None = None,
+    tol: float | None = None,
     dissipative_stage: bool = True,
-    energy_bound: float = ENERGY_BOUND,
+    energy_bound: float | None = None,
+    progress: bool | None = False,
 ) -> InelasticResult:
     """Integrate the ensemble with inelastic wall contact (see the module docstring).
 
@@ -179,87 +375,59 @@ def simulate_inelastic(
         As for :func:`sinktheory.simulate.simulate` (same start states for a seed).
     damping : float >= 0
         c0, the contact damping coefficient (force per relative velocity at the wall).
-    method : str
-        Scheme of the conservative stage S (the splitting is of order 2 whatever S is).
-    dt : float, optional
-        Step (default :func:`sinktheory.simulate.default_step` of ``method`` for an energy
-        error of :data:`INELASTIC_TOL`), aligned so a period is a whole number of steps.
+    method, dt, tol
+        The conservative stage S, as for :func:`sinktheory.simulate.simulate`: the
+        scheme and step for the energy tolerance ``tol`` (default 1e-8), or ``dt`` (and
+        ``method``) directly.  The splitting is of order 2 whatever S is.
     dissipative_stage : bool
-        False leaves D out altogether (the conservative reference of the bitwise check).
-    energy_bound : float > 0
-        Largest ``|H + W - H0| / H0`` tolerated at a period end.
+        False leaves D out altogether (the conservative integrator itself).
+    energy_bound : float > 0, optional
+        Largest ``|H + W - H0| / H0`` tolerated at a period end (default as simulate:
+        the larger of 1e-6 and 100 tol).
+    progress : bool, optional
+        Progress bar on stderr (only on a terminal, after 2 s); default off.
 
     Returns
     -------
     InelasticResult
+
+    Raises
+    ------
+    ParameterError
+        Bad input (damping < 0, unknown method, dt <= 0, both dt and tol, ...).
+    EnergyDriftError, NonFiniteStateError
+        The audit failed: the message names the run and the period.
     """
+    s = setup(sink, settings, damping, method, dt, tol, energy_bound)
     settings = RunSettings() if settings is None else settings
-    if not isinstance(sink, Sink):
-        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-    damping = v.nonnegative("damping", damping)
-    bound = v.positive("energy_bound", energy_bound)
-    scheme = get_scheme(method)
-    settings.check(sink)
-    values = start_state(sink, settings.energy, random_positions(settings, sink.particles))
-    q, vel = split_values(values)
-    engine = load(engine_name(sink))
-    params = engine_params(sink)
-    h0 = engine.block_energies(q, vel, params)[0]
-    if dt is None:
-        dt, steps = default_step(sink, float(np.max(h0)), scheme.name, INELASTIC_TOL)
-    else:
-        dt, steps = aligned_step(v.positive("dt", dt))
-    a, b = scheme.arrays()
+    q, vel, h0 = s.q, s.vel, s.h0
     runs, periods = q.shape[1], settings.periods
     e_c = np.empty((runs, periods + 1))
     h_t = np.empty((runs, periods + 1))
     w_t = np.zeros((runs, periods + 1))
-    e_c[:, 0], h_t[:, 0] = 0.5 * (vel[0] ** 2 + q[0] ** 2), h0
-    work = np.zeros(runs)
-    integral = np.zeros(runs)  # trapezoid of E_c over the steps
-    acc = engine.block_accelerations(q, params)
-    ec_prev = 0.5 * (vel[0] ** 2 + q[0] ** 2)
-    for j in range(1, periods + 1):
-        for _ in range(steps):
-            if dissipative_stage:
-                work += dissipate(sink, q, vel, damping, 0.5 * dt)
-            for i in range(len(a)):
-                vel += (b[i] * dt) * acc
-                q += (a[i] * dt) * vel
-                acc = engine.block_accelerations(q, params)
-            vel += (b[-1] * dt) * acc
-            if dissipative_stage:
-                work += dissipate(sink, q, vel, damping, 0.5 * dt)
-            ec = 0.5 * (vel[0] ** 2 + q[0] ** 2)
-            integral += 0.5 * dt * (ec + ec_prev)
-            ec_prev = ec
-        total = engine.block_energies(q, vel, params)[0]
-        e_c[:, j], h_t[:, j], w_t[:, j] = ec_prev, total, work
-        if not np.all(np.isfinite(total)):
-            bad = int(np.flatnonzero(~np.isfinite(total))[0])
-            raise NonFiniteStateError(f"run {bad}: non-finite state at t = {j} T")
-        err = np.abs(total + work - h0) / h0
-        if err.max() > bound:
-            r = int(np.argmax(err))
-            raise EnergyDriftError(
-                f"run {r}: |H + W - H0|/H0 = {err[r]:.3g} > {bound:.3g} at t = {j} T "
-                f"(dt = {dt:.4g}, damping = {damping:g})"
-            )
-    audit = np.max(np.abs(h_t + w_t - h0[:, None]) / h0[:, None], axis=1)
-    zeta = np.where(integral > 0, work / (2.0 * np.where(integral > 0, integral, 1.0)), 0.0)
-    return InelasticResult(
-        container_energy=e_c,
-        total_energy=h_t,
-        dissipated=w_t,
-        initial_energy=h0,
-        audit_errors=audit,
-        max_audit_error=float(audit.max()),
-        damping_ratio=zeta,
-        damping=damping,
-        dt=dt,
-        steps_per_period=steps,
-        method=scheme.name,
-    )
+    total, shared, _ = s.engine.block_energies(q, vel, s.params)
+    e_c[:, 0], h_t[:, 0] = shared, total
+    work, integral = np.zeros(runs), np.zeros(runs)
+    ec_prev = 0.5 * (vel[0] * vel[0] + q[0] * q[0])
+    a, b = get_scheme(s.method).arrays()
+    scheme = (a, b, float(s.dt), int(s.steps))
+    dissipation = (bool(dissipative_stage), s.damping, s.scale, float(sink.mu))
+    audit = (h0, s.bound, work, integral, ec_prev)
+    chunk = max(1, math.ceil(periods / 100))
+    bar = ProgressBar(periods, enabled=bool(progress), label="inelastic ")
+    try:
+        for start in range(0, periods, chunk):
+            stop = min(periods, start + chunk)
+            status, j, r = _advance(
+                s.engine.accelerations, s.engine.energies, q, vel, s.params, scheme,
+                dissipation, start, stop, audit, (e_c, h_t, w_t),
+            )  # fmt: skip
+            if status != _RUNNING:
+                check_audit(h_t[:, j], w_t[:, j], h0, s.bound, j, s.dt, s.damping)
+            bar.update(stop - start)
+    finally:
+        bar.close()
+    return result(s, e_c, h_t, w_t, integral)
 
 
-__all__ = ["InelasticResult", "contact_weight", "dissipate", "simulate_inelastic"]
+__all__ = ["InelasticResult", "simulate_inelastic"]

@@ -1,0 +1,161 @@
+"""Inelastic wall contact: the compiled integrator against the simulator (zero damping,
+bitwise), the NumPy version of the same splitting (round-off), solve_ivp of the damped
+equations (second order), the exact work of the dissipative stage, the audit, the seed.
+
+Workloads are tiny (flat well, n = 4, a few runs x a few periods).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from sinktheory import RunSettings, Sink, Well
+from sinktheory.design.inelastic import _dissipate, simulate_inelastic
+from sinktheory.design.inelastic_reference import simulate_inelastic_reference
+from sinktheory.errors import EnergyDriftError, ParameterError
+from sinktheory.simulate import simulate
+
+SINK2 = Sink(Well(0.5, 0.3, 4), particles=2, mass=0.2)
+
+
+def test_zero_damping_is_bitwise_the_simulator():
+    """c0 = 0: the dissipative stage adds exact zeros, and the conservative stage is the
+    simulator's scheme and step with the same arithmetic: the numbers are simulate's."""
+    settings = RunSettings(runs=3, periods=3, seed=4)
+    on = simulate_inelastic(SINK2, settings, damping=0.0, tol=1e-6)
+    off = simulate_inelastic(SINK2, settings, dissipative_stage=False, tol=1e-6)
+    ref = simulate(SINK2, settings, tol=1e-6, progress=False)
+    assert (on.method, on.dt) == (ref.method, ref.dt)
+    assert on.container_energy.tobytes() == off.container_energy.tobytes()
+    assert on.total_energy.tobytes() == off.total_energy.tobytes()
+    assert on.container_energy.tobytes() == ref.container_energy.tobytes()
+    assert not on.dissipated.any() and not on.damping_ratio.any()
+    # the audit is then the simulator's energy error
+    assert on.max_audit_error == pytest.approx(ref.max_relative_energy_error, rel=1e-12)
+
+
+def test_compiled_equals_the_numpy_splitting():
+    """Same splitting written twice (numba with the generated energy kernel for the
+    contact weight; NumPy with the well's own potential): equal to round-off over three
+    periods (chaos amplifies round-off by well under 1e3 by then), for two particles."""
+    settings = RunSettings(runs=3, periods=3, seed=8)
+    fast = simulate_inelastic(SINK2, settings, damping=1.0, tol=1e-6)
+    slow = simulate_inelastic_reference(SINK2, settings, damping=1.0, tol=1e-6)
+    assert fast.dissipated[:, -1].min() > 1e-4  # something is dissipated
+    np.testing.assert_allclose(fast.container_energy, slow.container_energy, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(fast.dissipated, slow.dissipated, rtol=1e-10, atol=1e-15)
+    np.testing.assert_allclose(fast.damping_ratio, slow.damping_ratio, rtol=1e-10)
+    assert fast.max_audit_error == pytest.approx(slow.max_audit_error, rel=1e-3)
+
+
+def _damped_reference(sink, settings, damping, periods):
+    """solve_ivp (DOP853, rtol 1e-12) of the same damped equations, with W and the
+    integral of E_c appended: an independent integrator of the same model."""
+    from scipy.integrate import solve_ivp
+
+    from sinktheory.simulate import first_order_rhs, random_positions, start_state
+
+    k, mu, w = sink.particles, sink.mu, sink.well
+    f = first_order_rhs(sink)
+
+    def rhs(t, z):
+        dz = np.concatenate((f(t, z[:-2]), [0.0, 0.0]))
+        X, Xd = z[0], z[1]
+        u, y = z[2 : 2 + k], z[2 + k : 2 + 2 * k]
+        ud, yd = z[2 + 2 * k : 2 + 3 * k], z[2 + 3 * k : 2 + 4 * k]
+        c = damping * 2 * w.n * np.asarray(w.potential(u - X, y), float) / w.gamma
+        rel = ud - Xd
+        dz[2 + 2 * k : 2 + 3 * k] -= c * rel / mu
+        dz[1] += np.sum(c * rel)
+        dz[2 + 3 * k : 2 + 4 * k] -= c * yd / mu
+        dz[-2] = np.sum(c * (rel**2 + yd**2))
+        dz[-1] = 0.5 * (Xd**2 + X**2)
+        return dz
+
+    z0 = start_state(sink, settings.energy, random_positions(settings, k))[0]
+    T = 2 * np.pi * periods
+    sol = solve_ivp(rhs, (0, T), np.concatenate((z0, [0.0, 0.0])), "DOP853",
+                    rtol=1e-12, atol=1e-14)  # fmt: skip
+    z = sol.y[:, -1]
+    return 0.5 * (z[1] ** 2 + z[0] ** 2), z[-2], z[-1]
+
+
+def test_against_solve_ivp_second_order_and_audited():
+    sink = Sink(Well(0.5, 0.3, 4), particles=1, mass=0.2)
+    settings = RunSettings(runs=1, periods=1, seed=2)
+    ec_ref, w_ref, int_ref = _damped_reference(sink, settings, 2.0, 1)
+    assert w_ref > 1e-3  # the contact dissipates noticeably over one period
+    errors = []
+    for steps in (200, 400):
+        res = simulate_inelastic(sink, settings, damping=2.0, dt=2 * np.pi / steps,
+                                 method="blanes-moan6")  # fmt: skip
+        assert res.steps_per_period == steps
+        assert res.max_audit_error < 1e-8  # H + W = H0 up to the conservative stage
+        assert np.all(np.diff(res.dissipated, axis=1) >= 0)
+        dw, dec = res.dissipated[0, -1] - w_ref, res.container_energy[0, -1] - ec_ref
+        errors.append(abs(dw) + abs(dec))
+    assert errors[1] < 1e-4
+    assert 3.0 < errors[0] / errors[1] < 5.5  # second order: 4x per halving
+    zeta_ref = w_ref / (2 * int_ref)
+    assert res.damping_ratio[0] == pytest.approx(zeta_ref, rel=1e-3)
+
+
+def test_dissipative_stage_removes_exactly_the_work_it_counts():
+    """One D stage, two particles sharing the container: the engine's energy falls by
+    exactly the work W counted (positions frozen); momentum in x is kept."""
+    from sinktheory.engine.cache import load
+    from sinktheory.simulate import engine_name, engine_params
+
+    engine, params = load(engine_name(SINK2)), engine_params(SINK2)
+    rng = np.random.default_rng(0)
+    q, vel = rng.uniform(-0.3, 0.3, (5, 6)), rng.uniform(-1, 1, (5, 6))
+    c = rng.uniform(0.5, 3.0, (2, 6))
+    after, work = vel.copy(), np.empty(6)
+    _dissipate(after, c, SINK2.mu, 0.025, work)
+    h0, h1 = engine.block_energies(q, vel, params)[0], engine.block_energies(q, after, params)[0]
+    np.testing.assert_allclose(h0 - h1, work, rtol=1e-12, atol=1e-15)
+    assert np.all(work > 0)
+    mu = SINK2.mu
+    np.testing.assert_allclose(
+        vel[0] + mu * vel[1:3].sum(0), after[0] + mu * after[1:3].sum(0), rtol=1e-14
+    )
+    # one particle, constant c: the relative velocity decays exactly as exp(-c (1+mu)/mu t)
+    one, w1 = vel[:3].copy(), np.empty(6)
+    _dissipate(one, c[:1], mu, 0.025, w1)
+    np.testing.assert_allclose(
+        one[1] - one[0], (vel[1] - vel[0]) * np.exp(-c[0] * (1 + mu) / mu * 0.05), rtol=1e-13
+    )
+
+
+def test_audit_names_run_and_time():
+    settings = RunSettings(runs=3, periods=2, seed=1)
+    with pytest.raises(EnergyDriftError, match=r"run \d: \|H \+ W - H0\|/H0 = .* at t = 1 T"):
+        simulate_inelastic(SINK2, settings, damping=1.0, tol=1e-6, energy_bound=1e-14)
+
+
+def test_seeded_and_independent_of_the_other_runs():
+    a = simulate_inelastic(SINK2, RunSettings(runs=3, periods=2, seed=5), damping=0.5, tol=1e-6)
+    b = simulate_inelastic(SINK2, RunSettings(runs=3, periods=2, seed=5), damping=0.5, tol=1e-6)
+    one = simulate_inelastic(SINK2, RunSettings(runs=1, periods=2, seed=5), damping=0.5, tol=1e-6)
+    assert a.dissipated.tobytes() == b.dissipated.tobytes()
+    assert a.container_energy[:1].tobytes() == one.container_energy.tobytes()
+    assert a.dissipated[:1].tobytes() == one.dissipated.tobytes()
+    other = simulate_inelastic(SINK2, RunSettings(runs=3, periods=2, seed=6), damping=0.5,
+                               tol=1e-6)  # fmt: skip
+    assert not np.array_equal(a.container_energy, other.container_energy)
+
+
+@pytest.mark.parametrize(
+    "kw, name",
+    [
+        ({"damping": -0.1}, "damping"),
+        ({"damping": float("nan")}, "damping"),
+        ({"dt": 0.01, "tol": 1e-6}, "tol"),
+        ({"method": "euler"}, "method"),
+        ({"energy_bound": 0.0}, "energy_bound"),
+    ],
+)
+def test_bad_input_names_the_parameter(kw, name):
+    with pytest.raises(ParameterError, match=name):
+        simulate_inelastic(SINK2, RunSettings(runs=2, periods=1), **kw)
