@@ -159,3 +159,64 @@ def test_seeded_and_independent_of_the_other_runs():
 def test_bad_input_names_the_parameter(kw, name):
     with pytest.raises(ParameterError, match=name):
         simulate_inelastic(SINK2, RunSettings(runs=2, periods=1), **kw)
+
+
+# --------------------------------------------------------------------------- the explorer
+def test_damping_is_a_design_dimension():
+    """A sweep over the contact damping: each point is simulate_inelastic (or simulate
+    at c0 = 0) with the point's seed, bitwise; zeta_eq its mean +- s.e. over runs."""
+    from sinktheory.design import explore
+    from sinktheory.sinkstats import ensemble_mean
+    from sinktheory.sweep.grid import point_seed
+
+    params = {"beta": 0.3, "n": 4, "particles": 2, "damping": [0.0, 0.5], "runs": 3,
+              "periods": 12, "horizons": "6+12", "lyapunov_runs": 2, "lyapunov_periods": 3,
+              "bootstrap": 10}  # fmt: skip
+    run = explore(params, seed=2, workers=1, progress=False, estimate_first=False)
+    ds = run.dataset
+    settings = [RunSettings(runs=3, periods=12, seed=point_seed(2, i)) for i in range(2)]
+    plain = simulate(SINK2, settings[0], tol=1e-6, progress=False)
+    damped = simulate_inelastic(SINK2, settings[1], damping=0.5, tol=1e-6)
+    for c0, res in ((0.0, plain), (0.5, damped)):
+        mean, se = ensemble_mean(res.container_energy)
+        np.testing.assert_array_equal(ds.mean_energy.sel(damping=c0).values, mean)
+        np.testing.assert_array_equal(ds.stderr.sel(damping=c0).values, se)
+    zeta, zeta_se = damped.equivalent_damping()
+    assert float(ds.zeta_eq.sel(damping=0.5)) == zeta > 0
+    assert float(ds.zeta_eq_se.sel(damping=0.5)) == zeta_se
+    share = damped.dissipated[:, -1] / damped.initial_energy
+    assert float(ds.dissipated.sel(damping=0.5)) == share.mean()
+    assert float(ds.max_relative_energy_error.sel(damping=0.5)) == damped.max_audit_error
+    # no contact damping: nothing dissipated, exactly; lambda_1 only for the conservative
+    assert float(ds.zeta_eq.sel(damping=0.0)) == 0.0 == float(ds.dissipated.sel(damping=0.0))
+    assert np.isfinite(float(ds.lambda1.sel(damping=0.0)))
+    assert np.isnan(float(ds.lambda1.sel(damping=0.5)))
+    by_c0 = {r["damping"]: r for r in run.ranked}
+    assert by_c0[0.5]["zeta_eq"] == zeta and by_c0[0.0]["zeta_eq"] == 0.0
+
+
+def test_damping_on_the_command_line(tmp_path, capsys):
+    import json
+
+    from _cli import run_cli
+
+    argv = ["design", "--beta", "0.3", "--n", "4", "--damping", "0,0.5", "--runs", "2",
+            "--periods", "8", "--horizons", "8", "--lyapunov-runs", "0", "--bootstrap", "4",
+            "--workers", "1", "--no-estimate", "--quiet", "--out", str(tmp_path / "d.zarr"),
+            "--report", str(tmp_path / "rep"), "--json"]  # fmt: skip
+    code, out, err = run_cli(argv, capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    assert "damping" in data["dims"]
+    zetas = {d["damping"]: d["zeta_eq"] for d in data["designs"]}
+    assert zetas[0.0] == 0.0 and zetas[0.5] > 0
+    text = (tmp_path / "rep" / "report.md").read_text()
+    assert "zeta_eq" in text and "inelastic wall contact" in text
+    # refused: negative damping, one line, exit 2, nothing written
+    bad = tmp_path / "bad"
+    bad.mkdir()
+    argv = ["design", "--beta", "0.3", "--n", "4", "--damping", "0,-0.1",
+            "--out", str(bad / "d.zarr"), "--report", str(bad / "rep")]  # fmt: skip
+    code, out, err = run_cli(argv, capsys)
+    assert code == 2 and out == "" and "damping" in err and len(err.strip().splitlines()) == 1
+    assert list(bad.iterdir()) == []

@@ -1,14 +1,15 @@
 """``sinktheory design``: explore absorber designs over a grid; rank, chart and report them.
 
 Each design option takes one value, a list ``V1,V2,...`` or a range ``LO:HI:COUNT``
-(``--shape flat,symmetric --beta -0.3:0.3:5 --n 4,6,10 --particles 1,3,5``).  Every point
-of the grid runs an ensemble (``--runs`` x ``--periods``) on the sweep layer (local
-processes or a Dask cluster) into the Zarr store ``--out``, point by point; a killed run
-is continued by the same command with ``--resume``.  Before starting, the per-point cost
-is calibrated and the estimated time printed on stderr; a progress bar follows.  With
-``--report DIR`` the heat maps, the Pareto chart, ``designs.csv`` (the ranked designs)
-and ``report.md`` are written there.  Bad input: one line on stderr, exit status 2, no
-store and no report.
+(``--shape flat,symmetric --beta -0.3:0.3:5 --n 4,6,10 --particles 1,3,5``), the contact
+damping too (``--damping 0,0.1,0.5``: inelastic wall contact, with the container's
+equivalent damping ratio per design).  Every point of the grid runs an ensemble
+(``--runs`` x ``--periods``) on the sweep layer (local processes or a Dask cluster) into
+the Zarr store ``--out``, point by point; a killed run is continued by the same command
+with ``--resume``.  Before starting, the per-point cost is calibrated and the estimated
+time printed on stderr; a progress bar follows.  With ``--report DIR`` the heat maps, the
+Pareto chart, ``designs.csv`` (the ranked designs) and ``report.md`` are written there.
+Bad input: one line on stderr, exit status 2, no store and no report.
 """
 
 from __future__ import annotations
@@ -38,6 +39,7 @@ GRID = {
     "particles": "particles",
     "mass": "mass",
     "energy": "energy",
+    "damping": "damping",
 }
 #: option -> setting of the design kind (one value each)
 SETTINGS = (
@@ -74,6 +76,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--particles", default="1", help="k, integers >= 1 (default 1)")
     g.add_argument("--mass", default="0.2", help="total particle mass m > 0 (default 0.2)")
     g.add_argument("--energy", default="0.5", help="container energy E0 > 0 (default 0.5)")
+    g.add_argument(
+        "--damping",
+        default="0",
+        help="contact damping c0 >= 0 of inelastic wall contact (default 0: conservative)",
+    )
     r = parser.add_argument_group("ensemble and measures (one value each)")
     r.add_argument("--runs", type=number, default=25, help="runs per design (default 25)")
     r.add_argument("--periods", type=number, default=1500, help="periods T (default 1500)")
@@ -230,4 +237,6 @@ def _row(r: dict, dims: list[str]) -> dict:
         "excursion": f(r["excursion"]),
         "lambda1": f(r["lambda1"]),
         "lambda1_se": f(r["lambda1_se"]),
+        "zeta_eq": f(r["zeta_eq"]),
+        "zeta_eq_se": f(r["zeta_eq_se"]),
     }

@@ -10,7 +10,10 @@ process on one thread, and scales it to every point by
                   + TANGENT x lyapunov_runs x lyapunov_periods),
 
 with the steps per period from :func:`sinktheory.stepsize.choose` (no integration needed)
-and ``TANGENT`` the measured cost of a chaos step relative to a plain one, plus a fixed
+and ``TANGENT`` the measured cost of a chaos step relative to a plain one; a design with
+contact damping (``damping`` > 0) runs the inelastic integrator instead
+(:mod:`sinktheory.design.inelastic`, no lambda_1), whose step costs ``DISSIPATIVE`` plain
+steps (measured too when the grid has such designs), plus a fixed
 overhead per point (the measures on data of the point's size, with their bootstrap and
 RQA, and the step choice), timed as well.  Times are wall-clock, so the current load of
 the machine is included; the total is divided by the number of workers.  It is an
@@ -49,6 +52,15 @@ COMPILE_SECONDS = 90.0
 #: it again when lambda_1 is asked for.
 TANGENT = 2.4
 
+#: Cost of one step of the inelastic integrator relative to a plain step: measured 1.25
+#: (flat n = 4, k = 3, 25 runs, damping 0.5; the calibration measures it again when the
+#: grid has damped designs).
+DISSIPATIVE = 1.25
+
+#: Seconds to compile the inelastic integrator for one engine in one process (numba
+#: cannot cache it: its arguments are the engine's compiled functions); measured 3-4 s.
+DISSIPATIVE_COMPILE_SECONDS = 4.0
+
 
 @dataclass(frozen=True)
 class Estimate:
@@ -67,8 +79,9 @@ class Estimate:
     overhead : float
         Measured seconds per point besides the integration (measures, step choice).
     compile_seconds : float
-        :data:`COMPILE_SECONDS` for each engine (shape, n) not compiled yet (included in
-        ``total_seconds``).
+        :data:`COMPILE_SECONDS` for each engine (shape, n) not compiled yet, and
+        :data:`DISSIPATIVE_COMPILE_SECONDS` for each engine of a damped design in each
+        worker (included in ``total_seconds``).
     tangent : float
         Cost of a chaos step relative to a plain one (measured or :data:`TANGENT`).
     calibration_point : dict
@@ -113,10 +126,12 @@ def _duration(seconds: float) -> str:
     return f"{seconds / 3600:.2f} h"
 
 
-def work(point: dict, tangent: float = TANGENT) -> float:
+def work(point: dict, tangent: float = TANGENT, dissipative: float = DISSIPATIVE) -> float:
     """Units of work of a point (see the module docstring)."""
     steps = choose(sink_of(point), point["energy"], point["tol"]).steps_per_period
     dof = 1 + 2 * point["particles"]
+    if point["damping"] > 0:
+        return float(steps * dof * dissipative * point["runs"] * point["periods"])
     runs = point["runs"] * point["periods"]
     runs += tangent * point["lyapunov_runs"] * point["lyapunov_periods"]
     return float(steps * dof * runs)
@@ -130,6 +145,16 @@ def _time_simulate(point: dict, runs: int, periods: int) -> tuple[float, float]:
     sink = sink_of(p)
     start = time.perf_counter()
     res = simulate(sink, settings_of(p, 0), tol=p["tol"], progress=False)
+    seconds = time.perf_counter() - start
+    return seconds, res.steps_per_period * (1 + 2 * p["particles"]) * runs * periods
+
+
+def _time_inelastic(point: dict, runs: int, periods: int) -> tuple[float, float]:
+    from .inelastic import simulate_inelastic
+
+    p = {**point, "runs": runs, "periods": periods}
+    start = time.perf_counter()
+    res = simulate_inelastic(sink_of(p), settings_of(p, 0), damping=p["damping"], tol=p["tol"])
     seconds = time.perf_counter() - start
     return seconds, res.steps_per_period * (1 + 2 * p["particles"]) * runs * periods
 
@@ -210,8 +235,9 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     points = [sweep.grid.point(int(i)) for i in todo]
     if not points:
         return Estimate(0, 0.0, np.zeros(0), 0.0, 0.0, 0.0, TANGENT, {}, 0.0, workers)
-    units = np.array([work(p, 1.0) for p in points])  # plain steps first, to pick the point
-    heaviest = points[int(np.argmax(units))]
+    units = np.array([work(p, 1.0, 1.0) for p in points])  # plain steps, to pick the point
+    heaviest = {**points[int(np.argmax(units))], "damping": 0.0}
+    damped = [p for p in points if p["damping"] > 0]
     threads = numba.get_num_threads()
     numba.set_num_threads(1)  # as in a sweep's worker processes
     try:
@@ -229,13 +255,23 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
             lperiods = max(2, min(heaviest["lyapunov_periods"], periods))
             tc, uc = _time_chaos(heaviest, lruns, lperiods)
             tangent = (tc / uc) / per_unit
+        dissipative = DISSIPATIVE
+        if damped:
+            heaviest_damped = {**heaviest, "damping": max(p["damping"] for p in damped)}
+            _time_inelastic(heaviest_damped, 2, 1)  # compiles the integrator for the engine
+            td, ud = _time_inelastic(heaviest_damped, runs, periods)
+            dissipative = (td / ud) / per_unit
         overhead = _overhead(heaviest)
     finally:
         numba.set_num_threads(threads)
-    per_point = np.array([work(p, tangent) for p in points]) * per_unit + overhead
+    per_point = np.array([work(p, tangent, dissipative) for p in points]) * per_unit + overhead
     # the work shared over the workers, but never less than the longest point
-    total = max(float(per_point.sum()) / min(workers, len(points)), float(per_point.max()))
+    busy = min(workers, len(points))
+    total = max(float(per_point.sum()) / busy, float(per_point.max()))
     compiling = COMPILE_SECONDS * len(uncompiled({(p["shape"], p["n"]) for p in points}))
+    # the inelastic integrator is compiled in every worker process for every engine
+    engines = len({(p["shape"], p["n"]) for p in damped})
+    compiling += DISSIPATIVE_COMPILE_SECONDS * engines * min(busy, len(damped))
     total += compiling
     return Estimate(
         points=len(points),
@@ -251,4 +287,4 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     )
 
 
-__all__ = ["TANGENT", "Estimate", "estimate", "work"]
+__all__ = ["DISSIPATIVE", "TANGENT", "Estimate", "estimate", "work"]

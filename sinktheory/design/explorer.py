@@ -1,9 +1,11 @@
 """Run (or resume) a design sweep and get the measures, the ranking and the report.
 
 :func:`explore` is the Python side of ``sinktheory design``: a grid over shape, alpha,
-beta, n, k (``particles``), m (``mass``) and E0 (``energy``) -- each a value or a list --
-computed on the sweep layer (:func:`sinktheory.sweep.runner.execute`: this process, local
-processes or a Dask cluster; a Zarr store written point by point and resumable).
+beta, n, k (``particles``), m (``mass``), E0 (``energy``) and the contact damping c0
+(``damping``: inelastic wall contact, :mod:`sinktheory.design.inelastic`; 0 is the
+conservative model) -- each a value or a list -- computed on the sweep layer
+(:func:`sinktheory.sweep.runner.execute`: this process, local processes or a Dask
+cluster; a Zarr store written point by point and resumable).
 
 Examples
 --------
@@ -27,7 +29,7 @@ import numpy as np
 from .ranking import rank
 
 #: The design parameters a user sweeps (any other parameter of the kind may be given too).
-DESIGN_PARAMS = ("shape", "alpha", "beta", "n", "particles", "mass", "energy")
+DESIGN_PARAMS = ("shape", "alpha", "beta", "n", "particles", "mass", "energy", "damping")
 
 
 @dataclass(frozen=True)

@@ -8,17 +8,29 @@ container energy, the measures are :func:`~sinktheory.design.measures.design_mea
 ``lyapunov_periods`` periods -- a finite-time estimate per unit time (times T = 2 pi:
 the growth exponent per period).  ``lyapunov_runs = 0`` leaves it out (NaN).
 
+With a contact damping c0 = ``damping`` > 0 the ensemble is
+:func:`sinktheory.design.inelastic.simulate_inelastic` instead (same start states, same
+tolerance; the audit of H + W = H0 is the energy error reported), and the point also gets
+the equivalent damping ratio zeta_eq of the container (mean over runs +- standard error)
+and the share of H0 dissipated by the end.  lambda_1 is then left out (NaN: the chaos
+indicators are of the conservative model); the equipartition share still compares with
+the initial total energy, so its verdict is expected to be "below".  With c0 = 0,
+zeta_eq and the dissipated share are exactly 0.
+
 Examples
 --------
 >>> p = {"shape": "flat", "alpha": 0.5, "beta": 0.3, "n": 4, "gamma": 1.0,
 ...      "particles": 1, "mass": 0.2, "energy": 0.5, "runs": 2, "periods": 12,
 ...      "box": 0.01, "tol": 1e-6, "energy_bound": None, "horizons": "6+12",
 ...      "transient": None, "sigmas": 3.0, "risk_level": 0.5, "rqa_eps": 0.01,
-...      "bootstrap": 10, "lyapunov_runs": 0, "lyapunov_periods": 10, "replica": 0}
+...      "bootstrap": 10, "lyapunov_runs": 0, "lyapunov_periods": 10, "damping": 0.0,
+...      "replica": 0}
 >>> check(p)
 >>> out = compute(p, seed=5)
 >>> out["absorbed"].shape, out["mean_energy"].shape, bool(np.isnan(out["lambda1"]))
 ((2,), (13,), True)
+>>> float(out["zeta_eq"]), float(compute({**p, "damping": 0.5}, seed=5)["zeta_eq"]) > 0
+(0.0, True)
 """
 
 from __future__ import annotations
@@ -31,8 +43,19 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 from ..model import RunSettings, Sink, Well
+from ..sinkstats import ensemble_mean
 from ..stepsize import check_tol
 from .measures import RQA_MEASURES, design_measures, horizons_of
+
+#: Results of a point that come from its ensemble (besides the container energy).
+ENSEMBLE_RESULTS = (
+    "max_relative_energy_error",
+    "dt_used",
+    "zeta_eq",
+    "zeta_eq_se",
+    "dissipated",
+    "dissipated_se",
+)
 
 
 def sink_of(p: dict) -> Sink:
@@ -69,6 +92,7 @@ def check(p: dict) -> None:
         RunSettings(
             energy=p["energy"], runs=p["lyapunov_runs"], periods=p["lyapunov_periods"]
         ).check(sink)
+    v.nonnegative("damping", p["damping"])
     if p["runs"] < 2:
         raise ParameterError("runs", p["runs"], "at least 2 (standard errors need two runs)")
 
@@ -76,9 +100,10 @@ def check(p: dict) -> None:
 def lyapunov(p: dict, seed: int) -> tuple[float, float]:
     """Mean lambda_1 (per unit time) of the first ``lyapunov_runs`` runs and its s.e.
 
-    NaN, NaN when ``lyapunov_runs`` is 0 or :mod:`sinktheory.chaos` cannot be imported.
+    NaN, NaN when ``lyapunov_runs`` is 0, the contact is damped (the chaos indicators are
+    of the conservative model) or :mod:`sinktheory.chaos` cannot be imported.
     """
-    if not p["lyapunov_runs"]:
+    if not p["lyapunov_runs"] or p["damping"] > 0:
         return math.nan, math.nan
     try:
         from ..chaos import chaos
@@ -97,21 +122,57 @@ def lyapunov(p: dict, seed: int) -> tuple[float, float]:
     return float(lam.mean()), se
 
 
-def compute(p: dict, seed: int) -> dict[str, Any]:
-    """Everything the ``design`` kind stores for one point (see :data:`RESULT_NAMES`)."""
+def ensemble(p: dict, seed: int) -> dict[str, Any]:
+    """The point's ensemble: container energy (R, P + 1), H0 (R,), the largest energy
+    (or audit) error, the step, and zeta_eq and the dissipated share of H0 with their
+    standard errors (zeros without damping)."""
     from ..simulate import simulate
 
-    sink = sink_of(p)
+    sink, settings = sink_of(p), settings_of(p, seed)
+    if p["damping"] > 0:
+        from .inelastic import simulate_inelastic
+
+        res = simulate_inelastic(
+            sink, settings, damping=p["damping"], tol=p["tol"], energy_bound=p["energy_bound"]
+        )
+        zeta, zeta_se = res.equivalent_damping()
+        share = res.dissipated[:, -1] / res.initial_energy
+        return {
+            "energy": res.container_energy,
+            "h0": res.initial_energy,
+            "max_relative_energy_error": res.max_audit_error,
+            "dt_used": res.dt,
+            "zeta_eq": zeta,
+            "zeta_eq_se": zeta_se,
+            "dissipated": float(share.mean()),
+            "dissipated_se": float(share.std(ddof=1) / math.sqrt(share.size)),
+        }
     res = simulate(
         sink,
-        settings_of(p, seed),
+        settings,
         tol=p["tol"],
         energy_bound=p["energy_bound"],
         record=("container",),
         progress=False,
     )
-    e = res.container_energy
-    total = float(res.initial_energy.mean())
+    return {
+        "energy": res.container_energy,
+        "h0": res.initial_energy,
+        "max_relative_energy_error": res.max_relative_energy_error,
+        "dt_used": res.dt,
+        "zeta_eq": 0.0,
+        "zeta_eq_se": 0.0,
+        "dissipated": 0.0,
+        "dissipated_se": 0.0,
+    }
+
+
+def compute(p: dict, seed: int) -> dict[str, Any]:
+    """Everything the ``design`` kind stores for one point (its results in
+    :mod:`sinktheory.sweep.kinds`)."""
+    ens = ensemble(p, seed)
+    e = ens["energy"]
+    total = float(ens["h0"].mean())
     m = design_measures(
         e,
         e0=p["energy"],
@@ -127,7 +188,7 @@ def compute(p: dict, seed: int) -> dict[str, Any]:
         seed=seed,
     )
     lam, lam_se = lyapunov(p, seed)
-    mean, stderr = res.ensemble_energy()
+    mean, stderr = ensemble_mean(e)
     out: dict[str, Any] = {
         "absorbed": m.absorbed,
         "absorbed_se": m.absorbed_se,
@@ -148,10 +209,9 @@ def compute(p: dict, seed: int) -> dict[str, Any]:
         "lambda1": lam,
         "lambda1_se": lam_se,
         "total_energy": total,
-        "max_relative_energy_error": res.max_relative_energy_error,
-        "dt_used": res.dt,
         "mean_energy": mean,
         "stderr": stderr,
+        **{name: ens[name] for name in ENSEMBLE_RESULTS},
     }
     for name in RQA_MEASURES:
         out[f"rqa_{name}"] = m.rqa[name]

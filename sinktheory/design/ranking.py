@@ -39,19 +39,6 @@ import math
 
 import numpy as np
 
-#: Columns of the ranked table: (column, dataset variable, its standard error or None).
-COLUMNS = (
-    ("depth", "depth", "depth_se"),
-    ("t50", ("passage", 0.5), ("passage_se", 0.5)),
-    ("t80", ("passage", 0.8), ("passage_se", 0.8)),
-    ("spread/E0", "rel_spread", "rel_spread_se"),
-    ("<E>_long", "long_time_mean", "long_time_se"),
-    ("equipartition", "equipartition", None),
-    ("excursion", "excursion", "excursion_se"),
-    ("lambda1", "lambda1", "lambda1_se"),
-    ("DET", "rqa_determinism", "rqa_determinism_se"),
-)
-
 
 def pareto_layers(speed, depth, spread) -> np.ndarray:
     """Pareto layer (1 = front) of each design: minimise speed and spread, maximise depth.
@@ -96,7 +83,7 @@ def design_table(ds) -> list[dict]:
     dims = [d for d in ds.done.dims]
     fixed = {
         k: ds.attrs[k]
-        for k in ("shape", "alpha", "beta", "n", "particles", "mass", "energy")
+        for k in ("shape", "alpha", "beta", "n", "particles", "mass", "energy", "damping")
         if k in ds.attrs
     }
     rows = []
@@ -127,6 +114,10 @@ def design_table(ds) -> list[dict]:
             "max_relative_energy_error",
         ):
             row[name] = float(point[name])
+        for name in ("zeta_eq", "zeta_eq_se", "dissipated", "dissipated_se"):
+            # stores written before the contact damping was a parameter: conservative
+            row[name] = float(point[name]) if name in point else 0.0
+        row.setdefault("damping", 0.0)
         row["rel_spread"] = row["spread"] / e0
         row["rel_spread_se"] = row["spread_se"] / e0
         for level in point.level.values:

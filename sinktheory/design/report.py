@@ -50,8 +50,15 @@ def _label(value) -> str:
     return str(value)
 
 
+def is_damped(ranked: list) -> bool:
+    """Whether any design has inelastic wall contact (damping > 0)."""
+    return any(float(r["damping"]) > 0 for r in ranked)
+
+
 def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
-    """The markdown table of the ``top`` ranked designs."""
+    """The markdown table of the ``top`` ranked designs (with zeta_eq and the dissipated
+    share of H0 when any design has inelastic contact)."""
+    damped = is_damped(ranked)
     head = (
         ["rank", "layer"]
         + dims
@@ -67,6 +74,7 @@ def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
             "lambda_1",
             "DET",
         ]
+        + (["zeta_eq", "dissipated / H0"] if damped else [])
     )
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in ranked[:top]:
@@ -83,6 +91,11 @@ def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
             fmt(r["lambda1"], r["lambda1_se"]) if math.isfinite(r["lambda1"]) else "n/a",
             fmt(r["rqa_determinism"], r["rqa_determinism_se"]),
         ]
+        if damped:
+            cells += [
+                fmt(r["zeta_eq"], r["zeta_eq_se"], 4),
+                fmt(r["dissipated"], r["dissipated_se"]),
+            ]
         lines.append("| " + " | ".join(cells) + " |")
     return lines
 
@@ -98,7 +111,7 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
     swept = ", ".join(f"{d} = {', '.join(_label(v) for v in ds[d].values)}" for d in dims)
     fixed = ", ".join(
         f"{k} = {a[k]}"
-        for k in ("shape", "alpha", "beta", "n", "gamma", "particles", "mass", "energy")
+        for k in ("shape", "alpha", "beta", "n", "gamma", "particles", "mass", "energy", "damping")
         if k in a
     )
     lines += [
@@ -180,8 +193,23 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
         "(bootstrap s.e.); the store also holds RR, LAM, TT and the mean recurrence time;",
         "- lambda_1: mean ± s.e. over runs of the largest Lyapunov exponent from the tangent "
         "map (sinktheory.chaos), same start positions as the first runs of the ensemble.",
-        "",
     ]
+    if ranked and is_damped(ranked):
+        lines += [
+            "- damping > 0 (inelastic wall contact, sinktheory.design.inelastic): a viscous "
+            "force -c0 s v_rel on each particle's velocity relative to the container, s = "
+            "2n V/gamma (about 1 at the wall), integrated by a Strang splitting with exactly "
+            "solved dissipative pair flows; the energy error shown is that of the audit "
+            "H + W = H0 (W the dissipated work);",
+            "- zeta_eq: equivalent damping ratio of the container, W / (2 omega integral of "
+            "E_c dt) over the run (the linear dashpot on the container that would dissipate "
+            "the same work), mean ± s.e. over runs; dissipated / H0: the share of the total "
+            "energy dissipated by the end of the run;",
+            "- with damping > 0, lambda_1 is not computed (the chaos indicators are of the "
+            "conservative model) and the equipartition share still uses the initial total "
+            "energy, so the verdict is expected to be 'below'.",
+        ]
+    lines.append("")
     if figures:
         lines += ["## Charts", ""] + [f"![{f}]({f})" for f in figures] + [""]
     return "\n".join(lines)

@@ -21,6 +21,7 @@ design         :func:`sinktheory.design.point.compute`: an      absorbed (horizo
                ensemble, lambda_1 and the design measures       (level), long-time share and
                (:mod:`sinktheory.design.measures`)              equipartition verdict, spread,
                                                                 lambda1, excursion, rqa_*,
+                                                                zeta_eq, dissipated,
                                                                 each with its ``*_se``
 =============  ==============================================  ===============================
 
@@ -325,6 +326,10 @@ def _design_results() -> dict[str, Result]:
     out["dt_used"] = Result((), "float64", "integration step used")
     out["mean_energy"] = Result(("period",), "float64", "ensemble mean <E>(jT)")
     out["stderr"] = Result(("period",), "float64", "standard error of <E>(jT)")
+    out["zeta_eq"] = Result((), "float64", "equivalent damping ratio of the container")
+    out["zeta_eq_se"] = Result((), "float64", "standard error of zeta_eq")
+    out["dissipated"] = Result((), "float64", "share of H0 dissipated in wall contact")
+    out["dissipated_se"] = Result((), "float64", "standard error of dissipated")
     return out
 
 
@@ -400,6 +405,7 @@ KINDS = {
             "bootstrap": Param(int, 50),
             "lyapunov_runs": Param(int, 10),
             "lyapunov_periods": Param(int, 100),
+            "damping": Param(float, 0.0),
             "replica": Param(int, 0),
         },
         _design_results(),
