@@ -1,0 +1,269 @@
+r"""Transverse stability of the coupled normal mode against beta, scored on the chaos map.
+
+The paper predicts the chaotic beta intervals from the normal mode y = 0 of one particle
+in a *fixed* container (:mod:`sinktheory.floquet`).  Here the same prediction is made
+from the normal mode of the *coupled* container-particle system at the chaos map's total
+energy, and both are scored against the chaos map's verdicts.
+
+Which normal mode.  The chaos map starts the container at X = sqrt(2 E) with the
+particles at rest, so the mode is followed from the container's side: the linear
+container mode at low energy (:func:`reach_energy`, the particles at absolute rest) is
+continued up in energy by pseudo-arclength through its folds to E.  At the 1:1 resonance
+with the particles' mode (frequency ~ amplitude^(n-1), hardening) the branch folds twice
+and comes out as the particles' mode with the container recoiling: for k = 1,
+alpha = 1/2, n = 4, m = 0.2 the folds lie below E = 0.2 at every beta tried, and at
+E = 0.5 the orbit coincides (up to the half-period shift) with the one shot from the
+particle guess of :func:`~sinktheory.nnm.modes.mode_guess`.  That orbit is continued in
+beta at fixed E (:func:`transverse_chart`) and corrected by shooting at each beta of the
+grid; its transverse (y) multipliers decide stability: |phi_T/2| <= 1 is stable.
+
+Agreement (:func:`agreement_report`).  On one beta grid, the chaos map's verdict per beta
+(:func:`sinktheory.chaos.maps.verdicts`: chaotic when mean lambda_1 - 2 s.e. exceeds
+3 ln t / t) is compared with each theory's prediction (stable <-> regular): the share of
+grid betas where they coincide, by :func:`sinktheory.chaos.maps.agreement` for both.
+
+Examples
+--------
+>>> from sinktheory import Sink, Well
+>>> sink = Sink(Well(0.5, -0.2, 4), particles=1, mass=0.2)
+>>> orbit = reach_energy(sink, 0.5)
+>>> round(orbit.energy, 12), round(orbit.frequency, 4)
+(0.5, 3.9667)
+>>> chart = transverse_chart(sink, 0.5, [-0.6, -0.2, 0.2], start=orbit)
+>>> chart.stable.tolist(), bool(abs(chart.phi_half[1, 0]) < 1)
+([False, True, False], True)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..model import Sink
+from .continuation import continue_orbits, merge
+from .modes import mode_guess, sink_flow
+from .shooting import Orbit, ShootingError, shoot
+
+#: Energy at which the container's linear mode starts (the particles barely touch the walls).
+LOW_ENERGY = 1e-4
+
+
+def reach_energy(
+    sink: Sink, energy: float, *, steps: int = 400, ds: float = 0.2, max_points: int = 400
+) -> Orbit:
+    """The normal mode that is the container's linear mode at low energy, followed by
+    pseudo-arclength continuation in energy (through its folds) up to ``energy`` and
+    corrected there exactly.
+
+    Raises
+    ------
+    ParameterError
+        Unless LOW_ENERGY < energy.
+    ShootingError
+        If the branch ends before reaching ``energy``.
+    """
+    if not (math.isfinite(energy) and energy > LOW_ENERGY):
+        raise ParameterError("energy", energy, f"a finite energy > {LOW_ENERGY:g}")
+    system = sink_flow(sink)
+    z0, T = mode_guess(sink, "container", LOW_ENERGY)
+    branch = continue_orbits(system, z0, T, steps=steps, energy=LOW_ENERGY,
+                             stop=(0.1 * LOW_ENERGY, energy), ds=ds, max_points=max_points,
+                             subspace="plane")  # fmt: skip
+    last = branch.orbits[-1]
+    if last.energy < energy:
+        raise ShootingError(f"energy continuation ended at H = {last.energy:.6g} before "
+                            f"{energy:g} ({branch.stop_reason})")  # fmt: skip
+    # the last two points bracket the target: start Newton from the nearer one
+    near = min(branch.orbits[-2:], key=lambda o: abs(o.energy - energy))
+    return shoot(system, near.z0, near.period, steps=steps, energy=energy, subspace="plane")
+
+
+@dataclass(frozen=True)
+class TransverseChart:
+    """Transverse stability of the coupled normal mode on a beta grid.
+
+    Attributes
+    ----------
+    beta : (B,) the grid; phi_half : (B, k) transverse half-period half-traces per
+    particle; stable : (B,) bool, every |phi_half| <= 1 (to the tolerance of
+    :data:`sinktheory.nnm.stability.STABILITY_TOL`); frequency : (B,) of the orbit;
+    branch : the continued branch (:class:`~sinktheory.nnm.result.BranchResult`).
+    """
+
+    beta: np.ndarray
+    phi_half: np.ndarray
+    stable: np.ndarray
+    frequency: np.ndarray
+    branch: object = field(repr=False)
+
+    def stable_intervals(self) -> list[tuple[float, float]]:
+        """Grid-resolution intervals [first, last stable beta] of consecutive stable points."""
+        out, start = [], None
+        for b, ok in zip(self.beta, self.stable, strict=True):
+            if ok and start is None:
+                start = b
+            if ok:
+                end = b
+            elif start is not None:
+                out.append((float(start), float(end)))
+                start = None
+        if start is not None:
+            out.append((float(start), float(end)))
+        return out
+
+
+def transverse_chart(
+    sink: Sink,
+    energy: float,
+    betas,
+    *,
+    start: Orbit | None = None,
+    steps: int = 400,
+    ds: float = 0.05,
+    points: int = 400,
+) -> TransverseChart:
+    """The coupled normal mode at total ``energy`` on the grid ``betas``.
+
+    Parameters
+    ----------
+    sink : Sink
+        Its well's beta is where the branch starts (inside the grid's range).
+    energy : float
+        Total energy H, fixed along the branch.
+    betas : sequence of float, increasing
+    start : Orbit, optional
+        The mode at (sink, energy); default :func:`reach_energy` (the container's mode
+        continued up in energy).
+    steps, ds, points : per period, first arclength step, most points per direction.
+    """
+    betas = np.asarray(betas, dtype=float)
+    if betas.ndim != 1 or betas.size < 1 or np.any(np.diff(betas) <= 0):
+        raise ParameterError("betas", betas.tolist(), "an increasing sequence of betas")
+    lo, hi = float(betas[0]), float(betas[-1])
+    if not lo <= sink.well.beta <= hi:
+        raise ParameterError("beta", sink.well.beta, f"inside the grid [{lo:g}, {hi:g}]")
+    orbit = reach_energy(sink, energy, steps=steps) if start is None else start
+    system = orbit.system
+    kw = dict(steps=orbit.steps, parameter="beta", energy=energy, stop=(lo, hi), ds=ds,
+              max_points=points, subspace="plane")  # fmt: skip
+    back = continue_orbits(system, orbit.z0, orbit.period, direction=-1, **kw)
+    fwd = continue_orbits(system, orbit.z0, orbit.period, direction=1, **kw)
+    branch = merge(back, fwd)
+    values = branch.values
+    phi, stable, freq = [], [], []
+    for b in betas:
+        i = _bracket(values, b)
+        w = (b - values[i]) / (values[i + 1] - values[i]) if values[i + 1] != values[i] else 0.0
+        o0, o1 = branch.orbits[i], branch.orbits[i + 1]
+        z = (1 - w) * o0.z0 + w * o1.z0
+        T = (1 - w) * o0.period + w * o1.period
+        o = shoot(system.with_param("beta", b), z, T, steps=orbit.steps, energy=energy,
+                  subspace="plane")  # fmt: skip
+        phi.append(o.transverse_half_traces())
+        stable.append(o.floquet.stable_transverse)
+        freq.append(o.frequency)
+    w = sink.well
+    result = branch.result(shape=w.shape, alpha=w.alpha, n=w.n, gamma=w.gamma,
+                           particles=sink.particles, mass=sink.mass,
+                           label="coupled normal mode")  # fmt: skip
+    return TransverseChart(betas, np.array(phi), np.array(stable), np.array(freq), result)
+
+
+def _bracket(values: np.ndarray, b: float) -> int:
+    """First branch segment [i, i + 1] whose continuation values enclose b."""
+    inside = (values[:-1] - b) * (values[1:] - b) <= 0
+    if not inside.any():
+        raise ShootingError(f"the beta branch [{values.min():.6g}, {values.max():.6g}] "
+                            f"does not reach beta = {b:g}")  # fmt: skip
+    return int(np.argmax(inside))
+
+
+def agreement_report(
+    sink: Sink,
+    energy: float,
+    betas,
+    *,
+    chaos=None,
+    runs: int = 8,
+    periods: int = 200,
+    dt: float | None = None,
+    seed: int = 0,
+    workers: int | None = None,
+    steps: int = 400,
+) -> dict:
+    """Shares of grid betas where each theory's stability agrees with the chaos map.
+
+    Parameters
+    ----------
+    sink, energy, betas : as for :func:`transverse_chart` (the chaos map uses the same
+        well, particles, mass and energy).
+    chaos : xarray.Dataset, optional
+        A chaos map over exactly ``betas`` (:func:`sinktheory.chaos.maps.chaos_map`);
+        computed with ``runs``, ``periods``, ``dt``, ``seed``, ``workers`` otherwise.
+
+    Returns
+    -------
+    dict
+        ``nnm`` and ``floquet``: the shares (0..1) where the coupled mode's transverse
+        stability, respectively the fixed-container Floquet stability of
+        :func:`sinktheory.floquet.model_problem` (amplitude A0 = 1), predicts the chaos
+        map's verdict (stable <-> regular); ``betas``, ``chaotic`` (count), ``threshold``,
+        the charts' stable intervals, ``statement`` (one sentence), and the arrays
+        ``beta``, ``phi_half_nnm``, ``phi_half_floquet``, ``lambda1``, ``lambda1_se``,
+        ``chaotic_verdict`` for plotting.
+    """
+    from ..chaos.maps import agreement, chaos_map, verdicts
+    from ..floquet import model_problem
+
+    betas = np.asarray(betas, dtype=float)
+    w = sink.well
+    if chaos is None:
+        chaos = chaos_map(w.alpha, w.n, betas, shape=w.shape, particles=sink.particles,
+                          mass=sink.mass, energy=energy, runs=runs, periods=periods, dt=dt,
+                          seed=seed, workers=workers)  # fmt: skip
+    grid = np.asarray(chaos.beta.values, dtype=float)
+    if grid.shape != betas.shape or not np.allclose(grid, betas, rtol=0, atol=1e-12):
+        raise ParameterError("chaos", grid.tolist(), f"a chaos map over the betas {betas.tolist()}")
+    chart = transverse_chart(sink, energy, betas, steps=steps)
+    fixed = model_problem(w.alpha, w.n, gamma=w.gamma, shape=w.shape).evaluate(betas)
+    a_nnm = agreement(chaos, chart.stable)
+    a_fix = agreement(chaos, fixed.stable)
+    v = verdicts(chaos)
+    report = {
+        "betas": int(betas.size),
+        "chaotic": a_nnm["chaotic"],
+        "threshold": a_nnm["threshold"],
+        "nnm": a_nnm["floquet"],
+        "floquet": a_fix["floquet"],
+        "periods": int(chaos.attrs["periods"]),
+        "runs": int(chaos.sizes.get("run", 0)),
+        "nnm_stable": chart.stable_intervals(),
+        "statement": statement(a_nnm["floquet"], a_fix["floquet"], int(betas.size),
+                               float(betas[0]), float(betas[-1])),  # fmt: skip
+        "beta": betas.tolist(),
+        "phi_half_nnm": chart.phi_half[:, 0].tolist(),
+        "phi_half_floquet": np.asarray(fixed.phi_half, float).tolist(),
+        "lambda1": chaos.lambda1.values.tolist(),
+        "lambda1_se": chaos.lambda1_se.values.tolist(),
+        "chaotic_verdict": v["chaotic"].tolist(),
+    }
+    return report
+
+
+def statement(nnm: float, fixed: float, count: int, lo: float, hi: float) -> str:
+    """The agreement sentence of the report.
+
+    Examples
+    --------
+    >>> statement(0.583, 0.542, 48, -0.7, 0.45)[:80]
+    'NNM transverse stability predicts the chaotic beta intervals at 58 % of beta val'
+    """
+    return (
+        f"NNM transverse stability predicts the chaotic beta intervals at {100 * nnm:.0f} % "
+        f"of beta values, the fixed-container Floquet theory at {100 * fixed:.0f} % "
+        f"({count} betas in [{lo:g}, {hi:g}]; a beta counts when the theory's stable/unstable "
+        "matches the chaos map's regular/chaotic verdict, mean lambda_1 - 2 s.e. > 3 ln t / t)"
+    )
