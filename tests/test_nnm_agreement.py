@@ -7,8 +7,8 @@ Independent references:
   the fixed-container ones of :func:`sinktheory.floquet.model_problem`, and phi_T/2 agrees
   to 3 mu (the recoil moves it by O(mu): measured 0.3 mu at beta = 0.2 up to 1.8 mu at
   beta = -0.65; tests/test_nnm.py checks the limit to 1e-6 at mu = 1e-8 orbit by orbit;
-  the scheme at 500 steps moves it by < 1e-9).  The beta continuation itself is used at mu = 1e-4: below ~1e-5 its arclength
-  steps collapse (a scaling limit, see the guide);
+  the scheme at 500 steps moves it by < 1e-9).  The beta continuation is used at
+  mu = 1e-4: below ~1e-5 its arclength steps collapse (a scaling limit, see the guide);
 * direct simulation at the chaos map's setting (k = 1, alpha = 1/2, n = 4, m = 0.2,
   E = 0.5): the orbit reached from the container's low-energy mode, perturbed by 1e-9 in
   y, integrated with scipy's DOP853 (rtol 1e-12) on equations of motion written out here
