@@ -241,8 +241,9 @@ def agreement_report(
         "periods": int(chaos.attrs["periods"]),
         "runs": int(chaos.sizes.get("run", 0)),
         "nnm_stable": chart.stable_intervals(),
-        "statement": statement(a_nnm["floquet"], a_fix["floquet"], int(betas.size),
-                               float(betas[0]), float(betas[-1])),  # fmt: skip
+        "statement": statement(
+            a_nnm["floquet"], a_fix["floquet"], int(betas.size), float(betas[0]), float(betas[-1])
+        ),  # fmt: skip
         "beta": betas.tolist(),
         "phi_half_nnm": chart.phi_half[:, 0].tolist(),
         "phi_half_floquet": np.asarray(fixed.phi_half, float).tolist(),
