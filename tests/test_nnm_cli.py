@@ -12,7 +12,7 @@ BASE = ["nnm", "--alpha", "0.5", "--n", "4"]
 def test_energy_continuation_json_and_plot(tmp_path, capsys):
     png = tmp_path / "fep.png"
     argv = BASE + ["--beta", "-0.2", "--continue", "energy", "--range", "1e-3", "0.2"]
-    code, out, err = run_cli(argv + ["--points", "30", "--plot", str(png), "--json"], capsys)
+    code, out, err = run_cli(argv + ["--points", "60", "--plot", str(png), "--json"], capsys)
     assert code == 0, err
     data = json.loads(out)
     assert data["parameter"] == "energy" and png.stat().st_size > 10_000

@@ -21,6 +21,19 @@ located by the Illinois (regula falsi) method on the arclength from the earlier 
   invariant plane branch off);
 * ``branch-point``: an in-plane multiplier crosses +1 away from a fold.
 
+Pairs that reach -1 or +1 and turn back within one step leave the test functions with
+the same sign at both ends.  Steps are therefore rejected and halved while a multiplier
+turns by more than MAX_TURN (rotation angle, :func:`~sinktheory.nnm.stability.angles`),
+and each interior point where a multiplier set's margin
+(:meth:`~sinktheory.nnm.stability.Floquet.margins`, the signed distance of the nearest
+pair from -1 or +1) is a local minimum of its absolute value, with the parabola through
+it and its neighbours heading at least half-way to 0, is refined: Brent's method
+minimises the margin along the arclength (each trial point corrected onto the branch).
+A minimum within TOUCH_TOL of 0 is reported as ``<kind>-touch`` (e.g.
+``transverse-period-doubling-touch``: a transverse pair touching -1); a minimum below
+-TOUCH_TOL means a window off the unit circle inside the step, reported as its two
+crossings (two ``<kind>`` events located by Brent's root finder).
+
 :func:`switch_branch` starts the period-2T branch at a period doubling (or the
 symmetry-broken branch at a symmetry-breaking point) from the critical eigenvector.
 
@@ -41,16 +54,21 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.optimize import brentq, minimize_scalar
 
 from ..errors import ParameterError
 from .shooting import Orbit, ShootingError, ShootingProblem, checked_start, subspace_indices
-from .stability import classify
+from .stability import angles, classify
 from .system import FlowSystem
 
 #: Arclength-step limits relative to the initial step.
 DS_MIN_FACTOR = 1e-4
 #: Iterations of the event location.
 LOCATE_ITER = 30
+#: Largest change of a multiplier's rotation angle over one step (radians).
+MAX_TURN = 0.5
+#: A margin (half-trace units) within this of 0 at its minimum is a touch of -1 or +1.
+TOUCH_TOL = 1e-7
 
 
 @dataclass
@@ -227,6 +245,9 @@ def _continue(problem, first, J, ds, ds_max, max_points, direction, lo, hi, loca
                 break
             continue
         orbit = problem.orbit(un, data, it)
+        if _turn(branch.orbits[-1].floquet, orbit.floquet) > MAX_TURN and ds / 2 >= ds_min:
+            ds *= 0.5  # a pair could swing through -1 or +1 and back unseen
+            continue
         A, usc = _scaled_jacobian(problem, un, Jn)
         tn = _orient(tangent(A), usc)
         if _dot(tn, t, usc) < 0:
@@ -242,11 +263,23 @@ def _continue(problem, first, J, ds, ds_max, max_points, direction, lo, hi, loca
             branch.events.append(_locate(problem, index, u, t, f0, un, f1, orbit, kind, locate))
         branch.orbits.append(orbit)
         branch.tangents.append(tn)
+        if len(branch.orbits) >= 3:
+            branch.events.extend(_touches(problem, branch, len(branch.orbits) - 2))
         u, t, tests = un, tn, new_tests
         ds = min(ds_max, ds * (1.6 if it <= 3 else 1.0 if it <= 5 else 0.6))
     else:
         branch.stop_reason = f"{max_points} points"
+    branch.events.sort(key=lambda e: e.index)
     return branch
+
+
+def _turn(a, b) -> float:
+    """Largest change of the multipliers' rotation angles between two Floquet sets."""
+    turns = [0.0]
+    for x, y in ((a.nontrivial, b.nontrivial), (a.transverse, b.transverse)):
+        if x.size and x.size == y.size:
+            turns.append(float(np.max(np.abs(angles(x) - angles(y)))))
+    return max(turns)
 
 
 def _value(problem: ShootingProblem, lam: float) -> float:
@@ -275,6 +308,69 @@ _TEST_KEY = {
     "symmetry-breaking": "transverse_plus",
     "branch-point": "inplane_plus",
 }
+
+
+_KIND = {key: kind for kind, key in _TEST_KEY.items()}
+
+
+def _touches(problem: ShootingProblem, branch: Branch, i: int) -> list[Event]:
+    """Touches of -1 / +1 (and windows off the unit circle) inside the steps around point
+    ``i`` that the sign tests cannot see (see the module docstring)."""
+    orbits, tangents = branch.orbits[i - 1 : i + 2], branch.tangents[i - 1]
+    u0 = orbits[0].u
+    normal = _normal(problem, u0, tangents)
+    s = np.array([float(normal @ (o.u - u0)) / float(normal @ tangents) for o in orbits])
+    found = [(e.kind, e.index) for e in branch.events]
+    out = []
+    for key, kind in _KIND.items():
+        g = np.array([o.floquet.margins()[key] for o in orbits])
+        sign = np.sign(g[1])
+        if not (np.all(np.isfinite(g)) and sign != 0 and np.all(np.sign(g) == sign)):
+            continue
+        if not (abs(g[1]) < abs(g[0]) and abs(g[1]) < abs(g[2])):
+            continue
+        near = {(k, j) for k in (kind, "fold") for j in (i - 1, i)}
+        if near & set(found) or not s[0] < s[1] < s[2]:
+            continue  # a sign test already saw this step, or the parameterisation folds
+        if sign * _vertex(s, g) >= 0.5 * abs(g[1]):
+            continue  # the parabola does not head towards 0
+
+        def margin(x, key=key, sign=sign):
+            un, Jn, data, it = _corrector(problem, u0, tangents, x, max_iter=40)
+            o = problem.orbit(un, data, it)
+            return sign * o.floquet.margins()[key], o
+
+        try:
+            res = minimize_scalar(lambda x: margin(x)[0], bracket=tuple(s), tol=1e-10)
+            gmin, omin = margin(res.x)
+            if gmin > TOUCH_TOL:
+                continue
+            if gmin >= -TOUCH_TOL:
+                hits = [(res.x, omin, f"{kind}-touch")]
+            else:
+                hits = []
+                for a, b in ((s[0], res.x), (res.x, s[2])):
+                    root = brentq(lambda x: margin(x)[0], a, b, xtol=1e-12)
+                    hits.append((root, margin(root)[1], kind))
+        except (ShootingError, ValueError):
+            continue  # a trial point off the branch: keep the sign tests' verdict
+        for x, o, name in hits:
+            out.append(
+                Event(
+                    kind=name,
+                    index=i - 1 if x < s[1] else i,
+                    value=_value(problem, o.u[-1]),
+                    orbit=o,
+                    multiplier=_critical(kind, o),
+                )
+            )
+    return out
+
+
+def _vertex(s: np.ndarray, g: np.ndarray) -> float:
+    """The extreme value of the parabola through (s_k, g_k), k = 0, 1, 2 (g[1] if flat)."""
+    a = np.polyfit(s - s[1], g, 2)
+    return float(a[2] - a[1] ** 2 / (4 * a[0])) if a[0] != 0 else float(g[1])
 
 
 def _test_value(problem, kind, orbit, J, t_ref):

@@ -25,6 +25,16 @@ Bifurcation test functions (signs change where a real multiplier crosses a value
   or, for the transverse set, a symmetry-breaking (pitchfork) branch point);
 * ``minus``: prod (mu + 1) (a pair through -1: period doubling).
 
+A sign test at the ends of a step misses a pair that reaches -1 (or +1) and turns back
+within the step.  :meth:`Floquet.margins` gives, per multiplier set, the signed distance
+of the nearest pair from -1 and from +1 in half-trace units, min over pairs of
+1 + c and 1 - c with c = Re (mu + 1/mu) / 2 (c = cos theta on the unit circle, c < -1 or
+c > 1 for a real pair off it): it touches 0 where a pair touches -1 (+1) and dips below
+0 over a window where a pair leaves the circle there and comes back.  The continuation
+looks for such dips between its points (:mod:`sinktheory.nnm.continuation`), and
+limits its steps so that no multiplier turns by more than a set angle (:func:`angles`)
+per step, so a pair cannot swing through -1 or +1 and back unseen.
+
 Examples
 --------
 >>> import numpy as np
@@ -88,6 +98,53 @@ class Floquet:
             "transverse_plus": _prod(self.transverse - 1),
             "transverse_minus": _prod(self.transverse + 1),
         }
+
+    def margins(self) -> dict[str, float]:
+        """Signed distances of the nearest pair from -1 (``*_minus``) and +1 (``*_plus``)
+        in half-trace units (see the module docstring; +inf for an empty set).
+
+        Examples
+        --------
+        >>> mu = np.exp(1j * np.array([-3.0, 3.0]))  # a pair near -1 on the unit circle
+        >>> fl = Floquet(mu, mu, np.zeros(0, complex), 0.0)
+        >>> round(fl.margins()["inplane_minus"], 6), fl.margins()["transverse_plus"]
+        (0.010008, inf)
+        """
+        return {
+            "inplane_plus": _margin(self.nontrivial, -1.0),
+            "inplane_minus": _margin(self.nontrivial, 1.0),
+            "transverse_plus": _margin(self.transverse, -1.0),
+            "transverse_minus": _margin(self.transverse, 1.0),
+        }
+
+
+def angles(mu: np.ndarray) -> np.ndarray:
+    """Sorted rotation angles of the multipliers: arccos c on the unit circle (0 at +1, pi
+    at -1), -arccosh c beyond +1, pi + arccosh(-c) beyond -1 (c = Re (mu + 1/mu) / 2);
+    continuous and decreasing in c, so a pair passing +1 or -1 moves it continuously.
+
+    Examples
+    --------
+    >>> np.round(angles(np.array([1j, -1j, -2.0, -0.5])), 6).tolist()
+    [1.570796, 1.570796, 3.83474, 3.83474]
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        c = np.real((mu + 1.0 / mu) / 2)
+    out = np.where(
+        c > 1,
+        -np.arccosh(np.maximum(c, 1)),
+        np.where(c < -1, np.pi + np.arccosh(np.maximum(-c, 1)), np.arccos(np.clip(c, -1, 1))),
+    )
+    return np.sort(out)
+
+
+def _margin(mu: np.ndarray, sign: float) -> float:
+    """min over the multipliers of 1 + sign Re (mu + 1/mu) / 2."""
+    if not mu.size:
+        return float("inf")
+    with np.errstate(divide="ignore", invalid="ignore"):
+        c = np.real((mu + 1.0 / mu) / 2)
+    return float(np.min(1.0 + sign * c))
 
 
 def _prod(x: np.ndarray) -> float:
