@@ -29,6 +29,7 @@ def test_energy_continuation_json_and_plot(tmp_path, capsys):
         (["--beta", "0.2", "--continue", "energy", "--range", "1", "0.1"], "range"),
         (["--beta", "0.6", "--continue", "energy"], "beta"),
         (["--beta", "0.2", "--continue", "beta", "--range", "0.3", "0.4"], "beta"),
+        (["--beta", "0.2", "--continue", "energy", "--agreement", "8"], "agreement"),
     ],
 )
 def test_bad_input_is_one_line_exit_2_no_file(tmp_path, capsys, extra, name):
@@ -36,3 +37,22 @@ def test_bad_input_is_one_line_exit_2_no_file(tmp_path, capsys, extra, name):
     code, out, err = run_cli(BASE + extra + ["--plot", str(png)], capsys)
     assert code == 2 and not png.exists()
     assert len(err.strip().splitlines()) == 1 and name in err
+
+
+def test_agreement_with_a_small_chaos_map(tmp_path, capsys):
+    """--agreement on 4 betas (2 runs x 20 periods: a smoke-size chaos map): the shares
+    are recomputed here from the JSON's own verdict and stability arrays."""
+    png = tmp_path / "agree.png"
+    argv = BASE + ["--beta", "-0.2", "--continue", "beta", "--range", "-0.6", "0.2",
+                   "--agreement", "4", "--runs", "2", "--periods", "20"]  # fmt: skip
+    code, out, err = run_cli(argv + ["--plot", str(png), "--json"], capsys)
+    assert code == 0, err
+    a = json.loads(out)["agreement"]
+    assert a["betas"] == 4 and png.stat().st_size > 10_000
+    regular = [not c for c in a["chaotic_verdict"]]
+    nnm = [abs(p) <= 1 for p in a["phi_half_nnm"]]
+    fixed = [abs(p) < 1 for p in a["phi_half_floquet"]]
+    for key, stable in (("nnm", nnm), ("floquet", fixed)):
+        share = sum(x == y for x, y in zip(stable, regular, strict=True)) / 4
+        assert a[key] == pytest.approx(share)
+    assert a["statement"].startswith("NNM transverse stability predicts")

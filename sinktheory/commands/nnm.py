@@ -11,6 +11,12 @@ symmetry-breaking points.
   amplitude A0 = 1 of the paper's fixed-container mode), from ``--beta`` over
   ``--range LO HI`` (betas); each point carries the transverse half-period half-trace
   phi_T/2; ``--plot`` draws it beside the paper's fixed-container phi_T/2(beta) (Fig. 7).
+* ``--continue beta --agreement POINTS``: the chaos map's setting instead (total energy
+  default 0.5, the container started at X = 1): the mode reached from the container's
+  low-energy mode (:mod:`sinktheory.nnm.agreement`), corrected on POINTS betas of
+  ``--range``, a chaos map (``--runs``, ``--periods``) on the same betas, and the share of
+  betas where the coupled mode's transverse stability and the fixed-container Floquet
+  theory each predict the chaos map's verdict; ``--plot`` adds lambda_1(beta) below.
 """
 
 from __future__ import annotations
@@ -53,6 +59,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--points", type=number, default=120, help="points per direction (120)")
     g.add_argument("--ds", type=number, default=0.1, help="first arclength step (0.1)")
     g.add_argument("--plot", metavar="FILE.png", help="frequency-energy / transverse chart")
+    g.add_argument(
+        "--agreement",
+        type=number,
+        metavar="POINTS",
+        help="with --continue beta: score the transverse stability on POINTS betas against "
+        "a chaos map (energy default 0.5)",
+    )
+    g.add_argument("--runs", type=number, default=8, help="chaos map runs per beta (8)")
+    g.add_argument("--periods", type=number, default=200, help="chaos map periods (200)")
     add_json(parser)
 
 
@@ -67,6 +82,15 @@ def _check(args) -> None:
         raise ParameterError("points", args.points, "an integer in [2, 10000]")
     if not (isinstance(args.ds, int | float) and math.isfinite(args.ds) and args.ds > 0):
         raise ParameterError("ds", args.ds, "a positive number")
+    if args.agreement is not None:
+        if args.continue_in != "beta":
+            raise ParameterError("agreement", args.agreement, "only with --continue beta")
+        if not isinstance(args.agreement, int) or not 2 <= args.agreement <= 1000:
+            raise ParameterError("agreement", args.agreement, "an integer in [2, 1000]")
+    for name in ("runs", "periods"):
+        v = getattr(args, name)
+        if not isinstance(v, int) or not 2 <= v <= 100_000:
+            raise ParameterError(name, v, "an integer in [2, 100000]")
     if args.energy is not None and not (math.isfinite(args.energy) and args.energy > 0):
         raise ParameterError("energy", args.energy, "a finite positive energy")
     if args.range is not None:
@@ -92,14 +116,15 @@ def run(args: argparse.Namespace) -> Output:
         if not lo <= energy <= hi:
             raise ParameterError("energy", energy, f"inside --range [{lo:g}, {hi:g}]")
     else:
-        energy = (
-            args.energy if args.energy is not None else sink.particles * well.gamma / (2 * well.n)
-        )
+        default_energy = 0.5 if args.agreement else sink.particles * well.gamma / (2 * well.n)
+        energy = args.energy if args.energy is not None else default_energy
         start = getattr(well, param)
         default = {"beta": (-1.0, well.alpha - 0.02), "alpha": (well.beta + 0.02, 2.0)}
         lo, hi = args.range if args.range is not None else default.get(param, (0.1, 10.0))
         if not lo <= start <= hi:
             raise ParameterError(param, start, f"inside --range [{lo:g}, {hi:g}]")
+    if args.agreement:
+        return _agreement(args, sink, energy, lo, hi, plot)
     from ..nnm.continuation import continue_both
 
     result = continue_both(
@@ -113,6 +138,64 @@ def run(args: argparse.Namespace) -> Output:
         ds=args.ds,
         half_traces=param != "energy",
     )
+    out = _report(result, sink, mode, param)
+    if plot is not None:
+        from ..plot import nnm as nplot
+
+        if param == "energy":
+            fig = nplot.plot_frequency_energy([result])
+        else:
+            scan = _fixed_scan(well, result) if param == "beta" else None
+            fig = nplot.plot_transverse(result, scan)
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        out.data["plot"] = str(plot)
+    return out
+
+
+def _fixed_scan(well, result):
+    """The paper's fixed-container chart over the branch's betas."""
+    from ..floquet import model_problem, scan
+
+    problem = model_problem(well.alpha, well.n, gamma=well.gamma, shape=well.shape)
+    return scan(problem, float(result.value.min()), float(result.value.max()), 200)
+
+
+def _agreement(args, sink, energy, lo, hi, plot) -> Output:
+    """--agreement: the chart on a beta grid scored against a chaos map."""
+    from ..chaos.maps import beta_grid, chaos_map
+    from ..nnm.agreement import agreement_report, transverse_chart
+
+    well = sink.well
+    betas = beta_grid([(lo, hi)], args.agreement)
+    chart = transverse_chart(sink, energy, betas, steps=args.steps, ds=args.ds)
+    chaos = chaos_map(well.alpha, well.n, betas, shape=well.shape, particles=sink.particles,
+                      mass=sink.mass, energy=energy, runs=args.runs,
+                      periods=args.periods)  # fmt: skip
+    report = agreement_report(sink, energy, betas, chaos=chaos, chart=chart)
+    out = _report(chart.branch, sink, "coupled", "beta")
+    out.data["agreement"] = report
+    out.text += "\n  " + report["statement"]
+    if plot is not None:
+        from ..plot import nnm as nplot
+
+        fig = nplot.plot_transverse(
+            chart.branch,
+            _fixed_scan(well, chart.branch),
+            chaos=(
+                betas,
+                chaos.lambda1.values,
+                r"$\lambda_1$ of the chaos map (chaotic where "
+                f"mean - 2 s.e. > {report['threshold']:.3g})",
+            ),  # fmt: skip
+        )
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        out.data["plot"] = str(plot)
+    return out
+
+
+def _report(result, sink, mode, param) -> Output:
+    """JSON data and the text summary of one branch."""
+    well = sink.well
     data = result.as_dict()
     ev = ", ".join(f"{e['kind']} at {e['value']:.6g}" for e in result.events) or "none"
     text = (
@@ -125,25 +208,4 @@ def run(args: argparse.Namespace) -> Output:
         f"  checks: max trivial-multiplier error {data['max_trivial_error']:.2e}, "
         f"max |sigma| {data['max_abs_sigma']:.2e}"
     )
-    out = Output(data, text)
-    if plot is not None:
-        from ..plot import nnm as nplot
-
-        if param == "energy":
-            fig = nplot.plot_frequency_energy([result])
-        else:
-            scan = None
-            if param == "beta":
-                from ..floquet import model_problem
-                from ..floquet import scan as fscan
-
-                scan = fscan(
-                    model_problem(well.alpha, well.n, gamma=well.gamma, shape=well.shape),
-                    float(result.value.min()),
-                    float(result.value.max()),
-                    200,
-                )
-            fig = nplot.plot_transverse(result, scan)
-        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
-        data["plot"] = str(plot)
-    return out
+    return Output(data, text)

@@ -166,9 +166,9 @@ def transverse_chart(
         stable.append(o.floquet.stable_transverse)
         freq.append(o.frequency)
     w = sink.well
-    result = branch.result(shape=w.shape, alpha=w.alpha, n=w.n, gamma=w.gamma,
-                           particles=sink.particles, mass=sink.mass,
-                           label="coupled normal mode")  # fmt: skip
+    result = branch.result(half_traces=True, shape=w.shape, alpha=w.alpha, beta=w.beta, n=w.n,
+                           gamma=w.gamma, particles=sink.particles, mass=sink.mass,
+                           mode="coupled", label="coupled normal mode")  # fmt: skip
     return TransverseChart(betas, np.array(phi), np.array(stable), np.array(freq), result)
 
 
@@ -187,6 +187,7 @@ def agreement_report(
     betas,
     *,
     chaos=None,
+    chart: TransverseChart | None = None,
     runs: int = 8,
     periods: int = 200,
     dt: float | None = None,
@@ -203,6 +204,8 @@ def agreement_report(
     chaos : xarray.Dataset, optional
         A chaos map over exactly ``betas`` (:func:`sinktheory.chaos.maps.chaos_map`);
         computed with ``runs``, ``periods``, ``dt``, ``seed``, ``workers`` otherwise.
+    chart : TransverseChart, optional
+        :func:`transverse_chart` over exactly ``betas`` (computed otherwise).
 
     Returns
     -------
@@ -227,7 +230,10 @@ def agreement_report(
     grid = np.asarray(chaos.beta.values, dtype=float)
     if grid.shape != betas.shape or not np.allclose(grid, betas, rtol=0, atol=1e-12):
         raise ParameterError("chaos", grid.tolist(), f"a chaos map over the betas {betas.tolist()}")
-    chart = transverse_chart(sink, energy, betas, steps=steps)
+    if chart is None:
+        chart = transverse_chart(sink, energy, betas, steps=steps)
+    elif chart.beta.shape != betas.shape or not np.allclose(chart.beta, betas, rtol=0, atol=0):
+        raise ParameterError("chart", chart.beta.tolist(), f"a chart over {betas.tolist()}")
     fixed = model_problem(w.alpha, w.n, gamma=w.gamma, shape=w.shape).evaluate(betas)
     a_nnm = agreement(chaos, chart.stable)
     a_fix = agreement(chaos, fixed.stable)
