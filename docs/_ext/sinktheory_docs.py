@@ -402,36 +402,7 @@ def _clean_api_stubs(app) -> None:
     shutil.rmtree(API_GENERATED, ignore_errors=True)
 
 
-def _fix_shadowed_modules(app) -> None:
-    """Document a submodule as a module even where its package shadows it.
-
-    ``from .indicators import indicators`` in a package's ``__init__`` makes the
-    attribute ``package.indicators`` the function, so autosummary writes a function page
-    for the module and its other members go undocumented.  Such a stub is rewritten as
-    a module page (autodoc imports the module itself by name).
-    """
-    for stub in sorted(API_GENERATED.glob("*.rst")):
-        name = stub.stem
-        text = stub.read_text()
-        if ".. automodule::" in text or not _is_module(name):
-            continue
-        logger.info("api: %s is shadowed by an attribute of its package", name)
-        title = f"{name}\n{'=' * len(name)}\n\n"
-        body = f".. automodule:: {name}\n   :members:\n   :show-inheritance:\n"
-        stub.write_text(title + body)
-
-
-def _is_module(name: str) -> bool:
-    import importlib.util
-
-    try:
-        return importlib.util.find_spec(name) is not None
-    except (ImportError, ValueError):
-        return False
-
-
 def setup(app):
-    app.connect("builder-inited", _fix_shadowed_modules, priority=900)  # after autosummary
     app.add_directive("symbolic", SymbolicMath)
     app.add_directive("cli-reference", CliReference)
     app.add_directive("paper-gallery", PaperGallery)

@@ -6,7 +6,8 @@ Jacobian of the discrete flow and is symplectic.  On top of it:
 
 * :func:`chaos` -- the container + particles ensemble, set up like ``simulate``:
   lambda_1, the full spectrum, GALI_k / SALI, MEGNO, the transverse exponent of y = 0;
-* :func:`indicators` -- the same for any engine system and start states (Henon-Heiles...);
+* :func:`indicators` -- the same for any engine system and start states (Henon-Heiles...),
+  from :mod:`sinktheory.chaos.general`;
 * :class:`ChaosResult` -- per-run values, ensemble mean +- standard error, finite-time
   exponents over windows, ``as_dict`` / ``to_dataset``;
 * :func:`monodromy`, :func:`symplectic_defect`, :func:`finite_difference_jacobian` --
@@ -30,7 +31,7 @@ Examples
 ((2, 6), True)
 """
 
-from .indicators import indicators
+from .general import indicators
 from .result import ChaosResult, sali_from_gali2
 from .sink import chaos
 from .tangent import canonical, finite_difference_jacobian, monodromy, symplectic_defect

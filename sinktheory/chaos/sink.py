@@ -44,7 +44,7 @@ from ..simulate import (
     total_energy,
 )
 from ..stepsize import resolve_step
-from .indicators import indicators
+from .general import indicators
 from .result import ChaosResult
 
 

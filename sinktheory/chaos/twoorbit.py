@@ -44,7 +44,7 @@ def two_orbit_exponent(
     Parameters
     ----------
     system, q, v, params, dt, steps, segments
-        As for :func:`~sinktheory.chaos.indicators.indicators`.
+        As for :func:`~sinktheory.chaos.general.indicators`.
     d0 : float
         Separation kept between the orbits (renormalised at every segment end).
     direction : (dq, dv) arrays (D, 1, R), optional

@@ -423,7 +423,7 @@ KINDS = {
 
 # --------------------------------------------------------------------------- chaos
 def _chaos_check(p: dict) -> None:
-    from ..chaos.indicators import check_gali
+    from ..chaos.general import check_gali
 
     _ensemble_check(p)
     v.positive_int("renorm", p["renorm"], minimum=0)
