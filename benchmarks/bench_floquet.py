@@ -23,11 +23,12 @@ import mpmath
 import numpy as np
 from matplotlib.figure import Figure
 
-from sinktheory._generated import oscillator as osc
+from sinktheory._generated.shapes import bundle
 from sinktheory.floquet import model_problem, pure_problem, scan
 from sinktheory.hill import monodromy_solve_ivp, quarter_period_mpmath
 
 ALPHA, N, COUNT = 0.5, 10, 1000
+FLAT = bundle("flat")
 BETAS = np.linspace(-1.0, 0.499, COUNT)
 SAMPLE = BETAS[:: COUNT // 5]  # 5 reference points across the chart
 
@@ -54,7 +55,7 @@ def rel_err(got, ref):
 def main(png: str) -> None:
     print(f"Floquet chart benchmark: alpha = {ALPHA}, n = {N}, {COUNT} beta values in [-1, 0.499]")
     t0 = time.perf_counter()
-    refs = np.array([mp_phi(N, osc.lambda_coefficient(ALPHA, b)) for b in SAMPLE])
+    refs = np.array([mp_phi(N, FLAT.hill_lambda(ALPHA, b)) for b in SAMPLE])
     t_mp = (time.perf_counter() - t0) / len(SAMPLE)
     idx = [int(np.argmin(np.abs(BETAS - b))) for b in SAMPLE]
 
@@ -81,13 +82,16 @@ def main(png: str) -> None:
     for rtol in (1e-10, 1e-13):
         t0 = time.perf_counter()
         vals = [
-            np.trace(monodromy_solve_ivp(N, b, kind="flat", alpha=ALPHA, rtol=rtol)) / 2
+            np.trace(
+                monodromy_solve_ivp(N, b, coefficient=FLAT.hill_coefficient, alpha=ALPHA, rtol=rtol)
+            )
+            / 2
             for b in SAMPLE
         ]
         t = (time.perf_counter() - t0) / len(SAMPLE) * COUNT
         rows.append((f"solve_ivp DOP853 rtol={rtol:.0e} (scaled)", t, rel_err(vals, refs)))
     # the reference's own error: 30 digits against 45 digits at one point
-    lam0 = osc.lambda_coefficient(ALPHA, SAMPLE[1])
+    lam0 = FLAT.hill_lambda(ALPHA, SAMPLE[1])
     with mpmath.workdps(45):  # the products themselves at 45 digits
         y1, dy1, y2, dy2, _ = quarter_period_mpmath(N, lam0, dps=45)
         hi = y1 * dy2 + y2 * dy1

@@ -4,7 +4,8 @@
 
 Builds V from the wall ratios s1 = x/D(y), s2 = y (flat) or y/D(x) (symmetric) with
 D(s) = alpha + beta (s^2 - 1), compares with the printed forms, and checks the symmetries
-the analyses rely on (y -> -y for both shapes, x <-> y for the symmetric one).
+the analyses rely on (y -> -y and x -> -x for every shape, x <-> y for the symmetric one,
+rotations for the circular one, whose V is written out independently here).
 """
 
 import sympy as sp
@@ -21,6 +22,28 @@ paper_symmetric = (
 )
 check("V, flat well (V definition)", S.potential("flat"), paper_flat)
 check("V, symmetric well (V definition2)", S.potential("symmetric"), paper_symmetric)
+r2 = x**2 + y**2
+check(
+    "V, circular well", S.potential("circular"), gamma / (2 * n) * (r2 / (alpha - beta) ** 2) ** n
+)
+probes = [
+    {
+        x: sp.Rational(3, 10),
+        y: sp.Rational(-2, 7),
+        alpha: 1,
+        beta: sp.Rational(b, 10),
+        gamma: sp.Rational(13, 10),
+        n: k,
+    }
+    for b in (-3, 3)
+    for k in (1, 2, 5)
+]
+check(
+    "circular: V depends on r only, V(x, y) = V(r, 0)",
+    S.potential("circular"),
+    S.potential("circular", sp.sqrt(r2), 0),
+    probes=probes,
+)
 
 for shape in S.SHAPES:
     V = S.potential(shape)
@@ -31,7 +54,7 @@ check("symmetric: V(y, x) = V(x, y)", Vs.subs({x: y, y: x}, simultaneous=True), 
 
 for shape in S.SHAPES:
     Vx, Vy = S.gradient_in_ratios(shape)
-    show(f"{shape}: dV/dx in the kernel atoms s1, s2, Dx, Dy", Vx)
+    show(f"{shape}: dV/dx in the kernel atoms {', '.join(map(str, S.atom_values(shape)))}", Vx)
     show(f"{shape}: dV/dy in the kernel atoms", Vy)
     V = S.potential(shape)
     probes = [

@@ -103,11 +103,14 @@ def _body(
     outputs = _integer_powers([sp.sympify(e) for e in outputs])
     reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols("t"), optimizations="basic")
     lines += [f"{s.name} = {_kernel_printer.doprint(e)}" for s, e in reps]
-    return lines + [
-        "return " + ", ".join(_kernel_printer.doprint(e) for e in reduced)
-        if len(reduced) > 1
-        else "return " + _kernel_printer.doprint(reduced[0])
+    # a constant output is printed as a float, so every branch returns the same types
+    out = [
+        (_kernel_printer.doprint(e) if e.is_infinite else repr(float(e)))
+        if e.is_Number
+        else _kernel_printer.doprint(e)
+        for e in reduced
     ]
+    return lines + ["return " + ", ".join(out)]
 
 
 def _njit_function(name: str, args: Sequence[str], doc: str, lines: Sequence[str]) -> str:
@@ -116,7 +119,7 @@ def _njit_function(name: str, args: Sequence[str], doc: str, lines: Sequence[str
 
 
 def _atoms_prelude(shape: str, used: Sequence[sp.Expr]) -> list[tuple[sp.Symbol, sp.Expr]]:
-    """Definitions of Dy, Dx, s1, s2 that the outputs need, in dependency order."""
+    """Definitions of the shape's atoms that the outputs need, in dependency order."""
     values = S.atom_values(shape)
     needed = set().union(*(e.free_symbols for e in used))
     # an atom is needed if an output uses it or a needed atom's definition uses it
@@ -130,46 +133,207 @@ def _atoms_prelude(shape: str, used: Sequence[sp.Expr]) -> list[tuple[sp.Symbol,
     return [(a, v) for a, v in values.items() if a in needed]
 
 
+def _small_n(outputs: Sequence[sp.Expr]) -> list[int]:
+    """The n >= 1 at which a symbolic exponent of the outputs is negative (w^(n-2) at
+    n = 1): those n get their own branch, printed with n substituted, where such a term
+    carries a factor n - 1 and SymPy cancels it exactly."""
+    exps = [p.exp for e in outputs for p in e.atoms(sp.Pow) if p.exp.has(S.n)]
+    return [k for k in (1, 2, 3) if any(x.subs(S.n, k) < 0 for x in exps)]
+
+
+def _shape_kernel(shape: str, outputs: Sequence[sp.Expr]) -> list[str]:
+    """Body lines of a kernel over (x, y, ...): atoms, then the outputs (any n)."""
+    lines = []
+    for k in _small_n(outputs):
+        fixed = [sp.expand(e.subs(S.n, k)) for e in outputs]
+        body = _body(fixed, _atoms_prelude(shape, fixed))
+        lines += [f"if n == {k}:", *("    " + t for t in body)]
+    return lines + _body(outputs, _atoms_prelude(shape, outputs))
+
+
 _WELL_ARGS = ("x", "y", "alpha", "beta", "gamma", "n")
 
 
-def _well_module() -> str:
+class GeometryPrinter(PythonCodePrinter):
+    """Plain-Python printer (floats, ``**``) for the geometry of a shape, which runs once
+    per call from Python and must not pay numba's start-up."""
+
+    def _print_Maximum(self, expr):  # noqa: D102 - printer protocol
+        f, var, lo, hi = expr.args
+        return (
+            f"maximum(lambda {self._print(var)}: {self._print(f)}, "
+            f"{self._print(lo)}, {self._print(hi)})"
+        )
+
+    def _print_Pow(self, expr, rational=False):  # noqa: D102 - printer protocol
+        if expr.exp.has(S.n) and expr.exp.is_integer:  # b**(2n): inf, not OverflowError
+            return f"int_power({self._print(expr.base)}, {self._print(expr.exp)})"
+        return super()._print_Pow(expr, rational=rational)
+
+
+_geometry_printer = GeometryPrinter({"fully_qualified_modules": True, "standard": "python3"})
+
+
+def _python_function(name: str, args: Sequence[str], doc: str, lines: Sequence[str]) -> str:
+    body = textwrap.indent("\n".join([f'"""{doc}"""', *lines]), "    ")
+    return f"def {name}({', '.join(args)}):\n{body}\n"
+
+
+def _geometry(expr: sp.Expr) -> str:
+    return _geometry_printer.doprint(sp.sympify(expr))
+
+
+def _wall_ratio_lines(shape: S.Shape) -> list[str]:
+    """Each wall ratio |num| / den, inf where den <= 0; then their maximum."""
+    lines, names = [], []
+    for k, ratio in enumerate(shape.wall_ratios):
+        num, den = sp.fraction(ratio)
+        if den == 1:
+            names.append(f"abs({_geometry(num)})")
+            continue
+        lines += [
+            f"d{k} = {_geometry(den)}",
+            f"r{k} = abs({_geometry(num)}) / d{k} if d{k} > 0 else math.inf",
+        ]
+        names.append(f"r{k}")
+    return lines + [f"return max({', '.join(names)})" if len(names) > 1 else f"return {names[0]}"]
+
+
+def _shape_module(name: str) -> str:
+    """One kernel bundle: the same function names for every shape."""
+    shape = S.SHAPES[name]
+    refusal = S.normal_mode_refusal(name)
     parts = [
         _BANNER,
-        '"""Potential, gradient and Hessian of the soft-wall well, per shape, for any n.\n\n'
-        "Arguments: particle position (x, y) relative to the container, well parameters\n"
-        "alpha, beta, gamma (floats) and the integer stiffness n.  Dx = D(x), Dy = D(y)\n"
-        "with D(s) = alpha + beta (s^2 - 1); s1, s2 are the wall ratios and\n"
-        "V = gamma/(2n) (s1^2n + s2^2n).\n"
-        '"""\n',
-        "import math  # noqa: F401\n\nimport numba\n\nfrom ._support import ipow  # noqa: F401\n\n",
+        f'"""Kernel bundle of the {name} well: {shape.summary}.\n\n'
+        "Numba kernels take the particle position (x, y) relative to the container, the well\n"
+        "parameters alpha, beta, gamma (floats) and the integer stiffness n; the geometry\n"
+        "functions are plain Python.  Every bundle has the same names (see\n"
+        ":mod:`sinktheory._generated.shapes`).\n"
+        '"""\n\n',
+        "import math  # noqa: F401\n\nimport numba\n\n"
+        "from .._support import int_power, ipow, maximum  # noqa: F401\n\n",
+        f"NAME = {name!r}\n",
+        f"SUMMARY = {shape.summary!r}\n",
+        "#: Why Hill's analysis of the normal mode y = 0 does not apply ('' if it does).\n",
+        f"NORMAL_MODE_REFUSAL = {refusal!r}\n",
+        "#: What the escape energy is, for messages ('' if the basin never opens).\n",
+        f"ESCAPE_NAME = {shape.escape_name!r}\n",
     ]
-    s = sp.Symbol("s", real=True)
+    V = S.potential_of_ratios(name)
+    for fname, outs, doc in (
+        ("potential", [V], f"V(x, y) of the {name} well."),
+        ("gradient", list(S.gradient_in_ratios(name)), f"(dV/dx, dV/dy) of the {name} well."),
+        ("hessian", list(S.hessian_in_ratios(name)), f"(V_xx, V_xy, V_yy) of the {name} well."),
+    ):
+        parts.append("\n\n" + _njit_function(fname, _WELL_ARGS, doc, _shape_kernel(name, outs)))
+    if not refusal:
+        q_general = S.rescaled_equations(name).hill_coefficient
+        q_one = S.rescaled_equations(name, 1).hill_coefficient
+        body = ["if n == 1:", *("    " + t for t in _body([q_one])), *_body([q_general])]
+        parts.append(
+            "\n\n"
+            + _njit_function(
+                "hill_coefficient",
+                ("x", "alpha", "beta", "n"),
+                f"q(x) of y'' + q(x) y = 0, the {name} well linearised about y = 0 in the "
+                "rescaled variables (n = 1 has its own form).",
+                body,
+            )
+        )
+        lam = sp.factor(sp.simplify(q_general.subs(S.x, 1)))
+        parts.append(
+            "\n\n"
+            + _python_function(
+                "hill_lambda",
+                ("alpha", "beta"),
+                "lambda = q(1) for n >= 2: Hill's coefficient at the turning point x = 1 "
+                "(the paper's -2 beta (alpha - beta) for its wells).",
+                [f"return float({_geometry(lam)})"],
+            )
+        )
+    parts.append(
+        "\n\n"
+        + _python_function(
+            "wall_ratio",
+            ("x", "y", "alpha", "beta"),
+            "Largest wall ratio at (x, y): < 1 strictly inside the walls (inf where a wall's "
+            "denominator is <= 0).",
+            _wall_ratio_lines(shape),
+        )
+    )
+    dens = [_geometry(d) for d in shape.denominators]
+    parts.append(
+        "\n\n"
+        + _python_function(
+            "smallest_denominator",
+            ("x", "y", "alpha", "beta"),
+            "Smallest wall denominator at (x, y) (inf if the shape has none); each is "
+            "monotone in x^2 and y^2, so its extremes on a box are at the corners.",
+            [f"return min({', '.join(dens)}, math.inf)" if dens else "return math.inf"],
+        )
+    )
+    parts.append(
+        "\n\n"
+        + _python_function(
+            "reach",
+            ("c", "alpha", "beta", "gamma", "n"),
+            "(x_max, y_max): bounds of |x|, |y| over the basin V <= E around the centre, "
+            "c = (2 n E / gamma)^(1/(2n)).",
+            [f"return float({_geometry(shape.x_reach)}), float({_geometry(shape.y_reach)})"],
+        )
+    )
     parts.append(
         "\n\n"
         + _njit_function(
-            "denominator",
-            ("s", "alpha", "beta"),
-            "D(s) = alpha + beta (s^2 - 1), the wall's half-width at coordinate s.",
-            _body([S.denominator(s)]),
+            "escape_energy",
+            ("alpha", "beta", "gamma", "n"),
+            "Energy above which the basin opens and a particle escapes (inf if never).",
+            _body([shape.escape]),
         )
     )
-    for shape in S.SHAPES:
-        V = S.potential_of_ratios()
-        grad = S.gradient_in_ratios(shape)
-        hess = S.hessian_in_ratios(shape)
-        for name, outs, doc in (
-            (f"potential_{shape}", [V], f"V(x, y) of the {shape} well."),
-            (f"gradient_{shape}", list(grad), f"(dV/dx, dV/dy) of the {shape} well."),
-            (
-                f"hessian_{shape}",
-                list(hess),
-                f"(V_xx, V_xy, V_yy) of the {shape} well.",
-            ),
-        ):
-            lines = _body(outs, _atoms_prelude(shape, outs))
-            parts.append("\n\n" + _njit_function(name, _WELL_ARGS, doc, lines))
+    parts.append(
+        "\n\n"
+        + _python_function(
+            "wall_curvature",
+            ("y", "alpha", "beta"),
+            "Curvature of the rigid wall (n -> oo) at height y (positive: bulging inward).",
+            [f"return float({_geometry(S.rigid_wall_curvature(name))})"],
+        )
+    )
     return "".join(parts)
+
+
+def _shapes_init() -> str:
+    names = tuple(S.SHAPES)
+    summaries = "".join(f"    {k!r}: {S.SHAPES[k].summary!r},\n" for k in names)
+    return (
+        _BANNER
+        + '''"""The registry of well shapes: one kernel bundle per shape, the same names in each.
+
+Each module ``sinktheory._generated.shapes.<name>`` has ``potential``, ``gradient``,
+``hessian`` (numba, over x, y, alpha, beta, gamma, n), ``escape_energy`` (numba), the
+plain-Python geometry ``wall_ratio``, ``smallest_denominator``, ``reach``,
+``wall_curvature``, the constants ``NAME``, ``SUMMARY``, ``ESCAPE_NAME``,
+``NORMAL_MODE_REFUSAL`` and, where the normal mode y = 0 exists, ``hill_coefficient``
+(numba) and ``hill_lambda``.
+
+>>> bundle("flat").NAME, NAMES
+('flat', ('flat', 'symmetric', 'circular'))
+"""
+
+import importlib
+
+'''
+        + f"NAMES = {names!r}\n"
+        + "#: One line per shape: its formula and the meaning of the parameters.\n"
+        + "SUMMARIES = {\n"
+        + summaries
+        + "}\n\n\n"
+        + "def bundle(name):\n"
+        + '    """The kernel module of the shape ``name`` (one of :data:`NAMES`)."""\n'
+        + '    return importlib.import_module(f"{__name__}.{name}")\n'
+    )
 
 
 def _scalar_function(name: str, args: Sequence[str], expr: sp.Expr, doc: str) -> str:
@@ -179,7 +343,7 @@ def _scalar_function(name: str, args: Sequence[str], expr: sp.Expr, doc: str) ->
 def _oscillator_module() -> str:
     parts = [
         _BANNER,
-        '"""Power-law oscillator, Hill coefficient and well geometry from the symbolic model."""\n',
+        '"""Power-law oscillator, Hill coefficients and the geometry shared by every shape."""\n',
         "import math  # noqa: F401\n\nimport mpmath\nimport numba\n\n"
         "from ._support import ipow  # noqa: F401\n\n",
     ]
@@ -217,54 +381,36 @@ def _oscillator_module() -> str:
         "\n\n"
         + _scalar_function("amplitude_of_energy", ("n", "E"), A, "A0 = (2 n E)^(1/(2n)), float64.")
     )
+    lam = sp.Symbol("lam", real=True)
+    parts.append(
+        "\n\n"
+        + _njit_function(
+            "pure_hill_coefficient",
+            ("x", "alpha", "lam", "n"),
+            "Lam x^(2n): the pure Hill equation's coefficient, with the signature of the "
+            "shapes' ``hill_coefficient`` (alpha unused).",
+            _body([lam * S.hill_shape()]),
+        )
+    )
     for name, expr, doc in (
-        ("oscillator_acceleration", S.oscillator_acceleration(),
-         "x'' of the unloaded power-law oscillator (x-oscill, mu -> 0): -x^(2n-1)."),
-        ("hill_shape", S.hill_shape(),
-         "x^(2n): the pure Hill coefficient per unit Lam (q(x) / lambda for n >= 2)."),
+        (
+            "oscillator_acceleration",
+            S.oscillator_acceleration(),
+            "x'' of the unloaded power-law oscillator (x-oscill, mu -> 0): -x^(2n-1).",
+        ),
+        (
+            "hill_shape",
+            S.hill_shape(),
+            "x^(2n): the pure Hill coefficient per unit Lam (q(x) / lambda for n >= 2).",
+        ),
     ):
-        parts.append("\n\n" + _scalar_function(name, ("x", "n"), expr, doc + " Float64."))
+        if name == "oscillator_acceleration":
+            parts.append("\n\n" + _scalar_function(name, ("x", "n"), expr, doc + " Float64."))
         parts.append(
             f"\n\ndef {name}_mp(x, n):\n"
             f'    """{doc} At the current mpmath precision (x an mpf, n an int)."""\n'
             f"    return {_mp_printer.doprint(expr)}\n"
         )
-    parts.append(
-        "\n\n"
-        + _scalar_function(
-            "lambda_coefficient",
-            ("alpha", "beta"),
-            S.lambda_coefficient(),
-            "lambda = -2 beta (alpha - beta) of the linearised y-equation (y-oscill).",
-        )
-    )
-    for shape in S.SHAPES:
-        q_general = S.rescaled_equations(shape).hill_coefficient
-        q_one = S.rescaled_equations(shape, 1).hill_coefficient
-        body = [
-            "if n == 1:",
-            *("    " + s for s in _body([q_one])),
-            *_body([q_general]),
-        ]
-        parts.append(
-            "\n\n"
-            + _njit_function(
-                f"hill_coefficient_{shape}",
-                ("x", "alpha", "beta", "n"),
-                f"q(x) of y'' + q(x) y = 0, the {shape} well linearised about y = 0 in the "
-                "rescaled variables (n = 1 has an extra term).",
-                body,
-            )
-        )
-    parts.append(
-        "\n\n"
-        + _scalar_function(
-            "rigid_wall_curvature",
-            ("beta", "y"),
-            S.rigid_wall_curvature(),
-            "Curvature of the rigid-wall contour x = D(y) (paper eq. kappa).",
-        )
-    )
     parts.append(
         "\n\n"
         + _scalar_function(
@@ -274,35 +420,14 @@ def _oscillator_module() -> str:
             "c = (2 n E / gamma)^(1/(2n)): |s1|, |s2| <= c wherever V <= E.",
         )
     )
-    width = S.flat_level_half_width()
+    s = sp.Symbol("s", real=True)
     parts.append(
         "\n\n"
         + _njit_function(
-            "flat_level_half_width",
-            ("y", "E", "alpha", "beta", "gamma", "n"),
-            "x > 0 on the level line V = E of the flat well at height |y| <= c.",
-            _body([width], [(S.Dy, S.denominator(S.y))]),
-        )
-    )
-    c = sp.Symbol("c", positive=True)
-    parts.append(
-        "\n\n"
-        + _scalar_function(
-            "symmetric_corner_bound",
-            ("alpha", "beta", "c"),
-            S.symmetric_corner_bound().subs(sp.Symbol("c", positive=True), c),
-            "Smallest s > 0 with s = c D(s) (symmetric well, beta > 0): the basin lies in "
-            "|x|, |y| <= s.",
-        )
-    )
-    s_star, V_star = S.symmetric_corner_saddle()
-    parts.append(
-        "\n\n"
-        + _njit_function(
-            "symmetric_corner_saddle",
-            ("alpha", "beta", "gamma", "n"),
-            "(s*, V*) of the saddle at x = y = s* of the symmetric well (beta > 0).",
-            _body([s_star, V_star]),
+            "denominator",
+            ("s", "alpha", "beta"),
+            "D(s) = alpha + beta (s^2 - 1), the wall's half-width at coordinate s.",
+            _body([S.denominator(s)]),
         )
     )
     return "".join(parts)
@@ -311,6 +436,8 @@ def _oscillator_module() -> str:
 _SUPPORT = (
     _BANNER
     + '''"""Helpers shared by the generated kernels."""
+
+import math
 
 import numba
 
@@ -325,6 +452,40 @@ def ipow(b, e):
         b *= b
         e >>= 1
     return result
+
+
+def int_power(b, e):
+    """b**e for an integer e in plain Python, +-inf instead of OverflowError."""
+    try:
+        return float(b) ** e
+    except OverflowError:
+        return math.copysign(math.inf, b) if e % 2 else math.inf
+
+
+def maximum(f, lo, hi, points=201, xatol=1e-12):
+    """Largest value of f on [lo, hi]: the best of a grid, refined by golden section.
+
+    f must be unimodal around the best grid point (plain Python: scipy.optimize would cost
+    0.4 s to import at start-up).
+    """
+    step = (hi - lo) / (points - 1)
+    grid = [lo + i * step for i in range(points - 1)] + [hi]
+    values = [f(t) for t in grid]
+    i = max(range(points), key=values.__getitem__)
+    a, b = grid[max(i - 1, 0)], grid[min(i + 1, points - 1)]
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    c, d = b - ratio * (b - a), a + ratio * (b - a)
+    fc, fd = f(c), f(d)
+    while b - a > xatol:
+        if fc >= fd:
+            b, d, fd = d, c, fc
+            c = b - ratio * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + ratio * (b - a)
+            fd = f(d)
+    return max(fc, fd, values[i])
 '''
 )
 
@@ -340,8 +501,9 @@ def render() -> dict[str, str]:
     return {
         "__init__.py": _INIT,
         "_support.py": _SUPPORT,
-        "well.py": _well_module(),
         "oscillator.py": _oscillator_module(),
+        "shapes/__init__.py": _shapes_init(),
+        **{f"shapes/{name}.py": _shape_module(name) for name in S.SHAPES},
     }
 
 
@@ -352,6 +514,7 @@ def write(directory: Path | str = GENERATED_DIR) -> list[Path]:
     paths = []
     for name, text in render().items():
         path = directory / name
+        path.parent.mkdir(exist_ok=True)
         path.write_text(text)
         paths.append(path)
     return paths

@@ -90,7 +90,7 @@ import numpy as np
 from . import validation as v
 from ._generated import oscillator as _osc
 from .errors import BracketError, ParameterError
-from .hill import DEFAULT_RTOL, QuarterPeriod, check_amplitude, integrate_quarter_period
+from .hill import DEFAULT_RTOL, PURE, QuarterPeriod, check_amplitude, integrate_quarter_period
 from .model import MAX_N, Well
 
 #: Largest |lambda| A0^2 accepted: at 1e10 one quarter period takes about 1 s; at 1e12
@@ -113,7 +113,7 @@ class HillProblem:
 
     Attributes
     ----------
-    kind : "pure", "flat" or "symmetric"
+    kind : "pure" or the name of a well shape (:data:`sinktheory.model.SHAPES`)
     n : int
     amplitude : float
         A0, the amplitude of x(t).
@@ -136,6 +136,15 @@ class HillProblem:
         """Name of the parameter: ``"lam"`` or ``"beta"``."""
         return "lam" if self.kind == "pure" else "beta"
 
+    @property
+    def coefficient(self):
+        """The compiled coefficient q(x, alpha, p, n): Lam x^(2n), or the well shape's
+        generated ``hill_coefficient``."""
+        return PURE if self.kind == "pure" else self._well(0.0).kernels.hill_coefficient
+
+    def _well(self, beta: float) -> Well:
+        return Well(self.alpha, beta, self.n, gamma=self.gamma, shape=self.kind)
+
     def check(self, values) -> np.ndarray:
         """Validate parameter values; returns them as a 1-d float array.
 
@@ -157,7 +166,7 @@ class HillProblem:
             if self.kind == "pure":
                 v.finite("lam", value)
             else:
-                Well(self.alpha, float(value), self.n, gamma=self.gamma, shape=self.kind)
+                self._well(float(value))
             lam = float(self.lam(np.array([value]))[0])
             if abs(lam) * self.amplitude**2 > MAX_LAMBDA:
                 raise ParameterError(
@@ -167,41 +176,46 @@ class HillProblem:
                     why=f"lambda = {lam:.3g} at amplitude A0 = {self.amplitude:g}: the "
                     "quarter-period integration would exceed its step budget",
                 )
-        if self.kind == "symmetric" and self.n == 1:
+        if self.kind != "pure":
             for beta in arr:
-                self._check_symmetric_reach(float(beta))
+                self._check_denominators(float(beta))
         return arr
 
-    def _check_symmetric_reach(self, beta: float) -> None:
-        """n = 1 symmetric well: the coefficient has a pole where the wall D(x) vanishes.
+    def _check_denominators(self, beta: float) -> None:
+        """The walls' denominators must stay positive along the orbit on y = 0.
 
-        In physical units x reaches (alpha - beta) A0; D(s) = alpha + beta (s^2 - 1) is
-        monotone in s^2, so D must stay positive at that end.
+        In physical units x reaches (alpha - beta) A0; each denominator is monotone in
+        x^2, so it must stay positive at that end (else Hill's coefficient has a pole there:
+        the symmetric well's D(x) for n = 1 and large A0).
         """
-        well = Well(self.alpha, beta, self.n, gamma=self.gamma, shape=self.kind)
-        if float(well.denominator(well.wall_distance * self.amplitude)) <= 0:
+        well = self._well(beta)
+        x_end = well.wall_distance * self.amplitude
+        if not well.kernels.smallest_denominator(x_end, 0.0, self.alpha, beta) > 0:
             raise ParameterError(
                 "amplitude",
                 self.amplitude,
-                f"smaller for beta = {beta!r} (symmetric well, n = 1)",
-                why="the wall D(x) of the y-direction vanishes inside the x-range, "
+                f"smaller for beta = {beta!r} ({self.kind} well, n = {self.n})",
+                why="a wall denominator vanishes inside the x-range, "
                 "where Hill's coefficient has a pole",
             )
 
     def lam(self, values: np.ndarray) -> np.ndarray:
-        """lambda of eq. y-oscill: Lam itself, or -2 beta (alpha - beta) (generated kernel)."""
+        """lambda of eq. y-oscill: Lam itself, or the shape's generated ``hill_lambda``
+        (Hill's coefficient at the turning point x = 1 for n >= 2: -2 beta (alpha - beta)
+        for the paper's wells, 1 for the circular one)."""
         if self.kind == "pure":
             return np.asarray(values, dtype=float)
-        return np.array([_osc.lambda_coefficient(self.alpha, b) for b in values])
+        hill_lambda = self._well(0.0).kernels.hill_lambda
+        return np.array([hill_lambda(self.alpha, b) for b in values])
 
     def quarter(self, values: np.ndarray) -> QuarterPeriod:
         """Fundamental solutions at Q for already validated parameter values."""
-        params = values * self.amplitude**2 if self.kind == "pure" else values
+        pure = self.kind == "pure"
         return integrate_quarter_period(
             self.n,
-            params,
-            kind=self.kind,
-            amplitude=self.amplitude,
+            values * self.amplitude**2 if pure else values,
+            coefficient=self.coefficient,
+            amplitude=1.0 if pure else self.amplitude,
             alpha=self.alpha,
             rtol=self.rtol,
         )
@@ -252,9 +266,13 @@ def model_problem(
 ) -> HillProblem:
     """Hill's equation of the model, linearised about y = 0, as a family in beta.
 
-    The coefficient is the generated ``hill_coefficient_{shape}`` in the rescaled
+    The coefficient is the shape's generated ``hill_coefficient`` in the rescaled
     variables: lambda x^(2n) for n >= 2; for n = 1 an extra constant-plus-x^2 term
     (flat) or a rational function of x^2 (symmetric) that the paper's eq. y-oscill omits.
+    The circular well gives x^(2n-2), the same for every beta: there y = eps x(t) (the
+    orbit turned by a small angle) solves Hill's equation, so phi_half = -1 exactly, a
+    neutral normal mode.  A shape whose line y = 0 is not an invariant power-law orbit
+    is refused, naming why.
 
     Parameters
     ----------
@@ -262,7 +280,7 @@ def model_problem(
     n : int in [1, 1000]
     gamma : float > 0
         Validated only: it is absorbed by the time rescaling and does not change phi.
-    shape : "flat" or "symmetric"
+    shape : one of :data:`sinktheory.model.SHAPES` (with a normal mode y = 0)
     amplitude : float > 0
         A0 of the rescaled oscillator x(t).
     rtol : float
@@ -279,6 +297,13 @@ def model_problem(
     ('beta', 1.0)
     """
     well = Well(alpha, 0.0, n, gamma=gamma, shape=shape)  # validates all but beta
+    if well.kernels.NORMAL_MODE_REFUSAL:
+        raise ParameterError(
+            "shape",
+            shape,
+            "a shape with a normal mode y = 0 for Hill's analysis",
+            why=well.kernels.NORMAL_MODE_REFUSAL,
+        )
     return HillProblem(
         kind=well.shape,
         n=well.n,

@@ -22,8 +22,8 @@ Lam A0^2 matters.  The rescaling of time conjugates the monodromy matrix by
 diag(1, A0^(n-1)), which leaves its trace (hence phi) unchanged.  All integrations here
 run in the normalised variables.
 
-Integrator: the Dormand-Prince 8(5,3) Runge-Kutta pair (the tableau is taken from
-``scipy.integrate``) with adaptive steps in compiled numba code.  Every step is accepted
+Integrator: the Dormand-Prince 8(5,3) Runge-Kutta pair (tableau in
+:mod:`sinktheory.dop853`) with adaptive steps in compiled numba code.  Every step is accepted
 only if the worst component of all columns (and of X) passes the error test, so all
 columns share one step sequence.  Each solution pair (y, y') is renormalised by exact
 powers of two when it grows past 2^400, so deeply unstable zones never overflow; the
@@ -39,7 +39,7 @@ n = 1000 (errors measured against mpmath up to n = 200 stay below 1e-12, see
 Examples
 --------
 >>> import numpy as np
->>> qp = integrate_quarter_period(2, np.array([0.0]), kind="pure")
+>>> qp = integrate_quarter_period(2, np.array([0.0]))  # the pure equation, Lam = 0
 >>> bool(abs(qp.y1[0] - 1.0) < 1e-12 and abs(qp.dy1[0]) < 1e-12)  # Lam = 0: y1 = 1
 True
 >>> bool(abs(qp.y2[0] - qp.quarter_period) < 1e-11)  # Lam = 0: y2 = s
@@ -49,18 +49,16 @@ True
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 
 import numba
 import numpy as np
+from numba import types
 
+from . import dop853
 from . import validation as v
 from ._generated import oscillator as _osc
 from ._generated._support import ipow
 from .errors import NonFiniteStateError, NumericalError, ParameterError
-
-KINDS = ("pure", "flat", "symmetric")
-"""``pure``: q = Lam x^(2n); ``flat``/``symmetric``: the generated model coefficient."""
 
 #: Default relative tolerance of one step; gives phi to about 1e-11 (see tests).
 DEFAULT_RTOL = 1e-13
@@ -68,28 +66,17 @@ DEFAULT_RTOL = 1e-13
 RENORM_BITS = 400
 
 
-def _dop853_coefficients():
-    """scipy's DOP853 tableau, read from its module file alone: importing it the usual way
-    runs ``scipy.integrate/__init__`` (0.7 s at start-up for one coefficient table)."""
-    import importlib.util
-
-    spec = importlib.util.find_spec("scipy")
-    path = Path(spec.origin).parent / "integrate" / "_ivp" / "dop853_coefficients.py"
-    if not path.is_file():  # another layout: the ordinary import
-        from scipy.integrate._ivp import dop853_coefficients
-
-        return dop853_coefficients
-    module_spec = importlib.util.spec_from_file_location("_sinktheory_dop853", path)
-    module = importlib.util.module_from_spec(module_spec)
-    module_spec.loader.exec_module(module)
-    return module
-
-
-_dop = _dop853_coefficients()
-_N_STAGES = 12
-_A = np.ascontiguousarray(_dop.A[: _N_STAGES + 1, :_N_STAGES])
-_E3 = np.ascontiguousarray(_dop.E3)
-_E5 = np.ascontiguousarray(_dop.E5)
+_A = np.ascontiguousarray(dop853.A)
+_E3 = np.ascontiguousarray(dop853.E3)
+_E5 = np.ascontiguousarray(dop853.E5)
+#: Type of a Hill coefficient kernel q(x, alpha, p, n) -> float: the generated
+#: ``hill_coefficient`` of a shape bundle, or ``pure_hill_coefficient``.  The compiled
+#: loop takes it as a first-class function, so one cached machine code serves every shape.
+COEFFICIENT_TYPE = types.FunctionType(
+    types.float64(types.float64, types.float64, types.float64, types.int64)
+)
+#: The coefficient of the pure Hill equation, Lam x^(2n).
+PURE = _osc.pure_hill_coefficient
 
 
 def check_amplitude(n: int, amplitude: float) -> float:
@@ -156,19 +143,26 @@ class QuarterPeriod:
     rejected: int
 
 
-@numba.njit(cache=True)
-def _coefficient(kind, x, n, amplitude, alpha, p):
-    """Normalised coefficient A0^(2-2n) q(A0 x); p is Lam A0^2 (pure) or beta (model)."""
-    if kind == 0:
-        return p * _osc.hill_shape(x, n)
-    scale = 1.0 / ipow(amplitude, 2 * n - 2)
-    if kind == 1:
-        return scale * _osc.hill_coefficient_flat(amplitude * x, alpha, p, n)
-    return scale * _osc.hill_coefficient_symmetric(amplitude * x, alpha, p, n)
-
-
-@numba.njit(cache=True)
-def _quarter_kernel(n, kind, amplitude, alpha, params, q_end, rtol, max_steps, A, E3, E5):
+@numba.njit(
+    types.Tuple(
+        (types.float64[:, ::1], types.int64[:, ::1], types.int64, types.int64, types.int64)
+    )(
+        COEFFICIENT_TYPE,
+        types.int64,
+        types.float64,
+        types.float64,
+        types.float64[::1],
+        types.float64,
+        types.float64,
+        types.int64,
+        types.float64[:, ::1],
+        types.float64[::1],
+        types.float64[::1],
+    ),
+    cache=True,
+)
+def _quarter_kernel(q, n, amplitude, alpha, params, q_end, rtol, max_steps, A, E3, E5):
+    """The adaptive DOP853 loop over [0, Q]; q(A0 x, alpha, p, n) is the coefficient."""
     m = params.size
     ns = E5.size  # 13 stages including the FSAL one
     kx = np.zeros(ns)
@@ -185,6 +179,7 @@ def _quarter_kernel(n, kind, amplitude, alpha, params, q_end, rtol, max_steps, A
     vx = 0.0
     t = 0.0
     vscale = 1.0 / np.sqrt(n)  # speed of the normalised oscillator at x = 0
+    scale = 1.0 / ipow(amplitude, 2 * n - 2)  # normalised coefficient A0^(2-2n) q(A0 x)
     h = min(q_end, 0.05 * vscale)
     big = 2.0**RENORM_BITS
     small = 2.0 ** (-RENORM_BITS)
@@ -192,7 +187,7 @@ def _quarter_kernel(n, kind, amplitude, alpha, params, q_end, rtol, max_steps, A
     kx[0] = vx
     kv[0] = _osc.oscillator_acceleration(x, n)
     for j in range(m):
-        c = _coefficient(kind, x, n, amplitude, alpha, params[j])
+        c = scale * q(amplitude * x, alpha, params[j], n)
         ky[0, j, 0] = y[j, 1]
         ky[0, j, 1] = -c * y[j, 0]
         ky[0, j, 2] = y[j, 3]
@@ -219,7 +214,7 @@ def _quarter_kernel(n, kind, amplitude, alpha, params, q_end, rtol, max_steps, A
             kx[s] = vs
             kv[s] = _osc.oscillator_acceleration(xs, n)
             for j in range(m):
-                c = _coefficient(kind, xs, n, amplitude, alpha, params[j])
+                c = scale * q(amplitude * xs, alpha, params[j], n)
                 for i in range(4):
                     acc = y[j, i]
                     for r in range(s):
@@ -303,11 +298,16 @@ def _quarter_kernel(n, kind, amplitude, alpha, params, q_end, rtol, max_steps, A
     return y, expo, steps, rejected, status
 
 
+def _label(coefficient) -> str:
+    """``<module>.<function>`` of a coefficient kernel, for messages (``flat.hill_coefficient``)."""
+    return f"{coefficient.__module__.rsplit('.', 1)[-1]}.{coefficient.__name__}"
+
+
 def integrate_quarter_period(
     n: int,
     params: np.ndarray,
     *,
-    kind: str = "pure",
+    coefficient=PURE,
     amplitude: float = 1.0,
     alpha: float = 0.0,
     rtol: float = DEFAULT_RTOL,
@@ -320,14 +320,15 @@ def integrate_quarter_period(
     n : int >= 1
         Exponent of the oscillator x'' + x^(2n-1) = 0.
     params : array of float
-        One column per entry: Lam A0^2 for ``kind="pure"``, beta for the model kinds.
-    kind : {"pure", "flat", "symmetric"}
-        Which coefficient: Lam x^(2n), or the generated ``hill_coefficient_flat`` /
-        ``hill_coefficient_symmetric`` (alpha and beta of the well, x = A0 X).
+        One column per entry: the third argument p of ``coefficient`` (Lam A0^2 for
+        :data:`PURE`, beta for a shape's ``hill_coefficient``).
+    coefficient : compiled kernel q(x, alpha, p, n)
+        :data:`PURE` (Lam x^(2n)) or a well's ``kernels.hill_coefficient``; evaluated
+        at x = A0 X and scaled by A0^(2-2n).
     amplitude : float > 0
-        A0, used by the model kinds only (the pure kind has it folded into ``params``).
+        A0 (leave 1 for :data:`PURE`, whose Lam A0^2 is folded into ``params``).
     alpha : float
-        alpha of the well (model kinds only).
+        alpha of the well (unused by :data:`PURE`).
     rtol : float in [1e-15, 1e-3]
         Per-step relative tolerance of every solution pair (y, y') and of X.
     max_steps : int
@@ -352,7 +353,6 @@ def integrate_quarter_period(
     1.570796326795
     """
     n = v.positive_int("n", n)
-    kind = v.choice("kind", kind, KINDS)
     amplitude = check_amplitude(n, amplitude)
     rtol = v.positive("rtol", rtol)
     if not 1e-15 <= rtol <= 1e-3:
@@ -362,8 +362,8 @@ def integrate_quarter_period(
         raise ParameterError("params", params, "a 1-d array of finite numbers")
     q_end = float(_osc.period(n, 1.0)) / 4.0
     y, expo, steps, rejected, status = _quarter_kernel(
+        coefficient,
         n,
-        KINDS.index(kind),
         amplitude,
         float(alpha),
         params,
@@ -376,12 +376,12 @@ def integrate_quarter_period(
     )
     if status == 1:
         raise HillIntegrationError(
-            f"Hill integration (n = {n}, kind = {kind}) used its {max_steps} steps before "
+            f"Hill integration (n = {n}, {_label(coefficient)}) used its {max_steps} steps before "
             f"reaching the quarter period Q = {q_end:.6g}; |q| is too large for this budget"
         )
     if status == 2 or not np.all(np.isfinite(y)):
         raise NonFiniteStateError(
-            f"Hill integration (n = {n}, kind = {kind}) produced a non-finite state "
+            f"Hill integration (n = {n}, {_label(coefficient)}) produced a non-finite state "
             f"before Q = {q_end:.6g}"
         )
     return QuarterPeriod(
@@ -445,7 +445,7 @@ def monodromy_solve_ivp(
     n: int,
     param: float,
     *,
-    kind: str = "pure",
+    coefficient=PURE,
     amplitude: float = 1.0,
     alpha: float = 0.0,
     half_periods: int = 1,
@@ -456,7 +456,7 @@ def monodromy_solve_ivp(
     Integrates the augmented system (X, X', y1, y1', y2, y2') in the normalised variables
     from the turning point over whole half periods, without the quarter-period symmetry.
     Slow (Python right-hand side); ``rtol`` 1e-13 with ``atol`` 1e-15 gives about 1e-11.
-    ``param`` is Lam A0^2 (pure) or beta (model kinds), as in
+    ``coefficient`` and ``param`` (Lam A0^2 for :data:`PURE`, beta for a shape) are as in
     :func:`integrate_quarter_period`.
 
     Returns
@@ -473,14 +473,14 @@ def monodromy_solve_ivp(
     from scipy.integrate import solve_ivp
 
     n = v.positive_int("n", n)
-    k = KINDS.index(v.choice("kind", kind, KINDS))
     amplitude = check_amplitude(n, amplitude)
+    scale = amplitude ** (2 - 2 * n)
     param = v.finite("param", param)
     half_periods = v.positive_int("half_periods", half_periods)
     t_end = half_periods * float(_osc.period(n, 1.0)) / 2.0
 
     def rhs(_t, u):
-        c = _coefficient(k, u[0], n, amplitude, alpha, param)
+        c = scale * coefficient(amplitude * u[0], alpha, param, n)
         acc = _osc.oscillator_acceleration(u[0], n)
         return [u[1], acc, u[3], -c * u[2], u[5], -c * u[4]]
 

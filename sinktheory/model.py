@@ -31,10 +31,12 @@ import numpy as np
 
 from . import validation as v
 from ._generated import oscillator as _osc
-from ._generated import well as _well
+from ._generated import shapes as _shapes
 from .errors import ParameterError
 
-SHAPES = ("flat", "symmetric")
+#: Names of the registered well shapes (:data:`sinktheory.symbolic.SHAPES`), with one
+#: kernel bundle each in :mod:`sinktheory._generated.shapes`.
+SHAPES = _shapes.NAMES
 #: Largest 2 n E / gamma accepted: the wall ratios' powers s^(2n) = 2 n V / gamma of a
 #: particle of energy E stay far inside float64 range (1.8e308).
 MAX_SCALED_ENERGY = 1e300
@@ -56,8 +58,6 @@ MAX_SECONDS = 30 * 86400.0
 #: integer powers s^(2n) of wall ratios |s| <= 1.5 well inside float64 range.
 MAX_N = 1000
 
-_POTENTIAL = {"flat": _well.potential_flat, "symmetric": _well.potential_symmetric}
-
 
 def _python(kernel):
     """The plain-Python body of a generated kernel (``py_func``), for scalar geometry.
@@ -70,9 +70,8 @@ def _python(kernel):
     return getattr(kernel, "py_func", kernel)
 
 
-_denominator = _python(_well.denominator)
+_denominator = _python(_osc.denominator)
 _axis_reach_factor = _python(_osc.axis_reach_factor)
-_rigid_wall_curvature = _python(_osc.rigid_wall_curvature)
 
 
 @dataclass(frozen=True)
@@ -90,9 +89,18 @@ class Well:
         Wall stiffness; rigid walls as n -> oo.
     gamma : float > 0
         Strength of the well.
-    shape : "flat" or "symmetric"
+    shape : one of :data:`SHAPES`
         ``"flat"``: gamma/(2n) [(x/D(y))^2n + y^2n]; ``"symmetric"``:
-        gamma/(2n) [(x/D(y))^2n + (y/D(x))^2n], with D(s) = alpha + beta (s^2 - 1).
+        gamma/(2n) [(x/D(y))^2n + (y/D(x))^2n], with D(s) = alpha + beta (s^2 - 1);
+        ``"circular"``: gamma/(2n) (r / (alpha - beta))^2n, a round well of radius
+        alpha - beta (alpha and beta enter only through it).  Each shape is defined
+        once in :mod:`sinktheory.symbolic`; :attr:`kernels` is its generated bundle.
+
+    Examples
+    --------
+    >>> well = Well(0.5, 0.3, 4, shape="circular")
+    >>> well.kernels.NAME, round(well.reach(0.125)[0], 12)  # c = 1: the radius 0.2
+    ('circular', 0.2)
     """
 
     alpha: float
@@ -134,13 +142,20 @@ class Well:
         return float(_denominator(0.0, self.alpha, self.beta))
 
     @property
+    def kernels(self):
+        """The shape's kernel bundle (module of :mod:`sinktheory._generated.shapes`):
+        ``potential``, ``gradient``, ``hessian``, ``hill_coefficient``, geometry."""
+        return _shapes.bundle(self.shape)
+
+    @property
     def curvature_at_centre(self) -> float:
-        """Curvature of the rigid wall at y = 0, which is 2 beta (paper eq. kappa)."""
+        """Curvature of the rigid wall at y = 0 (paper eq. kappa: 2 beta for the flat and
+        symmetric wells; -1/(alpha - beta) for the circular one)."""
         return self.curvature(0.0)
 
     def curvature(self, y: float) -> float:
-        """Curvature of the rigid-wall contour x = D(y) at height y (n -> oo)."""
-        return float(_rigid_wall_curvature(self.beta, v.finite("y", y)))
+        """Curvature of the rigid-wall contour (n -> oo) at height y (generated kernel)."""
+        return self.kernels.wall_curvature(v.finite("y", y), self.alpha, self.beta)
 
     def denominator(self, s):
         """D(s) = alpha + beta (s^2 - 1); accepts scalars or arrays."""
@@ -148,15 +163,17 @@ class Well:
 
     def potential(self, x, y) -> np.ndarray:
         """V(x, y) at arrays of points (relative to the container)."""
-        f = np.vectorize(_POTENTIAL[self.shape], otypes=[float])
+        f = np.vectorize(self.kernels.potential, otypes=[float])
         return f(x, y, self.alpha, self.beta, self.gamma, self.n)
 
     # --- what a particle of energy E can reach -----------------------------------------
     def reach(self, energy: float) -> tuple[float, float]:
         """Bounds (x_max, y_max) on |x| and |y| over the basin V <= energy around the centre.
 
-        Checks that the well confines that energy with a positive denominator
-        everywhere in the basin (see :meth:`check_energy`).
+        Checks that the well confines that energy (below the shape's escape energy, such
+        as the corner saddle of the symmetric well) with positive wall denominators
+        everywhere in the basin (see :meth:`check_energy`).  The bounds are the shape's
+        generated ``reach``.
 
         Examples
         --------
@@ -172,54 +189,28 @@ class Well:
                 f"a finite number in (0, {limit:.6g}] (2 n E / gamma <= {MAX_SCALED_ENERGY:g})",
                 why="above it the wall terms (x/D)^(2n) of the potential overflow float range",
             )
+        k = self.kernels
+        args = (self.alpha, self.beta, self.gamma, self.n)
+        if k.ESCAPE_NAME:
+            v_escape = float(k.escape_energy(*args))
+            if e >= v_escape:
+                raise ParameterError(
+                    "energy",
+                    e,
+                    f"< {v_escape:.6g}, the height of {k.ESCAPE_NAME} of this {self.shape} well",
+                    why="above it a particle escapes through it",
+                )
         c = float(_axis_reach_factor(e, self.gamma, self.n))
-        D = self.denominator
-        if self.shape == "flat":
-            # |y| <= c; D is monotone in y^2, so its extremes on [0, c] are at the ends
-            if min(float(D(0.0)), float(D(c))) <= 0:
-                self._refuse_denominator(e, c)
-            return self._flat_x_reach(c, e), c
-        if self.beta <= 0:
-            # D(s) <= alpha - beta, so the basin lies in the box |x|, |y| <= c (alpha - beta)
-            s_box = c * self.wall_distance
-            if float(D(s_box)) <= 0:
-                self._refuse_denominator(e, s_box)
-            return s_box, s_box
-        s_star, v_star = _osc.symmetric_corner_saddle(self.alpha, self.beta, self.gamma, self.n)
-        if e >= v_star:
-            raise ParameterError(
-                "energy",
-                e,
-                f"< {v_star:.6g}, the height of the corner saddle of this symmetric well",
-                why="above it a particle escapes through the corners",
-            )
-        s = float(_osc.symmetric_corner_bound(self.alpha, self.beta, c))
-        if not np.isfinite(s):  # the wall lines x = c D(y), y = c D(x) do not meet:
-            s = max(s_star, c * float(D(s_star)))  # bound the basin by the saddle
-        return s, s
-
-    def _flat_x_reach(self, c: float, energy: float) -> float:
-        """Largest half-width of the level line V = energy over |y| <= c."""
-        if self.beta <= 0:
-            return c * self.wall_distance  # D is largest at y = 0
-
-        def minus_width(y: float) -> float:
-            return (
-                -float(self.denominator(y))
-                * c
-                * max(0.0, 1 - (y / c) ** (2 * self.n)) ** (1 / (2 * self.n))
-            )
-
-        grid = np.linspace(0.0, c, 201)
-        i = int(np.argmin([minus_width(t) for t in grid]))
-        lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
-        best = _golden_minimum(minus_width, float(lo), float(hi), 1e-12)
-        return -min(minus_width(best), minus_width(grid[i]))
+        x_max, y_max = k.reach(c, *args)
+        for corner in ((x_max, y_max), (x_max, 0.0), (0.0, y_max)):
+            if not k.smallest_denominator(*corner, self.alpha, self.beta) > 0:
+                self._refuse_denominator(e, corner)
+        return x_max, y_max
 
     def check_position(self, name: str, x: float, y: float) -> None:
         """Raise ParameterError naming ``name`` unless (x, y) is a finite point inside the
-        walls: wall ratios |x| / D(y) < 1 and, for the flat shape, |y| < 1, for the
-        symmetric one |y| / D(x) < 1.
+        walls: every wall ratio of the shape below 1 (flat: |x| / D(y) and |y|;
+        symmetric: |x| / D(y) and |y| / D(x); circular: r / (alpha - beta)).
 
         Examples
         --------
@@ -233,47 +224,28 @@ point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
         allowed = "a point inside the walls (wall ratios < 1)"
         if not (math.isfinite(x) and math.isfinite(y)):
             raise ParameterError(name, (x, y), allowed)
-        dy = float(self.denominator(y))
-        ratios = [abs(x) / dy if dy > 0 else math.inf]
-        if self.shape == "flat":
-            ratios.append(abs(y))
-        else:
-            dx = float(self.denominator(x))
-            ratios.append(abs(y) / dx if dx > 0 else math.inf)
-        if not max(ratios) < 1:
-            raise ParameterError(name, (x, y), allowed, why=f"wall ratio {max(ratios):.3g} there")
+        ratio = self.wall_ratio(x, y)
+        if not ratio < 1:
+            raise ParameterError(name, (x, y), allowed, why=f"wall ratio {ratio:.3g} there")
+
+    def wall_ratio(self, x: float, y: float) -> float:
+        """Largest wall ratio of the shape at (x, y): < 1 strictly inside the walls."""
+        return self.kernels.wall_ratio(float(x), float(y), self.alpha, self.beta)
 
     def check_energy(self, energy: float) -> None:
         """Raise ParameterError unless a particle with ``energy`` stays in a regular well."""
         self.reach(energy)
 
-    def _refuse_denominator(self, energy: float, s: float) -> None:
+    def _refuse_denominator(self, energy: float, point: tuple[float, float]) -> None:
+        x, y = point
+        d = self.kernels.smallest_denominator(x, y, self.alpha, self.beta)
         raise ParameterError(
             "beta",
             self.beta,
             "a value keeping D(s) = alpha + beta (s^2 - 1) > 0 wherever a particle can go",
-            why=f"with energy {energy:.6g} a particle reaches |s| = {s:.6g}, where "
-            f"D = {float(self.denominator(s)):.6g}",
+            why=f"with energy {energy:.6g} a particle reaches (|x|, |y|) = ({x:.6g}, {y:.6g}), "
+            f"where D = {d:.6g}",
         )
-
-
-def _golden_minimum(f, lo: float, hi: float, xatol: float) -> float:
-    """Where the unimodal ``f`` is smallest on [lo, hi], by golden-section search to
-    ``xatol`` (plain Python: scipy.optimize would cost 0.4 s to import at start-up)."""
-    ratio = (math.sqrt(5.0) - 1.0) / 2.0
-    a, b = lo, hi
-    c, d = b - ratio * (b - a), a + ratio * (b - a)
-    fc, fd = f(c), f(d)
-    while b - a > xatol:
-        if fc <= fd:
-            b, d, fd = d, c, fc
-            c = b - ratio * (b - a)
-            fc = f(c)
-        else:
-            a, c, fc = c, d, fd
-            d = a + ratio * (b - a)
-            fd = f(d)
-    return c if fc <= fd else d
 
 
 def confining_betas(
@@ -425,13 +397,9 @@ class RunSettings:
 
     def check_box(self, well: Well) -> None:
         """Raise ParameterError unless the start box (-box, box)^2 lies inside the walls:
-        at its corner the wall ratios x / D(y) (and y / D(x), or y itself for the flat
-        shape) are below 1."""
+        at its corner (box, box) every wall ratio of the shape is below 1."""
         b = self.box
-        d = float(well.denominator(b))
-        ratio = b / d if d > 0 else math.inf
-        if well.shape == "flat":
-            ratio = max(ratio, b)
+        ratio = well.wall_ratio(b, b)
         if not ratio < 1:
             wall = well.wall_distance
             raise ParameterError(

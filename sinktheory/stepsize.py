@@ -37,7 +37,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from . import validation as v
-from ._generated import well as _well
 from .errors import ParameterError
 from .integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
 
@@ -46,7 +45,6 @@ if TYPE_CHECKING:
 
 #: The container's period T = 2 pi (mass 1, spring 1).
 PERIOD = 2.0 * math.pi
-_HESSIAN = {"flat": _well.hessian_flat, "symmetric": _well.hessian_symmetric}
 
 #: (C_s, cliff_s) per scheme, from ``python benchmarks/calibrate_steps.py 300`` on the new
 #: engine (2026-11-23, 2445 s on the 2-core development machine; the raw worst errors per
@@ -94,7 +92,7 @@ def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float
         mid = 0.5 * (lo + hi)
         below = well.potential(mid * np.cos(theta[:, 0]), mid * np.sin(theta[:, 0])) <= energy
         lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
-    hessian = _HESSIAN[well.shape]
+    hessian = well.kernels.hessian
     largest = 0.0
     for r, t in zip(hi, theta[:, 0], strict=True):
         vxx, vxy, vyy = hessian(

@@ -37,11 +37,10 @@ Examples
 from __future__ import annotations
 
 import functools
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import sympy as sp
-
-SHAPES = ("flat", "symmetric")
 
 # --- symbols shared by the whole package -------------------------------------------
 alpha = sp.Symbol("alpha", positive=True)
@@ -63,11 +62,13 @@ wall_distance = sp.Symbol("L", positive=True)
 #: which overflow or underflow for large n).
 s1, s2 = sp.symbols("s1 s2", real=True)
 Dx, Dy = sp.symbols("Dx Dy", real=True)
-
-
-def _check_shape(shape: str) -> None:
-    if shape not in SHAPES:
-        raise ValueError(f"shape = {shape!r} is not allowed: must be one of {SHAPES}")
+#: Atoms of the circular well: iL = 1 / (alpha - beta) and the squared radial wall ratio
+#: w = (x^2 + y^2) iL^2.
+iL = sp.Symbol("iL", positive=True)
+w = sp.Symbol("w", nonnegative=True)
+#: c = (2 n E / gamma)^(1/(2n)) (:func:`axis_reach_factor`): the reach of a particle of
+#: energy E in units of the wall; the shapes declare their basin bounds in it.
+c = sp.Symbol("c", positive=True)
 
 
 def denominator(s: sp.Expr) -> sp.Expr:
@@ -75,68 +76,245 @@ def denominator(s: sp.Expr) -> sp.Expr:
     return alpha + beta * (s**2 - 1)
 
 
-def wall_ratios(shape: str, xs: sp.Expr = x, ys: sp.Expr = y) -> tuple[sp.Expr, sp.Expr]:
-    """The two ratios (s1, s2) whose 2n-th powers make up V.
+class Maximum(sp.Function):
+    """``Maximum(expr, var, lo, hi)``: the largest value of ``expr`` over var in [lo, hi].
 
-    ``"flat"``: (x / D(y), y); ``"symmetric"``: (x / D(y), y / D(x)).
+    Left unevaluated; :mod:`sinktheory.codegen` prints it as a call of the numerical
+    maximiser of the generated kernels (grid, then golden section).
     """
-    _check_shape(shape)
-    if shape == "flat":
-        return xs / denominator(ys), ys
-    return xs / denominator(ys), ys / denominator(xs)
+
+    def _latex(self, printer):
+        f, var, lo, hi = self.args
+        return (
+            rf"\max_{{{printer._print(var)} \in [{printer._print(lo)}, {printer._print(hi)}]}}"
+            rf" {printer._print(f)}"
+        )
 
 
-def _atom_definitions(shape: str) -> dict[sp.Symbol, tuple[sp.Expr, sp.Expr | None]]:
-    """Each ratio atom as (numerator, denominator atom or None)."""
-    _check_shape(shape)
-    return {s1: (x, Dy), s2: (y, Dx) if shape == "symmetric" else (y, None)}
+# --- the well shapes ----------------------------------------------------------------
+@dataclass(frozen=True)
+class Shape:
+    """One well shape: everything the package knows about it, declared once.
+
+    The kernels of :mod:`sinktheory._generated.shapes` (potential, force, Hessian, Hill
+    coefficient, geometry), the engine's system and the validation of
+    :class:`sinktheory.model.Well` are all derived from these fields, so a new shape is
+    one more entry of :data:`SHAPES` and a regeneration (``python
+    derivations/generate_kernels.py``).
+
+    Attributes
+    ----------
+    name : str
+        Name used by the API and the CLI (letters only: it is part of engine names).
+    summary : str
+        One line: the formula and the meaning of alpha, beta, n, gamma for this shape.
+    atoms : tuple of (Symbol, Expr)
+        Intermediate quantities in the order a kernel computes them, each defined in x,
+        y, the parameters and earlier atoms as numerator / denominator (an atom's
+        derivative is (d num - atom d den) / den, which keeps powers of O(1) numbers).
+    potential : Expr
+        V in the atoms (and x, y); the same gamma, n for every shape.
+    wall_ratios : tuple of Expr
+        Ratios in x, y that are < 1 strictly inside the walls (the level V = gamma/(2n)
+        of each term); a start position must have all of them below 1.
+    rigid_wall : Expr
+        x > 0 on the rigid wall (n -> oo) at height y, near y = 0; its curvature is
+        reported by ``sinktheory well``.
+    x_reach, y_reach : Expr
+        Bounds of |x|, |y| over the basin V <= E around the centre, in c (:data:`c`),
+        alpha, beta, gamma, n; may contain :class:`Maximum`.
+    escape : Expr
+        Energy above which the basin opens (a particle escapes); ``oo`` if never.
+    escape_name : str
+        What that energy is, for messages (e.g. "the corner saddle").
+    """
+
+    name: str
+    summary: str
+    atoms: tuple[tuple[sp.Symbol, sp.Expr], ...]
+    potential: sp.Expr
+    wall_ratios: tuple[sp.Expr, ...]
+    rigid_wall: sp.Expr
+    x_reach: sp.Expr
+    y_reach: sp.Expr
+    escape: sp.Expr = sp.oo
+    escape_name: str = ""
+
+    @property
+    def denominators(self) -> tuple[sp.Expr, ...]:
+        """Atom denominators (as functions of x, y) that must stay > 0 wherever a
+        particle can go; each is monotone in x^2 and in y^2."""
+        values = dict(self.atoms)
+        dens = []
+        for _atom, definition in self.atoms:
+            den = sp.fraction(definition)[1]
+            if den in values:
+                dens.append(values[den])
+        return tuple(dens)
+
+
+def _ratio_sum() -> sp.Expr:
+    """gamma/(2n) (s1^(2n) + s2^(2n)): the paper's wells in their wall ratios."""
+    return gamma / (2 * n) * (s1 ** (2 * n) + s2 ** (2 * n))
+
+
+def _flat() -> Shape:
+    width = flat_level_half_width().subs({Dy: denominator(y), E: gamma * c ** (2 * n) / (2 * n)})
+    width = sp.expand_power_base(sp.factor_terms(width), force=True)  # D (c^2n - y^2n)^(1/2n)
+    L = alpha - beta
+    return Shape(
+        name="flat",
+        summary="paper eq. (V definition): gamma/(2n) [(x/D(y))^2n + y^2n]; walls "
+        "x = +-D(y) bulge inward for beta > 0, outward for beta < 0; y = +-1 straight",
+        atoms=((Dy, denominator(y)), (s1, x / Dy), (s2, y)),
+        potential=_ratio_sum(),
+        wall_ratios=(x / denominator(y), y),
+        rigid_wall=denominator(y),
+        x_reach=sp.Piecewise(
+            (c * L, beta <= 0),
+            (Maximum(width, y, 0, c), True),
+        ),
+        y_reach=c,
+    )
+
+
+def _symmetric() -> Shape:
+    L = alpha - beta
+    s_star, v_star = symmetric_corner_saddle()
+    corner = symmetric_corner_bound()
+    (radicand,) = [p.base for p in corner.atoms(sp.Pow) if p.exp == sp.S.Half]
+    box = sp.Piecewise(
+        (c * L, beta <= 0),
+        (corner, radicand >= 0),
+        # the wall lines x = c D(y), y = c D(x) do not meet: bound by the saddle
+        (sp.Max(s_star, c * denominator(s_star)), True),
+    )
+    return Shape(
+        name="symmetric",
+        summary="paper eq. (V definition2): gamma/(2n) [(x/D(y))^2n + (y/D(x))^2n]; "
+        "invariant under x <-> y; for beta > 0 confines only below its corner saddle",
+        atoms=((Dy, denominator(y)), (Dx, denominator(x)), (s1, x / Dy), (s2, y / Dx)),
+        potential=_ratio_sum(),
+        wall_ratios=(x / denominator(y), y / denominator(x)),
+        rigid_wall=denominator(y),
+        x_reach=box,
+        y_reach=box,
+        escape=sp.Piecewise((v_star, beta > 0), (sp.oo, True)),
+        escape_name="the corner saddle",
+    )
+
+
+def _circular() -> Shape:
+    L = alpha - beta
+    return Shape(
+        name="circular",
+        summary="gamma/(2n) ((x^2 + y^2)/(alpha - beta)^2)^n: a round well of radius "
+        "alpha - beta (the wall distance of the other shapes); alpha and beta enter only "
+        "through it, and the rigid wall always focuses (curvature -1/(alpha - beta))",
+        atoms=((iL, 1 / L), (w, (x**2 + y**2) * iL**2)),
+        potential=gamma / (2 * n) * w**n,
+        wall_ratios=(sp.sqrt(x**2 + y**2) / L,),
+        rigid_wall=sp.sqrt(L**2 - y**2),
+        x_reach=c * L,
+        y_reach=c * L,
+    )
+
+
+#: The shape definitions, in the order the registry lists them; a shape's name is its
+#: function's name without the underscore.
+_DEFINITIONS = (_flat, _symmetric, _circular)
+
+
+@functools.cache
+def _registry() -> dict[str, Shape]:
+    shapes = {}
+    for define in _DEFINITIONS:
+        shape = define()
+        if shape.name != define.__name__.lstrip("_") or not shape.name.isalpha():
+            raise AssertionError(f"shape {shape.name!r} must be letters named as {define}")
+        shapes[shape.name] = shape
+    return shapes
+
+
+class _Shapes(Mapping):
+    """Read-only name -> :class:`Shape` mapping, built on first use (SymPy work)."""
+
+    def __getitem__(self, name: str) -> Shape:
+        return _registry()[name]
+
+    def __iter__(self):
+        return (define.__name__.lstrip("_") for define in _DEFINITIONS)
+
+    def __len__(self) -> int:
+        return len(_DEFINITIONS)
+
+    def __contains__(self, name: object) -> bool:
+        return name in tuple(self)
+
+    def __repr__(self) -> str:
+        return f"SHAPES{tuple(self)}"
+
+
+#: The registry of well shapes: iterating gives the names, ``SHAPES[name]`` the
+#: :class:`Shape`.  To add a shape, write its ``_<name>()`` definition above and append
+#: it to ``_DEFINITIONS``.
+SHAPES = _Shapes()
+
+
+def shape_definition(shape: str) -> Shape:
+    """The :class:`Shape` called ``shape`` (ValueError naming the allowed ones)."""
+    if shape not in SHAPES:
+        raise ValueError(f"shape = {shape!r} is not allowed: must be one of {tuple(SHAPES)}")
+    return SHAPES[shape]
+
+
+def wall_ratios(shape: str) -> tuple[sp.Expr, ...]:
+    """The shape's wall ratios in x, y (all < 1 strictly inside the walls).
+
+    ``"flat"``: (x / D(y), y); ``"symmetric"``: (x / D(y), y / D(x)); ``"circular"``:
+    (r / (alpha - beta),).
+    """
+    return shape_definition(shape).wall_ratios
 
 
 def atom_values(shape: str) -> dict[sp.Symbol, sp.Expr]:
     """Definitions of the atoms in x, y, in the order a kernel computes them."""
-    out: dict[sp.Symbol, sp.Expr] = {Dy: denominator(y)}
-    if shape == "symmetric":
-        out[Dx] = denominator(x)
-    for atom, (num, den) in _atom_definitions(shape).items():
-        out[atom] = num if den is None else num / den
-    return out
+    return dict(shape_definition(shape).atoms)
 
 
-def potential_of_ratios() -> sp.Expr:
-    """V in the atoms: gamma/(2n) (s1^(2n) + s2^(2n)) (the same for both shapes)."""
-    return gamma / (2 * n) * (s1 ** (2 * n) + s2 ** (2 * n))
+def potential_of_ratios(shape: str) -> sp.Expr:
+    """V in the shape's atoms (gamma/(2n) (s1^(2n) + s2^(2n)) for the paper's wells)."""
+    return shape_definition(shape).potential
 
 
 def potential(shape: str, xs: sp.Expr = x, ys: sp.Expr = y) -> sp.Expr:
-    """The soft-wall well V(x, y), paper eqs. (V definition) and (V definition2)."""
-    r1, r2 = wall_ratios(shape, xs, ys)
-    return potential_of_ratios().subs({s1: r1, s2: r2}, simultaneous=True)
+    """The well V(x, y): paper eqs. (V definition), (V definition2), or another shape."""
+    V = substitute_ratios(potential_of_ratios(shape), shape)
+    return V.subs({x: xs, y: ys}, simultaneous=True)
 
 
 # --- derivatives in atom form ------------------------------------------------------
 def _atom_derivative(atom: sp.Symbol, var: sp.Symbol, shape: str) -> sp.Expr:
-    """d(atom)/d(var), written in atoms: d(num/D) = (d num - (num/D) dD) / D."""
-    if atom in (Dx, Dy):
-        return sp.diff(denominator(x if atom == Dx else y), var)
-    num, den = _atom_definitions(shape)[atom]
-    dnum = sp.diff(num, var)
-    if den is None:
+    """d(atom)/d(var), written in atoms: d(num/den) = (d num - atom d den) / den."""
+    num, den = sp.fraction(atom_values(shape)[atom])
+    dnum = ratio_derivative(num, var, shape, expand=False)
+    if den == 1:
         return dnum
-    return (dnum - atom * _atom_derivative(den, var, shape)) / den
+    return (dnum - atom * ratio_derivative(den, var, shape, expand=False)) / den
 
 
-def ratio_derivative(expr: sp.Expr, var: sp.Symbol, shape: str) -> sp.Expr:
-    """d(expr)/d(var) for an expression in (x, y, s1, s2, Dx, Dy), chain rule through the atoms."""
+def ratio_derivative(expr: sp.Expr, var: sp.Symbol, shape: str, *, expand: bool = True) -> sp.Expr:
+    """d(expr)/d(var) for an expression in x, y and the shape's atoms (chain rule)."""
     total = sp.diff(expr, var)
-    for atom in (s1, s2, Dx, Dy):
+    for atom in atom_values(shape):
         if expr.has(atom):
             total += sp.diff(expr, atom) * _atom_derivative(atom, var, shape)
-    return sp.powsimp(sp.expand(total), force=True)
+    return sp.powsimp(sp.expand(total), force=True) if expand else total
 
 
 def gradient_in_ratios(shape: str) -> tuple[sp.Expr, sp.Expr]:
-    """(dV/dx, dV/dy) in the atoms x, y, s1, s2, Dx, Dy."""
-    V = potential_of_ratios()
+    """(dV/dx, dV/dy) in the atoms and x, y."""
+    V = potential_of_ratios(shape)
     return ratio_derivative(V, x, shape), ratio_derivative(V, y, shape)
 
 
@@ -151,11 +329,37 @@ def hessian_in_ratios(shape: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
 
 
 def substitute_ratios(expr: sp.Expr, shape: str) -> sp.Expr:
-    """Replace the atoms s1, s2, Dx, Dy by their definitions in x, y."""
+    """Replace the atoms by their definitions in x, y."""
     values = atom_values(shape)
     for atom in reversed(list(values)):
         expr = expr.subs(atom, values[atom])
     return expr.subs(values)
+
+
+def normal_mode_refusal(shape: str) -> str:
+    """Why Hill's analysis of the normal mode y = 0 does not apply to ``shape`` ("" if it
+    does).
+
+    It applies when y = 0 is invariant (V even in y) and the motion on it is the paper's
+    power-law oscillator, V(x, 0) = gamma/(2n) (x / (alpha - beta))^(2n).  Checked at exact
+    rational points for n = 1, 2, 5.
+    """
+    axis = gamma / (2 * n) * (x / (alpha - beta)) ** (2 * n)
+    for k in (1, 2, 5):
+        V = potential(shape).subs(n, k)
+        for xv, b in (
+            (sp.Rational(1, 3), sp.Rational(-3, 10)),
+            (sp.Rational(-2, 5), sp.Rational(1, 4)),
+        ):
+            at = {alpha: sp.Rational(1, 2), beta: b, gamma: sp.Rational(7, 5), x: xv}
+            if sp.simplify(sp.diff(V, y).subs(y, 0).subs(at)) != 0:
+                return "y = 0 is not invariant (V is not even in y)"
+            if sp.simplify((V.subs(y, 0) - axis.subs(n, k)).subs(at)) != 0:
+                return (
+                    "the motion on y = 0 is not the power-law oscillator "
+                    "(V(x, 0) differs from gamma/(2n) (x/(alpha - beta))^(2n))"
+                )
+    return ""
 
 
 # --- mechanics --------------------------------------------------------------------
@@ -347,11 +551,11 @@ def rescaled_equations(shape: str = "flat", n_value: int | None = None) -> Resca
 
     Parameters
     ----------
-    shape : "flat" or "symmetric"
+    shape : a name in :data:`SHAPES` whose normal mode y = 0 exists
     n_value : None for general n >= 2 (where y^(2n) adds nothing linear), or a specific
         integer, e.g. 1, where the y-term of the well adds a linear restoring force.
     """
-    _check_shape(shape)
+    shape_definition(shape)
     if n_value is None:
         m = sp.Symbol("m", integer=True, nonnegative=True)  # n = m + 2 >= 2
         nv = m + 2
@@ -378,8 +582,9 @@ def oscillator_acceleration() -> sp.Expr:
 
 def hill_shape() -> sp.Expr:
     """x^(2n): Hill's coefficient over lambda for n >= 2, the pure equation's q(x) / Lam."""
-    return sp.powsimp(sp.simplify(rescaled_equations("flat").hill_coefficient
-                                  / lambda_coefficient()), force=True)
+    return sp.powsimp(
+        sp.simplify(rescaled_equations("flat").hill_coefficient / lambda_coefficient()), force=True
+    )
 
 
 def lambda_coefficient() -> sp.Expr:
@@ -403,21 +608,24 @@ def rigid_wall_contour() -> sp.Expr:
     return denominator(y) * lim
 
 
-def rigid_wall_curvature() -> sp.Expr:
-    """Curvature of the rigid wall x = x_wall(y), paper eq. (kappa)."""
-    w = rigid_wall_contour()
-    k = sp.diff(w, y, 2) / (1 + sp.diff(w, y) ** 2) ** sp.Rational(3, 2)
-    return sp.simplify(k)
+def rigid_wall_curvature(shape: str = "flat") -> sp.Expr:
+    """Curvature of the rigid wall x = x_wall(y) of ``shape``, paper eq. (kappa) for the
+    flat well (positive: the wall bulges inward)."""
+    xw = rigid_wall_contour() if shape == "flat" else shape_definition(shape).rigid_wall
+    k = sp.diff(xw, y, 2) / (1 + sp.diff(xw, y) ** 2) ** sp.Rational(3, 2)
+    L = wall_distance  # alpha = L + beta with L > 0 lets SymPy take the square roots
+    k = sp.powsimp(sp.simplify(k.subs(alpha, L + beta)), force=True)
+    return k.subs(L, alpha - beta)
 
 
 # --- reach of a particle with energy E ----------------------------------------------
 def axis_reach_factor() -> sp.Expr:
-    """c with V(0, y) = E at y = c for the flat well: c = (2 n E / gamma)^(1/(2n)).
+    """c = (2 n E / gamma)^(1/(2n)): V(0, y) = E at y = c for the flat well.
 
-    Every level line of either shape scales with this factor: |s1|, |s2| <= c on V <= E.
+    A wall term of any shape, gamma/(2n) ratio^(2n), is <= E only where its ratio is
+    <= c, so the shapes declare their basins in c (:data:`c`).
     """
-    c = sp.Symbol("c", positive=True)
-    sol = sp.solve(sp.Eq(potential("flat", 0, c), E), c)
+    sol = sp.solve(sp.Eq(_ratio_sum().subs({s1: 0, s2: c}), E), c)
     return sp.simplify(sol[0])
 
 
@@ -426,10 +634,10 @@ def flat_level_half_width() -> sp.Expr:
 
     From s1^(2n) + y^(2n) = 2 n E / gamma: x = Dy (2 n E / gamma - y^(2n))^(1/(2n)).
     """
-    w = sp.Symbol("w", positive=True)
-    level = sp.Eq(potential_of_ratios().subs({s1: w, s2: y}), E)
+    t = sp.Symbol("t", positive=True)
+    level = sp.Eq(_ratio_sum().subs({s1: t, s2: y}), E)
     sample = {E: sp.Rational(1, 2), n: 3, gamma: 1, y: sp.Rational(1, 2)}
-    roots = [r for r in sp.solve(level, w) if sp.N(r.subs(sample)).is_positive]
+    roots = [r for r in sp.solve(level, t) if sp.N(r.subs(sample)).is_positive]
     if len(roots) != 1:
         raise AssertionError(f"expected one positive root, got {roots}")
     return roots[0] * Dy
@@ -444,8 +652,9 @@ def symmetric_corner_saddle() -> tuple[sp.Expr, sp.Expr]:
     s = sp.Symbol("s", positive=True)
     b = sp.Symbol("b", positive=True)  # beta > 0 here
     L = wall_distance  # alpha = beta + L with L > 0
-    Vd = potential("symmetric", s, s).subs(beta, b).subs(alpha, L + b)
-    crit = [c for c in sp.solve(sp.diff(Vd, s), s) if c.is_positive]
+    Vd = _ratio_sum().subs({s1: s / denominator(s), s2: s / denominator(s)})
+    Vd = Vd.subs(beta, b).subs(alpha, L + b)
+    crit = [r for r in sp.solve(sp.diff(Vd, s), s) if r.is_positive]
     if len(crit) != 1:
         raise AssertionError(f"expected one positive critical point, got {crit}")
     s_star = sp.simplify(crit[0])
@@ -460,7 +669,6 @@ def symmetric_corner_bound() -> sp.Expr:
     For beta > 0 the basin around the centre lies inside |x|, |y| <= this value.
     """
     s = sp.Symbol("s", positive=True)
-    c = sp.Symbol("c", positive=True)
     roots = sp.solve(sp.Eq(s, c * denominator(s)), s)
     if len(roots) != 2:
         raise AssertionError(f"expected two roots, got {roots}")

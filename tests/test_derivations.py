@@ -1,6 +1,7 @@
 """Each derivation script reproduces the paper's equations; `sinktheory derive` is readable."""
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -27,8 +28,14 @@ def test_there_is_a_script_per_derivation():
 
 @pytest.mark.parametrize("script", SCRIPTS)
 def test_derivation_script_succeeds(script):
+    # the scripts import this work tree's sinktheory, not an installed copy
+    env = {**os.environ, "PYTHONPATH": str(DERIVATIONS.parent)}
     r = subprocess.run(
-        [sys.executable, str(DERIVATIONS / script)], capture_output=True, text=True, timeout=600
+        [sys.executable, str(DERIVATIONS / script)],
+        capture_output=True,
+        text=True,
+        timeout=600,
+        env=env,
     )
     assert r.returncode == 0, r.stdout[-2000:] + r.stderr[-2000:]
     assert "all checks passed" in r.stdout

@@ -19,6 +19,7 @@ from scipy import optimize, special
 from scipy.integrate import solve_ivp
 
 from sinktheory._generated import oscillator as osc
+from sinktheory._generated.shapes import bundle
 from sinktheory.errors import ParameterError
 from sinktheory.floquet import (
     model_hill,
@@ -35,6 +36,8 @@ from sinktheory.hill import (
     monodromy_solve_ivp,
     quarter_period_mpmath,
 )
+
+FLAT, SYMMETRIC = bundle("flat"), bundle("symmetric")
 
 
 def mp_phi_half(n, lam):
@@ -133,7 +136,7 @@ def test_chart_agrees_with_solve_ivp(n):
     betas = np.linspace(-1.0, 0.45, 9)
     chart = model_hill(0.5, betas, n)
     for b, phi in zip(betas, chart.phi_half, strict=True):
-        m = monodromy_solve_ivp(n, b, kind="flat", alpha=0.5)
+        m = monodromy_solve_ivp(n, b, coefficient=FLAT.hill_coefficient, alpha=0.5)
         ref = np.trace(m) / 2
         assert abs(phi - ref) <= 1e-8 * max(1.0, abs(ref))
 
@@ -143,7 +146,8 @@ def test_symmetric_shape_n1_agrees_with_solve_ivp():
     betas = np.array([-0.6, -0.3, 0.2])
     chart = model_hill(0.5, betas, 1, shape="symmetric")
     for b, phi in zip(betas, chart.phi_half, strict=True):
-        ref = np.trace(monodromy_solve_ivp(1, b, kind="symmetric", alpha=0.5)) / 2
+        ref = np.trace(monodromy_solve_ivp(1, b, coefficient=SYMMETRIC.hill_coefficient, alpha=0.5))
+        ref /= 2
         assert abs(phi - ref) <= 1e-8 * max(1.0, abs(ref))
 
 
@@ -228,7 +232,7 @@ def test_pure_equation_depends_on_lam_times_amplitude_squared():
 def test_model_amplitude_n1_uses_the_kernel_at_the_true_x():
     """n = 1 is not a pure power, so the amplitude enters beyond lambda A0^2."""
     a0, alpha, beta = 1.3, 0.5, -0.4
-    ref = direct_phi_half(1, a0, lambda x: osc.hill_coefficient_flat(x, alpha, beta, 1))
+    ref = direct_phi_half(1, a0, lambda x: FLAT.hill_coefficient(x, alpha, beta, 1))
     got = model_hill(alpha, [beta], 1, amplitude=a0).phi_half[0]
     assert got == pytest.approx(ref, abs=1e-9)
 
@@ -277,8 +281,8 @@ def test_fig7_boundaries_certified_to_1e10(n):
     assert abs(hi) < 1e-12  # beta = 0: lambda = 0, y'' = 0, phi_half = 1 exactly
     (edge,) = [b for b in result.boundaries if b.value == lo]
     for value, name in [(edge.value, edge.factor), (result.resonances[0], "phi_half")]:
-        below = mp_factor(n, osc.lambda_coefficient(alpha, value - 1e-10), name)
-        above = mp_factor(n, osc.lambda_coefficient(alpha, value + 1e-10), name)
+        below = mp_factor(n, FLAT.hill_lambda(alpha, value - 1e-10), name)
+        above = mp_factor(n, FLAT.hill_lambda(alpha, value + 1e-10), name)
         assert below * above < 0, (value, name)
     chart = model_hill(alpha, [lo + 1e-6, hi - 1e-6, lo - 1e-6], n)
     assert chart.stable.tolist() == [True, True, False]

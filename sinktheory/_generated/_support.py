@@ -2,6 +2,8 @@
 # Regenerate with: python derivations/generate_kernels.py
 """Helpers shared by the generated kernels."""
 
+import math
+
 import numba
 
 
@@ -15,3 +17,37 @@ def ipow(b, e):
         b *= b
         e >>= 1
     return result
+
+
+def int_power(b, e):
+    """b**e for an integer e in plain Python, +-inf instead of OverflowError."""
+    try:
+        return float(b) ** e
+    except OverflowError:
+        return math.copysign(math.inf, b) if e % 2 else math.inf
+
+
+def maximum(f, lo, hi, points=201, xatol=1e-12):
+    """Largest value of f on [lo, hi]: the best of a grid, refined by golden section.
+
+    f must be unimodal around the best grid point (plain Python: scipy.optimize would cost
+    0.4 s to import at start-up).
+    """
+    step = (hi - lo) / (points - 1)
+    grid = [lo + i * step for i in range(points - 1)] + [hi]
+    values = [f(t) for t in grid]
+    i = max(range(points), key=values.__getitem__)
+    a, b = grid[max(i - 1, 0)], grid[min(i + 1, points - 1)]
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    c, d = b - ratio * (b - a), a + ratio * (b - a)
+    fc, fd = f(c), f(d)
+    while b - a > xatol:
+        if fc >= fd:
+            b, d, fd = d, c, fc
+            c = b - ratio * (b - a)
+            fc = f(c)
+        else:
+            a, c, fc = c, d, fd
+            d = a + ratio * (b - a)
+            fd = f(d)
+    return max(fc, fd, values[i])

@@ -85,13 +85,27 @@ class SeparableSystem:
 
 
 def _well_term(shape: str, n: int) -> Term:
-    """V(x, y) of one particle, x = u - X, in the wall-ratio atoms, exponent fixed to n.
+    """V(x, y) of one particle, x = u - X, in the shape's atoms, exponent fixed to n.
 
-    Each denominator D gets one reciprocal atom iD = 1/D and every D^-k becomes iD^k, so a
-    kernel divides once per denominator.
+    Every atom that appears with a negative power (a denominator such as D(y)) gets one
+    reciprocal atom iD = 1/D and every D^-k becomes iD^k, so a kernel divides once per
+    denominator.
     """
     u = sp.Symbol("u", real=True)
-    recip = {D: sp.Symbol(f"i{D.name}", real=True) for D in (S.Dx, S.Dy)}
+    definition = S.shape_definition(shape)
+    outputs = (
+        definition.potential,
+        *S.gradient_in_ratios(shape),
+        *S.hessian_in_ratios(shape),
+    )
+    outputs = [e.subs(S.n, n) for e in outputs]  # terms with a factor n - 1 cancel here
+    names = dict(definition.atoms)
+    recip = {
+        p.base: sp.Symbol(f"i{p.base.name}", real=True)
+        for e in outputs
+        for p in e.atoms(sp.Pow)
+        if p.base in names and p.exp.is_negative
+    }
 
     def fix(e):
         e = e.subs(S.n, n)
@@ -101,22 +115,26 @@ def _well_term(shape: str, n: int) -> Term:
         )
 
     atoms = []
-    for a, e in S.atom_values(shape).items():
+    for a, e in definition.atoms:
         atoms.append((a, fix(e)))
         if a in recip:
             atoms.append((recip[a], 1 / a))
+    value, *derivatives = (fix(e) for e in outputs)
     return Term(
         local=(S.x, S.y),
         maps=(u - S.X, S.y),
         atoms=tuple(atoms),
-        value=fix(S.potential_of_ratios()),
-        gradient=tuple(fix(g) for g in S.gradient_in_ratios(shape)),
-        hessian=tuple(fix(h) for h in S.hessian_in_ratios(shape)),
+        value=value,
+        gradient=tuple(derivatives[:2]),
+        hessian=tuple(derivatives[2:]),
     )
 
 
 def sink_system(shape: str, n: int) -> SeparableSystem:
     """The container (mass 1, spring 1) with particles in the ``shape`` well, exponent 2n.
+
+    ``shape`` is any name of the registry :data:`sinktheory.symbolic.SHAPES`: the well
+    term is built from that shape's definition (atoms, potential and its derivatives).
 
     Coordinates are those of :func:`sinktheory.symbolic.separable_hamiltonian`; the masses
     are read from it, and the potential is checked there to be X^2/2 + sum V(u_j - X, y_j).
