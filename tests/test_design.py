@@ -266,6 +266,18 @@ def test_resume_after_interruption_gives_the_same_store(tmp_path, monkeypatch, c
     assert f"{top['depth']:.3f} ± {top['depth_se']:.3f}" in text
 
 
+def test_resume_with_a_swept_shape(tmp_path):
+    """The done-when command sweeps --shape flat,symmetric: a string coordinate, which the
+    store reads back as numpy's StringDType; resuming must accept it, not call it damaged."""
+    params = {"shape": ["flat", "symmetric"], "beta": 0.3, "n": 4, "runs": 2, "periods": 6,
+              "horizons": "6", "lyapunov_runs": 0, "bootstrap": 4}  # fmt: skip
+    store = tmp_path / "d.zarr"
+    first = _explore(params, store=store)
+    again = _explore(params, store=store, resume=True)
+    assert (first.computed, again.computed, again.skipped) == (2, 0, 2)
+    xr.testing.assert_identical(first.dataset.load(), again.dataset.load())
+
+
 @pytest.mark.parametrize(
     "extra",
     [

@@ -245,7 +245,8 @@ class SweepStore:
             try:
                 stored = np.asarray(self.group[name][...])
                 same = stored.shape == np.shape(values) and bool(
-                    np.all(stored.astype(str) == np.asarray(values).astype(str))
+                    # via object: numpy refuses StringDType (zarr 3's strings) -> str
+                    np.all(stored.astype(object).astype(str) == np.asarray(values).astype(str))
                     if stored.dtype.kind in "OUST"
                     else np.array_equal(stored, np.asarray(values))
                 )
