@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from sinktheory import RunSettings, Sink, Well
-from sinktheory.design.inelastic import _dissipate, simulate_inelastic
+from sinktheory.design.inelastic import _dissipate, _factors, simulate_inelastic
 from sinktheory.design.inelastic_reference import simulate_inelastic_reference
 from sinktheory.errors import EnergyDriftError, ParameterError
 from sinktheory.simulate import simulate
@@ -111,18 +111,20 @@ def test_dissipative_stage_removes_exactly_the_work_it_counts():
     rng = np.random.default_rng(0)
     q, vel = rng.uniform(-0.3, 0.3, (5, 6)), rng.uniform(-1, 1, (5, 6))
     c = rng.uniform(0.5, 3.0, (2, 6))
+    mu = SINK2.mu
+    ex, ey = np.empty((2, 6)), np.empty((2, 6))
+    _factors(c, mu, 0.025, ex, ey)
     after, work = vel.copy(), np.empty(6)
-    _dissipate(after, c, SINK2.mu, 0.025, work)
+    _dissipate(after, ex, ey, mu, work)
     h0, h1 = engine.block_energies(q, vel, params)[0], engine.block_energies(q, after, params)[0]
     np.testing.assert_allclose(h0 - h1, work, rtol=1e-12, atol=1e-15)
     assert np.all(work > 0)
-    mu = SINK2.mu
     np.testing.assert_allclose(
         vel[0] + mu * vel[1:3].sum(0), after[0] + mu * after[1:3].sum(0), rtol=1e-14
     )
     # one particle, constant c: the relative velocity decays exactly as exp(-c (1+mu)/mu t)
     one, w1 = vel[:3].copy(), np.empty(6)
-    _dissipate(one, c[:1], mu, 0.025, w1)
+    _dissipate(one, ex[:1], ey[:1], mu, w1)
     np.testing.assert_allclose(
         one[1] - one[0], (vel[1] - vel[0]) * np.exp(-c[0] * (1 + mu) / mu * 0.05), rtol=1e-13
     )

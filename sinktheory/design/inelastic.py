@@ -243,6 +243,19 @@ def result(s: Setup, e_c, h_t, w_t, integral) -> InelasticResult:
 
 # --------------------------------------------------------------------------- compiled kernel
 @numba.njit(error_model="numpy")
+def _factors(c, mu, half, ex, ey):
+    """Decay factors of the exact pair flows over ``half`` for contact coefficients c
+    (K, R): ex = 1 - exp(-c (1 + mu)/mu half) of the relative x velocity, ey =
+    exp(-c/mu half) - 1 of ydot (both exactly 0 for c = 0)."""
+    K, R = c.shape
+    rel = 1.0 + mu
+    for j in range(K):
+        for r in range(R):
+            ex[j, r] = -math.expm1(-c[j, r] * rel / mu * half)
+            ey[j, r] = math.expm1(-c[j, r] / mu * half)
+
+
+@numba.njit(error_model="numpy")
 def _weights(energies, q, zero, P, scale, damping, c, total, shared, members):
     """c[j, r] = damping * s_j: the contact coefficients at positions q (zero velocities
     make the members' energies the potential terms exactly)."""
@@ -254,10 +267,11 @@ def _weights(energies, q, zero, P, scale, damping, c, total, shared, members):
 
 
 @numba.njit(error_model="numpy")
-def _dissipate(v, c, mu, half, work):
-    """D(2 half) on the velocities v (D, R) in place; the work of each run into ``work``
-    (set, not added).  Exact pair flows, particles 1..K over ``half`` then K..1."""
-    K, R = c.shape
+def _dissipate(v, ex, ey, mu, work):
+    """D(tau) on the velocities v (D, R) in place, ex and ey the :func:`_factors` of the
+    positions over tau/2; the work of each run into ``work`` (set, not added).  Exact pair
+    flows, particles 1..K over tau/2 then K..1 over tau/2."""
+    K, R = ex.shape
     rel = 1.0 + mu
     reduced = mu / rel
     for r in range(R):
@@ -267,14 +281,13 @@ def _dissipate(v, c, mu, half, work):
         for r in range(R):
             # x: relative velocity decays, total momentum mu udot + Xdot kept
             w = v[1 + j, r] - v[0, r]
-            shrink = -math.expm1(-c[j, r] * rel / mu * half)  # 1 - e, exactly 0 for c = 0
-            dw = -shrink * w
+            dw = -ex[j, r] * w
             v[1 + j, r] += dw / rel
             v[0, r] -= mu * dw / rel
             w_new = w + dw
             # y: the container does not move in y
             yd = v[1 + K + j, r]
-            dy = math.expm1(-c[j, r] / mu * half) * yd  # (e - 1) ydot, exactly 0 for c = 0
+            dy = ey[j, r] * yd
             v[1 + K + j, r] = yd + dy
             work[r] += 0.5 * reduced * (w * w - w_new * w_new) + 0.5 * mu * (
                 yd * yd - (yd + dy) ** 2
@@ -303,15 +316,18 @@ def _advance(accelerations, energies, q, v, P, scheme, dissipation, j0, j1, audi
     total = np.empty(R)
     shared = np.empty(R)
     members = np.empty((K, R))
+    ex = np.empty((K, R))
+    ey = np.empty((K, R))
     local = np.empty(R)
     half = 0.5 * (0.5 * dt)  # D(dt/2): pair flows over dt/4 each way
     accelerations(q, acc, P)
     if on:
         _weights(energies, q, zero, P, scale, damping, c, total, shared, members)
+        _factors(c, mu, half, ex, ey)
     for j in range(j0 + 1, j1 + 1):
         for _ in range(steps):
-            if on:
-                _dissipate(v, c, mu, half, local)
+            if on:  # the factors of the positions at the end of the previous step
+                _dissipate(v, ex, ey, mu, local)
                 for r in range(R):
                     work[r] += local[r]
             for stage in range(S):
@@ -328,7 +344,8 @@ def _advance(accelerations, energies, q, v, P, scheme, dissipation, j0, j1, audi
                     v[i, r] += ck * acc[i, r]
             if on:
                 _weights(energies, q, zero, P, scale, damping, c, total, shared, members)
-                _dissipate(v, c, mu, half, local)
+                _factors(c, mu, half, ex, ey)
+                _dissipate(v, ex, ey, mu, local)
                 for r in range(R):
                     work[r] += local[r]
             for r in range(R):
