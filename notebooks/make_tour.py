@@ -43,7 +43,7 @@ for row in error_table(5, 4, samples=801):
 $\\phi_{T/2}$ against $\\beta$ for the flat well of Fig. 7; the stable interval's ends are
 found by root finding, not read off the grid."""),
     ("code", """from sinktheory.floquet import model_problem, scan
-from sinktheory.floquet_plot import plot_scan
+from sinktheory.plot.floquet import plot_scan
 result = scan(model_problem(0.5, 2), -1.0, 0.49, 200)
 print("stable intervals:", result.stable_intervals)
 plot_scan(result)"""),
@@ -58,7 +58,8 @@ print(res.message)
 print("<E> at t = 0, 50T, 100T, 150T:", mean[::50].round(4))"""),
     ("md", """## 5. Recurrence
 The recurrence plot of $\\langle E\\rangle$ (eq. Rij) and its quantification."""),
-    ("code", """from sinktheory.recurrence import plot_recurrence, rqa
+    ("code", """from sinktheory.plot.recurrence import plot_recurrence
+from sinktheory.recurrence import rqa
 print(rqa(mean, 0.005).as_dict())
 plot_recurrence(mean, 0.005)"""),
     ("md", """Every figure of the paper, with each claim checked: `sinktheory reproduce --out out/`."""),

@@ -23,11 +23,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from matplotlib.figure import Figure
 
 from . import validation as v
 from .errors import ParameterError
+from .layout import StateLayout
 from .model import RunSettings, Sink, Well
+from .results import Result
 from .simulate import default_step, simulate
 
 QUANTITIES = ("y", "energy")
@@ -36,8 +37,9 @@ START = (0.0, 0.01)
 
 
 @dataclass(frozen=True)
-class BifurcationDiagram:
-    """Section values (B, count) at each beta, with everything needed to redraw them."""
+class BifurcationDiagram(Result):
+    """Section values (B, count) at each beta, with everything needed to redraw them
+    (``to_dataset``: dims beta, sample)."""
 
     beta: np.ndarray
     section: np.ndarray
@@ -51,11 +53,17 @@ class BifurcationDiagram:
     transient: int
     count: int
 
+    DIMS = {"beta": ("beta",), "section": ("beta", "sample")}
+
+    def coords(self) -> dict:
+        """Samples are numbered from the end of the transient: j = transient + sample."""
+        return {"sample": np.arange(1, self.count + 1)}
+
 
 def sampled_run(sink: Sink, settings: RunSettings, start, *, per_period: int) -> np.ndarray:
     """One run from ``start`` = (x, y) (each particle at rest), its state sampled exactly
-    ``per_period`` times per container period: rows (P * per_period + 1, 2 + 4k) with
-    columns X, Xdot, u_1..u_k, y_1..y_k, udot..., ydot... (u = X + x).
+    ``per_period`` times per container period: rows (P * per_period + 1, 2 + 4k), columns
+    as named by :class:`sinktheory.layout.StateLayout`.
 
     The step is the default one shortened so a period holds a multiple of
     ``per_period`` steps, so the samples fall on t = jT / per_period.
@@ -103,7 +111,7 @@ def section(
         res = simulate(sink, settings, initial=[START], record=("container",), progress=False)
         return res.container_energy[0, transient + 1 :]
     rows = sampled_run(sink, settings, START, per_period=1)
-    return rows[transient + 1 :, 3]  # columns X, Xdot, u, y, udot, ydot
+    return rows[transient + 1 :, StateLayout(1).y][:, 0]
 
 
 def bifurcation(
@@ -148,33 +156,3 @@ def bifurcation(
         transient,
         count,
     )
-
-
-def plot_bifurcation(diagram: BifurcationDiagram, unstable=(), ax=None, title=None):
-    """Draw the section points against beta; shade the Floquet-unstable ``unstable``
-    intervals [(lo, hi), ...] of the normal mode y = 0.  Returns the Figure."""
-    if ax is None:
-        fig = Figure(figsize=(7.0, 4.0), layout="constrained")
-        ax = fig.subplots()
-    else:
-        fig = ax.figure
-    for i, (lo, hi) in enumerate(unstable):
-        ax.axvspan(
-            lo,
-            hi,
-            color="tab:red",
-            alpha=0.15,
-            lw=0,
-            label="normal mode unstable (Floquet)" if i == 0 else None,
-        )
-    b = np.repeat(diagram.beta, diagram.section.shape[1])
-    ax.plot(b, diagram.section.ravel(), ".", ms=1.0, color="black", alpha=0.6)
-    ax.set_xlabel("$\\beta$")
-    ax.set_ylabel("$y(jT)$" if diagram.quantity == "y" else "$E(jT)$")
-    ax.set_title(
-        title or (f"{diagram.shape} well, $\\alpha$={diagram.alpha:g}, $n$={diagram.n}, $k$=1"),
-        fontsize=9,
-    )
-    if unstable:
-        ax.legend(loc="upper left", fontsize=8)
-    return fig

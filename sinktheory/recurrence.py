@@ -36,10 +36,10 @@ from dataclasses import dataclass
 
 import numba
 import numpy as np
-from matplotlib.figure import Figure
 
 from . import validation as v
 from .errors import ParameterError
+from .results import Result
 
 #: Default recurrence rate used to pick eps.
 DEFAULT_RATE = 0.05
@@ -163,7 +163,7 @@ def _line_histograms(e, eps, matrix, use_matrix, w):
 
 
 @dataclass(frozen=True)
-class RQA:
+class RQA(Result):
     """Recurrence quantification of one series (see the module docstring for conventions).
 
     Attributes
@@ -175,6 +175,9 @@ class RQA:
     trapping_time : TT in periods (nan if no vertical line reaches v_min)
     mean_recurrence_time : mean bounded white vertical gap + 1, in periods (nan if none)
     diagonal_lines, vertical_lines : histograms, index = line length
+
+    ``as_dict`` / ``to_dataset`` (dim ``length``) follow :mod:`sinktheory.results` (nan
+    becomes None in the dict).
     """
 
     eps: float
@@ -189,24 +192,10 @@ class RQA:
     diagonal_lines: np.ndarray
     vertical_lines: np.ndarray
 
-    def as_dict(self) -> dict:
-        """The scalar measures, JSON-ready (nan becomes None)."""
-        keys = (
-            "eps",
-            "theiler",
-            "l_min",
-            "v_min",
-            "recurrence_rate",
-            "determinism",
-            "laminarity",
-            "trapping_time",
-            "mean_recurrence_time",
-        )
-        out = {}
-        for k in keys:
-            val = getattr(self, k)
-            out[k] = None if isinstance(val, float) and not np.isfinite(val) else val
-        return out
+    DIMS = {"diagonal_lines": ("length",), "vertical_lines": ("length",)}
+
+    def coords(self) -> dict:
+        return {"length": np.arange(self.diagonal_lines.size)}
 
 
 def _ratio(num: float, den: float) -> float:
@@ -321,28 +310,3 @@ def recurrence_image(energy, eps: float, max_pixels: int = 1500) -> np.ndarray:
     eps = v.nonnegative("eps", eps)
     size = min(e.size, v.positive_int("max_pixels", max_pixels))
     return _binned_recurrence(e, eps, size)
-
-
-def plot_recurrence(energy, eps: float | None = None, ax=None, title: str | None = None):
-    """Draw the recurrence plot of ``energy`` (ones dark, zeros white); return the Figure."""
-    e = _series(energy)
-    eps = epsilon_for_rate(e) if eps is None else v.nonnegative("eps", eps)
-    img = recurrence_image(e, eps)
-    if ax is None:
-        fig = Figure(figsize=(4.5, 4.5), layout="constrained")
-        ax = fig.subplots()
-    else:
-        fig = ax.figure
-    ax.imshow(
-        img,
-        origin="lower",
-        cmap="Greys",
-        vmin=0,
-        vmax=1,
-        interpolation="nearest",
-        extent=(0, e.size - 1, 0, e.size - 1),
-    )
-    ax.set_xlabel("$i$ (periods $T$)")
-    ax.set_ylabel("$j$ (periods $T$)")
-    ax.set_title(title or f"recurrence plot, $\\varepsilon$ = {eps:.3g}", fontsize=9)
-    return fig

@@ -91,15 +91,17 @@ from . import validation as v
 from .errors import ParameterError
 from .model import MAX_N
 from .oscillator import exact_shape, period, triangle_wave, triangle_wave_derivative
+from .results import Result
 
 __all__ = [
     "MAX_ORDER",
     "BoundCheck",
+    "SeriesAccuracy",
     "SeriesError",
     "TriangleSeries",
+    "accuracy",
     "bound",
     "check_bounds",
-    "plot_series",
     "error_table",
     "triangle_series",
     "tau_symbol",
@@ -277,7 +279,7 @@ def bound(tau, n: int, i: int) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class BoundCheck:
+class BoundCheck(Result):
     """Outcome of the bound check for one (n, i) over 0 < tau <= 1.
 
     ``min_scaled`` = min R_i / tau^(2n+1) (positivity needs > 0); ``max_ratio`` =
@@ -330,7 +332,7 @@ def check_bounds(n_values: Sequence[int], orders: Sequence[int]) -> list[BoundCh
 
 # --- accuracy against the exact solution ---------------------------------------------------
 @dataclass(frozen=True)
-class SeriesError:
+class SeriesError(Result):
     """Accuracy of the order-i approximation for one n.
 
     ``shape_error`` = max over tau in [0, 1] of |U_i(tau) - x(tau)| / A0 (both curves with
@@ -372,44 +374,27 @@ def error_table(n: int, order: int, *, samples: int = 4001) -> list[SeriesError]
     return rows
 
 
-def plot_series(n: int, order: int, *, points: int = 801):
-    """Exact x(t) and the approximations U_1 ... U_order over one period, with errors.
+@dataclass(frozen=True)
+class SeriesAccuracy(Result):
+    """The errors of the orders 1 ... ``order`` for one n (:func:`error_table`) and the
+    paper's bounds on R_i for i = 2 ... ``order`` (:func:`check_bounds`)."""
 
-    Amplitude A0 = 1, phase convention ``start="zero"`` (the paper's tau(0) = 0).  Every
-    approximation is drawn on the exact period T_n (its own period error is listed by
-    :func:`error_table`), so the lower panel shows the shape error |U_i - x|.
+    n: int
+    order: int
+    errors: list[SeriesError]
+    bounds: list[BoundCheck]
 
-    Returns
-    -------
-    matplotlib.figure.Figure
+
+def accuracy(n: int, order: int, *, samples: int = 4001) -> SeriesAccuracy:
+    """Shape and period errors of every order up to ``order`` and the bound checks.
 
     Examples
     --------
-    >>> fig = plot_series(3, 2, points=51)
-    >>> [ax.get_ylabel() for ax in fig.axes]
-    ['$x$', '$|U_i - x| / A_0$']
+    >>> a = accuracy(2, 3, samples=201)
+    >>> [e.order for e in a.errors], [b.i for b in a.bounds], a.as_dict()["bounds"][0]["holds"]
+    ([1, 2, 3], [2, 3], True)
     """
-    from matplotlib.figure import Figure
-
-    series = triangle_series(n, order)
-    points = v.positive_int("points", points, minimum=3, maximum=10**6)
-    t_n = float(period(series.n, amplitude=1, dps=20))
-    t = np.linspace(0.0, t_n, points)
-    tau = triangle_wave(t / t_n)
-    exact = exact_shape(tau, series.n)
-    fig = Figure(figsize=(8, 7), layout="constrained")
-    top, bottom = fig.subplots(2, 1, sharex=True)
-    top.plot(t, exact, color="black", lw=2.5, label="exact")
-    for i in range(1, series.order + 1):
-        u = series.shape(tau, i)
-        top.plot(t, u, lw=1, label=f"$U_{{{i}}}$")
-        with np.errstate(divide="ignore"):
-            bottom.semilogy(t, np.abs(u - exact), lw=1, label=f"$i = {i}$")
-    top.set_ylabel("$x$")
-    top.set_title(f"$\\ddot x + x^{{{2 * series.n - 1}}} = 0$, $A_0 = 1$, $T_n = {t_n:.6g}$")
-    top.legend(ncol=2, fontsize="small")
-    bottom.set_xlabel("$t$")
-    bottom.set_ylabel("$|U_i - x| / A_0$")
-    bottom.set_ylim(bottom=1e-12)
-    bottom.legend(ncol=2, fontsize="small")
-    return fig
+    rows = error_table(n, order, samples=samples)
+    n, order = rows[0].n, len(rows)
+    bounds = check_bounds([n], range(2, order + 1)) if order >= 2 else []
+    return SeriesAccuracy(n, order, rows, bounds)

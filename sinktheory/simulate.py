@@ -41,7 +41,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -50,7 +50,9 @@ from .engine.cache import sink_name
 from .engine.core import Ensemble
 from .errors import ParameterError
 from .integrators import DEFAULT_SCHEME, get_scheme
+from .layout import StateLayout, pack_params
 from .model import RunSettings, Sink
+from .results import Result
 from .sinkstats import ensemble_mean
 from .stepsize import DEFAULT_TOL, PERIOD, check_tol, choose, resolve_step
 
@@ -62,11 +64,12 @@ ENERGY_BOUND = 1e-6
 
 # --------------------------------------------------------------------------- public API
 @dataclass(frozen=True)
-class SimulationState:
+class SimulationState(Result):
     """The state of every run at one instant, enough to continue exactly where it stopped.
 
     ``values`` has shape (R, 2 + 4k), columns [X, Xdot, u_1..u_k, y_1..y_k, udot_1..udot_k,
-    ydot_1..ydot_k] (u_j = X + x_j is the particle's absolute x; velocities are absolute).
+    ydot_1..ydot_k] (u_j = X + x_j is the particle's absolute x; velocities are absolute),
+    named by :class:`sinktheory.layout.StateLayout`.
     ``reference_energy`` is each run's total energy at the start of the whole simulation, so
     the energy audit of a continued run still measures the drift from the very beginning.
     """
@@ -77,20 +80,28 @@ class SimulationState:
     dt: float
     method: str
 
+    DIMS = {"values": ("run", "state"), "reference_energy": ("run",)}
+
+    @property
+    def layout(self) -> StateLayout:
+        return StateLayout.of(self.values)
+
     @property
     def particles(self) -> int:
-        return (self.values.shape[1] - 2) // 4
+        return self.layout.particles
 
     def relative_positions(self) -> np.ndarray:
         """Particle positions (x_j, y_j) in the container's frame, shape (R, k, 2)."""
-        k = self.particles
-        X = self.values[:, :1]
-        return np.stack([self.values[:, 2 : 2 + k] - X, self.values[:, 2 + k : 2 + 2 * k]], -1)
+        return self.layout.relative_positions(self.values)
+
+    def coords(self) -> dict:
+        return {"state": list(self.layout.names())}
 
 
 @dataclass(frozen=True)
-class SimulationResult:
-    """What :func:`simulate` recorded.
+class SimulationResult(Result):
+    """What :func:`simulate` recorded (``as_dict`` / ``to_dataset``: dims run, time,
+    particle, sample, state; the ensemble mean and standard error included).
 
     Attributes
     ----------
@@ -117,6 +128,8 @@ class SimulationResult:
         One line summarising the run and its audit.
     tol : float or None
         The tolerance the step was chosen for (None when ``dt`` was given).
+    parameters : dict
+        What was run: the well, k, m, E0, runs, periods, seed, box.
     """
 
     times: np.ndarray
@@ -133,6 +146,32 @@ class SimulationResult:
     steps_per_period: int
     message: str
     tol: float | None = None
+    parameters: dict = field(default_factory=dict)
+
+    DIMS = {
+        "container_energy": ("run", "time"),
+        "particle_energy": ("run", "time", "particle"),
+        "trajectory": ("run", "sample", "state"),
+        "initial_energy": ("run",),
+        "run_errors": ("run",),
+        "mean_energy": ("time",),
+        "stderr": ("time",),
+    }
+    COORDS = {"times": "time", "trajectory_times": "sample"}
+
+    def items(self) -> dict:
+        out = super().items()
+        if self.container_energy is not None:
+            out["mean_energy"], out["stderr"] = self.ensemble_energy()
+        return out
+
+    def coords(self) -> dict:
+        out = {"run": np.arange(self.run_errors.size)}
+        if self.particle_energy is not None:
+            out["particle"] = np.arange(1, self.particle_energy.shape[-1] + 1)
+        if self.trajectory is not None:
+            out["state"] = list(StateLayout.of(self.trajectory).names())
+        return out
 
     def ensemble_energy(self) -> tuple[np.ndarray, np.ndarray]:
         """Ensemble mean <E>(t_j) and its standard error (ddof = 1; zeros for one run)."""
@@ -183,13 +222,7 @@ def random_positions(settings: RunSettings, particles: int) -> np.ndarray:
 def start_state(sink: Sink, energy: float, positions: np.ndarray) -> np.ndarray:
     """State rows (R, 2 + 4k): container at X = sqrt(2 E0) at rest, particles at rest at
     ``positions`` (R, k, 2) relative to the container."""
-    runs, k = positions.shape[0], sink.particles
-    values = np.zeros((runs, 2 + 4 * k))
-    X = math.sqrt(2.0 * energy)
-    values[:, 0] = X
-    values[:, 2 : 2 + k] = X + positions[:, :, 0]
-    values[:, 2 + k : 2 + 2 * k] = positions[:, :, 1]
-    return values
+    return StateLayout(sink.particles).start(math.sqrt(2.0 * energy), positions)
 
 
 def total_energy(sink: Sink, values: np.ndarray) -> np.ndarray:
@@ -202,24 +235,18 @@ def engine_name(sink: Sink) -> str:
     return sink_name(sink.well.shape, sink.well.n)
 
 
-def engine_params(sink: Sink) -> np.ndarray:
-    """The engine's runtime parameters of this sink: alpha, beta, gamma, mu."""
-    w = sink.well
-    return np.array([w.alpha, w.beta, w.gamma, sink.mu])
+#: The engine's runtime parameters of a sink, packed (:data:`sinktheory.layout.SINK_PARAMS`).
+engine_params = pack_params
 
 
 def split_values(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """State rows (R, 2 + 4k) as the engine's (q, v), each (1 + 2k, R)."""
-    values = np.asarray(values, dtype=float)
-    half = 1 + 2 * ((values.shape[1] - 2) // 4)  # 1 + 2k coordinates
-    q = np.concatenate([values[:, :1], values[:, 2 : 1 + half]], axis=1)
-    v = np.concatenate([values[:, 1:2], values[:, 1 + half :]], axis=1)
-    return np.ascontiguousarray(q.T), np.ascontiguousarray(v.T)
+    return StateLayout.of(values).split(values)
 
 
 def join_values(q: np.ndarray, v: np.ndarray) -> np.ndarray:
     """The engine's (q, v) as state rows (R, 2 + 4k): [X, Xdot, u.., y.., udot.., ydot..]."""
-    return np.concatenate([q[:1].T, v[:1].T, q[1:].T, v[1:].T], axis=1)
+    return StateLayout((q.shape[0] - 1) // 2).join(q, v)
 
 
 def _engine_energies(sink: Sink, values: np.ndarray):
@@ -247,11 +274,14 @@ def first_order_rhs(sink: Sink):
     """
     from .engine.cache import load
 
-    module, params, k = load(engine_name(sink)), engine_params(sink), sink.particles
+    module, params = load(engine_name(sink)), engine_params(sink)
+    L = StateLayout(sink.particles)
 
     def f(t: float, z: np.ndarray) -> np.ndarray:
-        a = module.block_accelerations(np.concatenate(([z[0]], z[2 : 2 + 2 * k]))[:, None], params)
-        return np.concatenate(([z[1], a[0, 0]], z[2 + 2 * k :], a[1:, 0]))
+        dz = np.empty_like(z)
+        dz[L.q] = z[L.v]
+        dz[L.v] = module.block_accelerations(z[L.q][:, None], params)[:, 0]
+        return dz
 
     return f
 
@@ -460,4 +490,18 @@ def simulate(
         + (f" (for tol {tol:g})" if tol is not None else "")
         + f": max relative energy error {worst:.3g} <= {bound:.3g}",
         tol=tol,
+        parameters={
+            "shape": sink.well.shape,
+            "alpha": sink.well.alpha,
+            "beta": sink.well.beta,
+            "n": sink.well.n,
+            "gamma": sink.well.gamma,
+            "particles": sink.particles,
+            "mass": sink.mass,
+            "energy": settings.energy,
+            "runs": runs,
+            "periods": periods,
+            "seed": settings.seed,
+            "box": settings.box,
+        },
     )

@@ -4,7 +4,8 @@ import numpy as np
 import pytest
 
 from sinktheory import ParameterError, Sink, Well
-from sinktheory.bifurcation import bifurcation, plot_bifurcation, section
+from sinktheory.bifurcation import bifurcation, section
+from sinktheory.plot.bifurcation import plot_bifurcation
 
 
 def test_straight_walls_decouple_y():

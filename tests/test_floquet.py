@@ -29,13 +29,13 @@ from sinktheory.floquet import (
     rigid_limit_phi_half,
     scan,
 )
-from sinktheory.floquet_plot import plot_fig7, plot_tongues
 from sinktheory.hill import (
     HillIntegrationError,
     integrate_quarter_period,
     monodromy_solve_ivp,
     quarter_period_mpmath,
 )
+from sinktheory.plot.floquet import plot_fig7, plot_tongues
 
 FLAT, SYMMETRIC = bundle("flat"), bundle("symmetric")
 

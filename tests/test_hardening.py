@@ -134,13 +134,14 @@ def test_all_outputs_or_none(capsys, tmp_path, monkeypatch):
     """A plot that fails while being written leaves no .npz behind either."""
     monkeypatch.chdir(tmp_path)
 
-    def broken_plot(path, *args):
-        Path(path).write_bytes(b"half a png")
-        raise OSError(28, "No space left on device", str(path))
+    class BrokenFigure:
+        def savefig(self, path, **kwargs):
+            Path(path).write_bytes(b"half a png")
+            raise OSError(28, "No space left on device", str(path))
 
-    from sinktheory.commands import simulate as command
+    from sinktheory.plot import simulate as drawing
 
-    monkeypatch.setattr(command, "_plot", broken_plot)
+    monkeypatch.setattr(drawing, "plot_ensemble_energy", lambda *args: BrokenFigure())
     code, _, err = run_cli([*SIM, "--out", "ok.npz", "--plot", "ok.png"], capsys)
     assert code == 1
     assert len(err.strip().splitlines()) == 1 and "No space left" in err

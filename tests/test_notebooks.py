@@ -18,7 +18,9 @@ def test_tour_matches_its_generator():
     assert [c.source for c in stored.cells] == [c.source for c in mod.build().cells]
 
 
-def test_tour_executes(tmp_path):
+def test_tour_executes(tmp_path, monkeypatch):
+    # the kernel runs in tmp_path: make it import this work tree, not an installed copy
+    monkeypatch.setenv("PYTHONPATH", str(NOTEBOOKS.parent))
     nb = nbformat.read(NOTEBOOKS / "tour.ipynb", as_version=4)
     NotebookClient(nb, timeout=600, kernel_name="python3",
                    resources={"metadata": {"path": str(tmp_path)}}).execute()

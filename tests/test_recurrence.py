@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 
 from sinktheory import ParameterError
+from sinktheory.plot.recurrence import plot_recurrence
 from sinktheory.recurrence import (
     epsilon_for_rate,
-    plot_recurrence,
     recurrence_image,
     recurrence_rate,
     rqa,

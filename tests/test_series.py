@@ -18,6 +18,7 @@ from sinktheory.errors import ParameterError
 from sinktheory.oscillator import exact_shape, period
 from sinktheory.series import (
     MAX_ORDER,
+    accuracy,
     bound,
     check_bounds,
     error_table,
@@ -215,6 +216,10 @@ def test_cli_series_json_and_plot(tmp_path, capsys):
     errs = [r["shape_error"] for r in data["errors"]]
     assert errs == sorted(errs, reverse=True)
     assert [b["i"] for b in data["bounds"]] == [2, 3, 4] and all(b["holds"] for b in data["bounds"])
+    assert data == {**accuracy(4, 4).as_dict(), "plot": str(png)}  # the API result's dict
+    t1 = error_table(4, 1)[0].period_estimate  # computed with 30 digits
+    with mpmath.workdps(40):
+        assert abs(mpmath.mpf(data["errors"][0]["period_estimate"]) / t1 - 1) < 1e-28
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 

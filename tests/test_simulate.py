@@ -264,10 +264,12 @@ def test_cli_json_npz_and_plot(tmp_path, capsys):
     argv += ["--runs", "3", "--periods", "4", "--json", "--out", str(npz), "--plot", str(png)]
     assert main(argv) == 0
     data = json.loads(capsys.readouterr().out)
-    direct = simulate(FIG8, RunSettings(runs=3, periods=4))
+    direct = simulate(FIG8, RunSettings(runs=3, periods=4), record=("container", "final"))
+    assert data == direct.as_dict()  # the JSON is the API result's as_dict()
     mean, err = direct.ensemble_energy()
     assert data["mean_energy"] == mean.tolist() and data["stderr"] == err.tolist()
-    assert len(data["mean_energy"]) == 5 and data["runs"] == 3 and data["periods"] == 4
+    assert len(data["mean_energy"]) == 5
+    assert (data["parameters"]["runs"], data["parameters"]["periods"]) == (3, 4)
     assert data["method"] == direct.method and data["dt"] == direct.dt
     assert data["max_relative_energy_error"] < 1e-8
     saved = np.load(npz)
@@ -280,7 +282,7 @@ def test_cli_single_run_from_initial_positions(capsys):
     argv = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "10", "--initial", "0", "0.01"]
     assert main(argv + ["--periods", "2", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["runs"] == 1 and data["stderr"] == [0.0, 0.0, 0.0]
+    assert data["parameters"]["runs"] == 1 and data["stderr"] == [0.0, 0.0, 0.0]
 
 
 @pytest.mark.parametrize(

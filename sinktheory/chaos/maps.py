@@ -32,6 +32,8 @@ import math
 
 import numpy as np
 
+from ..errors import ParameterError
+
 #: The finite-time exponent of a regular orbit is ~ ln t / t; a chaotic verdict needs the
 #: mean minus two standard errors above this factor times ln t / t.
 THRESHOLD_FACTOR = 3.0
@@ -115,30 +117,6 @@ def agreement(ds, stable: np.ndarray) -> dict:
     return out
 
 
-def draw_map(ds, stable_intervals, ax, *, title: str = "") -> None:
-    """lambda_1(beta) with its +-2 s.e. band, the transverse exponent, the verdict
-    threshold, and the Floquet-stable intervals of y = 0 shaded."""
-    beta = ds.beta.values
-    lam, se = ds.lambda1.values, ds.lambda1_se.values
-    for a, b in stable_intervals:
-        ax.axvspan(a, b, color="tab:green", alpha=0.15, lw=0)
-    ax.fill_between(beta, lam - 2 * se, lam + 2 * se, color="C0", alpha=0.3, lw=0)
-    ax.plot(beta, lam, "o-", color="C0", ms=3, lw=1, label=r"$\lambda_1$ $\pm$ 2 s.e.")
-    if "transverse" in ds and np.isfinite(ds.transverse.values).all():
-        ax.plot(beta, ds.transverse.values, "s--", color="C1", ms=2.5, lw=0.8,
-                label="transverse (y = 0)")  # fmt: skip
-    ax.axhline(threshold(int(ds.attrs["periods"])), color="k", lw=0.6, ls=":",
-               label=f"{THRESHOLD_FACTOR:g} ln t / t")  # fmt: skip
-    ax.plot([], [], color="tab:green", alpha=0.4, lw=6, label="Floquet-stable y = 0")
-    ax.set_xlabel(r"$\beta$")
-    ax.set_ylabel(r"$\lambda_1$ (per unit time)")
-    ax.set_xlim(beta.min(), beta.max())
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize="small", loc="upper left")
-    if title:
-        ax.set_title(title, fontsize="medium")
-
-
 #: The panels of Figs. 3 and 11: (label, alpha, n, shape).
 PANELS = {
     3: [("flat, n = 2", 0.5, 2, "flat"), ("flat, n = 10", 0.5, 10, "flat")],
@@ -146,24 +124,23 @@ PANELS = {
 }
 
 
-def figure_maps(figure: int, *, points: int = 24, runs: int = 4, periods: int = 100,
-                workers: int | None = None, progress: bool = False):  # fmt: skip
+def figure_panels(figure: int, *, points: int = 24, runs: int = 4, periods: int = 100,
+                  workers: int | None = None, progress: bool = False) -> list[dict]:  # fmt: skip
     """Chaos maps for the panels of Fig. 3 or Fig. 11 with the Floquet-stable intervals.
 
-    Returns (matplotlib Figure, {panel label: agreement dict}).  beta covers the range the
-    scene uses: [-0.7, 0.45] for Fig. 3, the betas where the symmetric well holds E = 0.5
-    (less 0.01 at each edge) for Fig. 11.
+    Returns one dict per panel: ``label``, ``map`` (the chaos-map Dataset),
+    ``stable_intervals`` (Floquet-stable beta intervals of y = 0) and ``agreement``
+    (:func:`agreement`).  beta covers the range the scene uses: [-0.7, 0.45] for Fig. 3,
+    the betas where the symmetric well holds E = 0.5 (less 0.01 at each edge) for Fig. 11.
+    :func:`sinktheory.plot.chaos.figure_maps` draws them.
     """
-    from matplotlib.figure import Figure
-
     from ..floquet import model_problem, scan
     from ..model import confining_betas
 
-    panels = PANELS[figure]
-    fig = Figure(figsize=(7.5, 3.6 * len(panels)), layout="constrained")
-    axes = np.atleast_1d(fig.subplots(len(panels), 1))
-    report = {}
-    for (label, alpha, n, shape), ax in zip(panels, axes, strict=True):
+    if figure not in PANELS:
+        raise ParameterError("figure", figure, "3 or 11")
+    panels = []
+    for label, alpha, n, shape in PANELS[figure]:
         if figure == 11:
             ranges = [(a + 0.01, b - 0.01) for a, b in confining_betas(alpha, n, 0.5, shape=shape)]
         else:
@@ -173,8 +150,12 @@ def figure_maps(figure: int, *, points: int = 24, runs: int = 4, periods: int = 
                        workers=workers, progress=progress)  # fmt: skip
         problem = model_problem(alpha, n, shape=shape)
         floq = scan(problem, ranges[0][0], ranges[-1][1], 400)
-        stable = problem.evaluate(betas).stable
-        report[label] = agreement(ds, stable)
-        title = f"Fig. {figure}, {label}: {runs} runs x {periods} periods per beta"
-        draw_map(ds, floq.stable_intervals, ax, title=title)
-    return fig, report
+        panels.append(
+            {
+                "label": label,
+                "map": ds,
+                "stable_intervals": floq.stable_intervals,
+                "agreement": agreement(ds, problem.evaluate(betas).stable),
+            }
+        )
+    return panels

@@ -7,11 +7,11 @@ renormalised the deviation vectors and recorded the indicators.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..results import Result, plain
 from ..sinkstats import ensemble_mean
 
 
@@ -47,7 +47,7 @@ def time_average(times: np.ndarray, y: np.ndarray) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class ChaosResult:
+class ChaosResult(Result):
     """Chaos indicators of R runs, recorded at the segment ends.
 
     Attributes
@@ -180,18 +180,13 @@ class ChaosResult:
         (finite-time lambda_1, GALI, MEGNO) at ``times``.
         """
 
-        def clean(x):
-            x = np.asarray(x, float)
-            return (
-                [None if not math.isfinite(v) else float(v) for v in x.ravel()]
-                if x.ndim
-                else (float(x) if math.isfinite(float(x)) else None)
-            )
+        def clean(x):  # floats, flattened
+            return plain(np.asarray(x, float).ravel() if np.ndim(x) else float(x))
 
-        def nested(x):
-            return np.where(np.isfinite(x), x, np.nan).tolist()
+        def summary(runs, m, se) -> dict:
+            return {"runs": plain(np.asarray(runs, float)), "mean": clean(m), "stderr": clean(se)}
 
-        out: dict = {"parameters": dict(self.parameters), "runs": self.runs}
+        out: dict = {"parameters": plain(self.parameters), "runs": self.runs}
         out["time"] = self.duration
         out["max_relative_energy_error"] = float(np.max(self.run_errors, initial=0.0))
         names = ["lambda1"]
@@ -202,7 +197,7 @@ class ChaosResult:
         for name in names:
             per_run = getattr(self, name)
             m, se = self.mean(name)
-            out[name] = {"runs": nested(per_run), "mean": clean(m), "stderr": clean(se)}
+            out[name] = summary(per_run, m, se)
         finals = {}
         if self.gali is not None:
             finals[f"gali{self.gali_order}"] = self.gali[:, -1]
@@ -213,7 +208,7 @@ class ChaosResult:
             finals["mean_megno"] = self.mean_megno[:, -1]
         for name, per_run in finals.items():
             m, se = ensemble_mean(per_run[:, None])
-            out[name] = {"runs": nested(per_run), "mean": clean(m[0]), "stderr": clean(se[0])}
+            out[name] = summary(per_run, m[0], se[0])
         if series:
             s = {"times": self.times.tolist()}
             m, se = self.mean("finite_time_lambda1")

@@ -164,7 +164,7 @@ def run(args: argparse.Namespace) -> Output:
     lines += [f"  phi_T = -1 at {key} = {r:.12g}" for r in result.resonances]
     out = Output(data, "\n".join(lines))
     if plot is not None:
-        from ..floquet_plot import plot_scan
+        from ..plot.floquet import plot_scan
 
         fig = plot_scan(result)
         out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)

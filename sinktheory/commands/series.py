@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from ..series import check_bounds, error_table, plot_series
+from ..series import accuracy
 from . import HELP as HELPS
 from ._common import Output, add_json, number, png_path
 
@@ -21,26 +21,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> Output:
     plot = png_path("plot", args.plot)
-    rows = error_table(args.n, args.order)
-    n, order = rows[0].n, len(rows)
-    checks = check_bounds([n], range(2, order + 1)) if order >= 2 else []
-    data = {
-        "n": n,
-        "order": order,
-        "errors": [
-            {
-                "order": r.order,
-                "shape_error": r.shape_error,
-                "period_estimate": float(r.period_estimate),
-                "period_relative_error": r.period_relative_error,
-            }
-            for r in rows
-        ],
-        "bounds": [
-            {"i": c.i, "max_ratio": c.max_ratio, "min_scaled": c.min_scaled, "holds": c.holds}
-            for c in checks
-        ],
-    }
+    result = accuracy(args.n, args.order)
+    n, order, rows, checks = result.n, result.order, result.errors, result.bounds
+    data = result.as_dict()
     lines = [
         f"x'' + x^{2 * n - 1} = 0, U_i = A (tau - R_1 - ... - R_i), A0 = U_i(1) = 1",
         "  i   max|U_i - x|/A0   T_i (A0 = 1)       T_i/T_n - 1",
@@ -59,6 +42,8 @@ def run(args: argparse.Namespace) -> Output:
         ]
     out = Output(data, "\n".join(lines))
     if plot is not None:
+        from ..plot.series import plot_series
+
         fig = plot_series(n, order)
         out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
         data["plot"] = str(plot)

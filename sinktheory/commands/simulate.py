@@ -132,18 +132,7 @@ def run(args: argparse.Namespace) -> Output:
         progress=not args.quiet,
     )
     mean, stderr = result.ensemble_energy()
-    data = {
-        "mean_energy": mean.tolist(),
-        "stderr": stderr.tolist(),
-        "max_relative_energy_error": result.max_relative_energy_error,
-        "runs": settings.runs,
-        "periods": settings.periods,
-        "method": result.method,
-        "dt": result.dt,
-        "tol": result.tol,
-        "steps_per_period": result.steps_per_period,
-        "seed": settings.seed,
-    }
+    data = result.as_dict()
     w = sink.well
     text = "\n".join(
         [
@@ -156,30 +145,24 @@ def run(args: argparse.Namespace) -> Output:
     )
     writers = {}
     if out is not None:
-        writers[out] = lambda path: _save(path, result, mean, stderr, args, settings)
+        writers[out] = lambda path: _save(path, result, args)
     if plot is not None:
-        writers[plot] = lambda path: _plot(path, result, mean, stderr, sink, settings)
+        from ..plot.simulate import plot_ensemble_energy
+
+        fig = plot_ensemble_energy(result, sink)
+        writers[plot] = lambda path: fig.savefig(path, dpi=120)
     return Output(data, text, writers)
 
 
-def _save(path, result: SimulationResult, mean, stderr, args, settings) -> None:
+def _save(path, result: SimulationResult, args) -> None:
     parameters = {
-        "shape": args.shape,
-        "alpha": args.alpha,
-        "beta": args.beta,
-        "gamma": args.gamma,
-        "n": args.n,
-        "particles": args.particles,
-        "mass": args.mass,
-        "energy": settings.energy,
-        "runs": settings.runs,
-        "periods": settings.periods,
-        "seed": settings.seed,
+        **result.parameters,
         "initial": args.initial,
         "method": result.method,
         "dt": result.dt,
         "energy_bound": args.energy_bound,
     }
+    mean, stderr = result.ensemble_energy()
     with open(path, "wb") as f:
         np.savez(
             f,
@@ -191,27 +174,6 @@ def _save(path, result: SimulationResult, mean, stderr, args, settings) -> None:
             initial_energy=result.initial_energy,
             final_state=result.final_state.values,
             parameters=json.dumps(parameters),
-            seed=settings.seed,
+            seed=result.parameters["seed"],
             version=__version__,
         )
-
-
-def _plot(path, result: SimulationResult, mean, stderr, sink: Sink, settings) -> None:
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(8, 4.5), layout="constrained")
-    ax = fig.add_subplot()
-    t = result.times / (2 * np.pi)
-    ax.fill_between(t, mean - stderr, mean + stderr, color="C0", alpha=0.3, label="± std. error")
-    ax.plot(t, mean, color="C0", lw=1.0, label=r"$\langle E\rangle$")
-    ax.set_xlabel(r"$t/T$")
-    ax.set_ylabel(r"$\langle E\rangle$ (container energy)")
-    w = sink.well
-    ax.set_title(
-        rf"{w.shape} well, $\alpha$={w.alpha:g}, $\beta$={w.beta:g}, n={w.n}, "
-        rf"k={sink.particles}, m={sink.mass:g}; {settings.runs} run(s)"
-    )
-    ax.set_xlim(t[0], t[-1])
-    ax.legend(loc="upper right")
-    ax.grid(alpha=0.3)
-    fig.savefig(path, dpi=120)

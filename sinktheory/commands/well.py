@@ -54,7 +54,7 @@ def run(args: argparse.Namespace) -> Output:
     )
     out = Output(data, text)
     if plot is not None:
-        from ..wellplot import plot_well
+        from ..plot.well import plot_well
 
         fig = plot_well(well, energy=energy)
         out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)

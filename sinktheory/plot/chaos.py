@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..chaos import maps
 from ..chaos.result import ChaosResult
 
 #: GALI values below this are round-off (unit vectors parallel to machine precision).
@@ -98,3 +99,49 @@ def convergence_figure(result: ChaosResult, *, window: int | None = None, title:
 def plot_convergence(result: ChaosResult, path, **kwargs) -> None:
     """Draw :func:`convergence_figure` to ``path`` (PNG)."""
     convergence_figure(result, **kwargs).savefig(path, dpi=120)
+
+
+def draw_map(ds, stable_intervals, ax, *, title: str = "") -> None:
+    """lambda_1(beta) with its +-2 s.e. band, the transverse exponent, the verdict
+    threshold, and the Floquet-stable intervals of y = 0 shaded."""
+    beta = ds.beta.values
+    lam, se = ds.lambda1.values, ds.lambda1_se.values
+    for a, b in stable_intervals:
+        ax.axvspan(a, b, color="tab:green", alpha=0.15, lw=0)
+    ax.fill_between(beta, lam - 2 * se, lam + 2 * se, color="C0", alpha=0.3, lw=0)
+    ax.plot(beta, lam, "o-", color="C0", ms=3, lw=1, label=r"$\lambda_1$ $\pm$ 2 s.e.")
+    if "transverse" in ds and np.isfinite(ds.transverse.values).all():
+        ax.plot(beta, ds.transverse.values, "s--", color="C1", ms=2.5, lw=0.8,
+                label="transverse (y = 0)")  # fmt: skip
+    ax.axhline(maps.threshold(int(ds.attrs["periods"])), color="k", lw=0.6, ls=":",
+               label=f"{maps.THRESHOLD_FACTOR:g} ln t / t")  # fmt: skip
+    ax.plot([], [], color="tab:green", alpha=0.4, lw=6, label="Floquet-stable y = 0")
+    ax.set_xlabel(r"$\beta$")
+    ax.set_ylabel(r"$\lambda_1$ (per unit time)")
+    ax.set_xlim(beta.min(), beta.max())
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize="small", loc="upper left")
+    if title:
+        ax.set_title(title, fontsize="medium")
+
+
+def figure_maps(figure: int, **options):
+    """Chaos maps for the panels of Fig. 3 or Fig. 11, one axes each, beside the
+    Floquet-stable intervals.
+
+    ``options`` go to :func:`sinktheory.chaos.maps.figure_panels` (points, runs, periods,
+    workers, progress).  Returns (matplotlib Figure, {panel label: agreement dict}).
+    """
+    from matplotlib.figure import Figure
+
+    panels = maps.figure_panels(figure, **options)
+    fig = Figure(figsize=(7.5, 3.6 * len(panels)), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(len(panels), 1))
+    for p, ax in zip(panels, axes, strict=True):
+        ds = p["map"]
+        title = (
+            f"Fig. {figure}, {p['label']}: {ds.attrs['runs']} runs x "
+            f"{ds.attrs['periods']} periods per beta"
+        )
+        draw_map(ds, p["stable_intervals"], ax, title=title)
+    return fig, {p["label"]: p["agreement"] for p in panels}

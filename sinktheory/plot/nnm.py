@@ -117,7 +117,7 @@ def plot_frequency_energy(results, *, title: str | None = None, stability: str =
 def draw_transverse(ax, result, scan=None) -> None:
     """phi_half of the coupled mode (``result``, continued in beta) and of the fixed
     container (``scan``, a :class:`~sinktheory.floquet.StabilityScan`) on ``ax``."""
-    from ..floquet_plot import _draw_scan
+    from .floquet import _draw_scan
 
     if scan is not None:
         _draw_scan(ax, scan, "")

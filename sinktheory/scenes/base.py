@@ -6,8 +6,6 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from matplotlib.figure import Figure
-
 HOLDS, FAILS, UNDECIDED = "holds", "does not hold", "cannot be decided"
 
 
@@ -28,7 +26,7 @@ class Claim:
 class SceneResult:
     """A drawn figure with the parameters it used, claims checked and notes."""
 
-    figure: Figure
+    figure: Any  # a matplotlib.figure.Figure, drawn by sinktheory.plot
     parameters: dict[str, Any]
     claims: list[Claim] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)

@@ -5,10 +5,10 @@ from __future__ import annotations
 import functools
 
 import numpy as np
-from matplotlib.figure import Figure
 
 from ..model import RunSettings, Sink, Well
-from ..recurrence import plot_recurrence, rqa
+from ..plot.paper import energy_curves, energy_panels, recurrence_columns, running_and_recurrence
+from ..recurrence import rqa
 from ..simulate import simulate
 from ..sinkstats import SinkMeasures, ensemble_mean, running_mean, sink_measures
 from .base import FAILS, HOLDS, Claim, Scene, SceneResult
@@ -62,14 +62,6 @@ def _passage_note(label: str, m: SinkMeasures) -> str:
     )
 
 
-def _band(ax, e_runs: np.ndarray, label: str, color=None):
-    m, se = ensemble_mean(e_runs)
-    t = np.arange(m.size)
-    line = ax.plot(t, m, lw=0.8, label=label, color=color)[0]
-    ax.fill_between(t, m - se, m + se, color=line.get_color(), alpha=0.25, lw=0)
-    return m
-
-
 def _fidelity(quick: bool, runs: int, periods: int) -> tuple[int, int]:
     return (max(4, runs // 5), max(30, periods // 10)) if quick else (runs, periods)
 
@@ -80,21 +72,18 @@ FIG45_BETAS = (-0.5, -0.3, -0.2, -0.14, 0.009, 0.3)
 
 def _fig5(quick: bool) -> SceneResult:
     runs, periods = _fidelity(quick, 50, 100)
-    fig = Figure(figsize=(8, 8), layout="constrained")
-    axes = fig.subplots(3, 2).ravel()
-    finals, worst = [], 0.0
-    for ax, beta, label in zip(axes, FIG45_BETAS, "abcdef", strict=True):
+    panels, finals, worst = [], [], 0.0
+    for beta, label in zip(FIG45_BETAS, "abcdef", strict=True):
         e, err, _ = ensemble("flat", 0.5, beta, 10, 1, runs, periods)
         worst = max(worst, err)
-        m = _band(ax, e, None)
+        m, se = ensemble_mean(e)
         finals.append(float(m[-periods // 4 :].mean()))
-        ax.set_title(f"{label}) $\\beta$ = {beta:g}", fontsize=10)
-        ax.set_xlabel("$t/T$")
-        ax.set_ylabel("$\\langle E \\rangle$")
-        ax.set_ylim(0, 0.55)
-    fig.suptitle(
+        panels.append((f"{label}) $\\beta$ = {beta:g}", m, se))
+    fig = energy_panels(
+        panels,
         f"Fig. 5: $\\langle E\\rangle$ over {runs} runs (band: $\\pm$ standard "
-        f"error), $n$ = 10, $k$ = 1, $\\alpha$ = 1/2, $m$ = {MASS}"
+        f"error), $n$ = 10, $k$ = 1, $\\alpha$ = 1/2, $m$ = {MASS}",
+        top=0.55,
     )
     drained = [b for b, f in zip(FIG45_BETAS, finals, strict=True) if f < 0.8 * E0]
     return SceneResult(
@@ -131,20 +120,16 @@ FIG8_N = 4
 
 def _fig8(quick: bool) -> SceneResult:
     runs, periods = _fidelity(quick, 25, 1500)
-    fig = Figure(figsize=(8, 4.5), layout="constrained")
-    ax = fig.subplots()
-    measures, worst = [], 0.0
+    curves, measures, worst = [], [], 0.0
     for k in FIG8_KS:
         e, err, total = ensemble("flat", 0.5, 0.3, FIG8_N, k, runs, periods)
         worst = max(worst, err)
-        _band(ax, e, f"$k$ = {k}")
+        curves.append((f"$k$ = {k}", *ensemble_mean(e)))
         measures.append(_measures(e, total, k, FIG8_N))
-    ax.set_xlabel("$t/T$")
-    ax.set_ylabel("$\\langle E \\rangle$")
-    ax.legend()
-    fig.suptitle(
+    fig = energy_curves(
+        curves,
         f"Fig. 8: flat well, $\\beta$ = 0.3, $\\alpha$ = 1/2, $n$ = {FIG8_N}, "
-        f"$m$ = {MASS}, {runs} runs"
+        f"$m$ = {MASS}, {runs} runs",
     )
     decreasing = all(
         a.long_time_mean > b.long_time_mean + 2 * np.hypot(a.long_time_stderr, b.long_time_stderr)
@@ -194,26 +179,18 @@ FIG9_EPS = 0.01 * E0
 def _fig9(quick: bool) -> SceneResult:
     runs, periods = _fidelity(quick, 25, 1500)
     window = 50
-    fig = Figure(figsize=(11, 7), layout="constrained")
-    axes = fig.subplots(2, 3)
-    stats = []
-    for col, beta in enumerate(FIG9_BETAS):
+    columns, stats = [], []
+    for beta in FIG9_BETAS:
         e, _, _ = ensemble("flat", 0.5, beta, 4, 3, runs, periods)
         m, _ = ensemble_mean(e)
-        plot_recurrence(
-            m,
-            FIG9_EPS,
-            ax=axes[0, col],
-            title=f"$\\beta$ = {beta:g}, $\\varepsilon$ = {FIG9_EPS:g}",
-        )
-        r = running_mean(m, min(window, m.size))
-        axes[1, col].plot(np.arange(r.size) + min(window, m.size) - 1, r, lw=0.9)
-        axes[1, col].set_xlabel("$t/T$")
-        axes[1, col].set_ylabel(f"{window}T running mean of $\\langle E\\rangle$")
+        columns.append((f"$\\beta$ = {beta:g}, $\\varepsilon$ = {FIG9_EPS:g}", m))
         stats.append(rqa(m, FIG9_EPS))
-    fig.suptitle(
+    fig = recurrence_columns(
+        columns,
+        FIG9_EPS,
+        window,
         f"Fig. 9: $k$ = 3, $n$ = 4, {runs} runs; recurrence of $\\langle E\\rangle$ "
-        "(top) and its running mean (bottom)"
+        "(top) and its running mean (bottom)",
     )
     rr = [s.recurrence_rate for s in stats]
     return SceneResult(
@@ -256,16 +233,12 @@ def _fig12(quick: bool) -> SceneResult:
     e, err, total = ensemble("symmetric", 1.0, 0.1, 6, 5, runs, periods)
     m, _ = ensemble_mean(e)
     r = running_mean(m, window)
-    fig = Figure(figsize=(11, 4.5), layout="constrained")
-    ax, ax_r = fig.subplots(1, 2, width_ratios=(1.6, 1))
-    t = np.arange(r.size) + window - 1
-    ax.plot(t, r, lw=0.8)
-    ax.plot([0], [E0], "ko")
-    ax.set_xlabel("$t/T$")
-    ax.set_ylabel(f"{window}T running mean of $\\langle E\\rangle$")
-    plot_recurrence(m, 0.01 * E0, ax=ax_r)
-    fig.suptitle(
-        f"Fig. 12: symmetric well, $\\alpha$ = 1, $\\beta$ = 0.1, $n$ = 6, $k$ = 5, {runs} runs"
+    fig = running_and_recurrence(
+        m,
+        E0,
+        0.01 * E0,
+        window,
+        f"Fig. 12: symmetric well, $\\alpha$ = 1, $\\beta$ = 0.1, $n$ = 6, $k$ = 5, {runs} runs",
     )
     sym = _measures(e, total, 5, 6)
     late = sym.long_time_mean

@@ -13,12 +13,11 @@ Floquet theory and (b) the transverse exponent agree with that verdict.
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.figure import Figure
 
-from ..bifurcation import plot_bifurcation
-from ..chaos.maps import THRESHOLD_FACTOR, agreement, beta_grid, chaos_map, draw_map, verdicts
+from ..chaos.maps import THRESHOLD_FACTOR, agreement, beta_grid, chaos_map, verdicts
 from ..floquet import model_problem, scan
 from ..model import confining_betas
+from ..plot.paper import orbit_figure, orbit_panel
 from ..sweep import run_sweep
 from ..sweep.views import bifurcation_diagram
 from .base import FAILS, HOLDS, UNDECIDED, Claim, Scene, SceneResult
@@ -50,7 +49,8 @@ def _unstable(stable: list[tuple[float, float]], lo: float, hi: float):
 
 def _panel(alpha, n, shape, ranges, quick, ax, ax_map):
     """Sections and the chaos map over the valid beta ``ranges`` [(lo, hi), ...] (points
-    shared in proportion to length) and the Floquet scan over their whole span."""
+    shared in proportion to length) and the Floquet scan over their whole span, drawn on
+    ``ax`` and ``ax_map``."""
     f = _fidelity(quick)
     betas = beta_grid(ranges, f["points"])
     params = {
@@ -64,24 +64,13 @@ def _panel(alpha, n, shape, ranges, quick, ax, ax_map):
     diagram = bifurcation_diagram(run_sweep("bifurcation", params, progress=False))
     lo, hi = ranges[0][0], ranges[-1][1]
     floq = scan(model_problem(alpha, n, shape=shape), lo, hi, 400)
-    unstable = _unstable(floq.stable_intervals, lo, hi)
-    plot_bifurcation(diagram, unstable, ax=ax)
-    for (_, a), (b, _) in zip(ranges[:-1], ranges[1:], strict=True):
-        ax.axvspan(a, b, color="0.85", hatch="//", lw=0)
-        ax.text(
-            (a + b) / 2,
-            0.5,
-            "well does not\nhold E = 0.5",
-            transform=ax.get_xaxis_transform(),
-            ha="center",
-            va="center",
-            fontsize=8,
-        )
-    for r in floq.resonances:
-        ax.axvline(r, color="tab:blue", lw=0.8, ls=":")
     cmap = chaos_map(alpha, n, betas, shape=shape, runs=f["runs"], periods=f["periods"])
+    gaps = [(a, b) for (_, a), (b, _) in zip(ranges[:-1], ranges[1:], strict=True)]
     title = f"{shape}, n = {n}: {f['runs']} runs x {f['periods']} periods per beta"
-    draw_map(cmap, floq.stable_intervals, ax_map, title=title)
+    unstable = _unstable(floq.stable_intervals, lo, hi)
+    orbit_panel(
+        ax, ax_map, diagram, unstable, gaps, floq.resonances, cmap, floq.stable_intervals, title
+    )
     return diagram, floq, cmap
 
 
@@ -130,16 +119,16 @@ def _claims(panels, label_of) -> list[Claim]:
 
 
 def _fig3(quick: bool) -> SceneResult:
-    fig = Figure(figsize=(13, 7.5), layout="constrained")
-    axes = fig.subplots(2, 2)
+    fig, axes = orbit_figure(
+        2,
+        (13, 7.5),
+        "Fig. 3: flat well, $\\alpha$ = 1/2, $\\gamma$ = 1, $k$ = 1, $m$ = 0.2; "
+        "dotted: $\\phi_T = -1$",
+    )
     panels = [
         _panel(0.5, n, "flat", [(-0.7, 0.45)], quick, ax, ax_map)
         for n, (ax, ax_map) in zip((2, 10), axes, strict=True)
     ]
-    fig.suptitle(
-        "Fig. 3: flat well, $\\alpha$ = 1/2, $\\gamma$ = 1, $k$ = 1, $m$ = 0.2; "
-        "dotted: $\\phi_T = -1$"
-    )
     f = _fidelity(quick)
     res = panels[1][1].resonances
     return SceneResult(
@@ -175,12 +164,14 @@ def _fig3(quick: bool) -> SceneResult:
 
 
 def _fig11(quick: bool) -> SceneResult:
-    fig = Figure(figsize=(13, 4.2), layout="constrained")
-    ax, ax_map = fig.subplots(1, 2)
+    fig, ((ax, ax_map),) = orbit_figure(
+        1,
+        (13, 4.2),
+        "Fig. 11: symmetric well, $\\alpha$ = 1, $\\gamma$ = 1, $n$ = 6, $k$ = 1",
+    )
     valid = confining_betas(1.0, 6, 0.5, shape="symmetric")
     ranges = [(a + 0.01, b - 0.01) for a, b in valid]  # a margin from the edges of validity
     panel = _panel(1.0, 6, "symmetric", ranges, quick, ax, ax_map)
-    fig.suptitle("Fig. 11: symmetric well, $\\alpha$ = 1, $\\gamma$ = 1, $n$ = 6, $k$ = 1")
     f = _fidelity(quick)
     return SceneResult(
         fig,

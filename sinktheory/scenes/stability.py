@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..floquet import model_problem, scan
-from ..floquet_plot import plot_fig7
+from ..plot.floquet import plot_fig7
 from .base import HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
 ALPHA, NS, RANGE = 0.5, (2, 10), (-1.0, 0.499)
@@ -11,10 +11,13 @@ ALPHA, NS, RANGE = 0.5, (2, 10), (-1.0, 0.499)
 
 def _fig7(quick: bool) -> SceneResult:
     count = 200 if quick else 800
-    fig = plot_fig7(alpha=ALPHA, ns=NS, beta_range=RANGE, count=count)
-    fig.suptitle(
-        "Fig. 7: $\\phi_{T/2}(\\beta)$ of the normal mode $y$ = 0, $\\alpha$ = 1/2, "
-        "$\\gamma$ = 1 (rescaled, $A_0$ = 1)"
+    fig = plot_fig7(
+        alpha=ALPHA,
+        ns=NS,
+        beta_range=RANGE,
+        count=count,
+        title="Fig. 7: $\\phi_{T/2}(\\beta)$ of the normal mode $y$ = 0, $\\alpha$ = 1/2, "
+        "$\\gamma$ = 1 (rescaled, $A_0$ = 1)",
     )
     claims, notes = [], []
     for n in NS:

@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.figure import Figure
 
 from ..bifurcation import sampled_run
+from ..layout import StateLayout
 from ..model import RunSettings, Sink, Well
+from ..plot.paper import trajectory_panels
 from .base import HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
 BETAS = (-0.5, -0.3, -0.2, -0.14, 0.009, 0.3)
@@ -19,29 +20,20 @@ def trajectory(beta: float, periods: int) -> np.ndarray:
     """Relative positions (x, y) of the particle over ``periods`` container periods."""
     sink = Sink(Well(ALPHA, beta, N), particles=1, mass=MASS)
     tr = sampled_run(sink, RunSettings(runs=1, periods=periods), START, per_period=SAMPLES)
-    return np.stack([tr[:, 2] - tr[:, 0], tr[:, 3]], axis=1)  # x = u - X, y
+    return StateLayout(1).relative_positions(tr)[:, 0]  # the one particle's (x, y)
 
 
 def _fig4(quick: bool) -> SceneResult:
     periods = 20 if quick else 100
-    fig = Figure(figsize=(8, 11), layout="constrained")
-    axes = fig.subplots(3, 2).ravel()
-    spreads = []
-    for ax, beta, label in zip(axes, BETAS, "abcdef", strict=True):
+    panels, spreads = [], []
+    for beta, label in zip(BETAS, "abcdef", strict=True):
         xy = trajectory(beta, periods)
         spreads.append(float(np.abs(xy[:, 1]).max()))
-        well = Well(ALPHA, beta, N)
-        g = np.linspace(-1.2, 1.2, 241)
-        X, Y = np.meshgrid(g, g)
-        ax.contour(X, Y, well.potential(X, Y), levels=[0.5], colors="0.6", linewidths=1)
-        ax.plot(xy[:, 0], xy[:, 1], lw=0.3, color="tab:blue")
-        ax.set_aspect("equal")
-        ax.set_title(f"{label}) $\\beta$ = {beta:g}", fontsize=10)
-        ax.set_xlabel("$x$")
-        ax.set_ylabel("$y$")
-    fig.suptitle(
+        panels.append((f"{label}) $\\beta$ = {beta:g}", Well(ALPHA, beta, N), xy))
+    fig = trajectory_panels(
+        panels,
         f"Fig. 4: particle paths, $0 \\leq t/T \\leq {periods}$, $\\alpha$ = 1/2, "
-        f"$n$ = {N}, $k$ = 1, $m$ = {MASS}; grey: V = 0.5"
+        f"$n$ = {N}, $k$ = 1, $m$ = {MASS}; grey: V = 0.5",
     )
     measured = "; ".join(
         f"beta = {b:g}: max|y| = {s:.3f}" for b, s in zip(BETAS, spreads, strict=True)

@@ -2,12 +2,9 @@
 
 from __future__ import annotations
 
-import numpy as np
-from matplotlib.figure import Figure
-
 from .._generated import oscillator as _osc
 from ..model import Well
-from ..wellplot import plot_well
+from ..plot.paper import well_panels
 from .base import FAILS, HOLDS, Claim, Scene, SceneResult
 
 #: The container's initial energy in the paper's runs; the outer level line drawn.
@@ -37,16 +34,6 @@ def level_line_curvature(well: Well, energy: float, h: float = 1e-3) -> float:
     return d2 / (1 + d1 * d1) ** 1.5
 
 
-def _panels(wells: list[tuple[str, Well]], ncols: int) -> Figure:
-    nrows = int(np.ceil(len(wells) / ncols))
-    fig = Figure(figsize=(4.2 * ncols, 4.0 * nrows), layout="constrained")
-    axes = fig.subplots(nrows, ncols, squeeze=False).ravel()
-    for ax, (label, well) in zip(axes, wells, strict=False):
-        plot_well(well, energy=ENERGY, ax=ax, points=201)
-        ax.set_title(f"{label}  $n$={well.n}, $\\beta$={well.beta:g}", fontsize=10)
-    return fig
-
-
 def _curvature_claim(wells: list[tuple[str, Well]]) -> Claim:
     """beta is half the wall curvature at y = 0 in the rigid limit, eq. (kappa)."""
     parts, ok = [], True
@@ -71,8 +58,8 @@ def _fig2(quick: bool) -> SceneResult:
         ("c)", Well(0.5, 0.0, 2)),
         ("d)", Well(0.5, -0.3, 2)),
     ]
-    fig = _panels(wells, 2)
-    fig.suptitle("Fig. 2: flat wells, $\\alpha$ = 1/2, $\\gamma$ = 1; level lines up to E = 0.5")
+    title = "Fig. 2: flat wells, $\\alpha$ = 1/2, $\\gamma$ = 1; level lines up to E = 0.5"
+    fig = well_panels(wells, 2, ENERGY, title)
     return SceneResult(
         fig,
         {
@@ -90,8 +77,8 @@ def _fig10(quick: bool) -> SceneResult:
         ("a)", Well(1.0, -0.1, 6, shape="symmetric")),
         ("b)", Well(1.0, 0.1, 6, shape="symmetric")),
     ]
-    fig = _panels(wells, 2)
-    fig.suptitle("Fig. 10: symmetric wells, $\\alpha$ = 1, $\\gamma$ = 1, $n$ = 6")
+    title = "Fig. 10: symmetric wells, $\\alpha$ = 1, $\\gamma$ = 1, $n$ = 6"
+    fig = well_panels(wells, 2, ENERGY, title)
     sym = all(float(w.potential(0.3, -0.7)) == float(w.potential(-0.7, 0.3)) for _, w in wells)
     return SceneResult(
         fig,

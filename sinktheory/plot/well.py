@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from .model import Well
+from ..model import Well
 
 #: Level lines drawn, as fractions of the energy E (the outermost one, E itself, is bold).
 LEVEL_FRACTIONS = (1e-3, 1e-2, 0.05, 0.15, 0.35, 0.65, 1.0)

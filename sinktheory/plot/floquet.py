@@ -19,8 +19,8 @@ from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.ticker import SymmetricalLogLocator
 
-from . import validation as v
-from .floquet import StabilityScan, model_problem, pure_problem, scan
+from .. import validation as v
+from ..floquet import StabilityScan, model_problem, pure_problem, scan
 
 _LABEL = {"lam": r"$\Lambda$", "beta": r"$\beta$"}
 _CAP = 1e300
@@ -102,6 +102,7 @@ def plot_fig7(
     beta_range: tuple[float, float] = (-1.0, 0.499),
     count: int = 600,
     shape: str = "flat",
+    title: str | None = None,
 ) -> Figure:
     """Fig. 7 of the paper: phi_half(beta) for alpha = 1/2, gamma = 1, one panel per n.
 
@@ -116,6 +117,8 @@ def plot_fig7(
     count : int
         Grid points per panel; boundaries are located by root finding regardless.
     shape : "flat" or "symmetric"
+    title : str, optional
+        Title over the panels.
 
     Returns
     -------
@@ -132,6 +135,8 @@ def plot_fig7(
         )
         if k == 0:
             ax.legend(fontsize=8, loc="best")
+    if title:
+        fig.suptitle(title)
     return fig
 
 

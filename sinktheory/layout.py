@@ -1,0 +1,139 @@
+"""Named columns of the simulator's state rows and the packed parameters of its engine.
+
+A state row of a sink with k particles has 2 + 4k columns (paper units; u_j = X + x_j is
+particle j's absolute x, velocities are absolute)::
+
+    [X, Xdot, u_1 .. u_k, y_1 .. y_k, udot_1 .. udot_k, ydot_1 .. ydot_k]
+
+The compiled engine (:mod:`sinktheory.engine`) holds the same numbers as coordinates and
+velocities (q, v), each (1 + 2k, R): q = [X, u_1..u_k, y_1..y_k], v likewise.
+:class:`StateLayout` names every block, so no code indexes a column by number, and
+converts between the two forms.  :data:`SINK_PARAMS` names the packed parameter vector
+the engine's kernels read.
+
+Examples
+--------
+>>> import numpy as np
+>>> L = StateLayout(2)
+>>> L.width, L.names()
+(10, ('X', 'Xdot', 'u_1', 'u_2', 'y_1', 'y_2', 'udot_1', 'udot_2', 'ydot_1', 'ydot_2'))
+>>> rows = np.arange(10.0)[None]
+>>> rows[:, L.y].tolist(), L.relative_positions(rows).tolist()
+([[4.0, 5.0]], [[[2.0, 4.0], [3.0, 5.0]]])
+>>> q, v = L.split(rows)
+>>> q[:, 0].tolist(), bool((L.join(q, v) == rows).all())
+([0.0, 2.0, 3.0, 4.0, 5.0], True)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from .errors import ParameterError
+
+#: The engine's runtime parameters of a sink, in the order its kernels read them (the
+#: particle mass is mu = m / k).  Shape, n and k are compiled into the engine instead.
+SINK_PARAMS = ("alpha", "beta", "gamma", "mu")
+
+
+def pack_params(sink) -> np.ndarray:
+    """The packed parameter vector :data:`SINK_PARAMS` of ``sink`` for the engine.
+
+    Examples
+    --------
+    >>> from sinktheory import Sink, Well
+    >>> pack_params(Sink(Well(0.5, 0.3, 4), particles=2, mass=0.2)).tolist()
+    [0.5, 0.3, 1.0, 0.1]
+    """
+    w = sink.well
+    return np.array([w.alpha, w.beta, w.gamma, sink.mu])
+
+
+@dataclass(frozen=True)
+class StateLayout:
+    """The columns of a state row with ``particles`` = k particles (module docstring)."""
+
+    particles: int
+    #: Column of the container's position X and velocity Xdot.
+    X: ClassVar[int] = 0
+    XDOT: ClassVar[int] = 1
+
+    @classmethod
+    def of(cls, values) -> StateLayout:
+        """The layout of state rows ``values`` (..., 2 + 4k), read from their width."""
+        width = np.shape(values)[-1] if np.ndim(values) else 0
+        if width < 6 or (width - 2) % 4:
+            raise ParameterError("values", f"state rows of width {width}", "2 + 4k columns, k >= 1")
+        return cls((width - 2) // 4)
+
+    @property
+    def width(self) -> int:
+        return 2 + 4 * self.particles
+
+    def _block(self, i: int) -> slice:
+        k = self.particles
+        return slice(2 + i * k, 2 + (i + 1) * k)
+
+    @property
+    def u(self) -> slice:
+        """Absolute x positions u_j = X + x_j."""
+        return self._block(0)
+
+    @property
+    def y(self) -> slice:
+        """y positions (the same in both frames)."""
+        return self._block(1)
+
+    @property
+    def udot(self) -> slice:
+        return self._block(2)
+
+    @property
+    def ydot(self) -> slice:
+        return self._block(3)
+
+    @property
+    def q(self) -> np.ndarray:
+        """Columns of the engine's coordinates [X, u.., y..]."""
+        return np.r_[self.X, 2 : 2 + 2 * self.particles]
+
+    @property
+    def v(self) -> np.ndarray:
+        """Columns of the engine's velocities [Xdot, udot.., ydot..]."""
+        return np.r_[self.XDOT, 2 + 2 * self.particles : self.width]
+
+    def names(self) -> tuple[str, ...]:
+        """Column names, e.g. for the ``state`` coordinate of a dataset."""
+        ks = range(1, self.particles + 1)
+        blocks = [[f"{c}_{j}" for j in ks] for c in ("u", "y", "udot", "ydot")]
+        return ("X", "Xdot", *(name for block in blocks for name in block))
+
+    def relative_positions(self, values: np.ndarray) -> np.ndarray:
+        """Particle positions (x_j, y_j) in the container's frame, shape (..., k, 2)."""
+        values = np.asarray(values)
+        x = values[..., self.u] - values[..., self.X, None]
+        return np.stack([x, values[..., self.y]], -1)
+
+    def start(self, X: float, positions: np.ndarray) -> np.ndarray:
+        """Rows (R, 2 + 4k): container at ``X``, particles at ``positions`` (R, k, 2)
+        relative to it, everything at rest."""
+        values = np.zeros((positions.shape[0], self.width))
+        values[:, self.X] = X
+        values[:, self.u] = X + positions[:, :, 0]
+        values[:, self.y] = positions[:, :, 1]
+        return values
+
+    def split(self, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Rows (R, 2 + 4k) as the engine's (q, v), each (1 + 2k, R), contiguous."""
+        values = np.asarray(values, dtype=float)
+        return np.ascontiguousarray(values[:, self.q].T), np.ascontiguousarray(values[:, self.v].T)
+
+    def join(self, q: np.ndarray, v: np.ndarray) -> np.ndarray:
+        """The engine's (q, v) as rows (R, 2 + 4k)."""
+        values = np.empty((q.shape[1], self.width))
+        values[:, self.q] = q.T
+        values[:, self.v] = v.T
+        return values

@@ -1,0 +1,96 @@
+"""The result protocol: as_dict() is JSON-ready and survives a JSON round trip unchanged;
+to_dataset() has the named dimensions and coordinates; the CLI prints as_dict()."""
+
+import json
+
+import numpy as np
+import pytest
+
+from sinktheory import RunSettings, Sink, Well
+from sinktheory.bifurcation import bifurcation
+from sinktheory.chaos import chaos
+from sinktheory.cli import main
+from sinktheory.layout import StateLayout
+from sinktheory.recurrence import rqa
+from sinktheory.results import Result, attribute, plain
+from sinktheory.series import accuracy
+from sinktheory.simulate import simulate
+
+SINK = Sink(Well(0.5, 0.3, 4), particles=2, mass=0.2)
+
+
+def roundtrip(d: dict) -> dict:
+    return json.loads(json.dumps(d, allow_nan=False))
+
+
+@pytest.fixture(scope="module")
+def sim():
+    record = ("container", "particles", "trajectory", "final")
+    return simulate(SINK, RunSettings(runs=3, periods=2, seed=4), record=record, progress=False)
+
+
+def test_plain_types():
+    x = plain({"a": np.array([[1.5, np.nan]]), "z": np.complex128(2 - 1j), 3: np.int64(7)})
+    assert x == {"a": [[1.5, None]], "z": [2.0, -1.0], "3": 7}
+    assert type(x["3"]) is int
+    with pytest.raises(TypeError):
+        plain(object())
+    assert attribute(True) == 1 and attribute({"k": [1, np.inf]}) == '{"k": [1, null]}'
+
+
+def test_simulation_result_round_trip_and_dataset(sim):
+    d = sim.as_dict()
+    assert roundtrip(d) == d
+    assert d["container_energy"] == sim.container_energy.tolist()
+    assert d["mean_energy"] == sim.ensemble_energy()[0].tolist()
+    assert d["final_state"]["values"] == sim.final_state.values.tolist()
+    assert d["parameters"]["runs"] == 3 and d["parameters"]["shape"] == "flat"
+    ds = sim.to_dataset()
+    assert ds.container_energy.dims == ("run", "time")
+    assert ds.particle_energy.dims == ("run", "time", "particle")
+    assert ds.trajectory.dims == ("run", "sample", "state")
+    assert ds.final_state_values.dims == ("run", "state")
+    np.testing.assert_array_equal(ds.time.values, sim.times)
+    np.testing.assert_array_equal(ds.sample.values, sim.trajectory_times)
+    assert list(ds.state.values) == list(StateLayout(2).names())
+    # the dataset's total energy per period is the conserved total (independent check)
+    total = ds.container_energy + ds.particle_energy.sum("particle")
+    np.testing.assert_allclose(total, ds.initial_energy.broadcast_like(total), rtol=1e-8)
+    assert json.loads(ds.attrs["parameters"]) == d["parameters"]
+
+
+def test_bifurcation_and_rqa():
+    d = bifurcation([0.1, 0.3], alpha=0.5, n=4, transient=2, count=3)
+    assert roundtrip(d.as_dict()) == d.as_dict()
+    ds = d.to_dataset()
+    assert ds.section.dims == ("beta", "sample") and ds.beta.values.tolist() == [0.1, 0.3]
+    assert ds.sample.values.tolist() == [1, 2, 3] and ds.attrs["quantity"] == "y"
+    r = rqa([0.0, 1.0, 0.0, 1.0, 0.0, 1.0], eps=0.1)
+    rd = r.as_dict()
+    assert roundtrip(rd) == rd and rd["determinism"] == 1.0 and rd["laminarity"] == 0.0
+    assert rd["trapping_time"] is None  # nan: no vertical line
+    assert r.to_dataset().diagonal_lines.dims == ("length",)
+
+
+def test_chaos_result_follows_the_protocol():
+    res = chaos(SINK, RunSettings(runs=2, periods=3, seed=1), dt=0.02, progress=False)
+    assert isinstance(res, Result)
+    d = res.as_dict()
+    assert roundtrip(d) == d and d["lambda1"]["runs"] == res.lambda1.tolist()
+
+
+def test_nested_lists_of_results():
+    a = accuracy(3, 2, samples=101)
+    d = a.as_dict()
+    assert roundtrip(d) == d
+    assert [e["order"] for e in d["errors"]] == [1, 2] and d["bounds"][0]["i"] == 2
+
+
+def test_cli_json_is_the_api_as_dict(capsys):
+    argv = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--particles", "2"]
+    assert main(argv + ["--runs", "2", "--periods", "2", "--seed", "5", "--json", "--quiet"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    api = simulate(
+        SINK, RunSettings(runs=2, periods=2, seed=5), record=("container", "final"), progress=False
+    )
+    assert data == api.as_dict()
