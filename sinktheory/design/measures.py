@@ -40,12 +40,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..results import Result
 from ..sinkstats import ensemble_mean, sink_measures
 
 #: Fractions of E0 absorbed whose first-passage times are measured.
@@ -68,7 +69,7 @@ BOOTSTRAP_TAG = 0xB007
 
 
 @dataclass(frozen=True)
-class DesignMeasures:
+class DesignMeasures(Result):
     """The measures of one design (see the module docstring); ``*_se`` standard errors.
 
     Attributes
@@ -133,14 +134,19 @@ class DesignMeasures:
     def verdict_name(self) -> str:
         return VERDICTS[self.verdict]
 
-    def as_dict(self) -> dict:
-        """Plain Python values (lists for arrays), JSON-ready except for NaN/inf."""
-        out = {}
-        for f in fields(self):
-            x = getattr(self, f.name)
-            out[f.name] = x.tolist() if isinstance(x, np.ndarray) else x
-        out["verdict_name"] = self.verdict_name
-        return out
+    DIMS = {
+        "horizons": ("horizon",),
+        "absorbed": ("horizon",),
+        "absorbed_se": ("horizon",),
+        "levels": ("level",),
+        "passage": ("level",),
+        "passage_se": ("level",),
+        "passage_reach": ("level",),
+    }
+    COORDS = {"horizons": "horizon", "levels": "level"}
+
+    def items(self) -> dict:
+        return {**super().items(), "verdict_name": self.verdict_name}
 
 
 def horizons_of(text: str | Sequence[int], periods: int) -> tuple[int, ...]:

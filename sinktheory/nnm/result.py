@@ -13,6 +13,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..results import Result
+
 
 def _pad(rows: list[np.ndarray]) -> np.ndarray:
     width = max((r.size for r in rows), default=0)
@@ -29,7 +31,7 @@ def _json(x):
 
 
 @dataclass(frozen=True)
-class BranchResult:
+class BranchResult(Result):
     """One branch of periodic orbits as labelled arrays.
 
     Attributes
