@@ -94,3 +94,17 @@ def test_cli_json_is_the_api_as_dict(capsys):
         SINK, RunSettings(runs=2, periods=2, seed=5), record=("container", "final"), progress=False
     )
     assert data == api.as_dict()
+
+
+def test_design_measures_follow_the_protocol():
+    from sinktheory.design.measures import design_measures
+
+    # a never-draining ensemble: E stays at E0, so no level is ever passed (NaN -> None)
+    e = 0.5 + 1e-3 * np.random.default_rng(2).standard_normal((4, 41))
+    m = design_measures(e, e0=0.5, total_energy=0.5, particles=1, n=4, horizons=[10, 40])
+    d = m.as_dict()
+    assert roundtrip(d) == d and d["horizons"] == [10, 40] and d["passage"] == [None, None]
+    assert d["verdict_name"] == m.verdict_name
+    ds = m.to_dataset()
+    assert ds.absorbed.dims == ("horizon",) and ds.horizon.values.tolist() == [10, 40]
+    assert ds.passage.dims == ("level",)
