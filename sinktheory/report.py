@@ -4,18 +4,32 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .results import Result
 from .scenes.base import Scene, SceneResult
 
 
 @dataclass
-class SceneOutcome:
-    """A scene as run: its result (None if it failed), image name, seconds, error text."""
+class SceneOutcome(Result):
+    """A scene as run: its result (None if it failed), image name, seconds, error text.
+
+    ``as_dict()`` (what ``reproduce --json`` lists per figure): figure number, image,
+    seconds, error and the claims checked.
+    """
 
     scene: Scene
     result: SceneResult | None
     image: str | None
     seconds: float
     error: str | None = None
+
+    def items(self) -> dict:
+        return {
+            "figure": self.scene.number,
+            "image": self.image,
+            "seconds": self.seconds,
+            "error": self.error,
+            "claims": [] if self.result is None else self.result.claims,
+        }
 
 
 def _cell(text: str) -> str:

@@ -13,6 +13,8 @@ def test_reproduce_writes_figures_and_report(tmp_path, capsys):
     assert main(["reproduce", "--figure", "2", "10", "--out", str(out), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert [f["figure"] for f in data["figures"]] == [2, 10]
+    claim = data["figures"][1]["claims"][0]  # Fig. 10: the x <-> y symmetry, exact
+    assert set(claim) == {"statement", "measured", "verdict"} and claim["verdict"] == "holds"
     for name in ("fig02.png", "fig10.png"):
         assert (out / name).read_bytes()[:4] == b"\x89PNG"
     report = (out / "report.md").read_text()

@@ -52,21 +52,7 @@ def run(args: argparse.Namespace) -> Output:
     report = render(outcomes, quick=args.quick, version=__version__)
     data = {
         "out": str(out_dir),
-        "figures": [
-            {
-                "figure": o.scene.number,
-                "image": o.image,
-                "seconds": o.seconds,
-                "error": o.error,
-                "claims": []
-                if o.result is None
-                else [
-                    {"statement": c.statement, "measured": c.measured, "verdict": c.verdict}
-                    for c in o.result.claims
-                ],
-            }
-            for o in outcomes
-        ],
+        "figures": [o.as_dict() for o in outcomes],
         "report": str(out_dir / "report.md"),
     }
     text = (

@@ -6,11 +6,13 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+from ..results import Result
+
 HOLDS, FAILS, UNDECIDED = "holds", "does not hold", "cannot be decided"
 
 
 @dataclass(frozen=True)
-class Claim:
+class Claim(Result):
     """A statement of the paper, what we measured, and a plain verdict."""
 
     statement: str
