@@ -195,6 +195,11 @@ def test_damping_is_a_design_dimension():
     assert np.isnan(float(ds.lambda1.sel(damping=0.5)))
     by_c0 = {r["damping"]: r for r in run.ranked}
     assert by_c0[0.5]["zeta_eq"] == zeta and by_c0[0.0]["zeta_eq"] == 0.0
+    # the heat map over the damping gets a zeta_eq panel
+    from sinktheory.plot.design import heatmaps
+
+    (fig,) = heatmaps(ds).values()
+    assert [ax.get_title() for ax in fig.axes if ax.get_title()][-1] == "$\\zeta_{eq}$ (max)"
 
 
 def test_damping_on_the_command_line(tmp_path, capsys):

@@ -7,8 +7,9 @@ state), saved by the caller or by :func:`sinktheory.design.report.write_report`.
 Heat maps show, for each pair of swept parameters, the best value over the other swept
 parameters of three measures: the long-time depth of absorption (largest), the
 first-passage time t50 to 50 % absorbed (smallest; blank where never reached) and the
-run-to-run spread relative to E0 (smallest).  Every parameter is drawn as a category (its
-values in order), so shape and numbers mix freely.
+run-to-run spread relative to E0 (smallest), and when the contact damping is swept the
+equivalent damping ratio zeta_eq of the container (largest).  Every parameter is drawn as
+a category (its values in order), so shape and numbers mix freely.
 
 Examples
 --------
@@ -36,6 +37,13 @@ HEAT = (
     ("$t_{50}$ / T (min)", lambda ds: ds.passage.sel(level=0.5), "min", "viridis_r"),
     ("spread / $E_0$ (min)", lambda ds: ds.spread / _e0(ds), "min", "magma_r"),
 )
+#: The fourth panel when the contact damping is swept: the equivalent damping ratio.
+ZETA = ("$\\zeta_{eq}$ (max)", lambda ds: ds.zeta_eq, "max", "cividis")
+
+
+def panels(ds) -> tuple:
+    """The measures drawn: :data:`HEAT`, and :data:`ZETA` when ``damping`` is swept."""
+    return HEAT + (ZETA,) if "damping" in swept(ds) and "zeta_eq" in ds else HEAT
 
 
 def _e0(ds):
@@ -54,7 +62,8 @@ def _label(value) -> str:
 
 
 def heatmap(ds, x: str, y: str | None = None):
-    """Heat maps of the three measures over ``x`` (columns) and ``y`` (rows, optional).
+    """Heat maps of the measures (:func:`panels`) over ``x`` (columns) and ``y`` (rows,
+    optional).
 
     Other swept parameters are reduced to their best value; points not done are blank.
     """
@@ -64,9 +73,10 @@ def heatmap(ds, x: str, y: str | None = None):
     outline = [patheffects.withStroke(linewidth=2, foreground="w")]
     mask = ds.done
     others = [d for d in swept(ds) if d not in (x, y)]
-    fig = Figure(figsize=(4.2 * len(HEAT), 3.6), layout="constrained")
-    axes = fig.subplots(1, len(HEAT))
-    for ax, (title, make, how, cmap) in zip(axes, HEAT, strict=True):
+    drawn = panels(ds)
+    fig = Figure(figsize=(4.2 * len(drawn), 3.6), layout="constrained")
+    axes = fig.subplots(1, len(drawn))
+    for ax, (title, make, how, cmap) in zip(axes, drawn, strict=True):
         da = make(ds).where(mask)
         if others:
             da = getattr(da, how)(dim=others, skipna=True)
