@@ -3,7 +3,7 @@ not calibrated on, picks the cheapest scheme, and refuses what it cannot promise
 
 The reference is the conserved Hamiltonian itself (the energy audit of each run), on wells
 outside the calibration set of benchmarks/calibrate_steps.py (flat beta = -0.2, n = 6; the
-symmetric well at beta = -0.1; k = 2 and 3).
+symmetric well at beta = -0.1; k = 2 and 3; and k = 10, twice the most particles calibrated).
 """
 
 import math
@@ -19,6 +19,7 @@ UNSEEN = [
     Sink(Well(0.5, -0.2, 6), particles=3, mass=0.2),
     Sink(Well(1.0, -0.1, 6, shape="symmetric"), particles=2, mass=0.2),
 ]
+MANY = Sink(Well(0.5, 0.1, 4), particles=10, mass=0.2)
 
 
 def test_every_scheme_is_calibrated():
@@ -33,6 +34,15 @@ def test_tolerance_is_met_on_unseen_wells(sink, tol):
     assert res.tol == tol
     assert res.max_relative_energy_error <= tol
     assert res.container_energy.min() < 0.45  # the particles really took up energy
+
+
+@pytest.mark.parametrize("tol", [1e-6, 1e-9])
+def test_tolerance_is_met_with_ten_particles(tol):
+    """Twice the particles of any calibrated workload (lighter particles, a stiffer
+    frequency bound): the audit must still show tol met."""
+    res = simulate(MANY, RunSettings(runs=4, periods=150, seed=5), tol=tol, progress=False)
+    assert res.max_relative_energy_error <= tol
+    assert res.container_energy.min() < 0.45
 
 
 def test_choice_is_the_cheapest_and_cost_falls_with_tolerance():
