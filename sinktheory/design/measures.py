@@ -228,7 +228,7 @@ def _se(values: np.ndarray) -> float:
 
 
 def _rqa(series: np.ndarray, eps: float) -> dict:
-    from ..recurrence import rqa  # imports numba kernels and matplotlib's Figure: lazily
+    from ..recurrence import rqa  # imports numba kernels: lazily
 
     r = rqa(series, eps=eps)
     return {name: float(getattr(r, name)) for name in RQA_MEASURES}
