@@ -19,6 +19,7 @@ from __future__ import annotations
 import argparse
 import math
 
+from .._generated.shapes import NAMES as SHAPE_NAMES
 from ..errors import ParameterError
 from ..floquet import FloquetChart, model_problem, pure_problem, scan
 from . import HELP as HELPS
@@ -44,7 +45,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--alpha", type=number, help="alpha > 0 of the well (beta modes)")
     parser.add_argument("--n", type=number, required=True, help="wall stiffness, integer >= 1")
     parser.add_argument("--gamma", type=number, default=1.0, help="well strength (default 1)")
-    parser.add_argument("--shape", default="flat", help="flat or symmetric (default flat)")
+    parser.add_argument(
+        "--shape", default="flat", help=f"one of {', '.join(SHAPE_NAMES)} (default flat)"
+    )
     parser.add_argument(
         "--amplitude", type=number, default=1.0, help="amplitude A0 of x(t) (default 1)"
     )
