@@ -20,6 +20,7 @@ import re
 import sys
 from pathlib import Path
 
+from .._generated.shapes import NAMES as SHAPE_NAMES
 from ..errors import ParameterError
 from ..sweep.grid import parse_param
 from ..validation import writable_directory
@@ -68,7 +69,11 @@ NEGATIVE_VALUE = re.compile(
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser._negative_number_matcher = NEGATIVE_VALUE  # argparse's hook for "-1" values
     g = parser.add_argument_group("designs (VALUE, V1,V2,... or LO:HI:COUNT)")
-    g.add_argument("--shape", default="flat", help="flat, symmetric or flat,symmetric")
+    g.add_argument(
+        "--shape",
+        default="flat",
+        help=f"one or more of {', '.join(SHAPE_NAMES)}, comma-separated (default flat)",
+    )
     g.add_argument("--alpha", default="0.5", help="alpha > 0 (default 0.5)")
     g.add_argument("--beta", required=True, help="beta < alpha")
     g.add_argument("--n", required=True, help="wall stiffness, integers >= 1")
