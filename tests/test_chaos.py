@@ -121,6 +121,29 @@ def test_spectrum_pairs_and_zero_exponents():
     np.testing.assert_array_equal(res.lambda1, s[:, 0])  # vector 0 of the QR = lambda_1
 
 
+def test_half_spectrum_is_the_top_of_the_full_one_and_pairs_the_rest():
+    """spectrum="half" carries D of the 2D vectors: modified Gram-Schmidt treats vector i
+    independently of the vectors after it, so its D exponents are bitwise the full
+    computation's first D (same seeded vectors); the lower half is their pairing, which
+    the full computation reaches to within its pair sums (10 / t, as above)."""
+    settings = RunSettings(runs=2, periods=150, seed=4)
+    full = chaos(FLAT1, settings, spectrum=True, dt=DT)
+    half = chaos(FLAT1, settings, spectrum="half", dt=DT)
+    D = full.spectrum.shape[1] // 2
+    assert half.spectrum_logs.shape[-1] == D and half.spectrum_paired
+    np.testing.assert_array_equal(half.spectrum[:, :D], full.spectrum[:, :D])
+    np.testing.assert_array_equal(half.spectrum[:, D:], -half.spectrum[:, D - 1 :: -1])
+    np.testing.assert_allclose(half.spectrum, full.spectrum, atol=10 / full.duration, rtol=0)
+    assert half.pair_sums is None and "pair_sums" not in half.as_dict()
+    assert half.to_dataset().spectrum.shape == (2, 2 * D)
+
+
+@pytest.mark.parametrize("bad", ["quarter", 2, "True"])
+def test_bad_spectrum_option_is_refused_naming_it(bad):
+    with pytest.raises(ParameterError, match="^spectrum = "):
+        chaos(FLAT1, RunSettings(runs=1, periods=1), spectrum=bad, dt=DT)
+
+
 # --------------------------------------------------------------------------- Henon-Heiles
 def test_henon_heiles_gali2_chaotic_and_regular():
     """Skokos et al. (2007): at E = 1/8 the chaotic orbit's GALI_2 falls below 1e-12 before

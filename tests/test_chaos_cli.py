@@ -29,6 +29,14 @@ def test_spectrum_json_pairs_sum_to_zero(capsys):
     np.testing.assert_array_equal(np.array(d["spectrum"]["runs"]), res.spectrum)
 
 
+def test_half_spectrum_from_the_cli(capsys):
+    code, out, err = run_cli(BASE + ["--runs", "2", "--periods", "20", "--spectrum", "half"], capsys)
+    assert code == 0, err
+    assert "symplectic pairing" in out and "pairs lambda_i" not in out
+    code, out, err = run_cli(BASE + ["--runs", "2", "--periods", "2", "--spectrum", "all"], capsys)
+    assert code == 2 and out == "" and err.count("\n") == 1 and "--spectrum" in err
+
+
 def test_all_indicators_text_and_plot(capsys, tmp_path):
     png = tmp_path / "conv.png"
     args = ["--runs", "2", "--periods", "20", "--gali", "2", "--megno", "--transverse"]

@@ -48,6 +48,21 @@ def check_gali(gali: int, dim: int) -> int:
     return k
 
 
+def check_spectrum(spectrum) -> str | None:
+    """None (no spectrum), "full" (True or "full") or "half" (see :func:`indicators`).
+
+    Examples
+    --------
+    >>> check_spectrum(True), check_spectrum("half"), check_spectrum(False)
+    ('full', 'half', None)
+    """
+    if spectrum is False or spectrum is None:
+        return None
+    if spectrum is True or spectrum in ("full", "half"):
+        return "full" if spectrum is True else spectrum
+    raise ParameterError("spectrum", spectrum, 'False, True, "full" or "half"')
+
+
 def _run(system, q, v, params, vectors, mode, scheme, dt, steps, segments, opts, **kw):
     """One ensemble with deviation vectors: (Records, Ensemble)."""
     dq, dv = vectors
@@ -112,8 +127,11 @@ def indicators(
     dt, steps, segments : float, int, int
         Step, steps per segment (records and renormalisation at every segment end), and
         number of segments.
-    spectrum : bool
-        Full spectrum (2D exponents) by the QR method.
+    spectrum : bool or "full" or "half"
+        Lyapunov spectrum by the QR method: all 2D exponents from 2D vectors (True or
+        "full"), or the D largest from D vectors with the rest by the symplectic pairing
+        lambda_{2D+1-i} = -lambda_i ("half": half the tangent work; exact for a
+        Hamiltonian flow, but nothing is left to check the pairing with).
     gali : int
         k of GALI_k (0: none; 2 also gives SALI).
     megno : bool
@@ -157,7 +175,8 @@ def indicators(
         "progress": progress,
         "reference_energy": reference_energy,
     }
-    count = max(2 * D if spectrum else 0, gali, 1)
+    spectrum = check_spectrum(spectrum)
+    count = max({"full": 2 * D, "half": D, None: 0}[spectrum], gali, 1)
     if vectors is None:
         dq, dv = random_vectors(D, count, R, seed)
     else:
@@ -176,7 +195,7 @@ def indicators(
             q,
             v,
             params,
-            (dq, dv),
+            (dq[:, :D].copy(), dv[:, :D].copy()) if spectrum == "half" else (dq, dv),
             "orthonormalise",
             scheme,
             dt,
@@ -187,6 +206,7 @@ def indicators(
             label="spectrum ",
         )
         out["spectrum_logs"] = rec.logs
+        out["spectrum_paired"] = spectrum == "half"
         out["log_growth"] = rec.logs[:, :, 0]
         if megno and not need_normalise:
             out["megno"] = rec.megno

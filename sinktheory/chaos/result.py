@@ -57,9 +57,14 @@ class ChaosResult(Result):
     log_growth : ndarray (R, S + 1)
         ln |delta_1(t)| of the first deviation vector (its growth with every
         renormalisation accumulated); lambda_1(t) = log_growth / t.
-    spectrum_logs : ndarray (R, S + 1, 2D) or None
+    spectrum_logs : ndarray (R, S + 1, 2D), (R, S + 1, D) or None
         Accumulated ln R_ii of the QR (modified Gram-Schmidt) renormalisations of 2D
-        vectors; lambda_i(t) = spectrum_logs[..., i] / t, in decreasing order.
+        vectors (or of D, when ``spectrum_paired``); lambda_i(t) = spectrum_logs[..., i] / t,
+        in decreasing order.
+    spectrum_paired : bool
+        Only the D largest exponents were computed; :attr:`spectrum` completes them by
+        the symplectic pairing lambda_{2D+1-i} = -lambda_i, and :attr:`pair_sums` is None
+        (nothing measured to check).
     gali : ndarray (R, S + 1) or None
         GALI_k(t) of the first ``gali_order`` unit deviation vectors.
     gali_order : int
@@ -78,6 +83,7 @@ class ChaosResult(Result):
     times: np.ndarray
     log_growth: np.ndarray
     spectrum_logs: np.ndarray | None = None
+    spectrum_paired: bool = False
     gali: np.ndarray | None = None
     gali_order: int = 0
     megno: np.ndarray | None = None
@@ -109,13 +115,16 @@ class ChaosResult(Result):
         """Lyapunov spectrum lambda_1 >= ... >= lambda_2D of each run, (R, 2D)."""
         if self.spectrum_logs is None:
             return None
-        return self.spectrum_logs[:, -1] / self.duration
+        top = self.spectrum_logs[:, -1] / self.duration
+        if self.spectrum_paired:
+            return np.concatenate([top, -top[:, ::-1]], axis=1)
+        return top
 
     @property
     def pair_sums(self) -> np.ndarray | None:
         """lambda_i + lambda_{2D+1-i}, i = 1..D, of each run (0 for a symplectic flow), (R, D)."""
         s = self.spectrum
-        if s is None:
+        if s is None or self.spectrum_paired:
             return None
         D = s.shape[1] // 2
         return s[:, :D] + s[:, ::-1][:, :D]
@@ -189,9 +198,10 @@ class ChaosResult(Result):
         out: dict = {"parameters": plain(self.parameters), "runs": self.runs}
         out["time"] = self.duration
         out["max_relative_energy_error"] = float(np.max(self.run_errors, initial=0.0))
+        out["spectrum_paired"] = self.spectrum_paired
         names = ["lambda1"]
         if self.spectrum_logs is not None:
-            names += ["spectrum", "pair_sums"]
+            names += ["spectrum"] if self.spectrum_paired else ["spectrum", "pair_sums"]
         if self.transverse_logs is not None:
             names.append("transverse")
         for name in names:
@@ -242,7 +252,8 @@ class ChaosResult(Result):
             else (("run",), np.zeros(self.runs)),
         }
         if self.spectrum_logs is not None:
-            data["spectrum_logs"] = (rt + ("exponent",), self.spectrum_logs)
+            computed = "computed_exponent" if self.spectrum_paired else "exponent"
+            data["spectrum_logs"] = (rt + (computed,), self.spectrum_logs)
             data["spectrum"] = (("run", "exponent"), self.spectrum)
         if self.gali is not None:
             data["gali"] = (rt, self.gali)
@@ -259,6 +270,7 @@ class ChaosResult(Result):
             for k, v in self.parameters.items()
         }
         attrs["gali_order"] = self.gali_order
+        attrs["spectrum_paired"] = int(self.spectrum_paired)
         return xr.Dataset(
             data, coords={"time": self.times, "run": np.arange(self.runs)}, attrs=attrs
         )

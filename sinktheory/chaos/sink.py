@@ -60,7 +60,7 @@ def chaos(
     sink: Sink,
     settings: RunSettings | None = None,
     *,
-    spectrum: bool = False,
+    spectrum: bool | str = False,
     gali: int = 0,
     megno: bool = False,
     transverse: bool = False,
@@ -81,8 +81,10 @@ def chaos(
     settings : RunSettings, default RunSettings()
         E0, runs R, periods P, seed, box -- as for :func:`~sinktheory.simulate.simulate`;
         the seed also draws the deviation vectors (:mod:`~sinktheory.chaos.vectors`).
-    spectrum : bool
-        The full spectrum of 2(1 + 2k) exponents (QR method, renormalised every period).
+    spectrum : bool or "full" or "half"
+        The spectrum of 2(1 + 2k) exponents (QR method, renormalised every period): all
+        computed (True / "full"), or the 1 + 2k largest with the rest from the symplectic
+        pairing ("half", about half the cost; no pair sums to check it by).
     gali : int
         k of GALI_k, 0 or 2..2(1 + 2k); 2 also gives SALI.
     megno : bool
