@@ -33,6 +33,7 @@ from . import validation as v
 from ._generated import oscillator as _osc
 from ._generated import shapes as _shapes
 from .errors import ParameterError
+from .results import Result
 
 #: Names of the registered well shapes (:data:`sinktheory.symbolic.SHAPES`), with one
 #: kernel bundle each in :mod:`sinktheory._generated.shapes`.
@@ -236,6 +237,33 @@ point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
         """Raise ParameterError unless a particle with ``energy`` stays in a regular well."""
         self.reach(energy)
 
+    def summary(self, energy: float = 0.5) -> WellSummary:
+        """The well's parameters, walls and the reach of a particle of ``energy``.
+
+        Examples
+        --------
+        >>> s = Well(0.5, 0.3, 10).summary()
+        >>> s.walls, round(s.wall_distance, 12), s.curvature_at_centre
+        ('scattering (Sinai-like)', 0.2, 0.6)
+        """
+        x_max, y_max = self.reach(energy)
+        curvature = self.curvature_at_centre
+        walls = "straight"
+        if curvature != 0:
+            walls = "scattering (Sinai-like)" if curvature > 0 else "focusing (stadium-like)"
+        return WellSummary(
+            self.shape,
+            self.alpha,
+            self.beta,
+            self.n,
+            self.gamma,
+            self.wall_distance,
+            curvature,
+            walls,
+            float(energy),
+            Reach(x_max, y_max),
+        )
+
     def _refuse_denominator(self, energy: float, point: tuple[float, float]) -> None:
         x, y = point
         d = self.kernels.smallest_denominator(x, y, self.alpha, self.beta)
@@ -341,6 +369,29 @@ class Sink:
     def mu(self) -> float:
         """Mass of one particle, m / k."""
         return self.mass / self.particles
+
+    def summary(self, settings: RunSettings) -> SinkSummary:
+        """The set-up of an ensemble run: masses, energies, run size and the reach of a
+        particle at the total energy bound (``settings`` checked against this sink first).
+
+        Examples
+        --------
+        >>> Sink(Well(0.5, 0.3, 4), particles=5).summary(RunSettings()).mu
+        0.04
+        """
+        settings.check(self)
+        e_total = settings.total_energy_bound(self)
+        return SinkSummary(
+            self.particles,
+            self.mass,
+            self.mu,
+            settings.energy,
+            e_total,
+            settings.runs,
+            settings.periods,
+            settings.seed,
+            Reach(*self.well.reach(e_total)),
+        )
 
 
 @dataclass(frozen=True)
@@ -475,3 +526,46 @@ def _float(i: int) -> float:
         return float(i)
     except OverflowError:
         return math.inf
+
+
+# --- summaries (results of ``sinktheory well`` and ``sinktheory sink``) ------------------
+@dataclass(frozen=True)
+class Reach(Result):
+    """Bounds on |x| and |y| of a particle of given energy (:meth:`Well.reach`)."""
+
+    x: float
+    y: float
+
+
+@dataclass(frozen=True)
+class WellSummary(Result):
+    """What :meth:`Well.summary` reports: the parameters, the wall distance alpha - beta,
+    the rigid wall's curvature at y = 0 and its kind (``walls``: scattering, focusing or
+    straight, from the curvature's sign) and the reach at ``energy``."""
+
+    shape: str
+    alpha: float
+    beta: float
+    n: int
+    gamma: float
+    wall_distance: float
+    curvature_at_centre: float
+    walls: str
+    energy: float
+    reach: Reach
+
+
+@dataclass(frozen=True)
+class SinkSummary(Result):
+    """What :meth:`Sink.summary` reports: k, m, mu = m / k, the container energy E0, the
+    bound on the total energy, runs, periods, seed, and the reach at that bound."""
+
+    particles: int
+    mass: float
+    mu: float
+    energy: float
+    total_energy_bound: float
+    runs: int
+    periods: int
+    seed: int
+    reach: Reach

@@ -79,6 +79,7 @@ from . import validation as v
 from ._generated import oscillator as _osc
 from .errors import BracketError, NumericalError, ParameterError
 from .model import MAX_N
+from .results import Result
 
 #: Extra decimal digits carried internally by the mp paths.
 GUARD_DIGITS = 10
@@ -94,10 +95,18 @@ class PeriodOutOfRangeError(NumericalError):
 
 
 @dataclass(frozen=True)
-class Oscillator:
+class Oscillator(Result):
     """One orbit of x'' + x^(2n-1) = 0: amplitude, energy and exact period (mpf values).
 
     Build it with :func:`oscillator`; all three numbers carry ``dps`` significant digits.
+    ``as_dict()`` (:mod:`sinktheory.results`) writes them as decimal strings of exactly
+    ``dps`` significant digits (trailing zeros kept), which ``mpmath.mpf`` reads back.
+
+    Examples
+    --------
+    >>> oscillator(1, amplitude=2, dps=12).as_dict()
+    {'n': 1, 'amplitude': '2.00000000000', 'energy': '2.00000000000', \
+'period': '6.28318530718', 'dps': 12}
     """
 
     n: int
@@ -105,6 +114,14 @@ class Oscillator:
     energy: mpmath.mpf
     period: mpmath.mpf
     dps: int
+
+    def items(self) -> dict:
+        out = super().items()
+        for name in ("amplitude", "energy", "period"):
+            out[name] = mpmath.nstr(
+                out[name], self.dps, strip_zeros=False, min_fixed=-4, max_fixed=self.dps
+            )
+        return out
 
 
 def _check_n(n: object) -> int:

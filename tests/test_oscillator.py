@@ -270,7 +270,8 @@ def test_cli_period_40_digits_against_quadrature(capsys):
     )
     assert code == 0, err
     data = json.loads(out)
-    assert set(data) == {"n", "amplitude", "energy", "period"} and data["n"] == 7
+    assert set(data) == {"n", "amplitude", "energy", "period", "dps"} and data["n"] == 7
+    assert data == oscillator(7, amplitude=1, dps=40).as_dict()  # the API's result
     mantissa = data["period"].replace(".", "").lstrip("0")
     assert len(mantissa) == 40  # exactly 40 significant digits printed
     # Reference: independent 60-digit quadrature (error estimate < 1e-52, see above).

@@ -108,3 +108,34 @@ def test_design_measures_follow_the_protocol():
     ds = m.to_dataset()
     assert ds.absorbed.dims == ("horizon",) and ds.horizon.values.tolist() == [10, 40]
     assert ds.passage.dims == ("level",)
+
+
+def cli_json(argv, capsys) -> dict:
+    assert main([*argv, "--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_period_well_sink_cli_json_is_the_api_as_dict(capsys):
+    from sinktheory.oscillator import oscillator
+
+    o = oscillator(2, energy="0.25", dps=20)
+    d = o.as_dict()
+    assert roundtrip(d) == d and o.to_dataset().attrs["period"] == d["period"]
+    assert cli_json(["period", "--n", "2", "--energy", "0.25", "--digits", "20"], capsys) == d
+
+    well = Well(0.5, -0.3, 4)
+    s = well.summary(0.5)
+    d = s.as_dict()
+    assert roundtrip(d) == d and d["walls"] == "focusing (stadium-like)"
+    # independent: on the y axis V = y^(2n)/(2n), so E = 1/2 is reached at y = 4^(1/8)
+    assert d["reach"]["y"] == pytest.approx(4 ** (1 / 8), rel=1e-12)
+    assert s.to_dataset().attrs["reach_x"] == s.reach.x
+    argv = ["--alpha", "0.5", "--beta", "-0.3", "--n", "4"]
+    assert cli_json(["well", *argv], capsys) == d
+
+    sink = Sink(well, particles=4, mass=0.2)
+    settings = RunSettings(runs=3, periods=7, seed=2)
+    d = sink.summary(settings).as_dict()
+    assert roundtrip(d) == d and d["mu"] == pytest.approx(0.05) and d["runs"] == 3
+    argv += ["--particles", "4", "--runs", "3", "--periods", "7", "--seed", "2"]
+    assert cli_json(["sink", *argv], capsys) == d

@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-import mpmath
-
 from ..oscillator import _check_dps as check_dps
 from ..oscillator import oscillator
 from . import HELP as HELPS
@@ -33,16 +31,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> Output:
     digits = check_dps(args.digits, "digits")
     o = oscillator(args.n, amplitude=args.amplitude, energy=args.energy, dps=digits)
-
-    def text(x: mpmath.mpf) -> str:
-        return mpmath.nstr(x, digits, strip_zeros=False, min_fixed=-4, max_fixed=digits)
-
-    data = {
-        "n": o.n,
-        "amplitude": text(o.amplitude),
-        "energy": text(o.energy),
-        "period": text(o.period),
-    }
+    data = o.as_dict()
     lines = [
         f"x'' + x^{2 * o.n - 1} = 0   ({digits} significant digits)",
         f"  amplitude A0   {data['amplitude']}",

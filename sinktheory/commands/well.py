@@ -25,31 +25,15 @@ def run(args: argparse.Namespace) -> Output:
     well = well_from_args(args)
     energy = positive("energy", args.energy)
     plot = png_path("plot", args.plot)
-    x_max, y_max = well.reach(energy)
-    data = {
-        "shape": well.shape,
-        "alpha": well.alpha,
-        "beta": well.beta,
-        "n": well.n,
-        "gamma": well.gamma,
-        "wall_distance": well.wall_distance,
-        "curvature_at_centre": well.curvature_at_centre,
-        "energy": energy,
-        "reach": {"x": x_max, "y": y_max},
-    }
-    kind = (
-        "scattering (Sinai-like)"
-        if well.beta > 0
-        else ("focusing (stadium-like)" if well.beta < 0 else "straight")
-    )
+    s = well.summary(energy)
+    data = s.as_dict()
     text = "\n".join(
         [
-            f"{well.shape} well  alpha={well.alpha:g} beta={well.beta:g} n={well.n} "
-            f"gamma={well.gamma:g}",
-            f"  walls                 {kind}",
-            f"  wall distance         alpha - beta = {well.wall_distance:.12g}",
-            f"  curvature at y = 0    2 beta = {well.curvature_at_centre:.12g}",
-            f"  reach at E = {energy:g}     |x| <= {x_max:.6g}, |y| <= {y_max:.6g}",
+            f"{s.shape} well  alpha={s.alpha:g} beta={s.beta:g} n={s.n} gamma={s.gamma:g}",
+            f"  walls                 {s.walls}",
+            f"  wall distance         alpha - beta = {s.wall_distance:.12g}",
+            f"  curvature at y = 0    {s.curvature_at_centre:.12g}",
+            f"  reach at E = {energy:g}     |x| <= {s.reach.x:.6g}, |y| <= {s.reach.y:.6g}",
         ]
     )
     out = Output(data, text)
