@@ -147,6 +147,7 @@ def run(args: argparse.Namespace) -> Output:
         raise ParameterError("out", args.out, "a new store", why="it exists; --resume continues it")
     from ..design.explorer import DesignRun, plan, todo_of  # xarray, zarr: when exploring
     from ..design.ranking import rank
+    from ..design.report import label
     from ..sweep.runner import execute
 
     sweep = plan(params_of(args), args.seed)
@@ -193,7 +194,7 @@ def run(args: argparse.Namespace) -> Output:
         "best designs (depth = long-time fraction of E0 absorbed, t50 in periods):",
     ]
     for r in best[:5]:
-        where = ", ".join(f"{d} = {r[d]}" for d in dims)
+        where = ", ".join(f"{d} = {label(r[d])}" for d in dims)
         lines.append(
             f"  #{r['rank']} (Pareto layer {r['layer']}) {where}: depth {_n(r['depth'])} "
             f"+- {_n(r['depth_se'])}, t50 {_n(r['t50'], 0, 'never')}, spread/E0 "

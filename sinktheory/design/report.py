@@ -44,7 +44,14 @@ def _dims(ds) -> list[str]:
     return list(ds.done.dims)
 
 
-def _label(value) -> str:
+def label(value) -> str:
+    """A parameter value as a person would type it (floats without round-off).
+
+    Examples
+    --------
+    >>> label(-0.5 + 0.09), label(np.float64(0.4)), label("flat"), label(5)
+    ('-0.41', '0.4', 'flat', '5')
+    """
     if isinstance(value, float | np.floating):
         return f"{float(value):g}"
     return str(value)
@@ -78,7 +85,7 @@ def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
     )
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in ranked[:top]:
-        cells = [str(r["rank"]), str(r["layer"])] + [_label(r[d]) for d in dims]
+        cells = [str(r["rank"]), str(r["layer"])] + [label(r[d]) for d in dims]
         cells += [
             fmt(r["depth"], r["depth_se"]),
             fmt(r[("passage", 0.5)], r[("passage_se", 0.5)], 0),
@@ -108,7 +115,7 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
     done = int(np.asarray(ds.done).sum())
     total = int(np.asarray(ds.done).size)
     lines = ["# Design explorer: energy absorbers", ""]
-    swept = ", ".join(f"{d} = {', '.join(_label(v) for v in ds[d].values)}" for d in dims)
+    swept = ", ".join(f"{d} = {', '.join(label(v) for v in ds[d].values)}" for d in dims)
     fixed = ", ".join(
         f"{k} = {a[k]}"
         for k in ("shape", "alpha", "beta", "n", "gamma", "particles", "mass", "energy", "damping")
