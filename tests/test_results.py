@@ -139,3 +139,28 @@ def test_period_well_sink_cli_json_is_the_api_as_dict(capsys):
     assert roundtrip(d) == d and d["mu"] == pytest.approx(0.05) and d["runs"] == 3
     argv += ["--particles", "4", "--runs", "3", "--periods", "7", "--seed", "2"]
     assert cli_json(["sink", *argv], capsys) == d
+
+
+def test_nnm_branch_follows_the_protocol(capsys):
+    from sinktheory.nnm.continuation import continue_both
+
+    # what `sinktheory nnm --continue beta` runs: particle mode, E = k gamma / (2n)
+    res = continue_both(Sink(Well(0.5, -0.2, 4), 1, 0.2), "particle", parameter="beta",
+                        energy=0.125, stop=(-0.3, -0.1), steps=100, points=4, ds=0.1,
+                        half_traces=True)  # fmt: skip
+    assert isinstance(res, Result)
+    d = res.as_dict()
+    assert roundtrip(d) == d and d["parameter"] == "beta" and d["steps"] == 100
+    assert d["max_trivial_error"] == max(d["trivial_error"])
+    ds = res.to_dataset()
+    assert ds.transverse.dims == ("point", "transverse_multiplier")
+    assert ds.phi_half.dims == ("point", "particle") and ds.point.size == res.points
+    assert ds.attrs["system"] == d["system"] and json.loads(ds.attrs["params"]) == d["params"]
+    # independent: the full period's transverse multipliers have the trace 2 phi_T,
+    # phi_T = 2 phi_half^2 - 1 from the half-period map (two separate integrations; the
+    # orbit's symmetry makes it exact for the discrete maps too: 1e-14 measured)
+    trace = ds.transverse.sum("transverse_multiplier").real
+    np.testing.assert_allclose(trace, 2 * (2 * ds.phi_half[:, 0] ** 2 - 1), atol=1e-10)
+    argv = ["nnm", "--alpha", "0.5", "--beta", "-0.2", "--n", "4", "--continue", "beta"]
+    argv += ["--range", "-0.3", "-0.1", "--points", "4", "--steps", "100"]
+    assert cli_json(argv, capsys) == d

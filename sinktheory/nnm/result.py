@@ -1,14 +1,13 @@
 """Labelled arrays of a continued branch: :class:`BranchResult` (dict / xarray).
 
 Arrays are indexed by ``point`` (along the branch, in continuation order); multipliers
-by ``point`` and ``multiplier`` (complex, sorted by real then imaginary part).  JSON has
-no complex numbers, so :meth:`BranchResult.as_dict` writes each multiplier as
-``[re, im]``; :meth:`BranchResult.to_dataset` keeps them complex.
+by ``point`` and ``multiplier`` (complex, sorted by real then imaginary part).  The
+result follows :mod:`sinktheory.results`: ``as_dict()`` writes each multiplier as
+``[re, im]`` (JSON has no complex numbers), ``to_dataset()`` keeps them complex.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -24,12 +23,6 @@ def _pad(rows: list[np.ndarray]) -> np.ndarray:
     return out
 
 
-def _json(x):
-    if isinstance(x, float | np.floating):
-        return float(x) if math.isfinite(x) else None
-    return x
-
-
 @dataclass(frozen=True)
 class BranchResult(Result):
     """One branch of periodic orbits as labelled arrays.
@@ -37,7 +30,9 @@ class BranchResult(Result):
     Attributes
     ----------
     meta : dict
-        system, parameters, continuation parameter, steps, scheme, stop reason, ...
+        system, parameters, continuation parameter, steps, scheme, stop reason, ...;
+        ``as_dict()`` and ``to_dataset()`` list its entries beside the arrays (as keys,
+        as attributes), followed by ``max_trivial_error`` and ``max_abs_sigma``.
     value : (P,) continuation parameter (energy or the well parameter)
     energy, period, frequency : (P,)
     sigma, residual, trivial_error : (P,) checks (unfolding parameter, max |Phi(z0) - z0|,
@@ -68,6 +63,30 @@ class BranchResult(Result):
     phi_half: np.ndarray
     symmetry_error: np.ndarray
     events: list = field(default_factory=list)
+
+    DIMS = {
+        **dict.fromkeys(
+            (
+                "value",
+                "energy",
+                "period",
+                "frequency",
+                "sigma",
+                "residual",
+                "trivial_error",
+                "stable",
+                "stable_inplane",
+                "stable_transverse",
+                "symmetry_error",
+            ),
+            ("point",),
+        ),
+        "nontrivial": ("point", "inplane_multiplier"),
+        "transverse": ("point", "transverse_multiplier"),
+        "multipliers": ("point", "multiplier"),
+        "z0": ("point", "state"),
+        "phi_half": ("point", "particle"),
+    }
 
     @classmethod
     def from_branch(cls, branch, *, half_traces: bool = False, **meta) -> BranchResult:
@@ -133,71 +152,12 @@ class BranchResult(Result):
     def points(self) -> int:
         return int(self.value.size)
 
-    def as_dict(self) -> dict:
-        """JSON-ready: lists, complex numbers as [re, im], nan/inf as None."""
-
-        def arr(a):
-            a = np.asarray(a)
-            if np.iscomplexobj(a):
-                return [[[_json(float(z.real)), _json(float(z.imag))] for z in row] for row in a]
-            return [_json(x) if not isinstance(x, list) else x for x in a.tolist()]
-
-        out = dict(self.meta)
-        for name in (
-            "value",
-            "energy",
-            "period",
-            "frequency",
-            "sigma",
-            "residual",
-            "trivial_error",
-            "stable",
-            "stable_inplane",
-            "stable_transverse",
-            "nontrivial",
-            "transverse",
-        ):
-            out[name] = arr(getattr(self, name))
-        out["phi_half"] = [[_json(float(x)) for x in row] for row in self.phi_half]
-        out["symmetry_error"] = [_json(float(x)) for x in self.symmetry_error]
-        out["events"] = self.events
+    def items(self) -> dict:
+        out = super().items()
+        out = {**out.pop("meta"), **out}  # the array "energy" wins over a fixed meta energy
         out["max_trivial_error"] = float(np.max(self.trivial_error)) if self.points else None
         out["max_abs_sigma"] = float(np.max(np.abs(self.sigma))) if self.points else None
         return out
 
-    def to_dataset(self):
-        """An :class:`xarray.Dataset` (xarray imported here)."""
-        import xarray as xr
-
-        point = np.arange(self.points)
-        data = {
-            name: ("point", getattr(self, name))
-            for name in (
-                "energy",
-                "period",
-                "frequency",
-                "sigma",
-                "residual",
-                "trivial_error",
-                "stable",
-                "stable_inplane",
-                "stable_transverse",
-                "symmetry_error",
-            )
-        }
-        data[self.meta["parameter"] if self.meta["parameter"] != "energy" else "value"] = (
-            "point",
-            self.value,
-        )
-        data["nontrivial"] = (("point", "inplane_multiplier"), self.nontrivial)
-        data["transverse"] = (("point", "transverse_multiplier"), self.transverse)
-        data["multipliers"] = (("point", "multiplier"), self.multipliers)
-        data["z0"] = (("point", "state"), self.z0)
-        data["phi_half"] = (("point", "particle"), self.phi_half)
-        attrs = {
-            k: (str(v) if isinstance(v, dict | list) else v)
-            for k, v in self.meta.items()
-            if v is not None
-        }
-        attrs["events"] = str(self.events)
-        return xr.Dataset(data, coords={"point": point}, attrs=attrs)
+    def coords(self) -> dict:
+        return {"point": np.arange(self.points)}
