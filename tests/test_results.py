@@ -164,3 +164,23 @@ def test_nnm_branch_follows_the_protocol(capsys):
     argv = ["nnm", "--alpha", "0.5", "--beta", "-0.2", "--n", "4", "--continue", "beta"]
     argv += ["--range", "-0.3", "-0.1", "--points", "4", "--steps", "100"]
     assert cli_json(argv, capsys) == d
+
+
+def test_chaos_sweep_kind_stores_the_results_summary():
+    from sinktheory.sweep import run_sweep
+
+    params = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 3, "periods": 6, "dt": 0.05}
+    ds = run_sweep("chaos", {**params, "gali": 2, "megno": 1, "replica": [0, 1]},
+                   workers=1, progress=False)  # fmt: skip
+    for r in (0, 1):
+        seed = int(ds.point_seed.values[r])
+        res = chaos(Sink(Well(0.5, 0.3, 4)), RunSettings(runs=3, periods=6, seed=seed),
+                    gali=2, megno=True, dt=0.05, progress=False)  # fmt: skip
+        d = res.as_dict()
+        assert ds.gali.values[r] == d["gali2"]["mean"]
+        assert ds.mean_megno_se.values[r] == d["mean_megno"]["stderr"]
+        # independent of as_dict: the plain mean and s.e. of the runs' last values
+        g = res.gali[:, -1]
+        assert ds.gali.values[r] == pytest.approx(g.mean(), rel=1e-14)
+        assert ds.gali_se.values[r] == pytest.approx(g.std(ddof=1) / np.sqrt(3), rel=1e-12)
+    assert np.isnan(ds.transverse.values).all() and np.isnan(ds.transverse_se.values).all()

@@ -261,12 +261,12 @@ def _ensemble(p: dict, seed: int) -> dict[str, Any]:
         energy_bound=p["energy_bound"],
         progress=False,
     )
-    mean, stderr = res.ensemble_energy()
+    r = res.items()  # the result's own fields and ensemble mean (sinktheory.results)
     return {
-        "mean_energy": mean,
-        "stderr": stderr,
-        "max_relative_energy_error": res.max_relative_energy_error,
-        "dt_used": res.dt,
+        "mean_energy": r["mean_energy"],
+        "stderr": r["stderr"],
+        "max_relative_energy_error": r["max_relative_energy_error"],
+        "dt_used": r["dt"],
     }
 
 
@@ -448,26 +448,18 @@ def _chaos(p: dict, seed: int) -> dict[str, Any]:
         energy_bound=p["energy_bound"],
         progress=False,
     )
-    nan = float("nan")
+    d = res.as_dict()  # per-run finals with their ensemble mean and standard error
     out = {
         "lambda1_runs": res.lambda1,
-        "max_relative_energy_error": float(res.run_errors.max()),
-        "dt_used": float(res.parameters["dt"]),
+        "max_relative_energy_error": d["max_relative_energy_error"],
+        "dt_used": d["parameters"]["dt"],
     }
-    finals = {
-        "lambda1": res.lambda1,
-        "transverse": res.transverse,
-        "gali": None if res.gali is None else res.gali[:, -1],
-        "mean_megno": None if res.megno is None else res.mean_megno[:, -1],
-    }
-    for name, per_run in finals.items():
-        if per_run is None:
-            out[name], out[f"{name}_se"] = nan, nan
-        else:
-            out[name] = float(np.mean(per_run))
-            out[f"{name}_se"] = (
-                float(np.std(per_run, ddof=1) / np.sqrt(per_run.size)) if per_run.size > 1 else 0.0
-            )
+    keys = {"gali": f"gali{res.gali_order}"}  # as_dict's name where it differs
+    for name in ("lambda1", "transverse", "gali", "mean_megno"):
+        summary = d.get(keys.get(name, name), {})  # absent when not computed
+        # None (absent, or a NaN in JSON) is stored as NaN
+        out[name] = np.array(summary.get("mean"), dtype=float)
+        out[f"{name}_se"] = np.array(summary.get("stderr"), dtype=float)
     return out
 
 
