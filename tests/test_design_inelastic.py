@@ -13,7 +13,7 @@ import pytest
 from sinktheory import RunSettings, Sink, Well
 from sinktheory.design.inelastic import _dissipate, _factors, simulate_inelastic
 from sinktheory.design.inelastic_reference import simulate_inelastic_reference
-from sinktheory.errors import EnergyDriftError, ParameterError
+from sinktheory.errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from sinktheory.simulate import simulate
 
 SINK2 = Sink(Well(0.5, 0.3, 4), particles=2, mass=0.2)
@@ -134,6 +134,14 @@ def test_audit_names_run_and_time():
     settings = RunSettings(runs=3, periods=2, seed=1)
     with pytest.raises(EnergyDriftError, match=r"run \d: \|H \+ W - H0\|/H0 = .* at t = 1 T"):
         simulate_inelastic(SINK2, settings, damping=1.0, tol=1e-6, energy_bound=1e-14)
+
+
+def test_a_step_too_large_stops_with_the_run_and_time():
+    """dt = T/8 cannot resolve the wall of n = 10: the audit (or the finiteness check)
+    stops the run and names it, rather than returning numbers."""
+    sink = Sink(Well(0.5, 0.3, 10), particles=1, mass=0.2)
+    with pytest.raises((EnergyDriftError, NonFiniteStateError), match=r"run \d: .*t = \d+ T"):
+        simulate_inelastic(sink, RunSettings(runs=2, periods=3), damping=1.0, dt=2 * np.pi / 8)
 
 
 def test_seeded_and_independent_of_the_other_runs():

@@ -97,7 +97,7 @@ from ..simulate import (
     split_values,
     start_state,
 )
-from ..stepsize import check_tol, resolve_step
+from ..stepsize import DEFAULT_TOL, check_tol, resolve_step
 
 _RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
 
@@ -186,7 +186,7 @@ def setup(
     if tol is not None:
         tol = check_tol(tol)
     if energy_bound is None:
-        energy_bound = max(ENERGY_BOUND, 100.0 * (tol or 1e-8))
+        energy_bound = max(ENERGY_BOUND, 100.0 * (tol or DEFAULT_TOL))
     bound = v.positive("energy_bound", energy_bound)
     settings.check(sink)
     values = start_state(sink, settings.energy, random_positions(settings, sink.particles))

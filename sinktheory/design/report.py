@@ -40,7 +40,8 @@ def fmt(x: float, se: float | None = None, digits: int = 3) -> str:
     return text
 
 
-def _dims(ds) -> list[str]:
+def swept(ds) -> list[str]:
+    """Swept parameters of a design dataset (the dimensions of ``done``)."""
     return list(ds.done.dims)
 
 
@@ -110,19 +111,19 @@ def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
 def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figures=()) -> str:
     """The markdown report of a design sweep (see the module docstring)."""
     ranked = rank(ds) if ranked is None else ranked
-    dims = _dims(ds)
+    dims = swept(ds)
     a = ds.attrs
     done = int(np.asarray(ds.done).sum())
     total = int(np.asarray(ds.done).size)
     lines = ["# Design explorer: energy absorbers", ""]
-    swept = ", ".join(f"{d} = {', '.join(label(v) for v in ds[d].values)}" for d in dims)
+    values = ", ".join(f"{d} = {', '.join(label(v) for v in ds[d].values)}" for d in dims)
     fixed = ", ".join(
         f"{k} = {a[k]}"
         for k in ("shape", "alpha", "beta", "n", "gamma", "particles", "mass", "energy", "damping")
         if k in a
     )
     lines += [
-        f"- swept: {swept or 'nothing (one design)'}",
+        f"- swept: {values or 'nothing (one design)'}",
         f"- fixed: {fixed}",
         f"- ensemble per design: {a.get('runs')} runs x {a.get('periods')} periods "
         f"(T = 2 pi), tol {a.get('tol')}, sweep seed {a.get('sweep_seed')}; "
@@ -244,7 +245,7 @@ def write_report(ds, directory, *, ranked: list | None = None, top: int = 10, ru
     out.mkdir(parents=True, exist_ok=True)
     ds = ds.load()
     ranked = rank(ds) if ranked is None else ranked
-    dims = _dims(ds)
+    dims = swept(ds)
     figures = []
     if ranked:
         plots.pareto_chart(ranked).savefig(out / "pareto.png", dpi=110)

@@ -31,6 +31,8 @@ from itertools import combinations
 
 import numpy as np
 
+from ..design.report import label, swept
+
 #: (title, how to make the measure from the dataset, reduce with "max" or "min", colormap)
 HEAT = (
     ("depth (max)", lambda ds: ds.depth, "max", "viridis"),
@@ -48,17 +50,6 @@ def panels(ds) -> tuple:
 
 def _e0(ds):
     return ds.energy if "energy" in ds.coords else float(ds.attrs["energy"])
-
-
-def swept(ds) -> list[str]:
-    """Swept parameters of a design dataset (the dimensions of ``done``)."""
-    return list(ds.done.dims)
-
-
-def _label(value) -> str:
-    if isinstance(value, float | np.floating):
-        return f"{float(value):g}"
-    return str(value)
 
 
 def heatmap(ds, x: str, y: str | None = None):
@@ -86,10 +77,10 @@ def heatmap(ds, x: str, y: str | None = None):
             values = values[None, :]
         im = ax.imshow(np.ma.masked_invalid(values), origin="lower", aspect="auto", cmap=cmap)
         fig.colorbar(im, ax=ax, shrink=0.85)
-        ax.set_xticks(range(ds[x].size), [_label(v) for v in ds[x].values])
+        ax.set_xticks(range(ds[x].size), [label(v) for v in ds[x].values])
         ax.set_xlabel(x)
         if y:
-            ax.set_yticks(range(ds[y].size), [_label(v) for v in ds[y].values])
+            ax.set_yticks(range(ds[y].size), [label(v) for v in ds[y].values])
             ax.set_ylabel(y)
         else:
             ax.set_yticks([])
@@ -204,4 +195,4 @@ def energy_curves(ds, ranked: list, top: int = 5):
 
 
 def _describe(row: dict, dims: list[str]) -> str:
-    return ", ".join(f"{d} = {_label(row[d])}" for d in dims) or "the design"
+    return ", ".join(f"{d} = {label(row[d])}" for d in dims) or "the design"
