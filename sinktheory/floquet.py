@@ -90,7 +90,14 @@ import numpy as np
 from . import validation as v
 from ._generated import oscillator as _osc
 from .errors import BracketError, ParameterError
-from .hill import DEFAULT_RTOL, PURE, QuarterPeriod, check_amplitude, integrate_quarter_period
+from .hill import (
+    DEFAULT_RTOL,
+    PURE,
+    QuarterPeriod,
+    check_amplitude,
+    integrate_quarter_period,
+    python_kernel,
+)
 from .model import MAX_N, Well
 
 #: Largest |lambda| A0^2 accepted: at 1e10 one quarter period takes about 1 s; at 1e12
@@ -484,7 +491,7 @@ class FloquetChart:
     @property
     def period(self) -> float:
         """T_n at the amplitude A0 (rescaled time of eq. x-oscill), generated kernel."""
-        return float(_osc.period(self.problem.n, self.problem.amplitude))
+        return float(python_kernel(_osc.period)(self.problem.n, self.problem.amplitude))
 
     @property
     def floquet_exponent(self) -> np.ndarray:

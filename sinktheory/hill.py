@@ -23,11 +23,19 @@ diag(1, A0^(n-1)), which leaves its trace (hence phi) unchanged.  All integratio
 run in the normalised variables.
 
 Integrator: the Dormand-Prince 8(5,3) Runge-Kutta pair (tableau in
-:mod:`sinktheory.dop853`) with adaptive steps in compiled numba code.  Every step is accepted
-only if the worst component of all columns (and of X) passes the error test, so all
-columns share one step sequence.  Each solution pair (y, y') is renormalised by exact
-powers of two when it grows past 2^400, so deeply unstable zones never overflow; the
-exponents are returned.
+:mod:`sinktheory.dop853`) with adaptive steps.  Every step is accepted only if the worst
+component of all columns (and of X) passes the error test, so all columns share one step
+sequence.  Each solution pair (y, y') is renormalised by exact powers of two when it
+grows past 2^400, so deeply unstable zones never overflow; the exponents are returned.
+
+Two ways to run one loop.  The loop is written once, as plain Python over NumPy arrays.
+Compiled by numba it is fast, but its first use in a process costs about 0.5 s (numba
+loads its registry and LLVM, even from the on-disk cache).  Interpreted, with
+pure-Python twins of the generated kernels (:func:`python_kernel`), it takes about 25 ms
+for one parameter value and gives bitwise the compiled result (tested).
+``method="auto"`` interprets the first few single-value integrations of a process, so a
+one-point ``sinktheory floquet`` never loads numba's compiler; charts, scans and their
+root finding run compiled.
 
 Trustworthy range: ``rtol`` down to about 1e-14 (below that round-off dominates);
 |q| large makes the step count grow like sqrt(max |q|) Q.  Stiff walls are handled by
@@ -48,16 +56,17 @@ True
 
 from __future__ import annotations
 
+import functools
+import types as pytypes
 from dataclasses import dataclass
 
-import numba
 import numpy as np
-from numba import types
 
 from . import dop853
 from . import validation as v
 from ._generated import oscillator as _osc
 from ._generated._support import ipow
+from ._generated.oscillator import oscillator_acceleration
 from .errors import NonFiniteStateError, NumericalError, ParameterError
 
 #: Default relative tolerance of one step; gives phi to about 1e-11 (see tests).
@@ -66,17 +75,63 @@ DEFAULT_RTOL = 1e-13
 RENORM_BITS = 400
 
 
+#: Integration methods of :func:`integrate_quarter_period`.
+METHODS = ("auto", "compiled", "python")
+#: ``method="auto"`` interprets at most this many single-value integrations per process
+#: (about 25 ms each) before it loads the compiled loop (about 0.5 s once).
+PYTHON_CALLS = 8
+#: Step budget of an interpreted ``auto`` run (about 0.2 s); beyond it the integration
+#: is redone by the compiled loop.
+PYTHON_STEPS = 300
+
 _A = np.ascontiguousarray(dop853.A)
 _E3 = np.ascontiguousarray(dop853.E3)
 _E5 = np.ascontiguousarray(dop853.E5)
-#: Type of a Hill coefficient kernel q(x, alpha, p, n) -> float: the generated
-#: ``hill_coefficient`` of a shape bundle, or ``pure_hill_coefficient``.  The compiled
-#: loop takes it as a first-class function, so one cached machine code serves every shape.
-COEFFICIENT_TYPE = types.FunctionType(
-    types.float64(types.float64, types.float64, types.float64, types.int64)
-)
 #: The coefficient of the pure Hill equation, Lam x^(2n).
 PURE = _osc.pure_hill_coefficient
+_python_calls = [0]  # single-value integrations interpreted by method="auto" so far
+
+
+@functools.cache
+def python_kernel(kernel):
+    """The pure-Python twin of a compiled kernel (or of a plain function calling them).
+
+    The kernel's ``py_func`` (or the function itself) with every compiled kernel it
+    calls by a global name (``ipow``, ``oscillator_acceleration``) replaced by that
+    kernel's twin, so calling it never dispatches to numba: same code, run by Python.
+
+    Examples
+    --------
+    >>> from sinktheory._generated.shapes import flat
+    >>> q = python_kernel(flat.hill_coefficient)
+    >>> hasattr(q, "py_func"), q(0.5, 0.5, 0.1, 4) == -2 * 0.1 * 0.4 * 0.5**8
+    (False, True)
+    """
+    func = getattr(kernel, "py_func", kernel)
+    if not isinstance(func, pytypes.FunctionType):
+        return kernel
+    scope = func.__globals__
+    twins = {
+        name: python_kernel(scope[name])
+        for name in func.__code__.co_names
+        if hasattr(scope.get(name), "py_func")
+    }
+    if not twins:
+        return func
+    return pytypes.FunctionType(
+        func.__code__, {**scope, **twins}, func.__name__, func.__defaults__, func.__closure__
+    )
+
+
+def quarter_period_length(n: int) -> float:
+    """Q = T_n(A0 = 1) / 4, the quarter period in the normalised time (generated formula).
+
+    Examples
+    --------
+    >>> round(quarter_period_length(1), 12)  # pi / 2
+    1.570796326795
+    """
+    return float(python_kernel(_osc.period)(n, 1.0)) / 4.0
 
 
 def check_amplitude(n: int, amplitude: float) -> float:
@@ -143,26 +198,13 @@ class QuarterPeriod:
     rejected: int
 
 
-@numba.njit(
-    types.Tuple(
-        (types.float64[:, ::1], types.int64[:, ::1], types.int64, types.int64, types.int64)
-    )(
-        COEFFICIENT_TYPE,
-        types.int64,
-        types.float64,
-        types.float64,
-        types.float64[::1],
-        types.float64,
-        types.float64,
-        types.int64,
-        types.float64[:, ::1],
-        types.float64[::1],
-        types.float64[::1],
-    ),
-    cache=True,
-)
-def _quarter_kernel(q, n, amplitude, alpha, params, q_end, rtol, max_steps, A, E3, E5):
-    """The adaptive DOP853 loop over [0, Q]; q(A0 x, alpha, p, n) is the coefficient."""
+def _quarter_loop(q, n, amplitude, scale, alpha, params, q_end, rtol, max_steps, A, E3, E5):
+    """The adaptive DOP853 loop over [0, Q]: compiled by :func:`_compiled_loop` or run as is.
+
+    ``scale * q(amplitude * x, alpha, p, n)`` is the normalised coefficient.  Plain
+    Python over NumPy arrays, so the interpreted run (:func:`python_kernel` of this
+    function) does exactly the compiled run's floating-point operations.
+    """
     m = params.size
     ns = E5.size  # 13 stages including the FSAL one
     kx = np.zeros(ns)
@@ -179,13 +221,12 @@ def _quarter_kernel(q, n, amplitude, alpha, params, q_end, rtol, max_steps, A, E
     vx = 0.0
     t = 0.0
     vscale = 1.0 / np.sqrt(n)  # speed of the normalised oscillator at x = 0
-    scale = 1.0 / ipow(amplitude, 2 * n - 2)  # normalised coefficient A0^(2-2n) q(A0 x)
     h = min(q_end, 0.05 * vscale)
     big = 2.0**RENORM_BITS
     small = 2.0 ** (-RENORM_BITS)
     # first stage derivative
     kx[0] = vx
-    kv[0] = _osc.oscillator_acceleration(x, n)
+    kv[0] = oscillator_acceleration(x, n)
     for j in range(m):
         c = scale * q(amplitude * x, alpha, params[j], n)
         ky[0, j, 0] = y[j, 1]
@@ -212,7 +253,7 @@ def _quarter_kernel(q, n, amplitude, alpha, params, q_end, rtol, max_steps, A, E
                     xs += h * a * kx[r]
                     vs += h * a * kv[r]
             kx[s] = vs
-            kv[s] = _osc.oscillator_acceleration(xs, n)
+            kv[s] = oscillator_acceleration(xs, n)
             for j in range(m):
                 c = scale * q(amplitude * xs, alpha, params[j], n)
                 for i in range(4):
@@ -298,6 +339,64 @@ def _quarter_kernel(q, n, amplitude, alpha, params, q_end, rtol, max_steps, A, E
     return y, expo, steps, rejected, status
 
 
+@functools.cache
+def _compiled_loop():
+    """:func:`_quarter_loop` compiled by numba (cached on disk; loading costs ~0.5 s).
+
+    The coefficient is a first-class function argument, so one machine code serves
+    every shape.
+    """
+    import numba
+    from numba import types
+
+    f64 = types.float64
+    i64 = types.int64
+    coefficient = types.FunctionType(f64(f64, f64, f64, i64))
+    signature = types.Tuple((f64[:, ::1], i64[:, ::1], i64, i64, i64))(
+        coefficient,
+        i64,
+        f64,
+        f64,
+        f64,
+        f64[::1],
+        f64,
+        f64,
+        i64,
+        f64[:, ::1],
+        f64[::1],
+        f64[::1],
+    )
+    return numba.njit(signature, cache=True)(_quarter_loop)
+
+
+def _run_loop(method, q, n, amplitude, alpha, params, q_end, rtol, max_steps):
+    """Run the loop as ``method`` says; "auto" interprets a single value while the compiled
+    loop is not loaded, for the first :data:`PYTHON_CALLS` such calls and at most
+    :data:`PYTHON_STEPS` steps (then the compiled loop redoes it)."""
+    scale = 1.0 / python_kernel(ipow)(amplitude, 2 * n - 2)  # A0^(2-2n) q(A0 x)
+    args = (n, amplitude, scale, float(alpha), params, q_end, rtol)
+    if method == "auto":
+        if (
+            params.size == 1
+            and _compiled_loop.cache_info().currsize == 0
+            and _python_calls[0] < PYTHON_CALLS
+        ):
+            _python_calls[0] += 1
+            out = _interpret(q, args, min(max_steps, PYTHON_STEPS))
+            if out[4] != 1 or max_steps <= PYTHON_STEPS:
+                return out
+        method = "compiled"
+    if method == "python":
+        return _interpret(q, args, max_steps)
+    return _compiled_loop()(q, *args, max_steps, _A, _E3, _E5)
+
+
+def _interpret(q, args, max_steps):
+    """:func:`_quarter_loop` run by Python with the kernels' pure-Python twins."""
+    with np.errstate(all="ignore"):  # overflow and inf - inf end the loop with status 2
+        return python_kernel(_quarter_loop)(python_kernel(q), *args, max_steps, _A, _E3, _E5)
+
+
 def _label(coefficient) -> str:
     """``<module>.<function>`` of a coefficient kernel, for messages (``flat.hill_coefficient``)."""
     return f"{coefficient.__module__.rsplit('.', 1)[-1]}.{coefficient.__name__}"
@@ -312,6 +411,7 @@ def integrate_quarter_period(
     alpha: float = 0.0,
     rtol: float = DEFAULT_RTOL,
     max_steps: int = 1_000_000,
+    method: str = "auto",
 ) -> QuarterPeriod:
     """Integrate X and the fundamental solutions of Hill's equation over [0, Q].
 
@@ -333,6 +433,10 @@ def integrate_quarter_period(
         Per-step relative tolerance of every solution pair (y, y') and of X.
     max_steps : int
         Budget of steps (accepted plus rejected).
+    method : {"auto", "compiled", "python"}
+        "compiled": the numba loop; "python": the same loop interpreted (about 25 ms per
+        value, bitwise the compiled result); "auto" (default): interpreted for a single
+        value until the compiled loop is loaded (see the module docstring), else compiled.
 
     Returns
     -------
@@ -360,19 +464,12 @@ def integrate_quarter_period(
     params = np.ascontiguousarray(np.atleast_1d(np.asarray(params, dtype=float)))
     if params.ndim != 1 or not np.all(np.isfinite(params)):
         raise ParameterError("params", params, "a 1-d array of finite numbers")
-    q_end = float(_osc.period(n, 1.0)) / 4.0
-    y, expo, steps, rejected, status = _quarter_kernel(
-        coefficient,
-        n,
-        amplitude,
-        float(alpha),
-        params,
-        q_end,
-        rtol,
-        int(max_steps),
-        _A,
-        _E3,
-        _E5,
+    max_steps = v.positive_int("max_steps", max_steps)
+    if method not in METHODS:
+        raise ParameterError("method", method, f"one of {', '.join(METHODS)}")
+    q_end = quarter_period_length(n)
+    y, expo, steps, rejected, status = _run_loop(
+        method, coefficient, n, amplitude, alpha, params, q_end, rtol, max_steps
     )
     if status == 1:
         raise HillIntegrationError(
