@@ -461,7 +461,9 @@ def integrate_quarter_period(
     rtol = v.positive("rtol", rtol)
     if not 1e-15 <= rtol <= 1e-3:
         raise ParameterError("rtol", rtol, "in [1e-15, 1e-3]")
-    params = np.ascontiguousarray(np.atleast_1d(np.asarray(params, dtype=float)))
+    # a fresh writable copy: the compiled loop is typed for writable arrays, and callers
+    # may pass read-only views (frozen results)
+    params = np.array(np.atleast_1d(params), dtype=float)
     if params.ndim != 1 or not np.all(np.isfinite(params)):
         raise ParameterError("params", params, "a 1-d array of finite numbers")
     max_steps = v.positive_int("max_steps", max_steps)

@@ -335,6 +335,20 @@ def test_multipliers_and_rotation_number_match_monodromy_eigenvalues():
 # --- inputs and failures --------------------------------------------------------------
 
 
+@pytest.mark.parametrize("method", ["compiled", "python"])
+def test_read_only_parameter_arrays_are_accepted(method):
+    """Frozen results hand out read-only arrays (e.g. a diagram's beta grid); both loops
+    must take them and give what the same values in a writable array give."""
+    beta = np.array([0.05, 0.1, 0.2])
+    frozen = beta.copy()
+    frozen.setflags(write=False)
+    kw = {"coefficient": FLAT.hill_coefficient, "alpha": 0.5, "method": method}
+    a = integrate_quarter_period(4, frozen, **kw)
+    b = integrate_quarter_period(4, beta, **kw)
+    np.testing.assert_array_equal(a.y1, b.y1)
+    np.testing.assert_array_equal(a.dy2, b.dy2)
+
+
 @pytest.mark.parametrize(
     ("call", "name"),
     [
