@@ -23,7 +23,6 @@ STAGES = dop853.N_STAGES + 1  # with the FSAL stage
 
 def _literals():
     """A, C, E3, E5 from the source text at full precision (not via float64)."""
-    mpmath.mp.dps = 40
     A = [[mpmath.mpf(0)] * STAGES for _ in range(STAGES)]
     e5 = [mpmath.mpf(0)] * STAGES
     bhh = {}
@@ -49,7 +48,16 @@ def _literals():
     return A, c, b, e3, e5
 
 
-A, C, B, E3, E5 = _literals()
+# 40 digits here and in every test of this module (see the fixture), never globally: a
+# module-level mp.dps would leak into every later test of the session
+with mpmath.workdps(40):
+    A, C, B, E3, E5 = _literals()
+
+
+@pytest.fixture(autouse=True)
+def _forty_digits():
+    with mpmath.workdps(40):
+        yield
 
 
 @functools.cache
