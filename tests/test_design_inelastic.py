@@ -235,3 +235,18 @@ def test_damping_on_the_command_line(tmp_path, capsys):
     code, out, err = run_cli(argv, capsys)
     assert code == 2 and out == "" and "damping" in err and len(err.strip().splitlines()) == 1
     assert list(bad.iterdir()) == []
+
+
+def test_cost_of_a_damped_design():
+    """A damped design is the inelastic ensemble only (no lambda_1): its work is the
+    plain ensemble's times the relative cost of a dissipative step, by hand."""
+    from sinktheory.design.cost import work
+    from sinktheory.design.explorer import plan
+    from sinktheory.stepsize import choose
+
+    sweep = plan({"beta": 0.3, "n": 4, "particles": 3, "damping": [0.0, 0.5], "runs": 5,
+                  "periods": 7, "lyapunov_runs": 2, "lyapunov_periods": 11})  # fmt: skip
+    plain, damped = (sweep.grid.point(i) for i in range(2))
+    steps = choose(Sink(Well(0.5, 0.3, 4), particles=3, mass=0.2), 0.5, 1e-6).steps_per_period
+    assert work(plain, 2.0, 3.0) == steps * 7 * (5 * 7 + 2.0 * 2 * 11)
+    assert work(damped, 2.0, 3.0) == steps * 7 * 3.0 * 5 * 7
