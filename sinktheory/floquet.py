@@ -96,9 +96,9 @@ from .hill import (
     QuarterPeriod,
     check_amplitude,
     integrate_quarter_period,
-    python_kernel,
 )
 from .model import MAX_N, Well
+from .twins import python_kernel
 
 #: Largest |lambda| A0^2 accepted: at 1e10 one quarter period takes about 1 s; at 1e12
 #: it exceeds the integration's budget of 1e6 steps (measured, n = 4).

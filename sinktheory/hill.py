@@ -57,7 +57,6 @@ True
 from __future__ import annotations
 
 import functools
-import types as pytypes
 from dataclasses import dataclass
 
 import numpy as np
@@ -68,6 +67,7 @@ from ._generated import oscillator as _osc
 from ._generated._support import ipow
 from ._generated.oscillator import oscillator_acceleration
 from .errors import NonFiniteStateError, NumericalError, ParameterError
+from .twins import python_kernel
 
 #: Default relative tolerance of one step; gives phi to about 1e-11 (see tests).
 DEFAULT_RTOL = 1e-13
@@ -93,36 +93,6 @@ _python_calls = [0]  # single-value integrations interpreted by method="auto" so
 
 
 @functools.cache
-def python_kernel(kernel):
-    """The pure-Python twin of a compiled kernel (or of a plain function calling them).
-
-    The kernel's ``py_func`` (or the function itself) with every compiled kernel it
-    calls by a global name (``ipow``, ``oscillator_acceleration``) replaced by that
-    kernel's twin, so calling it never dispatches to numba: same code, run by Python.
-
-    Examples
-    --------
-    >>> from sinktheory._generated.shapes import flat
-    >>> q = python_kernel(flat.hill_coefficient)
-    >>> hasattr(q, "py_func"), q(0.5, 0.5, 0.1, 4) == -2 * 0.1 * 0.4 * 0.5**8
-    (False, True)
-    """
-    func = getattr(kernel, "py_func", kernel)
-    if not isinstance(func, pytypes.FunctionType):
-        return kernel
-    scope = func.__globals__
-    twins = {
-        name: python_kernel(scope[name])
-        for name in func.__code__.co_names
-        if hasattr(scope.get(name), "py_func")
-    }
-    if not twins:
-        return func
-    return pytypes.FunctionType(
-        func.__code__, {**scope, **twins}, func.__name__, func.__defaults__, func.__closure__
-    )
-
-
 def quarter_period_length(n: int) -> float:
     """Q = T_n(A0 = 1) / 4, the quarter period in the normalised time (generated formula).
 

@@ -34,6 +34,7 @@ from ._generated import oscillator as _osc
 from ._generated import shapes as _shapes
 from .errors import ParameterError
 from .results import Result
+from .twins import python_kernel
 
 #: Names of the registered well shapes (:data:`sinktheory.symbolic.SHAPES`), with one
 #: kernel bundle each in :mod:`sinktheory._generated.shapes`.
@@ -60,19 +61,9 @@ MAX_SECONDS = 30 * 86400.0
 MAX_N = 1000
 
 
-def _python(kernel):
-    """The plain-Python body of a generated kernel (``py_func``), for scalar geometry.
-
-    Same formula, evaluated by Python: the first call of a compiled kernel in a process
-    costs about 0.5 s (numba loads its target), which a light command such as
-    ``sinktheory well`` should not pay.  Only for kernels without integer powers
-    (``ipow`` is itself compiled) and with no 0/0 or sqrt(<0) on valid input.
-    """
-    return getattr(kernel, "py_func", kernel)
-
-
-_denominator = _python(_osc.denominator)
-_axis_reach_factor = _python(_osc.axis_reach_factor)
+# scalar geometry by Python (see sinktheory.twins): light commands never start numba
+_denominator = python_kernel(_osc.denominator)
+_axis_reach_factor = python_kernel(_osc.axis_reach_factor)
 
 
 @dataclass(frozen=True)
@@ -193,7 +184,7 @@ class Well:
         k = self.kernels
         args = (self.alpha, self.beta, self.gamma, self.n)
         if k.ESCAPE_NAME:
-            v_escape = float(k.escape_energy(*args))
+            v_escape = float(python_kernel(k.escape_energy)(*args))
             if e >= v_escape:
                 raise ParameterError(
                     "energy",

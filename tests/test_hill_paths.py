@@ -32,9 +32,9 @@ from sinktheory.hill import (
     HillIntegrationError,
     integrate_quarter_period,
     monodromy_solve_ivp,
-    python_kernel,
     quarter_period_mpmath,
 )
+from sinktheory.twins import python_kernel
 
 CASES = [  # (shape or "pure", n, parameter, amplitude): every regime the loop meets
     ("pure", 1, 9.0, 1.0),
