@@ -98,6 +98,7 @@ from .hill import (
     integrate_quarter_period,
 )
 from .model import MAX_N, Well
+from .results import Result, plain
 from .twins import python_kernel
 
 #: Largest |lambda| A0^2 accepted: at 1e10 one quarter period takes about 1 s; at 1e12
@@ -110,6 +111,31 @@ ROOT_XTOL = 1e-12
 #: The quarter-period factors whose zeros are the stability boundaries, with the value of
 #: phi_half there.
 BOUNDARY_FACTORS = {"y2": 1.0, "dy1": 1.0, "y1": -1.0, "dy2": -1.0}
+#: Magnitudes at or above this (or as small as its inverse) are written to JSON as decimal
+#: strings built from their logarithms.
+JSON_CAP = 1e300
+
+
+def json_value(x: float, log_abs: float) -> float | str:
+    """x as a JSON number, or as a decimal string built from ln|x| = ``log_abs`` when
+    |x| >= 1e300 or 0 < |x| <= 1e-300 (beyond or near the end of float range).
+
+    Examples
+    --------
+    >>> json_value(2.5, math.log(2.5))
+    2.5
+    >>> json_value(math.inf, 1000.0)
+    '1.97007111e+434'
+    >>> json_value(0.0, -1000.0)
+    '5.07595890e-435'
+    """
+    if not math.isfinite(log_abs) or abs(log_abs) < math.log(JSON_CAP):
+        return float(x)
+    sign = "-" if x < 0 else ""
+    log10 = log_abs / math.log(10.0)
+    exponent = math.floor(log10)
+    mantissa = 10.0 ** (log10 - exponent)
+    return f"{sign}{mantissa:.8f}e{exponent:+d}"
 
 
 @dataclass(frozen=True)
@@ -371,18 +397,100 @@ def model_hill(
     return problem.evaluate(beta)
 
 
+_POINTWISE = (
+    "lambda",
+    "phi_half",
+    "phi",
+    "log_abs_phi_half",
+    "log_abs_phi",
+    "stable",
+    "growth_per_period",
+    "floquet_exponent",
+    "rotation_number",
+)
+
+
 @dataclass(frozen=True)
-class FloquetChart:
+class FloquetChart(Result):
     """Floquet data of a family of Hill equations at an array of parameter values.
 
     ``phi_half``, ``phi`` and ``multipliers`` are float arrays and become +-inf only
     where the value exceeds float64 range (about 1e308); the ``log_*`` attributes are
-    always finite (except log|phi_half| = -inf where phi_half is exactly 0).
+    always finite (except log|phi_half| = -inf where phi_half is exactly 0).  On the
+    result protocol (:mod:`sinktheory.results`): ``to_dataset()`` has the dimension
+    ``value`` (labelled by beta or lam), and ``as_dict()`` writes values beyond float
+    range as decimal strings (:func:`json_value`).
+
+    Examples
+    --------
+    >>> chart = pure_problem(1).evaluate([0.5, 2.0])
+    >>> d = chart.as_dict()
+    >>> d["lam"], d["stable"]
+    ([0.5, 2.0], [True, False])
+    >>> chart.as_dict(point=1)["lam"], chart.to_dataset().phi_half.dims
+    (2.0, ('value',))
     """
+
+    DIMS = {name: ("value",) for name in _POINTWISE} | {"multipliers": ("value", "multiplier")}
+    COORDS = {"beta": "value", "lam": "value"}
 
     problem: HillProblem
     values: np.ndarray
     quarter: QuarterPeriod = field(repr=False)
+
+    # --- result protocol ---------------------------------------------------------------
+    def _head(self) -> dict:
+        p = self.problem
+        head = {"kind": p.kind, "n": p.n, "amplitude": p.amplitude}
+        if p.kind != "pure":
+            head.update(alpha=p.alpha, gamma=p.gamma, shape=p.kind)
+        return head
+
+    def items(self) -> dict:
+        """The problem's parameters, the values and every pointwise quantity."""
+        out = {**self._head(), self.problem.parameter: self.values}
+        out.update(
+            {name: getattr(self, "lam" if name == "lambda" else name) for name in _POINTWISE}
+        )
+        out["multipliers"] = self.multipliers
+        out["period"] = self.period
+        return out
+
+    def _point(self, i: int) -> dict:
+        """Value i as JSON-ready scalars (huge or tiny values as decimal strings)."""
+        lh = float(self.log_abs_phi_half[i])
+        lp = float(self.log_abs_phi[i])
+        g = float(self.growth_per_period[i])
+        rho = self.multipliers[i]
+        if self.stable[i]:
+            multipliers = [[float(r.real), float(r.imag)] for r in rho]
+        else:
+            multipliers = [
+                [json_value(float(rho[0].real), g), 0.0],
+                [json_value(float(rho[1].real), -g), 0.0],
+            ]
+        return {
+            self.problem.parameter: float(self.values[i]),
+            "lambda": float(self.lam[i]),
+            "phi_half": json_value(float(self.phi_half[i]), lh),
+            "phi": json_value(float(self.phi[i]), lp),
+            "log_abs_phi_half": plain(lh),
+            "log_abs_phi": plain(lp),
+            "multipliers": multipliers,
+            "stable": bool(self.stable[i]),
+            "growth_per_period": g,
+            "floquet_exponent": float(self.floquet_exponent[i]),
+            "rotation_number": float(self.rotation_number[i]),
+        }
+
+    def as_dict(self, point: int | None = None) -> dict:
+        """JSON-ready: per value a list (or, with ``point=i``, value i's scalars)."""
+        if point is not None:
+            rows = self._point(point)
+        else:
+            points = [self._point(i) for i in range(len(self.values))]
+            rows = {key: [p[key] for p in points] for key in points[0]} if points else {}
+        return {**self._head(), **rows, "period": self.period}
 
     # --- the four quarter-period factors and their products ---------------------------
     @property
@@ -529,8 +637,11 @@ class Boundary:
 
 
 @dataclass(frozen=True)
-class StabilityScan:
+class StabilityScan(Result):
     """A grid chart with refined stability intervals and strong resonances.
+
+    ``as_dict()`` is the chart's (:meth:`FloquetChart.as_dict`) with the intervals,
+    boundaries and resonances added; ``to_dataset()`` nests the chart (``chart_*``).
 
     Attributes
     ----------
@@ -548,6 +659,14 @@ class StabilityScan:
     boundaries: list[Boundary]
     stable_intervals: list[tuple[float, float]]
     resonances: list[float]
+
+    def as_dict(self) -> dict:
+        """The chart's JSON with the located intervals, boundaries and resonances."""
+        out = self.chart.as_dict()
+        out["stable_intervals"] = [[a, b] for a, b in self.stable_intervals]
+        out["boundaries"] = plain(self.boundaries)
+        out["resonances"] = plain(self.resonances)
+        return out
 
 
 def _scalar(chart_of, name: str):

@@ -400,6 +400,24 @@ def test_cli_model_point(capsys):
     assert data["stable"] is True
 
 
+def test_floquet_results_follow_the_result_protocol(capsys):
+    """CLI --json is as_dict() of the API result (range and one point); the dataset is
+    labelled by beta; and its multipliers satisfy rho_1 rho_2 = det M(T) = 1."""
+    argv = ["floquet", "--alpha", "0.5", "--n", "4", "--json"]
+    code, out, _ = run([*argv, "--beta-range", "-0.5", "0.4", "7"], capsys)
+    assert code == 0
+    result = scan(model_problem(0.5, 4), -0.5, 0.4, 7)
+    assert json.loads(out) == json.loads(json.dumps(result.as_dict()))
+    code, out, _ = run([*argv, "--beta", "0.1"], capsys)
+    assert json.loads(out) == model_problem(0.5, 4).evaluate([0.1]).as_dict(point=0)
+    ds = result.to_dataset()
+    assert ds.chart_phi_half.dims == ("value",)
+    np.testing.assert_array_equal(ds.value, np.linspace(-0.5, 0.4, 7))
+    rho = ds.chart_multipliers.values
+    np.testing.assert_allclose(rho[:, 0] * rho[:, 1], 1.0, rtol=1e-9)
+    assert ds.attrs["chart_shape"] == "flat"
+
+
 def test_cli_huge_values_are_strings_with_logs(capsys):
     code, out, _ = run(["floquet", "--lam", "-100000", "--n", "1", "--json"], capsys)
     data = json.loads(out)

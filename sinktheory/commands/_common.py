@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import shutil
 import uuid
@@ -183,8 +182,3 @@ def write_outputs(writers: dict[Path, Callable[[Path], None]]) -> None:
                 shutil.rmtree(tmp, ignore_errors=True)
             elif tmp.exists():
                 tmp.unlink()
-
-
-def finite_or_none(x: float) -> float | None:
-    """JSON has no inf/nan: map them to null."""
-    return x if math.isfinite(x) else None

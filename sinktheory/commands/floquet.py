@@ -17,19 +17,15 @@ and ``log_abs_phi`` (natural logarithms) are always plain numbers.
 from __future__ import annotations
 
 import argparse
-import math
 
 from .._generated.shapes import NAMES as SHAPE_NAMES
 from ..errors import ParameterError
-from ..floquet import FloquetChart, model_problem, pure_problem, scan
+from ..floquet import model_problem, pure_problem, scan
 from . import HELP as HELPS
-from ._common import Output, add_json, finite_or_none, number, png_path
+from ._common import Output, add_json, number, png_path
 
 NAME = "floquet"
 HELP = HELPS[NAME]
-
-#: Magnitudes at or above this are written as decimal strings.
-JSON_CAP = 1e300
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -55,54 +51,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_json(parser)
 
 
-def json_value(x: float, log_abs: float) -> float | str:
-    """x as a JSON number, or as a decimal string built from ln|x| = ``log_abs`` when
-    |x| >= 1e300 or 0 < |x| <= 1e-300 (beyond or near the end of float range).
-
-    Examples
-    --------
-    >>> json_value(2.5, math.log(2.5))
-    2.5
-    >>> json_value(math.inf, 1000.0)
-    '1.97007111e+434'
-    >>> json_value(0.0, -1000.0)
-    '5.07595890e-435'
-    """
-    if not math.isfinite(log_abs) or abs(log_abs) < math.log(JSON_CAP):
-        return float(x)
-    sign = "-" if x < 0 else ""
-    log10 = log_abs / math.log(10.0)
-    exponent = math.floor(log10)
-    mantissa = 10.0 ** (log10 - exponent)
-    return f"{sign}{mantissa:.8f}e{exponent:+d}"
-
-
-def _point(chart: FloquetChart, i: int) -> dict:
-    lh = float(chart.log_abs_phi_half[i])
-    lp = float(chart.log_abs_phi[i])
-    g = float(chart.growth_per_period[i])
-    rho = chart.multipliers[i]
-    if chart.stable[i]:
-        multipliers = [[float(r.real), float(r.imag)] for r in rho]
-    else:
-        multipliers = [
-            [json_value(float(rho[0].real), g), 0.0],
-            [json_value(float(rho[1].real), -g), 0.0],
-        ]
-    return {
-        "lambda": float(chart.lam[i]),
-        "phi_half": json_value(float(chart.phi_half[i]), lh),
-        "phi": json_value(float(chart.phi[i]), lp),
-        "log_abs_phi_half": finite_or_none(lh),
-        "log_abs_phi": finite_or_none(lp),
-        "multipliers": multipliers,
-        "stable": bool(chart.stable[i]),
-        "growth_per_period": g,
-        "floquet_exponent": float(chart.floquet_exponent[i]),
-        "rotation_number": float(chart.rotation_number[i]),
-    }
-
-
 def _problem(args: argparse.Namespace, beta_mode: bool):
     if beta_mode:
         if args.alpha is None:
@@ -121,16 +69,11 @@ def run(args: argparse.Namespace) -> Output:
     problem = _problem(args, beta_mode)
     plot = png_path("plot", args.plot)
     key = problem.parameter
-    head = {"kind": problem.kind, "n": problem.n, "amplitude": problem.amplitude}
-    if beta_mode:
-        head.update(alpha=problem.alpha, gamma=problem.gamma, shape=problem.kind)
     if not ranged:
         if plot is not None:
             raise ParameterError("plot", args.plot, "used with --beta-range or --lam-range")
         value = args.beta if beta_mode else args.lam
-        chart = problem.evaluate([value])
-        data = {**head, key: float(chart.values[0]), **_point(chart, 0)}
-        data["period"] = chart.period
+        data = problem.evaluate([value]).as_dict(point=0)
         state = "stable" if data["stable"] else "unstable"
         text = (
             f"{key} = {value:g}, n = {problem.n}: lambda = {data['lambda']:.12g}\n"
@@ -143,25 +86,7 @@ def run(args: argparse.Namespace) -> Output:
     if not isinstance(count, int):
         raise ParameterError("COUNT", count, "an integer >= 2")
     result = scan(problem, lo, hi, count)
-    chart = result.chart
-    lh = chart.log_abs_phi_half
-    lp = chart.log_abs_phi
-    data = {
-        **head,
-        key: chart.values.tolist(),
-        "lambda": chart.lam.tolist(),
-        "phi_half": [json_value(x, y) for x, y in zip(chart.phi_half, lh, strict=True)],
-        "phi": [json_value(x, y) for x, y in zip(chart.phi, lp, strict=True)],
-        "log_abs_phi_half": [finite_or_none(float(x)) for x in lh],
-        "stable": chart.stable.tolist(),
-        "stable_intervals": [[a, b] for a, b in result.stable_intervals],
-        "boundaries": [
-            {"value": b.value, "factor": b.factor, "phi_half": b.phi_half}
-            for b in result.boundaries
-        ],
-        "resonances": result.resonances,
-    }
-    data["period"] = chart.period
+    data = result.as_dict()
     lines = [f"{problem.kind} Hill equation, n = {problem.n}, {key} in [{lo:g}, {hi:g}]"]
     lines += [f"  stable  [{a:.12g}, {b:.12g}]" for a, b in result.stable_intervals]
     lines += [f"  phi_T = -1 at {key} = {r:.12g}" for r in result.resonances]
