@@ -42,9 +42,7 @@ import numpy as np
 from ..engine.core import Ensemble
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, get_scheme
-
-#: Runtime parameter names of the engine systems (sink systems: alpha, beta, gamma, mu).
-SINK_PARAMS = ("alpha", "beta", "gamma", "mu")
+from ..layout import SINK_PARAMS
 
 
 def parameter_names(system: str) -> tuple[str, ...]:
