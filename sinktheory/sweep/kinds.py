@@ -193,7 +193,8 @@ def _floquet(p: dict, seed: int) -> dict[str, Any]:
         amplitude=p["amplitude"],
         rtol=p["rtol"],
     )
-    return {name: getattr(c, name)[0] for name in FLOQUET_RESULTS}
+    items = c.items()  # the chart's quantities (sinktheory.results protocol)
+    return {name: items["lambda" if name == "lam" else name][0] for name in FLOQUET_RESULTS}
 
 
 FLOQUET_RESULTS = {
