@@ -402,7 +402,7 @@ def test_cli_model_point(capsys):
 
 def test_floquet_results_follow_the_result_protocol(capsys):
     """CLI --json is as_dict() of the API result (range and one point); the dataset is
-    labelled by beta; and its multipliers satisfy rho_1 rho_2 = det M(T) = 1."""
+    labelled by beta, and its phi_T agrees with the half-period monodromy of solve_ivp."""
     argv = ["floquet", "--alpha", "0.5", "--n", "4", "--json"]
     code, out, _ = run([*argv, "--beta-range", "-0.5", "0.4", "7"], capsys)
     assert code == 0
@@ -413,8 +413,9 @@ def test_floquet_results_follow_the_result_protocol(capsys):
     ds = result.to_dataset()
     assert ds.chart_phi_half.dims == ("value",)
     np.testing.assert_array_equal(ds.value, np.linspace(-0.5, 0.4, 7))
-    rho = ds.chart_multipliers.values
-    np.testing.assert_allclose(rho[:, 0] * rho[:, 1], 1.0, rtol=1e-9)
+    for i in (1, 5):  # an independent integrator, phi_T = 2 (tr M(T/2) / 2)^2 - 1
+        m = monodromy_solve_ivp(4, float(ds.value[i]), coefficient=FLAT.hill_coefficient, alpha=0.5)
+        assert float(ds.chart_phi[i]) == pytest.approx(2 * (np.trace(m) / 2) ** 2 - 1, abs=1e-8)
     assert ds.attrs["chart_shape"] == "flat"
 
 
