@@ -319,6 +319,8 @@ def start_positions(sink: Sink, settings: RunSettings, initial=None) -> np.ndarr
         )
     if not np.all(np.isfinite(positions)):
         raise ParameterError("initial", "non-finite positions", "finite numbers")
+    for x, y in positions.reshape(-1, 2):  # as the command line checks --initial
+        sink.well.check_position("initial", x, y)
     return positions
 
 
