@@ -47,7 +47,7 @@ def add_json(parser: argparse.ArgumentParser) -> None:
 
 
 def add_well_arguments(parser: argparse.ArgumentParser, *, beta: bool = True) -> None:
-    from ..model import SHAPES
+    from .._generated.shapes import NAMES as SHAPES  # the model's names, without numba
 
     g = parser.add_argument_group("well")
     g.add_argument("--alpha", type=number, required=True, help="alpha > 0")
