@@ -1,25 +1,44 @@
 """``sinktheory derive``: print the equations derived from the Lagrangian.
 
 With ``--json`` every value is a string that :func:`sympy.sympify` reads back.
+
+The derivation takes SymPy seconds for equations that change only with the code, so its
+three renderings (JSON strings, pretty text, LaTeX) are kept in a cache file named by a
+digest of what produces them (:data:`SOURCES`, the sinktheory and SymPy versions), in the
+engine's cache directory (:func:`sinktheory.engine.cache.cache_dir`); a later call reads
+that file without importing SymPy.  Editing any source changes the digest, so a stale
+file is never read; ``--fresh`` derives again and rewrites it.
 """
 
 from __future__ import annotations
 
 import argparse
+import hashlib
+import json
+import os
+import tempfile
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+from typing import TYPE_CHECKING
 
-import sympy as sp
-from sympy.printing.str import StrPrinter
-
-from .. import symbolic as S
 from . import HELP as HELPS
 from ._common import Output, add_json
+
+if TYPE_CHECKING:
+    import sympy as sp
 
 NAME = "derive"
 HELP = HELPS[NAME]
 
+#: The files whose text decides the derived equations and how they print.
+SOURCES = (Path(__file__).parents[1] / "symbolic.py", Path(__file__))
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--latex", action="store_true", help="print LaTeX instead of text")
+    parser.add_argument(
+        "--fresh", action="store_true", help="derive again instead of reading the cached result"
+    )
     add_json(parser)
 
 
@@ -31,6 +50,8 @@ def equations() -> dict[str, sp.Expr]:
     single-particle system; ``y_equation`` is linear in y (general n >= 2) and the
     ``y_equation_n1_*`` keys give the n = 1 forms with their extra term.
     """
+    from .. import symbolic as S
+
     flat = S.rescaled_equations("flat")
     return {
         "potential_flat": S.potential("flat"),
@@ -47,17 +68,6 @@ def equations() -> dict[str, sp.Expr]:
     }
 
 
-class _SympifiableStr(StrPrinter):
-    """str() that sympify reads back: symbols whose names sympify would take for a
-    function or constant (beta, gamma, E, ...) are written as Symbol('name')."""
-
-    def _print_Symbol(self, expr):  # noqa: D102 - printer protocol
-        name = expr.name
-        if isinstance(sp.sympify(name), sp.Symbol):
-            return name
-        return f"Symbol({name!r})"
-
-
 def sympifiable(expr: sp.Expr) -> str:
     """A string of ``expr`` that :func:`sympy.sympify` turns back into the same expression
     (up to symbol assumptions).
@@ -68,17 +78,83 @@ def sympifiable(expr: sp.Expr) -> str:
     >>> sympifiable(gamma * x**2 - beta)
     "-Symbol('beta') + Symbol('gamma')*x**2"
     """
-    return _SympifiableStr().doprint(expr)
+    import sympy as sp
+    from sympy.printing.str import StrPrinter
+
+    class SympifiableStr(StrPrinter):
+        """str() that sympify reads back: symbols whose names sympify would take for a
+        function or constant (beta, gamma, E, ...) are written as Symbol('name')."""
+
+        def _print_Symbol(self, expr):  # noqa: D102 - printer protocol
+            name = expr.name
+            if isinstance(sp.sympify(name), sp.Symbol):
+                return name
+            return f"Symbol({name!r})"
+
+    return SympifiableStr().doprint(expr)
+
+
+def renderings() -> dict[str, dict[str, str] | str]:
+    """Derive the equations and render them: ``{"json": {key: sympifiable string},
+    "text": pretty text, "latex": LaTeX text}`` (what the cache file holds)."""
+    import sympy as sp
+
+    eqs = equations()
+    return {
+        "json": {key: sympifiable(expr) for key, expr in eqs.items()},
+        "text": "\n\n".join(
+            f"{key}:\n{sp.pretty(expr, use_unicode=True, wrap_line=False)}"
+            for key, expr in eqs.items()
+        ),
+        "latex": "\n".join(f"% {key}\n{sp.latex(expr)}" for key, expr in eqs.items()),
+    }
+
+
+def digest() -> str:
+    """Digest of :data:`SOURCES` and the sinktheory and SymPy versions (12 hex digits)."""
+    h = hashlib.sha256()
+    for package in ("sinktheory", "sympy"):
+        try:
+            h.update(f"{package} {version(package)}\n".encode())
+        except PackageNotFoundError:  # a source tree that is not installed
+            h.update(f"{package} ?\n".encode())
+    for path in SOURCES:
+        h.update(Path(path).read_bytes())
+    return h.hexdigest()[:12]
+
+
+def cache_file() -> Path:
+    """The cache file of the current :func:`digest`."""
+    from ..engine.cache import cache_dir
+
+    return cache_dir() / f"derive-{digest()}.json"
+
+
+def cached_renderings(*, fresh: bool = False) -> dict:
+    """:func:`renderings`, read from :func:`cache_file` when it is there (and not
+    ``fresh``), else derived and written there (atomically; a cache that cannot be
+    written is skipped, the result is the same)."""
+    path = cache_file()
+    if not fresh:
+        try:
+            return json.loads(path.read_text())
+        except (OSError, ValueError):
+            pass
+    out = renderings()
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".derive-", suffix=".json")
+    except OSError:
+        return out
+    try:
+        with os.fdopen(fd, "w") as f:
+            json.dump(out, f)
+        os.replace(tmp, path)
+    except OSError:
+        Path(tmp).unlink(missing_ok=True)
+    return out
 
 
 def run(args: argparse.Namespace) -> Output:
-    eqs = equations()
-    data = {key: sympifiable(expr) for key, expr in eqs.items()}
-    if args.latex:
-        text = "\n".join(f"% {key}\n{sp.latex(expr)}" for key, expr in eqs.items())
-    else:
-        text = "\n\n".join(
-            f"{key}:\n{sp.pretty(expr, use_unicode=True, wrap_line=False)}"
-            for key, expr in eqs.items()
-        )
-    return Output(data, text)
+    out = cached_renderings(fresh=args.fresh)
+    return Output(out["json"], out["latex"] if args.latex else out["text"])
