@@ -1,15 +1,28 @@
-"""A tiny progress bar on stderr, shown only when it helps.
+"""Progress of long work on stderr: a tqdm bar on a terminal, plain lines in a log.
 
-It draws nothing unless enabled, the stream is a terminal and the work has already taken
-longer than ``delay`` seconds, so short runs and piped output stay clean.
+:class:`ProgressBar` counts units of work and shows nothing for work shorter than
+``delay`` seconds, so short runs stay clean.  After that:
+
+* on a terminal, a tqdm bar redrawn in place (at most every :data:`TERMINAL_INTERVAL` s);
+* on anything else (a log file, a CI console, a notebook's stderr), one plain line at most
+  every :data:`LOG_INTERVAL` seconds and a last line when the work ends, instead of the
+  carriage-return redraws a terminal bar would leave in the file.
 
 Examples
 --------
 >>> import io
->>> bar = ProgressBar(10, enabled=True, stream=io.StringIO())  # not a terminal: silent
+>>> log = io.StringIO()                   # not a terminal: plain lines, here none
+>>> bar = ProgressBar(10, stream=log)     # because the work ends before ``delay``
 >>> bar.update(10); bar.close()
->>> bar.stream.getvalue()
+>>> log.getvalue()
 ''
+>>> bar = ProgressBar(4, stream=log, delay=0, interval=0, label="demo")
+>>> for _ in range(4):
+...     bar.update(1)
+>>> bar.close()
+>>> lines = log.getvalue().splitlines()
+>>> len(lines), lines[-1].startswith("demo 100% 4/4 [00:00 elapsed, 00:00 left")
+(5, True)
 """
 
 from __future__ import annotations
@@ -18,21 +31,71 @@ import sys
 import time
 from typing import TextIO
 
+from tqdm.std import tqdm
+
+#: Seconds between the plain progress lines written when the stream is not a terminal.
+LOG_INTERVAL = 15.0
+#: Seconds between redraws of the bar on a terminal.
+TERMINAL_INTERVAL = 0.5
+
+
+#: A log line: no bar, the count, the time so far and left, the rate.
+_LOG_FORMAT = (
+    "{desc} {percentage:3.0f}% {n_fmt}/{total_fmt} [{elapsed} elapsed, {remaining} left, "
+    "{rate_fmt}]"
+)
+
+
+class _Tqdm(tqdm):
+    # tqdm's monitor thread only tunes ``miniters``; without it no thread outlives the bar
+    # (sweeps fork worker processes).
+    monitor_interval = 0
+
+
+class _Lines:
+    """A file-like wrapper that turns tqdm's carriage-return redraws into whole lines."""
+
+    def __init__(self, stream: TextIO) -> None:
+        self.stream = stream
+
+    def write(self, text: str) -> None:
+        line = text.replace("\r", "").strip()
+        if line:
+            self.stream.write(line + "\n")
+
+    def flush(self) -> None:
+        self.stream.flush()
+
 
 class ProgressBar:
-    """Count ``total`` units of work; draw ``[####    ] 40% 12 s left`` on ``stream``.
+    """Count ``total`` units of work and show their progress on ``stream``.
 
     Parameters
     ----------
     total : int
         Units of work.
     enabled : bool
-        False draws nothing at all.
+        False shows nothing at all.
     stream : text stream, default sys.stderr
     delay : float
-        Seconds to wait before drawing the first time.
+        Seconds before anything is shown (shorter work shows nothing).
     label : str
         Text in front of the bar.
+    unit : str
+        What a unit of work is called (tqdm's rate column: ``3.2 segment/s``).
+    interval : float, optional
+        Seconds between updates shown; default :data:`TERMINAL_INTERVAL` on a terminal,
+        :data:`LOG_INTERVAL` otherwise.
+
+    Attributes
+    ----------
+    done, total : int
+        Units done so far and in all.
+    start : float
+        ``time.perf_counter()`` at creation.
+    enabled : bool
+        True when an in-place bar is drawn on a terminal (subclasses that draw their own
+        line test it); plain log lines are written whenever ``enabled`` was asked for.
     """
 
     def __init__(
@@ -43,38 +106,49 @@ class ProgressBar:
         stream: TextIO | None = None,
         delay: float = 2.0,
         label: str = "",
+        unit: str = "it",
+        interval: float | None = None,
     ) -> None:
         self.total = max(int(total), 1)
         self.stream = sys.stderr if stream is None else stream
-        isatty = getattr(self.stream, "isatty", lambda: False)
-        self.enabled = enabled and isatty()
+        terminal = bool(getattr(self.stream, "isatty", lambda: False)())
+        self.enabled = bool(enabled) and terminal
         self.delay = delay
         self.label = label
         self.done = 0
         self.start = time.perf_counter()
         self.drawn = False
+        if interval is None:
+            interval = TERMINAL_INTERVAL if terminal else LOG_INTERVAL
+        self._bar = _Tqdm(
+            total=self.total,
+            desc=label.strip() or None,
+            unit=unit,
+            file=self.stream if terminal else _Lines(self.stream),
+            disable=not enabled,
+            delay=delay,
+            mininterval=interval,
+            miniters=1,
+            dynamic_ncols=terminal,
+            bar_format=None if terminal else _LOG_FORMAT,
+            leave=True,
+        )
+        self._terminal = terminal
 
     def update(self, units: int) -> None:
-        """Record ``units`` more units done and redraw if due."""
-        self.done = min(self.done + units, self.total)
-        if not self.enabled:
-            return
-        elapsed = time.perf_counter() - self.start
-        if elapsed < self.delay:
-            return
-        frac = self.done / self.total
-        left = elapsed * (1 - frac) / frac if frac > 0 else float("inf")
-        width = 30
-        fill = int(round(width * frac))
-        self.stream.write(
-            f"\r{self.label}[{'#' * fill}{' ' * (width - fill)}] {100 * frac:3.0f}% "
-            f"{left:5.0f} s left"
-        )
-        self.stream.flush()
-        self.drawn = True
+        """Record ``units`` more units done; show them if an update is due."""
+        units = min(int(units), self.total - self.done)
+        self.done += units
+        self._bar.update(units)
 
     def close(self) -> None:
-        """End the bar's line (if one was drawn)."""
-        if self.drawn:
+        """End the progress display (a last line if anything was shown)."""
+        bar = self._bar
+        shown = not bar.disable and bar.last_print_t >= bar.start_t + bar.delay
+        if shown and not self._terminal and bar.last_print_n == bar.n:
+            bar.leave = False  # the last line written is already the final count
+        bar.close()
+        if self.drawn and not shown:  # a subclass drew its own line: end it
             self.stream.write("\n")
             self.stream.flush()
+        self.drawn = self.drawn or shown
