@@ -1,0 +1,23 @@
+"""Rigid billiards: the n -> oo limit of the soft-wall sink.
+
+:mod:`.table` builds the billiard table of each registered well shape from its wall
+ratios (and test tables from segments and arcs), :mod:`.kernels` is the compiled event
+engine (exact flights, conservative-advancement collision search, specular reflection or
+the elastic impact on the moving container, the billiard tangent map), :mod:`.run` the
+ensembles and their :class:`~sinktheory.results.Result`.
+"""
+
+from .run import BilliardResult, RigidLimit, billiard, rigid_limit, simulate_billiard
+from .table import Table, rigid_table, sinai_table, stadium_table
+
+__all__ = [
+    "BilliardResult",
+    "RigidLimit",
+    "Table",
+    "billiard",
+    "rigid_limit",
+    "rigid_table",
+    "simulate_billiard",
+    "sinai_table",
+    "stadium_table",
+]

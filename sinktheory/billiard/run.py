@@ -1,0 +1,339 @@
+"""Ensembles of rigid billiards: the n -> oo limit of the sink, fixed or moving container.
+
+Units as everywhere in the package: container mass 1 on a spring of stiffness 1, period
+T = 2 pi; particles of mass mu = m / k.  Positions are relative to the container,
+velocities absolute (as in :mod:`sinktheory.layout`).
+
+* Moving container (the sink): the container starts at X = sqrt(2 E0) at rest and the
+  particles at rest at the seeded random positions of :func:`sinktheory.simulate.random_positions`,
+  exactly as ``sinktheory simulate`` starts its runs, but with rigid walls.  lambda_1 by
+  two nearby trajectories (distance d0 in the full phase space, pulled back every period).
+* Fixed container: the table does not move; each particle starts at the same positions
+  with energy E0 / k in a seeded random direction.  lambda_1 by the billiard tangent map
+  (exact linearisation of flights and reflections, renormalised every period).
+
+Exponents are per unit time; the per-collision exponent is also given.
+
+Examples
+--------
+>>> from sinktheory.model import RunSettings
+>>> r = billiard("flat", 0.5, 0.3, particles=2, settings=RunSettings(runs=2, periods=3))
+>>> r.max_relative_energy_error < 1e-13, r.container_energy.shape
+(True, (2, 4))
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+import numpy as np
+
+from ..errors import BracketError, EnergyDriftError, ParameterError
+from ..model import RunSettings, Sink, Well
+from ..results import Result
+from ..simulate import random_positions
+from ..validation import positive, positive_int, real_array
+from . import kernels as K
+from .table import Table, rigid_table
+
+#: Relative total-energy error above which a run is reported as broken (the engine is
+#: exact up to rounding: flights in closed form, impacts conserving energy exactly).
+ENERGY_BOUND = 1e-10
+#: Initial distance of the shadow trajectory (two-trajectory lambda_1, moving container).
+SHADOW_DISTANCE = 1e-9
+PERIOD = 2 * math.pi
+
+
+def _stats(values: np.ndarray) -> dict[str, float]:
+    v = np.asarray(values, dtype=float)
+    se = float(v.std(ddof=1) / math.sqrt(len(v))) if len(v) > 1 else 0.0
+    return {"mean": float(v.mean()), "stderr": se}
+
+
+@dataclass(frozen=True)
+class BilliardResult(Result):
+    """An ensemble of rigid-billiard runs (module docstring).
+
+    Attributes
+    ----------
+    table : the :class:`~sinktheory.billiard.table.Table`
+    fixed : True for a fixed container
+    particles, mu : k and the mass of one particle
+    times : (P + 1,) t = j T
+    container_energy : (R, P + 1) (X'^2 + X^2)/2 at t = j T (zeros if fixed)
+    total_energy : (R, P + 1) container plus particles
+    collisions : (R, walls) impacts on each wall function
+    logs : (R, P + 1) accumulated log growth of the separation (None without Lyapunov)
+    lyapunov_method : "tangent map", "two trajectories" or ""
+    """
+
+    DIMS: ClassVar = {
+        "container_energy": ("run", "time"),
+        "total_energy": ("run", "time"),
+        "collisions": ("run", "wall"),
+        "logs": ("run", "time"),
+        "lambda1": ("run",),
+        "lambda1_per_collision": ("run",),
+        "mean_free_time": ("run",),
+    }
+    COORDS: ClassVar = {"times": "time"}
+
+    table: Table
+    fixed: bool
+    particles: int
+    mu: float
+    times: np.ndarray
+    container_energy: np.ndarray
+    total_energy: np.ndarray
+    collisions: np.ndarray
+    logs: np.ndarray | None
+    lyapunov_method: str
+    parameters: dict
+
+    @property
+    def duration(self) -> float:
+        return float(self.times[-1])
+
+    @property
+    def max_relative_energy_error(self) -> float:
+        e0 = self.total_energy[:, :1]
+        return float(np.max(np.abs(self.total_energy - e0) / e0))
+
+    @property
+    def mean_free_time(self) -> np.ndarray:
+        """(R,) time between a particle's impacts: k t / (impacts of all particles)."""
+        return self.particles * self.duration / self.collisions.sum(axis=1)
+
+    @property
+    def lambda1(self) -> np.ndarray | None:
+        """(R,) largest Lyapunov exponent per unit time."""
+        return None if self.logs is None else self.logs[:, -1] / self.duration
+
+    @property
+    def lambda1_per_collision(self) -> np.ndarray | None:
+        """(R,) the same per impact of a particle: lambda_1 x mean free time."""
+        return None if self.logs is None else self.lambda1 * self.mean_free_time
+
+    def items(self) -> dict[str, Any]:
+        out = super().items()
+        out["max_relative_energy_error"] = self.max_relative_energy_error
+        out["mean_free_time"] = self.mean_free_time
+        out["mean_mean_free_time"] = _stats(self.mean_free_time)
+        if self.logs is not None:
+            out["lambda1"] = self.lambda1
+            out["lambda1_per_collision"] = self.lambda1_per_collision
+            out["mean_lambda1"] = _stats(self.lambda1)
+            out["mean_lambda1_per_collision"] = _stats(self.lambda1_per_collision)
+        return out
+
+
+def _table_arrays(table: Table) -> tuple:
+    return (table.kinds, table.coef, table.cap, table.hneg, table.gx, table.eps, table.reach)
+
+
+def _raise_status(status, where, what: str) -> None:
+    bad = np.nonzero(status)[0]
+    if len(bad):
+        r = int(bad[0])
+        raise BracketError(
+            f"{what}: run {r}, particle {int(where[r, 0])}, t = {where[r, 1]:.17g}: a flight "
+            f"took over {K.MAX_ITERATIONS} safe steps without reaching a wall"
+        )
+
+
+def simulate_billiard(
+    table: Table,
+    positions,
+    velocities,
+    *,
+    mu: float = 1.0,
+    container=None,
+    periods: int = 100,
+    lyapunov: bool = False,
+    seed: int = 0,
+    parameters: dict | None = None,
+) -> BilliardResult:
+    """Run R rigid billiards of k particles from given states.
+
+    Parameters
+    ----------
+    table : Table
+    positions, velocities : (R, k, 2) relative positions (inside the table) and absolute
+        velocities
+    mu : mass of one particle (moving container only)
+    container : (R, 2) container (X, X') to let the container move, None for a fixed one
+    periods : int, the runs last periods x 2 pi; records at every t = j 2 pi
+    lyapunov : compute lambda_1 (tangent map if fixed, two trajectories if moving)
+    seed : seeds the initial deviation vectors
+
+    Examples
+    --------
+    >>> from sinktheory.billiard.table import stadium_table
+    >>> r = simulate_billiard(stadium_table(1, 1), [[[0.1, 0.2]]], [[[1.0, 0.3]]], periods=2)
+    >>> int(r.collisions.sum()) > 0, r.max_relative_energy_error < 1e-14
+    (True, True)
+    """
+    pos = np.array(real_array("positions", positions), dtype=float)
+    vel = np.array(real_array("velocities", velocities), dtype=float)
+    if pos.ndim != 3 or pos.shape[2] != 2 or vel.shape != pos.shape:
+        raise ParameterError(
+            "positions", f"shape {pos.shape} (velocities {vel.shape})", "two (R, k, 2) arrays"
+        )
+    if not (np.all(np.isfinite(pos)) and np.all(np.isfinite(vel))):
+        raise ParameterError("positions", "non-finite values", "finite positions and velocities")
+    table.check_positions("positions", pos)
+    mu = positive("mu", mu)
+    periods = positive_int("periods", periods)
+    R, k, _ = pos.shape
+    arrays = _table_arrays(table)
+    rng = np.random.default_rng(seed)
+    times = PERIOD * np.arange(periods + 1)
+    if container is None:
+        tan = rng.normal(size=(R, k, 4)) if lyapunov else np.zeros((R, 0, 4))
+        if lyapunov:
+            tan /= np.sqrt((tan**2).sum(axis=(1, 2)))[:, None, None]
+        e = 0.5 * mu * (vel**2).sum(axis=(1, 2))
+        hits, logs, status, where = K.run_fixed(pos, vel, tan, periods, PERIOD, *arrays)
+        _raise_status(status, where, "fixed billiard")
+        cont_e = np.zeros((R, periods + 1))
+        total = np.repeat(e[:, None], periods + 1, axis=1)
+        total[:, -1] = 0.5 * mu * (vel**2).sum(axis=(1, 2))
+        method = "tangent map"
+    else:
+        cont = np.array(real_array("container", container), dtype=float)
+        if cont.shape != (R, 2):
+            raise ParameterError("container", f"shape {cont.shape}", f"shape ({R}, 2)")
+        if lyapunov:
+            d = rng.normal(size=(R, 2 + 4 * k))
+            d *= SHADOW_DISTANCE / np.sqrt((d**2).sum(axis=1))[:, None]
+            shadow = (
+                cont + d[:, :2],
+                pos + d[:, 2 : 2 + 2 * k].reshape(R, k, 2),
+                vel + d[:, 2 + 2 * k :].reshape(R, k, 2),
+            )
+            table.check_positions("positions", shadow[1])
+        else:
+            shadow = (np.zeros((0, 2)), np.zeros((0, k, 2)), np.zeros((0, k, 2)))
+        cont_e, total, hits, logs, status, where = K.run_moving(
+            cont, pos, vel, mu, periods, PERIOD, *arrays, shadow, SHADOW_DISTANCE
+        )
+        _raise_status(status, where, "moving billiard")
+        method = "two trajectories"
+    result = BilliardResult(
+        table, container is None, k, mu, times, cont_e, total, hits,
+        logs if lyapunov else None, method if lyapunov else "", parameters or {},
+    )  # fmt: skip
+    err = result.max_relative_energy_error
+    if not err <= ENERGY_BOUND:
+        raise EnergyDriftError(
+            f"rigid billiard: relative energy error {err:.3g} > {ENERGY_BOUND:g}"
+        )
+    return result
+
+
+def start_directions(settings: RunSettings, particles: int) -> np.ndarray:
+    """(R, k, 2) unit vectors in seeded random directions, one child seed per run (a
+    stream apart from the positions' of :func:`sinktheory.simulate.random_positions`).
+
+    Examples
+    --------
+    >>> d = start_directions(RunSettings(runs=2, seed=3), 4)
+    >>> d.shape, bool(np.allclose(np.hypot(d[..., 0], d[..., 1]), 1))
+    ((2, 4, 2), True)
+    """
+    children = np.random.SeedSequence([settings.seed, 22]).spawn(settings.runs)
+    angles = np.stack([np.random.default_rng(c).uniform(0, 2 * np.pi, particles) for c in children])
+    return np.stack([np.cos(angles), np.sin(angles)], axis=-1)
+
+
+def billiard(
+    shape: str,
+    alpha: float,
+    beta: float,
+    *,
+    particles: int = 1,
+    mass: float = 0.2,
+    settings: RunSettings | None = None,
+    fixed: bool = False,
+    lyapunov: bool = False,
+) -> BilliardResult:
+    """The rigid limit n -> oo of the sink (module docstring), started like ``simulate``.
+
+    Parameters
+    ----------
+    shape, alpha, beta : the well (:class:`sinktheory.model.Well`; n plays no part)
+    particles, mass : k particles of total mass m (:class:`sinktheory.model.Sink`)
+    settings : energy E0, runs, periods, seed, start box (:class:`RunSettings`)
+    fixed : keep the container fixed; the particles share E0 (E0 / k each)
+    lyapunov : also compute lambda_1
+    """
+    settings = settings or RunSettings()
+    sink = Sink(Well(alpha, beta, 1, shape=shape), particles=particles, mass=mass)
+    settings.check_box(sink.well)
+    table = rigid_table(shape, alpha, beta)
+    k = sink.particles
+    pos = random_positions(settings, k)
+    params = {
+        "shape": shape, "alpha": sink.well.alpha, "beta": sink.well.beta, "particles": k,
+        "mass": sink.mass, "energy": settings.energy, "runs": settings.runs,
+        "periods": settings.periods, "seed": settings.seed, "fixed": fixed,
+    }  # fmt: skip
+    if fixed:
+        speed = math.sqrt(2.0 * settings.energy / sink.mass)  # E0 / k per particle
+        vel = speed * start_directions(settings, k)
+        container = None
+    else:
+        vel = np.zeros_like(pos)
+        container = np.zeros((settings.runs, 2))
+        container[:, 0] = math.sqrt(2.0 * settings.energy)
+    return simulate_billiard(
+        table, pos, vel, mu=sink.mu, container=container, periods=settings.periods,
+        lyapunov=lyapunov, seed=settings.seed, parameters=params,
+    )  # fmt: skip
+
+
+@dataclass(frozen=True)
+class RigidLimit(Result):
+    """The rigid-limit figures of a sink beside which soft-wall runs are plotted:
+    the moving-container (sink) and fixed-container billiards of the same table."""
+
+    moving: BilliardResult
+    fixed: BilliardResult
+
+    def items(self) -> dict[str, Any]:
+        return {
+            "table": self.moving.table,
+            "mean_free_path_santalo": self.moving.table.mean_free_path,
+            "moving_lambda1": _stats(self.moving.lambda1),
+            "moving_mean_free_time": _stats(self.moving.mean_free_time),
+            "moving_final_container_energy": _stats(self.moving.container_energy[:, -1]),
+            "fixed_lambda1": _stats(self.fixed.lambda1),
+            "fixed_lambda1_per_collision": _stats(self.fixed.lambda1_per_collision),
+            "fixed_mean_free_time": _stats(self.fixed.mean_free_time),
+        }
+
+
+def rigid_limit(
+    shape: str,
+    alpha: float,
+    beta: float,
+    *,
+    particles: int = 1,
+    mass: float = 0.2,
+    settings: RunSettings | None = None,
+) -> RigidLimit:
+    """lambda_1 and mean free time of the rigid limit, moving and fixed container, as
+    functions of (shape, alpha, beta): the n = oo points of the soft-wall charts.
+
+    Examples
+    --------
+    >>> r = rigid_limit("flat", 0.5, 0.3, settings=RunSettings(runs=2, periods=5))
+    >>> sorted(r.as_dict())[:3]
+    ['fixed_lambda1', 'fixed_lambda1_per_collision', 'fixed_mean_free_time']
+    """
+    kw = {"particles": particles, "mass": mass, "settings": settings, "lyapunov": True}
+    return RigidLimit(
+        billiard(shape, alpha, beta, **kw), billiard(shape, alpha, beta, fixed=True, **kw)
+    )
