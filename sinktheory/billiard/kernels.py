@@ -151,6 +151,19 @@ def impulse(mu, w, nx):
 
 
 @numba.njit(cache=True)
+def impact(v, cont, mu, nx, ny):
+    """Elastic impact of a particle (velocity v (2,), mass mu) on the container
+    (cont = (X, V)) across the wall normal (nx, ny); in place.  Nothing happens unless
+    the particle approaches the wall (relative normal velocity > 0)."""
+    w = (v[0] - cont[1]) * nx + v[1] * ny
+    if w > 0.0:
+        J = impulse(mu, w, nx)
+        v[0] -= J / mu * nx
+        v[1] -= J / mu * ny
+        cont[1] += J * nx
+
+
+@numba.njit(cache=True)
 def reflect_tangent(x, y, v, dq, dv, kind, coef, cap):
     """Specular reflection of velocity ``v`` (2,) at (x, y) on a fixed wall, and the
     tangent map of the reflection for the deviation (dq, dv) (Dellago, Posch & Hoover,
@@ -254,13 +267,8 @@ def advance_moving(cont, pos, vel, mu, duration, kinds, coef, cap, hneg, gx, eps
         if bj < 0:
             return OK, -1, duration
         hits[bw] += 1
-        nx, ny, g = outward_normal(kinds[bw], coef[bw], cap[bw], pos[bj, 0], pos[bj, 1])
-        w = (vel[bj, 0] - cont[1]) * nx + vel[bj, 1] * ny
-        if w > 0.0:
-            J = impulse(mu, w, nx)
-            vel[bj, 0] -= J / mu * nx
-            vel[bj, 1] -= J / mu * ny
-            cont[1] += J * nx
+        nx, ny, _ = outward_normal(kinds[bw], coef[bw], cap[bw], pos[bj, 0], pos[bj, 1])
+        impact(vel[bj], cont, mu, nx, ny)
 
 
 @numba.njit(cache=True)
