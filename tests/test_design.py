@@ -27,7 +27,7 @@ from sinktheory.design.ranking import pareto_layers, rank
 from sinktheory.errors import ParameterError
 from sinktheory.recurrence import rqa
 from sinktheory.simulate import simulate
-from sinktheory.sinkstats import ensemble_mean, first_fall_below, sink_measures
+from sinktheory.sinkstats import ensemble_mean, sink_measures
 from sinktheory.sweep import kinds
 from sinktheory.sweep.grid import point_seed
 
@@ -53,10 +53,16 @@ def test_measures_on_known_series():
         transient=4, risk_level=0.5, bootstrap=30, seed=1,
     )  # fmt: skip
     assert m.absorbed.tolist() == pytest.approx([1 - 0.2 / 0.5, 1 - 0.1 / 0.5], abs=1e-15)
-    # 50 % absorbed: <E> < 0.25 first at j = 2; 80 %: <E> < 0.1 first at j = 3
-    assert m.passage.tolist() == [2.0, 3.0]
-    # runs agree up to j = 7, so every bootstrap resample crosses at the same periods
-    assert m.passage_se.tolist() == [0.0, 0.0] and m.passage_reach.tolist() == [1.0, 1.0]
+    # settling times, window max(1, round(8 / 10)) = 1 period: 50 % absorbed, <E> < 0.25
+    # at j = 2 and 3; 80 %, <E> < 0.1 only at j = 3 and 5, each time back above at once
+    assert m.window == 1
+    assert m.passage[0] == 2.0 and math.isnan(m.passage[1])
+    # runs agree up to j = 7, so every bootstrap resample settles (or not) the same way
+    assert m.passage_se[0] == 0.0 and m.passage_reach.tolist() == [1.0, 0.0]
+    # the plain first passage (window 0): 80 % first at j = 3
+    plain = design_measures(np.stack([a, b]), e0=0.5, total_energy=0.5, particles=1, n=4,
+                            horizons=(2, 8), bootstrap=30, seed=1, window=0)  # fmt: skip
+    assert plain.passage.tolist() == [2.0, 3.0]
     # back above 0.25 after j = 2: j = 4 (1 period) and j = 6, 7 (2 periods)
     assert m.excursion == 2.0 and m.excursion_se == 0.0
     # long time (j >= 4): the runs average 0.2 and 0.22
@@ -181,13 +187,16 @@ def test_explorer_equals_simulate_and_sinkstats_at_fig8():
         mean, se = ensemble_mean(e)
         total = float(res.initial_energy.mean())
         s = sink_measures(e, e0=0.5, total_energy=total, particles=k, n=4)
-        first = first_fall_below(mean, [0.5, 0.2], 0.5)
+        # settling times (window max(1, round(40 / 10)) = 4): a direct loop
+        settled = [
+            next((j for j in range(41 - 4) if (mean[j : j + 5] < f * 0.5).all()), np.nan)
+            for f in (0.5, 0.2)
+        ]
         p = ds.sel(particles=k)
         np.testing.assert_array_equal(p.mean_energy.values, mean)  # bitwise
         np.testing.assert_array_equal(p.stderr.values, se)
         np.testing.assert_array_equal(p.absorbed.values, 1 - mean[[10, 40]] / 0.5)
-        expected = [np.nan if first[f] is None else first[f] for f in (0.5, 0.2)]
-        np.testing.assert_array_equal(p.passage.values, expected)
+        np.testing.assert_array_equal(p.passage.values, settled)
         assert float(p.long_time_mean) == s.long_time_mean
         assert float(p.long_time_se) == s.long_time_stderr
         assert float(p.spread) == s.run_spread

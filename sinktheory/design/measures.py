@@ -6,8 +6,13 @@ spring 1, period T = 2 pi), energies relative to the container's initial energy 
 
 * **absorbed fraction** at a horizon h: 1 - <E>(hT)/E0, with the standard error of the
   ensemble mean (:func:`sinktheory.sinkstats.ensemble_mean`);
-* **first-passage times**: the first period at which <E> < (1 - a) E0 for a = 50 % and
-  80 % absorbed (:func:`sinktheory.sinkstats.first_fall_below`); NaN when never reached;
+* **settling times** t50, t80 (``passage``): the first period j at which <E> falls below
+  (1 - a) E0 (a = 50 % and 80 % absorbed) *and stays below* for the ``window`` periods
+  that follow, j + 1, ..., j + window (:func:`sustained_crossing`; default window a tenth
+  of the run, :func:`default_window`).  A dip below the level that comes back above it
+  within the window does not count, so an ensemble that dips early and then returns does
+  not pass for fast; a crossing later than P - window cannot be confirmed within the run
+  and gives NaN, as does a level never reached;
 * **long-time share**: the time average of E after ``transient`` periods, mean over runs
   +- standard error (:func:`sinktheory.sinkstats.sink_measures`), against the
   equipartition prediction E/(1 + k(1 + 1/n)) with a verdict (:data:`VERDICTS`);
@@ -17,7 +22,7 @@ spring 1, period T = 2 pi), energies relative to the container's initial energy 
   below), and the recurrence quantification of <E> (:func:`sinktheory.recurrence.rqa`,
   eps a fixed fraction of E0 so that designs compare).
 
-Standard errors of the quantities that are not plain means (first-passage times, the
+Standard errors of the quantities that are not plain means (settling times, the
 excursion and the RQA measures of <E>) come from a bootstrap over runs: ``bootstrap``
 resamples of the R runs with replacement, each giving a resampled <E>(jT) and the measure
 of it; the standard error is the standard deviation (ddof = 1) of the resampled values
@@ -32,6 +37,8 @@ Examples
 ...                     transient=2, bootstrap=20, seed=0)
 >>> m.absorbed.round(3).tolist(), m.passage.tolist()  # <E> = 0.5, 0.25, 0.15, 0.1, 0.2, 0.1
 ([0.5, 0.8], [2.0, nan])
+>>> m.window  # a tenth of the 5 periods, at least one
+1
 >>> m.excursion, m.verdict_name, round(m.long_time_mean, 4), round(m.equipartition, 4)
 (0.0, 'equipartition', 0.1375, 0.2222)
 """
@@ -49,8 +56,10 @@ from ..errors import ParameterError
 from ..results import Result
 from ..sinkstats import ensemble_mean, sink_measures
 
-#: Fractions of E0 absorbed whose first-passage times are measured.
+#: Fractions of E0 absorbed whose settling times are measured.
 ABSORBED_LEVELS = (0.5, 0.8)
+#: Default settling window as a fraction of the run length (:func:`default_window`).
+WINDOW_FRACTION = 0.1
 #: <E> below (1 - level) E0, as the fraction of E0 it compares with (exact decimals).
 _REMAINING = {a: round(1.0 - a, 12) for a in ABSORBED_LEVELS}
 #: Verdict codes of the long-time share against equipartition: within ``sigmas`` standard
@@ -79,12 +88,14 @@ class DesignMeasures(Result):
     absorbed, absorbed_se : ndarray (H,)
         1 - <E>(hT)/E0 and its standard error.
     levels : ndarray (2,)
-        Absorbed fractions of the first-passage times (:data:`ABSORBED_LEVELS`).
+        Absorbed fractions of the settling times (:data:`ABSORBED_LEVELS`).
     passage, passage_se : ndarray (2,)
-        First period at which <E> < (1 - level) E0 (NaN if never) and its bootstrap s.e.
+        Settling time t50, t80: the first period from which <E> < (1 - level) E0 holds
+        for ``window`` more periods (NaN if never; :func:`sustained_crossing`), and its
+        bootstrap standard error.
     passage_reach : ndarray (2,)
-        Share of the bootstrap resamples that reached the level (1: robust, < 1: the
-        first passage depends on which runs are in the ensemble).
+        Share of the bootstrap resamples that settled below the level (1: robust, < 1:
+        the settling depends on which runs are in the ensemble).
     long_time_mean, long_time_se : float
         Long-time container energy (after ``transient`` periods).
     equipartition : float
@@ -102,7 +113,7 @@ class DesignMeasures(Result):
         passage below it.
     rqa, rqa_se : dict name -> float
         :data:`RQA_MEASURES` of <E> with eps = rqa_eps E0 (Theiler window 1).
-    transient, sigmas, risk_level, rqa_eps : the settings used
+    transient, sigmas, risk_level, rqa_eps, window : the settings used
     """
 
     horizons: np.ndarray
@@ -129,6 +140,7 @@ class DesignMeasures(Result):
     sigmas: float
     risk_level: float
     rqa_eps: float
+    window: int
 
     @property
     def verdict_name(self) -> str:
@@ -192,9 +204,36 @@ def _bootstrap_means(e: np.ndarray, replicates: int, seed: int) -> np.ndarray:
     return counts @ e / runs
 
 
-def _passage(mean: np.ndarray, threshold: float) -> float:
-    below = np.flatnonzero(mean < threshold)
-    return float(below[0]) if below.size else math.nan
+def default_window(periods: int) -> int:
+    """The default settling window: :data:`WINDOW_FRACTION` of the run, at least 1 period.
+
+    Examples
+    --------
+    >>> default_window(1500), default_window(150), default_window(8)
+    (150, 15, 1)
+    """
+    return max(1, round(WINDOW_FRACTION * int(periods)))
+
+
+def sustained_crossing(mean, threshold: float, window: int) -> float:
+    """First period j with ``mean[j], ..., mean[j + window]`` all below ``threshold``
+    (NaN if there is none; j + window must be within the series).
+
+    Examples
+    --------
+    >>> e = [1.0, 0.4, 0.6, 0.45, 0.4, 0.3, 0.3]   # dips at 1, back above at 2
+    >>> sustained_crossing(e, 0.5, 0), sustained_crossing(e, 0.5, 2)
+    (1.0, 3.0)
+    >>> sustained_crossing(e, 0.5, 4), sustained_crossing(e, 0.2, 0)
+    (nan, nan)
+    """
+    below = np.asarray(mean, dtype=float) < threshold
+    window = int(window)
+    if window + 1 > below.size:
+        return math.nan
+    held = np.lib.stride_tricks.sliding_window_view(below, window + 1).all(axis=1)
+    first = np.flatnonzero(held)
+    return float(first[0]) if first.size else math.nan
 
 
 def longest_excursion(mean, threshold: float) -> float:
@@ -248,6 +287,7 @@ def design_measures(
     rqa_eps: float = 0.01,
     bootstrap: int = 50,
     seed: int = 0,
+    window: int | None = None,
 ) -> DesignMeasures:
     """The design measures of an ensemble (see the module docstring).
 
@@ -273,6 +313,9 @@ def design_measures(
         Bootstrap resamples of the runs for the standard errors.
     seed : int >= 0
         Seed of the bootstrap (mixed with :data:`BOOTSTRAP_TAG`).
+    window : int in 0..P, optional
+        Periods <E> must stay below a level after crossing it for the settling time
+        (default :func:`default_window` of P; 0 gives the plain first passage).
 
     Returns
     -------
@@ -293,20 +336,24 @@ def design_measures(
         particles=particles,
         n=n,
         transient=transient,
-        fractions=tuple(_REMAINING.values()),
+        fractions=(),  # the settling times below replace the plain first passages
     )
     P = e.shape[1] - 1
+    window = (
+        default_window(P)
+        if window is None
+        else v.positive_int("window", window, minimum=0, maximum=P)
+    )
     horizons = np.array(horizons_of(list(horizons), P), dtype=int)
     mean, stderr = ensemble_mean(e)
     runs = e.shape[0]
 
-    # first passages (the sinkstats values) and their bootstrap
-    first = s.first_below
-    passage = np.array(
-        [math.nan if first[f] is None else float(first[f]) for f in _REMAINING.values()]
-    )
+    # settling times and their bootstrap
+    passage = np.array([sustained_crossing(mean, f * e0, window) for f in _REMAINING.values()])
     boot = _bootstrap_means(e, bootstrap, seed)
-    b_pass = np.array([[_passage(b, f * e0) for f in _REMAINING.values()] for b in boot])  # (B, 2)
+    b_pass = np.array(
+        [[sustained_crossing(b, f * e0, window) for f in _REMAINING.values()] for b in boot]
+    )  # (B, 2)
     passage_se = np.array(
         [_se(b_pass[:, i]) if np.isfinite(passage[i]) else math.nan for i in range(2)]
     )
@@ -356,4 +403,5 @@ def design_measures(
         sigmas=sigmas,
         risk_level=risk_level,
         rqa_eps=rqa_eps,
+        window=window,
     )

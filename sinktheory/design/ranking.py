@@ -2,13 +2,15 @@
 
 Three objectives per design (all from the ``design`` sweep's results):
 
-* **speed** -- the first-passage time (periods) of <E> below 50 % of E0 (``passage`` at
-  level 0.5);
+* **speed** -- the settling time t50 (periods): the first period from which <E> stays
+  below 50 % of E0 for the settling window (``passage`` at level 0.5, see
+  :func:`sinktheory.design.measures.sustained_crossing`; an early dip that comes back
+  does not count);
 * **depth** -- the long-time fraction of E0 absorbed, 1 - <E>_long / E0 (``depth``);
 * **reliability** -- the run-to-run spread of the long-time means relative to E0
   (``spread / energy``); smaller is more reliable.
 
-A design that never gets <E> below 50 % of E0 within the run has no first-passage time:
+A design whose <E> never settles below 50 % of E0 within the run has no t50:
 it counts as the slowest of all, *whatever* its depth and spread -- every design that
 reaches 50 % dominates it (constrained domination: reaching the level is a feasibility
 condition, not one more coordinate a design can trade against reliability; a design that
