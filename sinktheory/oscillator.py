@@ -118,10 +118,24 @@ class Oscillator(Result):
     def items(self) -> dict:
         out = super().items()
         for name in ("amplitude", "energy", "period"):
-            out[name] = mpmath.nstr(
-                out[name], self.dps, strip_zeros=False, min_fixed=-4, max_fixed=self.dps
-            )
+            out[name] = significant(out[name], self.dps)
         return out
+
+
+def significant(x: mpmath.mpf, digits: int) -> str:
+    """``x`` as a decimal string of exactly ``digits`` significant digits (trailing zeros
+    kept, no bare trailing point), fixed-point from 1e-4 up to 10**digits, else scientific.
+
+    Examples
+    --------
+    >>> significant(mpmath.mpf(2), 3), significant(mpmath.mpf(2), 1)
+    ('2.00', '2')
+    >>> significant(mpmath.mpf(123456), 2), significant(mpmath.mpf("0.000012345"), 3)
+    ('1.2e+5', '1.23e-5')
+    """
+    text = mpmath.nstr(x, digits, strip_zeros=False, min_fixed=-4, max_fixed=digits)
+    mantissa, e, exponent = text.partition("e")
+    return mantissa.rstrip(".") + e + exponent
 
 
 def _check_n(n: object) -> int:

@@ -74,7 +74,7 @@ def test_reproduce_progress_reaches_a_log_file(tmp_path):
         )
     assert proc.returncode == 0
     lines = log.read_text().splitlines()
-    assert lines[0].startswith("reproduce: 1 figure(s) at quick fidelity, about ")
+    assert lines[0].startswith("reproduce: 1 figure(s) at quick fidelity, expected about ")
     assert lines[1].startswith("Fig. 2 (1/1): shapes of the flat well; about ")
     assert lines[2].startswith("Fig. 2: done in ")
     assert "Fig. 2: " in proc.stdout and "about" not in proc.stdout

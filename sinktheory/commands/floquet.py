@@ -20,7 +20,6 @@ import argparse
 
 from .._generated.shapes import NAMES as SHAPE_NAMES
 from ..errors import ParameterError
-from ..floquet import model_problem, pure_problem, scan
 from . import HELP as HELPS
 from ._common import Output, add_json, number, png_path
 
@@ -52,14 +51,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _problem(args: argparse.Namespace, beta_mode: bool):
+    if beta_mode and args.alpha is None:
+        raise ParameterError("alpha", None, "given with --beta or --beta-range")
+    if not beta_mode and args.alpha is not None:
+        raise ParameterError("alpha", args.alpha, "omitted for the pure equation (--lam)")
+    from ..floquet import model_problem, pure_problem  # numpy and numba: after those checks
+
     if beta_mode:
-        if args.alpha is None:
-            raise ParameterError("alpha", None, "given with --beta or --beta-range")
         return model_problem(
             args.alpha, args.n, gamma=args.gamma, shape=args.shape, amplitude=args.amplitude
         )
-    if args.alpha is not None:
-        raise ParameterError("alpha", args.alpha, "omitted for the pure equation (--lam)")
     return pure_problem(args.n, args.amplitude)
 
 
@@ -85,6 +86,8 @@ def run(args: argparse.Namespace) -> Output:
     lo, hi, count = ranged
     if not isinstance(count, int):
         raise ParameterError("COUNT", count, "an integer >= 2")
+    from ..floquet import scan
+
     result = scan(problem, lo, hi, count)
     data = result.as_dict()
     lines = [f"{problem.kind} Hill equation, n = {problem.n}, {key} in [{lo:g}, {hi:g}]"]

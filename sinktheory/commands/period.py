@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-from ..oscillator import _check_dps as check_dps
-from ..oscillator import oscillator
 from . import HELP as HELPS
 from ._common import Output, add_json, number
 
@@ -24,16 +22,24 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g = parser.add_mutually_exclusive_group(required=True)
     g.add_argument("--amplitude", type=decimal_text, help="amplitude A0 > 0")
     g.add_argument("--energy", type=decimal_text, help="energy E_n = A0^(2n)/(2n) > 0")
-    parser.add_argument("--digits", type=number, default=30, help="significant digits (default 30)")
+    parser.add_argument(
+        "--digits",
+        type=number,
+        default=30,
+        help="significant digits printed for A0, E_n and T_n (default 30)",
+    )
     add_json(parser)
 
 
 def run(args: argparse.Namespace) -> Output:
+    from ..oscillator import _check_dps as check_dps
+    from ..oscillator import oscillator
+
     digits = check_dps(args.digits, "digits")
     o = oscillator(args.n, amplitude=args.amplitude, energy=args.energy, dps=digits)
     data = o.as_dict()
     lines = [
-        f"x'' + x^{2 * o.n - 1} = 0   ({digits} significant digits)",
+        f"x'' + x^{2 * o.n - 1} = 0   ({digits} significant digit{'s' * (digits != 1)})",
         f"  amplitude A0   {data['amplitude']}",
         f"  energy    E_n  {data['energy']}",
         f"  period    T_n  {data['period']}",

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-from ..series import accuracy
 from . import HELP as HELPS
 from ._common import Output, add_json, number, png_path
 
@@ -21,6 +20,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> Output:
     plot = png_path("plot", args.plot)
+    from ..series import accuracy  # SymPy and mpmath: after the cheap checks
+
     result = accuracy(args.n, args.order)
     n, order, rows, checks = result.n, result.order, result.errors, result.bounds
     data = result.as_dict()

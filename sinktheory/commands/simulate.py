@@ -11,15 +11,9 @@ import argparse
 import json
 import math
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import numpy as np
-
-from .. import __version__
 from ..errors import ParameterError
-from ..integrators import DEFAULT_SCHEME, SCHEMES
-from ..model import RunSettings, Sink, check_work
-from ..simulate import ENERGY_BOUND, SimulationResult, simulate
-from ..stepsize import DEFAULT_TOL, TOL_RANGE
 from ..validation import time_step
 from . import HELP as HELPS
 from ._common import (
@@ -33,8 +27,26 @@ from ._common import (
     well_from_args,
 )
 
+if TYPE_CHECKING:
+    import numpy as np
+
+    from ..model import RunSettings, Sink
+    from ..simulate import SimulationResult
+
 NAME = "simulate"
 HELP = HELPS[NAME]
+#: What the help quotes from the integrator registry (:data:`sinktheory.integrators.SCHEMES`,
+#: ``DEFAULT_SCHEME``), the step-size rule (:data:`sinktheory.stepsize.TOL_RANGE`,
+#: ``DEFAULT_TOL``) and the simulator (:data:`sinktheory.simulate.ENERGY_BOUND`), written out
+#: so that ``--help`` imports neither numpy nor numba; tests/test_startup.py checks each
+#: against its source.
+QUOTED = {
+    "schemes": ("verlet", "yoshida4", "blanes-moan4", "yoshida6", "blanes-moan6", "suzuki-umeno8"),
+    "default_scheme": "blanes-moan6",
+    "tol_range": (1e-12, 1e-4),
+    "default_tol": 1e-8,
+    "energy_bound": 1e-6,
+}
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -54,15 +66,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     i.add_argument(
         "--method",
         default=None,
-        help=f"one of {', '.join(SCHEMES)} (default: the cheapest for --tol; "
-        f"{DEFAULT_SCHEME} with --dt)",
+        help=f"one of {', '.join(QUOTED['schemes'])} (default: the cheapest for --tol; "
+        f"{QUOTED['default_scheme']} with --dt)",
     )
     i.add_argument(
         "--tol",
         type=number,
         default=None,
-        help=f"relative total-energy error wanted over the run, {TOL_RANGE[0]:g} to "
-        f"{TOL_RANGE[1]:g} (default {DEFAULT_TOL:g}): picks scheme and step",
+        help=f"relative total-energy error wanted over the run, {QUOTED['tol_range'][0]:g} to "
+        f"{QUOTED['tol_range'][1]:g} (default {QUOTED['default_tol']:g}): picks scheme and step",
     )
     i.add_argument("--dt", type=number, default=None, help="step, overriding --tol")
     i.add_argument(
@@ -70,7 +82,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         type=number,
         default=None,
         help=f"stop when the relative total-energy error exceeds this (default: the larger "
-        f"of {ENERGY_BOUND:g} and 100 x tol)",
+        f"of {QUOTED['energy_bound']:g} and 100 x tol)",
     )
     o = parser.add_argument_group("output")
     o.add_argument("--out", help="save the recorded arrays and parameters to FILE.npz")
@@ -93,6 +105,8 @@ def _initial(values: list | None, sink: Sink) -> np.ndarray | None:
             f"{len(values)} number(s)",
             f"2 x particles = {2 * particles} numbers (x y for each particle)",
         )
+    import numpy as np
+
     positions = np.array(values, dtype=float).reshape(particles, 2)
     for x, y in positions:
         sink.well.check_position("--initial", x, y)
@@ -106,6 +120,8 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
         raise ParameterError(
             "--runs", args.runs, "1 with --initial (one set of positions starts one run)"
         )
+    from ..model import check_work
+
     settings.check_memory(sink, ("container",))
     if args.dt is not None:
         dt = time_step("--dt", args.dt)
@@ -115,6 +131,9 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
 def run(args: argparse.Namespace) -> Output:
     plot = png_path("--plot", args.plot)
     out = _npz_path(args.out)
+    from ..model import RunSettings, Sink  # numpy and numba: after the cheap checks
+    from ..simulate import simulate
+
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
     initial = _initial(args.initial, sink)
     runs = args.runs if args.runs is not None else (1 if initial is not None else 25)
@@ -162,6 +181,10 @@ def _save(path, result: SimulationResult, args) -> None:
         "dt": result.dt,
         "energy_bound": args.energy_bound,
     }
+    import numpy as np
+
+    from .. import __version__
+
     mean, stderr = result.ensemble_energy()
     with open(path, "wb") as f:
         np.savez(

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 
-from ..model import RunSettings, Sink
 from . import HELP as HELPS
 from ._common import Output, add_json, add_sink_arguments, add_well_arguments, well_from_args
 
@@ -19,6 +18,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> Output:
+    from ..model import RunSettings, Sink
+
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
     settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
     s = sink.summary(settings)

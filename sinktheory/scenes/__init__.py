@@ -2,17 +2,77 @@
 
 Each scene declares the least model it needs and computes only that (see
 :class:`~sinktheory.scenes.base.Scene`).
+
+The catalogue below (figure number -> module, and the measured run time of each figure)
+is plain data, so ``sinktheory reproduce --help`` and its refusals read it without
+importing a scene module (they pull in numpy, numba and matplotlib); :data:`SCENES` and
+:func:`scene` import the modules on first use.
+
+Examples
+--------
+>>> FIGURES
+(2, 3, 4, 5, 7, 8, 9, 10, 11, 12)
+>>> scene(7).title
+'Floquet stability of the normal mode'
 """
 
-from .base import Claim, Scene, SceneResult
-from .ensembles import FIG5, FIG8, FIG9, FIG12
-from .orbits import FIG3, FIG11
-from .stability import FIG7
-from .trajectories import FIG4
-from .wells import FIG2, FIG10
+from importlib import import_module
 
-SCENES: dict[int, Scene] = {
-    s.number: s for s in (FIG2, FIG3, FIG4, FIG5, FIG7, FIG8, FIG9, FIG10, FIG11, FIG12)
+#: The module of each figure's scene (its object is ``FIG<number>`` there).
+MODULES = {
+    2: "wells",
+    3: "orbits",
+    4: "trajectories",
+    5: "ensembles",
+    7: "stability",
+    8: "ensembles",
+    9: "ensembles",
+    10: "wells",
+    11: "orbits",
+    12: "ensembles",
+}
+#: The paper's figures that have a scene, in order.
+FIGURES = tuple(sorted(MODULES))
+
+#: Wall seconds of each figure as (quick, paper) fidelity, printed by
+#: ``python benchmarks/bench_reproduce.py`` on the project's 2-core machine while it was
+#: shared (load average 2-6, warm compilation cache; an idle machine is faster), except
+#: Figs. 3 and 11 at paper fidelity: 143 s and 99 s measured on 2 idle cores (issue 25).
+#: ``reproduce`` announces them before each figure as its estimate.
+SECONDS = {
+    2: (1.6, 2.4),
+    3: (27.7, 143.0),
+    4: (0.7, 1.5),
+    5: (2.5, 6.7),
+    7: (0.3, 0.5),
+    8: (2.8, 52.3),
+    9: (1.9, 29.3),
+    10: (0.1, 0.1),
+    11: (20.9, 99.0),
+    12: (1.0, 5.9),
 }
 
-__all__ = ["SCENES", "Claim", "Scene", "SceneResult"]
+
+def scene(number: int):
+    """The :class:`~sinktheory.scenes.base.Scene` of figure ``number`` (imported now)."""
+    module = import_module(f".{MODULES[number]}", __name__)
+    return getattr(module, f"FIG{number}")
+
+
+def estimate(number: int, quick: bool) -> float:
+    """Expected wall seconds of figure ``number`` (see :data:`SECONDS`)."""
+    return SECONDS[number][0 if quick else 1]
+
+
+_BASE = ("Claim", "Scene", "SceneResult")
+
+
+def __getattr__(name: str):
+    if name == "SCENES":
+        return {number: scene(number) for number in FIGURES}
+    if name in _BASE:
+        return getattr(import_module(".base", __name__), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+__all__ = ["FIGURES", "MODULES", "SCENES", "SECONDS", "estimate", "scene", *_BASE]
