@@ -2,7 +2,10 @@
 
     python notebooks/make_tour.py
 
-The notebook is committed without outputs; tests/test_notebooks.py executes it.
+The notebook is committed without outputs; tests/test_notebooks.py executes it and checks
+that its figures come out as images.  The first cell selects matplotlib's inline backend:
+without it a kernel started with ``MPLBACKEND=Agg`` (CI, the test suite, some servers)
+shows a returned figure as the text ``<Figure size 800x450 with 1 Axes>``.
 """
 
 from pathlib import Path
@@ -18,7 +21,8 @@ well. Nothing is damped, yet the container's energy drains into the particles.
 
 The tour follows the paper's ladder with small parameters so it runs in about a minute:
 derivation → period and series → Floquet chart → energy sink → recurrence."""),
-    ("code", """import numpy as np
+    ("code", """%matplotlib inline
+import numpy as np
 import sinktheory as st
 from sinktheory import symbolic as S"""),
     ("md", """## 1. Derivation

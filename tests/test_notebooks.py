@@ -28,3 +28,7 @@ def test_tour_executes(tmp_path, monkeypatch):
     assert not [o for o in outputs if o.output_type == "error"]
     text = "".join(o.get("text", "") for o in outputs)
     assert "stable intervals" in text and "max relative energy error" in text
+    # the two figures (Floquet chart, recurrence plot) are PNG images, not "<Figure ...>"
+    images = [o for o in outputs if "image/png" in o.get("data", {})]
+    assert len(images) == 2, [o.get("data", {}).get("text/plain") for o in outputs]
+    assert all(len(o["data"]["image/png"]) > 1000 for o in images)
