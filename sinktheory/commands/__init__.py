@@ -26,6 +26,8 @@ HELP = {
     "nnm": "normal modes of container + particles: continuation, multipliers, FEP plots",
     "chaos": "Lyapunov exponents, GALI/SALI, MEGNO and the transverse exponent of y = 0",
     "design": "explore absorber designs (shape, beta, n, k, m, E0): ranked, charted, reported",
+    "billiard": "the rigid limit n -> oo: exact billiard of the well's rigid walls, fixed or "
+    "moving container",
     "sweep": "parameter sweep (floquet, bifurcation, ensemble) into a resumable Zarr store",
 }
 NAMES = tuple(HELP)
