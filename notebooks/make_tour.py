@@ -66,7 +66,8 @@ The recurrence plot of $\\langle E\\rangle$ (eq. Rij) and its quantification."""
 from sinktheory.recurrence import rqa
 print(rqa(mean, 0.005).as_dict())
 plot_recurrence(mean, 0.005)"""),
-    ("md", """Every figure of the paper, with each claim checked: `sinktheory reproduce --out out/`."""),
+    ("md", "Every figure of the paper, with each claim checked: "
+           "`sinktheory reproduce --out out/`."),
 ]
 
 
