@@ -39,7 +39,7 @@ import numpy as np
 
 from . import validation as v
 from .errors import ParameterError
-from .results import Result
+from .results import Result, plain
 
 #: Default recurrence rate used to pick eps.
 DEFAULT_RATE = 0.05
@@ -176,8 +176,19 @@ class RQA(Result):
     mean_recurrence_time : mean bounded white vertical gap + 1, in periods (nan if none)
     diagonal_lines, vertical_lines : histograms, index = line length
 
-    ``as_dict`` / ``to_dataset`` (dim ``length``) follow :mod:`sinktheory.results` (nan
-    becomes None in the dict).
+    ``as_dict()`` is the summary: the settings and the five measures (nan becomes None),
+    without the histograms, which can be as long as the series; ``to_dataset()`` keeps
+    them (dim ``length``) and :meth:`histograms` gives them as plain lists
+    (:mod:`sinktheory.results`).
+
+    Examples
+    --------
+    >>> r = rqa([0.0, 1.0, 0.0, 1.0, 0.0, 1.0], eps=0.1)
+    >>> sorted(r.as_dict())  # doctest: +NORMALIZE_WHITESPACE
+    ['determinism', 'eps', 'l_min', 'laminarity', 'mean_recurrence_time',
+     'recurrence_rate', 'theiler', 'trapping_time', 'v_min']
+    >>> r.histograms()["diagonal_lines"]  # diagonals j - i = +-2 (length 4), +-4 (length 2)
+    [0, 0, 2, 0, 2, 0, 0]
     """
 
     eps: float
@@ -196,6 +207,17 @@ class RQA(Result):
 
     def coords(self) -> dict:
         return {"length": np.arange(self.diagonal_lines.size)}
+
+    def as_dict(self) -> dict:
+        """The summary: every field but the histograms (see the class docstring)."""
+        d = super().as_dict()
+        for name in self.DIMS:
+            del d[name]
+        return d
+
+    def histograms(self) -> dict[str, list[int]]:
+        """The line-length histograms as plain lists (index = line length)."""
+        return {name: plain(getattr(self, name)) for name in self.DIMS}
 
 
 def _ratio(num: float, den: float) -> float:
