@@ -170,17 +170,20 @@ def test_sinai_small_scatterer_law(R, runs):
     # -2 ln R + C + O(R ln^2 R), C = 1 - 4 ln 2 + 27 zeta(3) / (2 pi^2).
     C = 1 - 4 * math.log(2) + 27 * zeta(3) / (2 * math.pi**2)
     expected = -2 * math.log(R) + C
-    periods = 4000
+    # 500 periods are discarded first: the deviation vector then starts aligned and at
+    # a random point of a flight, like the end, so the ~ln(1/R) growth inside the last
+    # flight does not bias the ratio (it would by ~0.2 at 30 disk impacts per run)
     r = simulate_billiard(
-        sinai_table(R), _start(runs, 0.31, 0.17), _unit_directions(runs, 1), periods=periods,
-        lyapunov=True,
+        sinai_table(R), _start(runs, 0.31, 0.17), _unit_directions(runs, 1), periods=4000,
+        lyapunov=True, discard=500,
     )  # fmt: skip
     disk = r.collisions[:, 2]
     per_run = r.logs[:, -1] / disk
     lam = r.logs[:, -1].sum() / disk.sum()
     se = per_run.std(ddof=1) / math.sqrt(runs)
     # tolerance: the neglected O(R ln^2 R) term (taken with coefficient 1) plus 3 standard
-    # errors of the ensemble (about 1000 disk collisions in all)
+    # errors of the ensemble (about 1200 to 2000 disk collisions in all; measured
+    # deviations 0.03 at both radii, se 0.03 to 0.04)
     assert abs(lam - expected) < R * math.log(R) ** 2 + 3 * se
 
 

@@ -153,6 +153,7 @@ def simulate_billiard(
     periods: int = 100,
     lyapunov: bool = False,
     seed: int = 0,
+    discard: int = 0,
     parameters: dict | None = None,
 ) -> BilliardResult:
     """Run R rigid billiards of k particles from given states.
@@ -167,6 +168,9 @@ def simulate_billiard(
     periods : int, the runs last periods x 2 pi; records at every t = j 2 pi
     lyapunov : compute lambda_1 (tangent map if fixed, two trajectories if moving)
     seed : seeds the initial deviation vectors
+    discard : periods run first and not recorded (the deviation vector aligns with the
+        unstable direction; without this the exponent carries a transient of order
+        1 / (impacts per run))
 
     Examples
     --------
@@ -186,6 +190,7 @@ def simulate_billiard(
     table.check_positions("positions", pos)
     mu = positive("mu", mu)
     periods = positive_int("periods", periods)
+    discard = positive_int("discard", discard, minimum=0)
     R, k, _ = pos.shape
     arrays = _table_arrays(table)
     rng = np.random.default_rng(seed)
@@ -195,6 +200,10 @@ def simulate_billiard(
         if lyapunov:
             tan /= np.sqrt((tan**2).sum(axis=(1, 2)))[:, None, None]
         e = 0.5 * mu * (vel**2).sum(axis=(1, 2))
+        if discard:
+            _, _, status, where = K.run_fixed(pos, vel, tan, discard, PERIOD, *arrays)
+            _raise_status(status, where, "fixed billiard (discarded periods)")
+            e = 0.5 * mu * (vel**2).sum(axis=(1, 2))
         hits, logs, status, where = K.run_fixed(pos, vel, tan, periods, PERIOD, *arrays)
         _raise_status(status, where, "fixed billiard")
         cont_e = np.zeros((R, periods + 1))
@@ -216,6 +225,11 @@ def simulate_billiard(
             table.check_positions("positions", shadow[1])
         else:
             shadow = (np.zeros((0, 2)), np.zeros((0, k, 2)), np.zeros((0, k, 2)))
+        if discard:
+            *_, status, where = K.run_moving(
+                cont, pos, vel, mu, discard, PERIOD, *arrays, shadow, SHADOW_DISTANCE
+            )
+            _raise_status(status, where, "moving billiard (discarded periods)")
         cont_e, total, hits, logs, status, where = K.run_moving(
             cont, pos, vel, mu, periods, PERIOD, *arrays, shadow, SHADOW_DISTANCE
         )
