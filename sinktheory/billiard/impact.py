@@ -11,7 +11,7 @@ tests.
 Examples
 --------
 >>> impulse_expression()
-2*mu*(-V*n_x + n_x*v_x + n_y*v_y)/(mu*n_x**2 + 1)
+-2*mu*(V*n_x - n_x*v_x - n_y*v_y)/(mu*n_x**2 + 1)
 """
 
 from __future__ import annotations
