@@ -1,0 +1,51 @@
+"""``sinktheory billiard``: JSON equal to the Python API, the plot, one-line refusals."""
+
+import json
+
+import numpy as np
+import pytest
+from _cli import run_cli
+
+from sinktheory.billiard import billiard
+from sinktheory.model import RunSettings
+
+BASE = ["billiard", "--alpha", "0.5", "--beta", "0.3", "--particles", "2", "--runs", "2",
+        "--periods", "20"]  # fmt: skip
+
+
+def test_json_matches_the_api(capsys):
+    code, out, err = run_cli(BASE + ["--lyapunov", "--json"], capsys)
+    assert code == 0, err
+    d = json.loads(out)
+    r = billiard("flat", 0.5, 0.3, particles=2, settings=RunSettings(runs=2, periods=20),
+                 lyapunov=True)  # fmt: skip
+    np.testing.assert_array_equal(np.array(d["container_energy"]), r.container_energy)
+    np.testing.assert_array_equal(np.array(d["lambda1"]), r.lambda1)
+    assert d["table"]["area"] == pytest.approx(1.2, rel=1e-12)
+    assert d["max_relative_energy_error"] < 1e-12
+
+
+def test_text_and_plot(capsys, tmp_path):
+    png = tmp_path / "b.png"
+    code, out, err = run_cli(BASE + ["--fixed", "--lyapunov", "--plot", str(png)], capsys)
+    assert code == 0, err
+    assert "fixed container" in out and "lambda_1 =" in out and "pi A/P = 0.605271" in out
+    assert png.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize(
+    "extra,name",
+    [
+        (["--beta", "0.6"], "beta"),
+        (["--shape", "symmetric", "--alpha", "2", "--beta", "1"], "beta"),
+        (["--shape", "oval"], "shape"),
+        (["--runs", "0"], "runs"),
+        (["--mass", "-1"], "mass"),
+    ],
+)
+def test_bad_input_one_line_exit_2_nothing_written(capsys, tmp_path, extra, name):
+    png = tmp_path / "b.png"
+    code, out, err = run_cli(BASE + extra + ["--plot", str(png)], capsys)
+    assert code == 2
+    assert err.count("\n") == 1 and f"{name} = " in err
+    assert not png.exists() and list(tmp_path.iterdir()) == []
