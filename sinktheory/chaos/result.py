@@ -14,6 +14,12 @@ import numpy as np
 from ..results import Result, plain
 from ..sinkstats import ensemble_mean
 
+#: What ``as_dict`` says next to the per-run values (``--json`` of ``sinktheory chaos``).
+PER_RUN_NOTE = (
+    "per-run values: a chaotic run changes with any change of round-off (threads, compiler, "
+    "machine, version), so compare only the ensemble means with their standard errors"
+)
+
 
 def sali_from_gali2(g: np.ndarray) -> np.ndarray:
     """SALI of two unit vectors from their GALI_2 = sin(theta).
@@ -183,7 +189,8 @@ class ChaosResult(Result):
         return m.reshape(shape), se.reshape(shape)
 
     def as_dict(self, *, series: bool = False) -> dict:
-        """JSON-ready summary: per-run final values, ensemble mean and standard error.
+        """JSON-ready summary: per-run final values, ensemble mean and standard error, and
+        ``note`` (:data:`PER_RUN_NOTE`: only the ensemble means are comparable).
 
         ``series=True`` adds the ensemble mean (and standard error) of the time series
         (finite-time lambda_1, GALI, MEGNO) at ``times``.
@@ -196,6 +203,7 @@ class ChaosResult(Result):
             return {"runs": plain(np.asarray(runs, float)), "mean": clean(m), "stderr": clean(se)}
 
         out: dict = {"parameters": plain(self.parameters), "runs": self.runs}
+        out["note"] = PER_RUN_NOTE
         out["time"] = self.duration
         out["max_relative_energy_error"] = float(np.max(self.run_errors, initial=0.0))
         out["spectrum_paired"] = self.spectrum_paired
