@@ -75,7 +75,7 @@ HEAVY = (
     "zarr",
     "dask",
     "sympy",
-    "sinktheory.scenes",
+    "sinktheory.scenes.base",
     "scipy.optimize",
     "scipy.linalg",
     "numba.np.arraymath",
