@@ -17,7 +17,8 @@ the particle approaches (g_i' < 0), so the particle never leaves the table and n
 crossing, grazing or closely spaced, is stepped over.
 
 Status codes returned by the drivers: 0 fine, 1 a flight took more than
-:data:`MAX_ITERATIONS` steps (a root that could not be approached).
+:data:`MAX_ITERATIONS` steps (a root that could not be approached) or more than
+:data:`MAX_REPEATS` impacts happened at one instant.
 """
 
 from __future__ import annotations
@@ -30,6 +31,8 @@ import numpy as np
 POLYNOMIAL, CAPSULE = 0, 1
 #: Conservative-advancement steps allowed in one search before giving up (status 1).
 MAX_ITERATIONS = 100_000
+#: Impacts at one instant allowed in a row (a corner takes two; grazing rounding a few).
+MAX_REPEATS = 64
 OK, STUCK = 0, 1
 
 
@@ -117,8 +120,13 @@ def next_hit(x, y, vu, vy, X, V, limit, kinds, coef, cap, hneg, gx, eps, reach):
         for i in range(nw):
             f, fx, fy = wall_value(kinds[i], coef[i], cap[i], xs, ys)
             df = fx * wx + fy * vy
-            if f <= eps[i] and df < 0.0:
-                return s, i, OK
+            if f <= eps[i]:
+                # approaching: the relative normal velocity, computed exactly as the
+                # impact computes it, so that a hit always changes the velocity
+                g = math.hypot(fx, fy)
+                if wx * (-fx / g) + vy * (-fy / g) > 0.0:
+                    return s, i, OK
+                df = max(df, 0.0)  # not approaching (agree with the impact's sign)
             m = hneg[i] * vr * vr + gx[i] * amp
             fc = max(f, 0.0)
             if m > 0.0:
@@ -128,6 +136,8 @@ def next_hit(x, y, vu, vy, X, V, limit, kinds, coef, cap, hneg, gx, eps, reach):
             else:
                 hi = hmax
             step = min(step, hi)
+        # at a wall with zero normal speed the bound allows no step: move on by rounding
+        step = max(step, 4.0 * np.finfo(np.float64).eps * (s + hmax))
         if s + step >= limit:
             return limit, -1, OK
         s += step
@@ -203,6 +213,7 @@ def advance_fixed(pos, vel, tan, duration, kinds, coef, cap, hneg, gx, eps, reac
     for j in range(pos.shape[0]):
         t = 0.0
         v = vel[j]
+        repeats = 0
         while True:
             h, w, status = next_hit(
                 pos[j, 0], pos[j, 1], v[0], v[1], 0.0, 0.0, duration - t,
@@ -214,8 +225,9 @@ def advance_fixed(pos, vel, tan, duration, kinds, coef, cap, hneg, gx, eps, reac
             if tan.shape[0] > 0:
                 tan[j, 0] += tan[j, 2] * h
                 tan[j, 1] += tan[j, 3] * h
-            if status != OK:
-                return status, j, t
+            repeats = repeats + 1 if h == 0.0 else 0
+            if status != OK or repeats > MAX_REPEATS:
+                return STUCK, j, t
             if w < 0:
                 break
             hits[w] += 1
@@ -238,6 +250,7 @@ def advance_moving(cont, pos, vel, mu, duration, kinds, coef, cap, hneg, gx, eps
     :func:`impulse` along the wall normal.  Returns (status, particle, time)."""
     k = pos.shape[0]
     t = 0.0
+    repeats = 0
     while True:
         best = duration - t
         bj = -1
@@ -266,6 +279,9 @@ def advance_moving(cont, pos, vel, mu, duration, kinds, coef, cap, hneg, gx, eps
         t += best
         if bj < 0:
             return OK, -1, duration
+        repeats = repeats + 1 if best == 0.0 else 0
+        if repeats > MAX_REPEATS:
+            return STUCK, bj, t
         hits[bw] += 1
         nx, ny, _ = outward_normal(kinds[bw], coef[bw], cap[bw], pos[bj, 0], pos[bj, 1])
         impact(vel[bj], cont, mu, nx, ny)

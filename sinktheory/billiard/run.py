@@ -139,7 +139,8 @@ def _raise_status(status, where, what: str) -> None:
         r = int(bad[0])
         raise BracketError(
             f"{what}: run {r}, particle {int(where[r, 0])}, t = {where[r, 1]:.17g}: a flight "
-            f"took over {K.MAX_ITERATIONS} safe steps without reaching a wall"
+            f"took over {K.MAX_ITERATIONS} safe steps without reaching a wall, or over "
+            f"{K.MAX_REPEATS} impacts came at one instant"
         )
 
 
