@@ -385,7 +385,7 @@ def equilibrium_law(sink: Sink, energy: float) -> EquilibriumLaw:
         bits >>= 1
         if bits:
             base = _convolve(base, base, n)
-    (mean_fraction,) = _moments(result, n, [(1.0, 1)])
+    mean_fraction = float(_moments(result, n, [(1.0, 1)])[0])
     return EquilibriumLaw(
         shape=well.shape,
         alpha=well.alpha,
