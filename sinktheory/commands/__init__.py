@@ -28,6 +28,8 @@ HELP = {
     "design": "explore absorber designs (shape, beta, n, k, m, E0): ranked, charted, reported",
     "billiard": "the rigid limit n -> oo: exact billiard of the well's rigid walls, fixed or "
     "moving container",
+    "equilibrium": "exact equilibrium law of the container energy: mean, quantiles, tails, "
+    "Kac return times",
     "sweep": "parameter sweep (floquet, bifurcation, ensemble) into a resumable Zarr store",
 }
 NAMES = tuple(HELP)
