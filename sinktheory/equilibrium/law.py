@@ -294,7 +294,7 @@ class EquilibriumLaw(Result):
         >>> s.fractions.tolist(), bool(abs(s.kac_periods[0] * s.tails[0] - 1) < 1e-15)
         ([0.5], True)
         """
-        fractions = _fractions(fractions)
+        fractions = check_fractions(fractions)
         levels = np.asarray(levels, dtype=float)
         grid = np.linspace(0.0, 1.0, v.positive_int("points", points, minimum=2))
         tails = np.atleast_1d(self.tail(fractions))
@@ -311,7 +311,9 @@ class EquilibriumLaw(Result):
         )
 
 
-def _fractions(fractions) -> np.ndarray:
+def check_fractions(fractions) -> np.ndarray:
+    """Fractions f as a 1-D array, each in the open interval (0, 1) (ParameterError naming
+    ``fraction`` otherwise)."""
     fs = v.real_array("fraction", fractions)
     fs = np.atleast_1d(fs)
     for f in fs:

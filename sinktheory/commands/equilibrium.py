@@ -1,0 +1,78 @@
+"""``sinktheory equilibrium``: the exact law of the container energy at equilibrium."""
+
+from __future__ import annotations
+
+import argparse
+
+from . import HELP as HELPS
+from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
+
+NAME = "equilibrium"
+HELP = HELPS[NAME]
+#: Default tail fractions f (as in :data:`sinktheory.equilibrium.law.FRACTIONS`, kept
+#: here so --help does not import the package).
+FRACTIONS = (0.1, 0.2, 0.3, 0.5, 0.8)
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_well_arguments(parser)
+    g = parser.add_argument_group("particles and energy")
+    g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
+    g.add_argument(
+        "--mass",
+        type=number,
+        default=0.2,
+        help="total particle mass m > 0 (default 0.2; validated, but the law does not depend "
+        "on it)",
+    )
+    g.add_argument(
+        "--energy",
+        type=number,
+        default=0.5,
+        help="total energy E > 0 (default 0.5; a run's E0 plus the particles' initial "
+        "potential energy)",
+    )
+    g.add_argument(
+        "--fraction",
+        type=number,
+        nargs="+",
+        default=list(FRACTIONS),
+        metavar="F",
+        help="fractions f in (0, 1) for the tails P(E_c >= f E) and Kac's return times "
+        f"(default {' '.join(map(str, FRACTIONS))})",
+    )
+    parser.add_argument("--plot", metavar="FILE.png", help="draw the density of E_c / E")
+    add_json(parser)
+
+
+def run(args: argparse.Namespace) -> Output:
+    from ..equilibrium import equilibrium_law
+    from ..equilibrium.law import check_fractions
+    from ..model import Sink
+
+    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    fractions = check_fractions(args.fraction)
+    plot = png_path("plot", args.plot)
+    law = equilibrium_law(sink, args.energy)
+    s = law.summary(fractions=fractions)
+    data = s.as_dict()
+    del data["s"], data["pdf"], data["cdf"], data["law"]["log_density"]
+    lines = [
+        f"equilibrium law of E_c: {law.shape} well alpha={law.alpha:g} beta={law.beta:g} "
+        f"n={law.n} gamma={law.gamma:g}, k={law.particles}, total energy E={law.energy:g}",
+        f"  <E_c>                 {law.mean:.10g}  ({law.mean_fraction:.6g} of E)",
+        f"  homogeneous estimate  {law.homogeneous_mean:.10g}  (E / (1 + k (1 + 1/n)))",
+        "  quantiles of E_c      "
+        + ", ".join(f"{p:g}: {q:.6g}" for p, q in zip(s.levels, s.quantiles, strict=True)),
+        "  f       P(E_c >= f E)    Kac mean return time (periods T)",
+    ]
+    for f, p, kac in zip(s.fractions, s.tails, s.kac_periods, strict=True):
+        lines.append(f"  {f:<6g}  {p:<15.6g}  {kac:.6g}")
+    out = Output(data, "\n".join(lines))
+    if plot is not None:
+        from ..plot.equilibrium import plot_law
+
+        fig = plot_law(s)
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        data["plot"] = str(plot)
+    return out
