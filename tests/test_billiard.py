@@ -257,7 +257,7 @@ def test_small_mass_limit_is_the_fixed_billiard():
     K.run_fixed(p1, v1, np.zeros((2, 0, 4)), 1, 2 * math.pi, *_arrays(t))
     p2, v2 = pos.copy(), vel.copy()
     shadow = (np.zeros((0, 2)), np.zeros((0, 1, 2)), np.zeros((0, 1, 2)))
-    K.run_moving(np.zeros((2, 2)), p2, v2, 1e-12, 1, 2 * math.pi, *_arrays(t), shadow, 1e-9)
+    K.run_moving(np.zeros((2, 2)), p2, v2, 1e-12, 1, 2 * math.pi, *_arrays(t), shadow, 1e-9, 1)
     np.testing.assert_allclose(p2, p1, atol=1e-4)
     np.testing.assert_allclose(v2, v1, atol=1e-4)
     # and the statistics: mean free time and lambda_1 agree with the fixed table's

@@ -335,17 +335,20 @@ def _distance(c1, p1, v1, c2, p2, v2):
 
 @numba.njit(cache=True)
 def run_moving(
-    cont, pos, vel, mu, periods, period, kinds, coef, cap, hneg, gx, eps, reach, shadow, d0
-):
+    cont, pos, vel, mu, periods, period, kinds, coef, cap, hneg, gx, eps, reach, shadow, d0,
+    renorm,
+):  # fmt: skip
     """Moving container, R runs: cont (R, 2), pos, vel (R, k, 2).  ``shadow`` is a tuple
     (cont, pos, vel) of nearby copies (R = 0 rows: no Lyapunov exponent), pulled back to
-    distance d0 from their run at every period (two-trajectory method).
+    distance d0 from their run ``renorm`` times a period (two-trajectory method: often
+    enough that the pair stays close and its impacts nearly simultaneous).
 
     Returns (container energy (R, periods + 1), total energy (R, periods + 1), hits
     (R, walls), logs (R, periods + 1), status (R,), where (R, 2))."""
     R = pos.shape[0]
     sc, sp, sv = shadow
     lyap = sc.shape[0] > 0
+    chunks = renorm if lyap else 1
     ec = np.zeros((R, periods + 1))
     et = np.zeros((R, periods + 1))
     hits = np.zeros((R, kinds.shape[0]), dtype=np.int64)
@@ -356,27 +359,31 @@ def run_moving(
     for r in range(R):
         ec[r, 0], et[r, 0] = energies(cont[r], vel[r], mu)
         for p in range(periods):
-            st, j, t = advance_moving(
-                cont[r], pos[r], vel[r], mu, period, kinds, coef, cap, hneg, gx, eps, reach,
-                hits[r],
-            )  # fmt: skip
-            if st == OK and lyap:
+            logs[r, p + 1] = logs[r, p]
+            st = OK
+            for c in range(chunks):
                 st, j, t = advance_moving(
-                    sc[r], sp[r], sv[r], mu, period, kinds, coef, cap, hneg, gx, eps, reach,
-                    spare,
+                    cont[r], pos[r], vel[r], mu, period / chunks, kinds, coef, cap, hneg, gx,
+                    eps, reach, hits[r],
                 )  # fmt: skip
+                if st == OK and lyap:
+                    st, j, t = advance_moving(
+                        sc[r], sp[r], sv[r], mu, period / chunks, kinds, coef, cap, hneg, gx,
+                        eps, reach, spare,
+                    )  # fmt: skip
+                if st != OK:
+                    status[r] = st
+                    where[r, 0] = j
+                    where[r, 1] = (p + c / chunks) * period + t
+                    break
+                if lyap:
+                    d = _distance(cont[r], pos[r], vel[r], sc[r], sp[r], sv[r])
+                    logs[r, p + 1] += math.log(d / d0)
+                    f = d0 / d
+                    sc[r] = cont[r] + (sc[r] - cont[r]) * f
+                    sp[r] = pos[r] + (sp[r] - pos[r]) * f
+                    sv[r] = vel[r] + (sv[r] - vel[r]) * f
             if st != OK:
-                status[r] = st
-                where[r, 0] = j
-                where[r, 1] = p * period + t
                 break
             ec[r, p + 1], et[r, p + 1] = energies(cont[r], vel[r], mu)
-            logs[r, p + 1] = logs[r, p]
-            if lyap:
-                d = _distance(cont[r], pos[r], vel[r], sc[r], sp[r], sv[r])
-                logs[r, p + 1] += math.log(d / d0)
-                f = d0 / d
-                sc[r] = cont[r] + (sc[r] - cont[r]) * f
-                sp[r] = pos[r] + (sp[r] - pos[r]) * f
-                sv[r] = vel[r] + (sv[r] - vel[r]) * f
     return ec, et, hits, logs, status, where

@@ -5,9 +5,11 @@ T = 2 pi; particles of mass mu = m / k.  Positions are relative to the container
 velocities absolute (as in :mod:`sinktheory.layout`).
 
 * Moving container (the sink): the container starts at X = sqrt(2 E0) at rest and the
-  particles at rest at the seeded random positions of :func:`sinktheory.simulate.random_positions`,
-  exactly as ``sinktheory simulate`` starts its runs, but with rigid walls.  lambda_1 by
-  two nearby trajectories (distance d0 in the full phase space, pulled back every period).
+  particles at rest at the seeded random positions of
+  :func:`sinktheory.simulate.random_positions`, exactly as ``sinktheory simulate`` starts
+  its runs, but with rigid walls.  lambda_1 by two nearby trajectories (distance
+  :data:`SHADOW_DISTANCE` in the full phase space, pulled back :data:`RENORMALISATIONS`
+  times a period).
 * Fixed container: the table does not move; each particle starts at the same positions
   with energy E0 / k in a seeded random direction.  lambda_1 by the billiard tangent map
   (exact linearisation of flights and reflections, renormalised every period).
@@ -43,6 +45,10 @@ from .table import Table, rigid_table
 ENERGY_BOUND = 1e-10
 #: Initial distance of the shadow trajectory (two-trajectory lambda_1, moving container).
 SHADOW_DISTANCE = 1e-9
+#: Renormalisations of the shadow trajectory per period: with lambda_1 up to ~5 per unit
+#: time the pair separates by at most e^(5 T / 32) ~ 3 between them, so the two
+#: trajectories' impacts stay within ~1e-8 time units of each other.
+RENORMALISATIONS = 32
 PERIOD = 2 * math.pi
 
 
@@ -228,11 +234,29 @@ def simulate_billiard(
             shadow = (np.zeros((0, 2)), np.zeros((0, k, 2)), np.zeros((0, k, 2)))
         if discard:
             *_, status, where = K.run_moving(
-                cont, pos, vel, mu, discard, PERIOD, *arrays, shadow, SHADOW_DISTANCE
+                cont,
+                pos,
+                vel,
+                mu,
+                discard,
+                PERIOD,
+                *arrays,
+                shadow,
+                SHADOW_DISTANCE,
+                RENORMALISATIONS,
             )
             _raise_status(status, where, "moving billiard (discarded periods)")
         cont_e, total, hits, logs, status, where = K.run_moving(
-            cont, pos, vel, mu, periods, PERIOD, *arrays, shadow, SHADOW_DISTANCE
+            cont,
+            pos,
+            vel,
+            mu,
+            periods,
+            PERIOD,
+            *arrays,
+            shadow,
+            SHADOW_DISTANCE,
+            RENORMALISATIONS,
         )
         _raise_status(status, where, "moving billiard")
         method = "two trajectories"
