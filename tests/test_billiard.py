@@ -16,7 +16,9 @@ from scipy.special import zeta
 
 from sinktheory import symbolic as S
 from sinktheory.billiard import (
+    Piece,
     billiard,
+    polynomial_table,
     rigid_table,
     simulate_billiard,
     sinai_table,
@@ -273,3 +275,35 @@ def test_small_mass_limit_is_the_fixed_billiard():
 
 def _arrays(t):
     return t.kinds, t.coef, t.cap, t.hneg, t.gx, t.eps, t.reach
+
+
+def _hexagon_lorentz_table(spacing):
+    # regular hexagon (flat top, apothem spacing / 2) with a unit disk at its centre;
+    # mirror images across its sides tile the plane, so this is the triangular Lorentz
+    # gas with nearest disks ``spacing`` apart (flat reflections leave the exponent alone)
+    s = spacing / math.sqrt(3)  # circumradius
+    h = spacing / 2
+    z = sp.Symbol("z")
+    r3 = sp.sqrt(3)
+    pieces = [Piece("y", g, sp.Float(h) + 0 * z, -s / 2, s / 2) for g in (1, -1)]
+    pieces += [Piece("y", g, r3 * (s - z), s / 2, s) for g in (1, -1)]
+    pieces += [Piece("y", g, r3 * (s + z), -s, -s / 2) for g in (1, -1)]
+    pieces += [Piece("x", g, sp.sqrt((1 - z) * (1 + z)), -1, 1, hole=True) for g in (1, -1)]
+    walls = [h**2 - S.y**2]
+    walls += [h**2 - (r3 / 2 * S.x + sg * S.y / 2) ** 2 for sg in (1, -1)]
+    walls += [S.x**2 + S.y**2 - 1]
+    return polynomial_table("hexagonal Lorentz gas", walls, pieces, symbol=z)
+
+
+@pytest.mark.parametrize("spacing,expected", [(2.5, 1.4), (3.0, 0.8), (4.0, 0.5)])
+def test_lorentz_gas_exponent_published_values(spacing, expected):
+    # lambda_1 per unit time (unit speed) of the triangular periodic Lorentz gas with unit
+    # disks: the values DynamicalBilliards.jl tests against (test/lyapunov.jl, "based on
+    # Gaspard et al", i.e. P. Gaspard and F. Baras, Phys. Rev. E 51, 5332 (1995)), with
+    # its tolerance 0.1.  The table's area is checked against the closed form first.
+    t = _hexagon_lorentz_table(spacing)
+    assert t.area == pytest.approx(math.sqrt(3) / 2 * spacing**2 - math.pi, rel=1e-10)
+    runs = 4
+    start = _start(runs, 0.0, 0.5 * (1 + spacing / 2))  # between the disk and the top
+    r = simulate_billiard(t, start, _unit_directions(runs), periods=500, lyapunov=True)
+    assert r.lambda1.mean() == pytest.approx(expected, abs=0.1)

@@ -8,13 +8,15 @@ ensembles and their :class:`~sinktheory.results.Result`.
 """
 
 from .run import BilliardResult, RigidLimit, billiard, rigid_limit, simulate_billiard
-from .table import Table, rigid_table, sinai_table, stadium_table
+from .table import Piece, Table, polynomial_table, rigid_table, sinai_table, stadium_table
 
 __all__ = [
     "BilliardResult",
+    "Piece",
     "RigidLimit",
     "Table",
     "billiard",
+    "polynomial_table",
     "rigid_limit",
     "rigid_table",
     "simulate_billiard",

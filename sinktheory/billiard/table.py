@@ -411,8 +411,38 @@ def sinai_table(radius: float) -> Table:
     pieces = [Piece(a, sg, h + 0 * _s, -0.5, 0.5) for a in "xy" for sg in (1, -1)]
     pieces += [Piece("x", sg, disk, -r, r, hole=True) for sg in (1, -1)]
     walls = [h**2 - S.x**2, h**2 - S.y**2, S.x**2 + S.y**2 - r**2]
+    return polynomial_table("sinai", walls, pieces, {"radius": r})
+
+
+def polynomial_table(
+    name: str, walls, pieces, parameters: dict | None = None, *, symbol: sp.Symbol = _s
+) -> Table:
+    """A table from wall functions and boundary pieces given by the caller.
+
+    Parameters
+    ----------
+    walls : SymPy polynomials in :data:`sinktheory.symbolic.x`, ``y``, >= 0 inside, each
+        vanishing on its part of the boundary (e.g. 1/4 - x**2 for the walls x = +-1/2)
+    pieces : the boundary as :class:`Piece` graphs in ``symbol`` (for area, perimeter,
+        curvature and drawing); they must close
+    parameters : recorded with the table
+
+    Examples
+    --------
+    >>> s = sp.Symbol("s")
+    >>> sq = [Piece(a, g, sp.Integer(1) + 0 * s, -1, 1) for a in "xy" for g in (1, -1)]
+    >>> t = polynomial_table("square", [1 - S.x**2, 1 - S.y**2], sq, symbol=s)
+    >>> round(t.area, 12), round(t.perimeter, 12)
+    (4.0, 8.0)
+    """
+    pieces = [Piece(p.axis, p.sign, p.expr.subs(symbol, _s), p.lo, p.hi, p.hole) for p in pieces]
     coefs = [_coef_array(*_coefficients(f)) for f in walls]
-    return _assemble("sinai", {"radius": r}, pieces, [POLYNOMIAL] * 3, coefs, np.zeros((3, 2)))
+    table = _assemble(
+        name, parameters or {}, pieces, [POLYNOMIAL] * len(coefs), coefs,
+        np.zeros((len(coefs), 2)),
+    )  # fmt: skip
+    _check_closed(table, "pieces", f"{len(pieces)} pieces", "a closed boundary")
+    return table
 
 
 def stadium_table(half_length: float, radius: float) -> Table:
