@@ -30,6 +30,8 @@ HELP = {
     "moving container",
     "equilibrium": "exact equilibrium law of the container energy: mean, quantiles, tails, "
     "Kac return times",
+    "lifetime": "measured return times of the container energy against Kac's prediction from "
+    "the equilibrium law",
     "sweep": "parameter sweep (floquet, bifurcation, ensemble) into a resumable Zarr store",
 }
 NAMES = tuple(HELP)
