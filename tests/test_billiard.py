@@ -151,7 +151,7 @@ def test_circle_conserves_angular_momentum():
     pos = np.array([[[0.05, 0.02]]])
     vel = np.array([[[0.6, 0.8]]])
     ell = pos[0, 0, 0] * vel[0, 0, 1] - pos[0, 0, 1] * vel[0, 0, 0]
-    hits, _, status, _ = K.run_fixed(
+    hits, _, _, status, _ = K.run_fixed(
         pos, vel, np.zeros((1, 0, 4)), 500, 2 * math.pi, t.kinds, t.coef, t.cap, t.hneg, t.gx,
         t.eps, t.reach,
     )  # fmt: skip

@@ -302,13 +302,16 @@ def run_fixed(pos, vel, tan, periods, period, kinds, coef, cap, hneg, gx, eps, r
     """Fixed container, R runs (pos, vel (R, k, 2); tan (R, k, 4) or (R, 0, 4)).
 
     Returns (hits (R, walls), logs (R, periods + 1) accumulated log growth of the
-    deviation vector (renormalised every period), status (R,), where (R, 2))."""
+    deviation vector (renormalised every period), sum of |v|^2 over the particles
+    (R, periods + 1), status (R,), where (R, 2))."""
     R = pos.shape[0]
     hits = np.zeros((R, kinds.shape[0]), dtype=np.int64)
     logs = np.zeros((R, periods + 1))
+    v2 = np.zeros((R, periods + 1))
     status = np.zeros(R, dtype=np.int64)
     where = np.zeros((R, 2))
     for r in range(R):
+        v2[r, 0] = np.sum(vel[r] ** 2)
         for p in range(periods):
             st, j, t = advance_fixed(
                 pos[r], vel[r], tan[r], period, kinds, coef, cap, hneg, gx, eps, reach, hits[r]
@@ -318,12 +321,13 @@ def run_fixed(pos, vel, tan, periods, period, kinds, coef, cap, hneg, gx, eps, r
                 where[r, 0] = j
                 where[r, 1] = p * period + t
                 break
+            v2[r, p + 1] = np.sum(vel[r] ** 2)
             logs[r, p + 1] = logs[r, p]
             if tan.shape[1] > 0:
                 norm = math.sqrt(np.sum(tan[r] ** 2))
                 logs[r, p + 1] += math.log(norm)
                 tan[r] /= norm
-    return hits, logs, status, where
+    return hits, logs, v2, status, where
 
 
 @numba.njit(cache=True)

@@ -206,16 +206,13 @@ def simulate_billiard(
         tan = rng.normal(size=(R, k, 4)) if lyapunov else np.zeros((R, 0, 4))
         if lyapunov:
             tan /= np.sqrt((tan**2).sum(axis=(1, 2)))[:, None, None]
-        e = 0.5 * mu * (vel**2).sum(axis=(1, 2))
         if discard:
-            _, _, status, where = K.run_fixed(pos, vel, tan, discard, PERIOD, *arrays)
+            *_, status, where = K.run_fixed(pos, vel, tan, discard, PERIOD, *arrays)
             _raise_status(status, where, "fixed billiard (discarded periods)")
-            e = 0.5 * mu * (vel**2).sum(axis=(1, 2))
-        hits, logs, status, where = K.run_fixed(pos, vel, tan, periods, PERIOD, *arrays)
+        hits, logs, v2, status, where = K.run_fixed(pos, vel, tan, periods, PERIOD, *arrays)
         _raise_status(status, where, "fixed billiard")
         cont_e = np.zeros((R, periods + 1))
-        total = np.repeat(e[:, None], periods + 1, axis=1)
-        total[:, -1] = 0.5 * mu * (vel**2).sum(axis=(1, 2))
+        total = 0.5 * mu * v2
         method = "tangent map"
     else:
         cont = np.array(real_array("container", container), dtype=float)
