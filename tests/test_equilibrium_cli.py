@@ -58,3 +58,39 @@ def test_bad_input_one_line_exit_2_nothing_written(argv, name, tmp_path, capsys)
     assert code == 2 and out == ""
     assert err.count("\n") == 1 and f"error: {name} = " in err
     assert not png.exists() and list(tmp_path.iterdir()) == []
+
+
+LIFE = ["lifetime", "--alpha", "0.5", "--beta", "0.3", "--n", "4"]
+
+
+def test_lifetime_cli_equals_api(tmp_path, capsys):
+    from sinktheory import RunSettings
+    from sinktheory.equilibrium.lifetime import measure_lifetimes
+
+    png = tmp_path / "life.png"
+    argv = [*LIFE, "--runs", "2", "--periods", "60", "--transient", "20", "--fraction", "0.5"]
+    code, out, err = run([*argv, "--json", "--plot", str(png)], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    c, _ = measure_lifetimes(
+        Sink(Well(0.5, 0.3, 4)), RunSettings(runs=2, periods=60), transient=20, fractions=[0.5]
+    )
+    assert data["mean"] == c.mean and data["ks_distance"] == c.ks_distance
+    assert data["kac_periods"] == c.kac_periods.tolist() and data["samples"] == 41
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.parametrize(
+    "argv,name",
+    [
+        ([*LIFE, "--runs", "1"], "runs"),
+        ([*LIFE, "--periods", "50", "--transient", "50"], "transient"),
+        ([*LIFE, "--fraction", "1.0"], "fraction"),
+        ([*LIFE, "--particles", "0"], "particles"),
+    ],
+)
+def test_lifetime_bad_input(argv, name, tmp_path, capsys):
+    png = tmp_path / "life.png"
+    code, out, err = run([*argv, "--plot", str(png)], capsys)
+    assert code == 2 and out == "" and err.count("\n") == 1 and f"error: {name} = " in err
+    assert list(tmp_path.iterdir()) == []

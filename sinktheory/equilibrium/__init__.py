@@ -4,18 +4,25 @@
   shape (closed forms and a quadrature over the basin's edge);
 * :mod:`~sinktheory.equilibrium.law` -- the law of E_c on the energy shell from the k-fold
   convolution of the particles' density of states: density, distribution, mean,
-  quantiles, tails and Kac's mean return times.
+  quantiles, tails and Kac's mean return times;
+* :mod:`~sinktheory.equilibrium.lifetime` -- measured return times, sojourns, entry
+  intervals, autocorrelation times and a run-bootstrap KS comparison of simulated runs
+  with the law.
 """
 
 from .area import area, area_quadrature, area_ratio, scaled_energy
 from .law import EquilibriumLaw, EquilibriumSummary, equilibrium_law
+from .lifetime import LawComparison, compare_with_law, measure_lifetimes
 
 __all__ = [
     "EquilibriumLaw",
     "EquilibriumSummary",
+    "LawComparison",
     "area",
     "area_quadrature",
     "area_ratio",
+    "compare_with_law",
     "equilibrium_law",
+    "measure_lifetimes",
     "scaled_energy",
 ]

@@ -1,0 +1,123 @@
+"""``sinktheory lifetime``: measured return times of the container energy against Kac's
+prediction from the equilibrium law, and the runs' distribution against the law."""
+
+from __future__ import annotations
+
+import argparse
+
+from . import HELP as HELPS
+from ._common import (
+    Output,
+    add_json,
+    add_sink_arguments,
+    add_well_arguments,
+    number,
+    png_path,
+    well_from_args,
+)
+
+NAME = "lifetime"
+HELP = HELPS[NAME]
+#: Default fractions f for the sets {E_c >= f E}.
+FRACTIONS = (0.2, 0.5, 0.8)
+#: Particle numbers of the lifetime chart's predicted lines.
+CHART_PARTICLES = (1, 2, 3, 4, 5)
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_well_arguments(parser)
+    g = add_sink_arguments(parser, runs_default=8, runs_help="independent runs >= 2 (default 8)")
+    g.add_argument(
+        "--transient",
+        type=number,
+        default=None,
+        help="periods skipped before sampling (default: a third of --periods)",
+    )
+    g.add_argument(
+        "--fraction",
+        type=number,
+        nargs="+",
+        default=list(FRACTIONS),
+        metavar="F",
+        help="fractions f in (0, 1) of the sets {E_c >= f E} (default 0.2 0.5 0.8)",
+    )
+    g.add_argument(
+        "--tol",
+        type=number,
+        default=None,
+        help="relative total-energy error wanted (default 1e-8; see 'simulate')",
+    )
+    parser.add_argument(
+        "--plot",
+        metavar="FILE.png",
+        help="lifetime chart: Kac's return time against f for k = 1..5, measured points",
+    )
+    add_json(parser)
+
+
+def run(args: argparse.Namespace) -> Output:
+    import numpy as np
+
+    from .. import validation as v
+    from ..equilibrium import equilibrium_law
+    from ..equilibrium.law import check_fractions
+    from ..equilibrium.lifetime import measure_lifetimes
+    from ..model import RunSettings, Sink
+
+    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    v.positive_int("runs", settings.runs, minimum=2)
+    periods = settings.periods
+    transient = periods // 3 if args.transient is None else args.transient
+    v.positive_int("transient", transient, minimum=0, maximum=periods - 4)
+    fractions = check_fractions(args.fraction)
+    plot = png_path("plot", args.plot)
+    settings.check(sink)
+    c, sim = measure_lifetimes(
+        sink, settings, transient=transient, fractions=fractions, tol=args.tol
+    )
+    law = c.law
+    data = c.as_dict()
+    del data["law"]["log_density"]
+    data["simulation"] = sim.message
+    lines = [
+        f"{sink.well.shape} well alpha={law.alpha:g} beta={law.beta:g} n={law.n}, "
+        f"k={law.particles}, m={sink.mass:g}, E0={settings.energy:g} (total E={law.energy:.6g})",
+        f"  {sim.message}",
+        f"  kept {c.runs} runs x {c.samples} periods after {c.transient}; autocorrelation time "
+        f"{c.autocorrelation_time:.3g} periods ({c.effective_samples:.3g} effective samples)",
+        f"  <E_c>  measured {c.mean:.6g} +- {c.mean_stderr:.2g}, law {law.mean:.6g}, "
+        f"homogeneous estimate {law.homogeneous_mean:.6g}",
+        f"  KS distance to the law {c.ks_distance:.3g}, run-bootstrap p-value {c.ks_pvalue:.3g}",
+        "  f      P law       occupation        return time: Kac   measured          "
+        "entry interval: measured  (sojourn / P)",
+    ]
+    for i, f in enumerate(c.fractions):
+        lines.append(
+            f"  {f:<5g}  {c.tails[i]:<10.4g}"
+            f"  {c.occupation[i]:.4g} +- {c.occupation_stderr[i]:<6.2g}"
+            f"  {c.kac_periods[i]:<9.4g}  {c.return_time[i]:.4g} +- {c.return_time_stderr[i]:<6.2g}"
+            f"  {c.entry_interval[i]:.4g} +- {c.entry_interval_stderr[i]:<6.2g}"
+            f"  ({c.entry_interval_predicted[i]:.4g})"
+        )
+    out = Output(data, "\n".join(lines))
+    if plot is not None:
+        from ..plot.equilibrium import plot_lifetimes
+
+        grid = np.linspace(0.05, 0.95, 19)
+        ks = sorted({*CHART_PARTICLES, sink.particles})
+        predicted = [
+            equilibrium_law(Sink(sink.well, particles=k, mass=sink.mass), law.energy).kac_periods(
+                grid
+            )
+            for k in ks
+        ]
+        measured = [
+            (sink.particles, f, c.return_time[i], c.return_time_stderr[i])
+            for i, f in enumerate(c.fractions)
+            if np.isfinite(c.return_time[i])
+        ]
+        fig = plot_lifetimes(grid, ks, predicted, measured)
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        data["plot"] = str(plot)
+    return out

@@ -1,0 +1,380 @@
+"""Measured against predicted: how long the container stays drained, and whether the
+runs reach the equilibrium law.
+
+Which return time
+-----------------
+Sample the container energy once per period, s_j = E_c(jT) / E, and let A = {s >= f}.
+For the period map, which preserves the microcanonical measure, Kac's lemma says that
+points of A come back to A after a mean of
+
+    tau_Kac = 1 / P(A)   periods,
+
+P(A) = P(E_c >= f E) from the law (:meth:`EquilibriumLaw.tail`) -- if the map is ergodic.
+The matching measurement is the **mean return time of visits**: over every period j with
+s_j in A, the number of periods until the next visit (consecutive visits of a run; the
+ratio of their total span to their number).  Kac's lemma is an identity about these
+returns, so comparing them with 1/P tests that the runs sample the law's tail, i.e. that
+the motion is ergodic with the law as its invariant measure.
+
+A different time is the **lifetime of the drained state**: the mean time between
+*entries* into A (from outside), that is, how often the container recovers a fraction
+f of the energy.  Kac's lemma applied to the entry set gives
+tau_entry = sigma / P(A), sigma the mean sojourn (consecutive periods spent in A per
+visit), which depends on the dynamics, not on the law alone.  Both are reported:
+``entry_interval`` measured, and ``entry_interval_predicted`` = measured sigma / P(A).
+When visits are rare (k = 5, f = 0.8: 1/P ~ 4e4 periods) runs cannot observe returns;
+the law's 1/P is then the prediction and the measured values are NaN (fewer than two
+visits in every run).
+
+Statistical errors
+------------------
+Runs start from independent positions, so they are independent replicates: every
+measured ratio (return time = total gap / number of gaps, sojourn, entry interval,
+occupation) is pooled over runs and its standard error is the delete-one-run jackknife,
+which accounts for any autocorrelation inside a run.  The distribution of the late-time
+samples is compared with the law by the Kolmogorov-Smirnov distance D = sup |F_hat - F|
+of the pooled sample, whose null distribution is estimated by resampling whole runs
+(bootstrap of D* = sup |F_hat* - F_hat|), again with the autocorrelation left inside
+each run.  The integrated autocorrelation time of E_c (Sokal's automatic window) is
+reported with the effective number of samples it implies.
+
+Examples
+--------
+>>> rng = np.random.default_rng(1)
+>>> inside = rng.random((4, 20000)) < 0.25  # independent draws: returns are geometric
+>>> v = visit_statistics(inside)
+>>> round(v.return_time[0], 1), round(v.occupation[0], 2)
+(4.0, 0.25)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import validation as v
+from ..errors import ParameterError
+from ..results import Result
+from .law import EquilibriumLaw, check_fractions
+
+#: Bootstrap resamples of whole runs for the p-value of the KS distance.
+BOOTSTRAP = 999
+#: Points of the grid (equally spaced in the law's probability) where the empirical and
+#: the law's distribution functions are compared.
+KS_GRID = 2001
+#: Sokal's window constant: the autocorrelation sum stops at the first lag W >= C tau(W).
+SOKAL_C = 6.0
+
+
+def jackknife_ratio(numerators, denominators) -> tuple[float, float]:
+    """sum(numerators) / sum(denominators) and its delete-one-group jackknife standard
+    error (groups = runs; NaN when fewer than two groups have a denominator > 0).
+
+    Examples
+    --------
+    >>> value, se = jackknife_ratio([2.0, 4.0, 6.0], [1.0, 2.0, 3.0])
+    >>> value, se
+    (2.0, 0.0)
+    """
+    num = np.asarray(numerators, dtype=float)
+    den = np.asarray(denominators, dtype=float)
+    total_den = den.sum()
+    if total_den <= 0:
+        return math.nan, math.nan
+    value = float(num.sum() / total_den)
+    used = den > 0
+    g = int(used.sum())
+    if g < 2:
+        return value, math.nan
+    num, den = num[used], den[used]
+    loo = (num.sum() - num) / (den.sum() - den)
+    return value, float(math.sqrt((g - 1) / g * np.sum((loo - loo.mean()) ** 2)))
+
+
+@dataclass(frozen=True)
+class VisitStatistics(Result):
+    """Visits of period-sampled runs to a set A, pooled over runs with jackknife errors.
+
+    Each field is (value, standard error); times are in sampling periods.
+
+    Attributes
+    ----------
+    occupation : fraction of samples in A
+    return_time : mean number of periods from a visit to the next visit (Kac: 1 / P(A))
+    sojourn : mean length of a stay in A (consecutive visits)
+    entry_interval : mean number of periods between entries into A from outside
+    entries : number of entries counted, over all runs
+    """
+
+    occupation: tuple[float, float]
+    return_time: tuple[float, float]
+    sojourn: tuple[float, float]
+    entry_interval: tuple[float, float]
+    entries: int
+
+
+def visit_statistics(inside) -> VisitStatistics:
+    """Visit, return, sojourn and entry statistics of a boolean array (runs, samples).
+
+    Examples
+    --------
+    >>> v = visit_statistics([[True, False, False, True, True, False, True]])
+    >>> v.return_time[0], v.sojourn[0], v.entry_interval[0], v.entries
+    (2.0, 2.0, 3.0, 2)
+    """
+    a = np.asarray(inside, dtype=bool)
+    if a.ndim == 1:
+        a = a[None, :]
+    if a.ndim != 2 or a.shape[1] < 2:
+        raise ParameterError("inside", f"an array of shape {a.shape}", "shape (runs, samples >= 2)")
+    gap_sum, gap_n, stay_sum, stay_n, entry_sum, entry_n = (np.zeros(a.shape[0]) for _ in range(6))
+    for r, row in enumerate(a):
+        visits = np.flatnonzero(row)
+        if visits.size >= 2:
+            gap_sum[r], gap_n[r] = visits[-1] - visits[0], visits.size - 1
+        starts = np.flatnonzero(row & ~np.r_[False, row[:-1]])
+        ends = np.flatnonzero(row & ~np.r_[row[1:], False])
+        complete = (starts > 0) & (ends < row.size - 1)  # stays seen from entry to exit
+        stay_sum[r], stay_n[r] = np.sum(ends[complete] - starts[complete] + 1), complete.sum()
+        entered = starts[starts > 0]  # an entry is seen when the run was outside before it
+        if entered.size >= 2:
+            entry_sum[r], entry_n[r] = entered[-1] - entered[0], entered.size - 1
+    ones = np.ones(a.shape[0])
+    return VisitStatistics(
+        occupation=jackknife_ratio(a.mean(axis=1), ones),
+        return_time=jackknife_ratio(gap_sum, gap_n),
+        sojourn=jackknife_ratio(stay_sum, stay_n),
+        entry_interval=jackknife_ratio(entry_sum, entry_n),
+        entries=int(sum(np.count_nonzero((row & ~np.r_[False, row[:-1]])[1:]) for row in a)),
+    )
+
+
+def autocorrelation_time(series) -> tuple[float, int]:
+    """Integrated autocorrelation time tau = 1 + 2 sum_{l=1}^{W} rho(l) of runs (R, P)
+    (rho pooled over runs around the grand mean, by FFT) with Sokal's window: the first
+    W >= SOKAL_C tau(W).  Returns (tau, W); tau is in samples (periods).  A run shorter
+    than the window needed gives the value at the longest window, which then
+    underestimates tau.
+
+    Examples
+    --------
+    >>> rng = np.random.default_rng(0)
+    >>> x = np.zeros((4, 20000)); e = rng.standard_normal((4, 20000))
+    >>> for j in range(1, 20000): x[:, j] = 0.8 * x[:, j - 1] + e[:, j]
+    >>> tau, window = autocorrelation_time(x)
+    >>> abs(tau / 9.0 - 1) < 0.2  # (1 + 0.8) / (1 - 0.8); statistical error ~6%
+    True
+    """
+    x = v.real_array("series", series)
+    if x.ndim == 1:
+        x = x[None, :]
+    if x.ndim != 2 or x.shape[1] < 4:
+        raise ParameterError("series", f"an array of shape {x.shape}", "shape (runs, samples >= 4)")
+    x = x - x.mean()
+    P = x.shape[1]
+    size = 1 << (2 * P - 1).bit_length()
+    spectrum = np.fft.rfft(x, size, axis=1)
+    acov = np.fft.irfft(spectrum * np.conj(spectrum), size, axis=1)[:, :P].sum(axis=0)
+    acov /= x.shape[0] * np.arange(P, 0, -1)
+    if acov[0] <= 0:
+        return 1.0, 0
+    rho = acov / acov[0]
+    taus = 1 + 2 * np.cumsum(rho[1:])
+    for w in range(1, P - 1):
+        if w >= SOKAL_C * taus[w - 1]:
+            return float(taus[w - 1]), w
+    return float(taus[-1]), P - 1
+
+
+def ks_distance(samples, cdf, *, resamples: int = BOOTSTRAP, seed: int = 0):
+    """KS distance of pooled runs (R, P) from a distribution function ``cdf`` (values to
+    probabilities), and its p-value by resampling whole runs.
+
+    The comparison grid is the pooled sample's quantiles at KS_GRID equal steps of
+    probability (the sup over it misses at most 1/KS_GRID of the exact sup).  Returns
+    (D, p): D = sup |F_hat - F| on the grid, p = (1 + #{D* >= D}) / (1 + B) with
+    D* = sup |F_hat* - F_hat| over B bootstrap ensembles of runs drawn with replacement.
+
+    Examples
+    --------
+    >>> rng = np.random.default_rng(3)
+    >>> d, p = ks_distance(rng.random((8, 500)), lambda s: np.clip(s, 0, 1))
+    >>> bool(d < 0.05), bool(p > 0.01)
+    (True, True)
+    >>> d, p = ks_distance(rng.random((8, 500)) ** 1.3, lambda s: np.clip(s, 0, 1))
+    >>> bool(p < 0.01)
+    True
+    """
+    x = v.real_array("samples", samples)
+    if x.ndim != 2 or x.shape[0] < 2:
+        raise ParameterError(
+            "samples", f"an array of shape {x.shape}", "shape (runs >= 2, samples)"
+        )
+    levels = (np.arange(KS_GRID) + 0.5) / KS_GRID
+    grid = np.quantile(x, levels)
+    per_run = np.stack([np.searchsorted(np.sort(r), grid, side="right") / r.size for r in x])
+    pooled = per_run.mean(axis=0)
+    d = float(np.max(np.abs(pooled - cdf(grid))))
+    rng = np.random.default_rng(seed)
+    picks = rng.integers(0, x.shape[0], size=(resamples, x.shape[0]))
+    stars = np.max(np.abs(per_run[picks].mean(axis=1) - pooled), axis=1)
+    return d, float((1 + np.count_nonzero(stars >= d)) / (1 + resamples))
+
+
+@dataclass(frozen=True)
+class LawComparison(Result):
+    """Late-time samples of E_c against the law (``sinktheory lifetime``).
+
+    Attributes
+    ----------
+    law : EquilibriumLaw at the runs' mean total energy
+    transient, runs, samples : periods skipped, number of runs, periods kept per run
+    mean, mean_stderr : <E_c> over the kept samples, and its error across runs
+    autocorrelation_time, window : integrated autocorrelation time of E_c (periods)
+    effective_samples : runs x samples / autocorrelation_time
+    ks_distance, ks_pvalue : sup |F_hat - F| of E_c / E and its run-bootstrap p-value
+    fractions : f
+    tails : P(E_c >= f E) from the law; ``kac_periods`` = 1 / tails
+    occupation, occupation_stderr : measured fraction of samples with E_c >= f E
+    return_time, return_time_stderr : measured mean return time of visits (periods)
+    sojourn, sojourn_stderr : measured mean stay in the set (periods)
+    entry_interval, entry_interval_stderr : measured mean time between entries (periods)
+    entry_interval_predicted : measured sojourn / law's P (Kac for the entry set)
+    """
+
+    law: EquilibriumLaw
+    transient: int
+    runs: int
+    samples: int
+    mean: float
+    mean_stderr: float
+    autocorrelation_time: float
+    window: int
+    effective_samples: float
+    ks_distance: float
+    ks_pvalue: float
+    fractions: np.ndarray
+    tails: np.ndarray
+    kac_periods: np.ndarray
+    occupation: np.ndarray
+    occupation_stderr: np.ndarray
+    return_time: np.ndarray
+    return_time_stderr: np.ndarray
+    sojourn: np.ndarray
+    sojourn_stderr: np.ndarray
+    entry_interval: np.ndarray
+    entry_interval_stderr: np.ndarray
+    entry_interval_predicted: np.ndarray
+
+    DIMS = {
+        name: ("fraction",)
+        for name in (
+            "fractions tails kac_periods occupation occupation_stderr return_time "
+            "return_time_stderr sojourn sojourn_stderr entry_interval entry_interval_stderr "
+            "entry_interval_predicted"
+        ).split()
+    }
+    COORDS = {"fractions": "fraction"}
+
+    def return_time_z(self) -> np.ndarray:
+        """(measured - Kac) / standard error of each measured mean return time."""
+        return (self.return_time - self.kac_periods) / self.return_time_stderr
+
+
+def compare_with_law(
+    energy_runs, law: EquilibriumLaw, *, transient: int, fractions=(0.2, 0.5, 0.8), seed: int = 0
+) -> LawComparison:
+    """Compare container energies E(jT) of runs (R, P + 1) after ``transient`` periods
+    with ``law`` (module docstring for the statistics).
+
+    Examples
+    --------
+    >>> from sinktheory.model import Sink, Well
+    >>> from sinktheory.equilibrium import equilibrium_law
+    >>> law = equilibrium_law(Sink(Well(0.5, 0.0, 4, shape="circular")), 0.5)
+    >>> rng = np.random.default_rng(2)  # independent draws from the law: Beta(1, 1.25)
+    >>> c = compare_with_law(0.5 * rng.beta(1, 1.25, (6, 4000)), law, transient=0)
+    >>> bool(np.all(np.abs(c.return_time_z()) < 4)), bool(c.ks_pvalue > 0.01)
+    (True, True)
+    """
+    if not isinstance(law, EquilibriumLaw):
+        raise ParameterError("law", law, "an EquilibriumLaw")
+    e = v.real_array("energy_runs", energy_runs)
+    if e.ndim != 2 or e.shape[0] < 2:
+        raise ParameterError(
+            "energy_runs", f"an array of shape {e.shape}", "shape (runs >= 2, P + 1)"
+        )
+    transient = v.positive_int("transient", transient, minimum=0, maximum=e.shape[1] - 4)
+    fractions = check_fractions(fractions)
+    s = e[:, transient:] / law.energy
+    per_run = s.mean(axis=1)
+    tau, window = autocorrelation_time(s)
+    d, p = ks_distance(s, law.cdf, seed=seed)
+    tails = np.atleast_1d(law.tail(fractions))
+    stats = [visit_statistics(s >= f) for f in fractions]
+
+    def column(name: str, i: int) -> np.ndarray:
+        return np.array([getattr(st, name)[i] for st in stats])
+
+    sojourn = column("sojourn", 0)
+    return LawComparison(
+        law=law,
+        transient=transient,
+        runs=s.shape[0],
+        samples=s.shape[1],
+        mean=float(per_run.mean() * law.energy),
+        mean_stderr=float(per_run.std(ddof=1) / math.sqrt(s.shape[0]) * law.energy),
+        autocorrelation_time=tau,
+        window=window,
+        effective_samples=s.size / tau,
+        ks_distance=d,
+        ks_pvalue=p,
+        fractions=fractions,
+        tails=tails,
+        kac_periods=1 / tails,
+        occupation=column("occupation", 0),
+        occupation_stderr=column("occupation", 1),
+        return_time=column("return_time", 0),
+        return_time_stderr=column("return_time", 1),
+        sojourn=sojourn,
+        sojourn_stderr=column("sojourn", 1),
+        entry_interval=column("entry_interval", 0),
+        entry_interval_stderr=column("entry_interval", 1),
+        entry_interval_predicted=sojourn / tails,
+    )
+
+
+def measure_lifetimes(
+    sink,
+    settings,
+    *,
+    transient: int,
+    fractions=(0.2, 0.5, 0.8),
+    tol: float | None = None,
+    progress: bool | None = None,
+) -> tuple[LawComparison, object]:
+    """Simulate ``settings.runs`` runs of ``sink`` (:func:`sinktheory.simulate.simulate`)
+    and compare their E_c after ``transient`` periods with the law at the runs' mean
+    total energy.  Returns (comparison, simulation result).
+
+    Examples
+    --------
+    >>> from sinktheory import RunSettings, Sink, Well
+    >>> c, sim = measure_lifetimes(Sink(Well(0.5, 0.3, 4)), RunSettings(runs=2, periods=60),
+    ...                            transient=20, fractions=[0.5], progress=False)
+    >>> c.samples, c.runs, round(c.law.energy, 6)
+    (41, 2, 0.5)
+    """
+    from ..equilibrium import equilibrium_law
+    from ..simulate import simulate
+
+    settings.check(sink)
+    v.positive_int("transient", transient, minimum=0, maximum=settings.periods - 4)
+    fractions = check_fractions(fractions)
+    sim = simulate(sink, settings, tol=tol, progress=progress)
+    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
+    return compare_with_law(
+        sim.container_energy, law, transient=transient, fractions=fractions, seed=settings.seed
+    ), sim

@@ -1,0 +1,128 @@
+"""Return times, sojourns, autocorrelation times and the KS comparison, first on processes
+whose answers are known exactly, then on the Fig. 8 set-up against the law (Kac)."""
+
+import math
+
+import numpy as np
+import pytest
+from scipy import signal, stats
+
+from sinktheory import RunSettings, Sink, Well
+from sinktheory.equilibrium import equilibrium_law
+from sinktheory.equilibrium.lifetime import (
+    autocorrelation_time,
+    compare_with_law,
+    jackknife_ratio,
+    ks_distance,
+    measure_lifetimes,
+    visit_statistics,
+)
+from sinktheory.errors import ParameterError
+
+
+def test_kac_on_an_irrational_rotation():
+    # x -> x + omega mod 1 preserves Lebesgue measure and is ergodic; Kac: points of
+    # A = [0, p) return after 1/p steps on average.  Along one orbit of N points the
+    # visits' mean return time differs from 1/p by O(log N / N) (bounded discrepancy).
+    omega = (math.sqrt(5) - 1) / 2
+    N = 1_000_000
+    x = (0.1 + omega * np.arange(N)) % 1.0
+    for p in (0.5, 0.1, 0.013):
+        v = visit_statistics((x < p)[None, :])
+        assert v.return_time[0] == pytest.approx(1 / p, rel=2e-3)
+
+
+def markov_runs(a, b, runs, steps, rng):
+    """Two-state chain: P(in -> in) = a, P(out -> in) = b, started from its stationary law."""
+    u = rng.random((runs, steps))
+    inside = np.empty((runs, steps), dtype=bool)
+    inside[:, 0] = rng.random(runs) < b / (1 - a + b)
+    for j in range(1, steps):
+        inside[:, j] = np.where(inside[:, j - 1], u[:, j] < a, u[:, j] < b)
+    return inside
+
+
+def test_visits_of_a_markov_chain_and_their_errors():
+    # exact: pi = b / (1 - a + b), return time 1 / pi (Kac), sojourn 1 / (1 - a),
+    # entry interval sojourn / pi = 1 / (1 - a) + 1 / b.  The jackknife errors are
+    # checked by the spread of z over 40 independent ensembles: with 8 runs z is close to
+    # Student's t with 7 degrees of freedom, std sqrt(7/5) = 1.18 (200 ensembles gave
+    # 1.17-1.19).
+    a, b = 0.7, 0.1
+    pi = b / (1 - a + b)
+    exact = {"return_time": 1 / pi, "sojourn": 1 / (1 - a), "entry_interval": 1 / (1 - a) + 1 / b}
+    rng = np.random.default_rng(11)
+    z = {name: [] for name in exact}
+    for _ in range(40):
+        v = visit_statistics(markov_runs(a, b, 8, 2000, rng))
+        for name, value in exact.items():
+            est, se = getattr(v, name)
+            z[name].append((est - value) / se)
+    for name, zs in z.items():
+        zs = np.array(zs)
+        assert abs(zs.mean()) < 0.6, name  # the mean of 40 z's: standard error 0.16
+        assert 0.85 < zs.std(ddof=1) < 1.6, name  # errors neither too small nor too large
+
+
+def test_autocorrelation_time_of_ar1():
+    # tau_int = (1 + phi) / (1 - phi) exactly; 8 runs x 40000: statistical error ~2%
+    rng = np.random.default_rng(5)
+    for phi in (0.0, 0.5, 0.9):
+        x = signal.lfilter([1.0], [1.0, -phi], rng.standard_normal((8, 40_000)), axis=1)
+        tau, window = autocorrelation_time(x)
+        assert tau == pytest.approx((1 + phi) / (1 - phi), rel=0.08)
+        assert window >= 6 * tau - 1
+
+
+def correlated_beta(b, phi, runs, steps, rng):
+    """Samples with Beta(1, b) marginals and AR(1) dependence (Gaussian copula)."""
+    g = signal.lfilter([1.0], [1.0, -phi], rng.standard_normal((runs, steps)), axis=1)
+    g *= math.sqrt(1 - phi**2)  # unit variance
+    return stats.beta(1, b).ppf(stats.norm.cdf(g))
+
+
+def test_ks_run_bootstrap_keeps_its_level_under_autocorrelation():
+    # samples drawn from the law but strongly autocorrelated (tau ~ 39): a KS test that
+    # took the 8 x 2000 samples as independent would reject nearly always; resampling
+    # whole runs rejects at about its level.  And a wrong law is rejected.
+    rng = np.random.default_rng(8)
+    cdf = stats.beta(1, 2.5).cdf
+    pvalues = [
+        ks_distance(correlated_beta(2.5, 0.95, 8, 2000, rng), cdf, resamples=199, seed=i)[1]
+        for i in range(20)
+    ]
+    iid_critical = 1.36 / math.sqrt(8 * 2000)  # 5% point of the iid KS distance
+    d, _ = ks_distance(correlated_beta(2.5, 0.95, 8, 2000, rng), cdf, resamples=199)
+    assert np.mean(np.array(pvalues) < 0.05) <= 0.2
+    assert d > iid_critical  # the iid test would have rejected this sample from the law
+    wrong = stats.beta(1, 3.5).cdf
+    _, p = ks_distance(correlated_beta(2.5, 0.5, 8, 2000, rng), wrong, resamples=199)
+    assert p < 0.01
+
+
+def test_jackknife_ratio_and_refusals():
+    value, se = jackknife_ratio([1.0, 3.0], [1.0, 1.0])
+    assert value == 2.0 and se == pytest.approx(1.0)  # = std / sqrt(2) of the two means
+    assert math.isnan(jackknife_ratio([0.0], [0.0])[0])
+    law = equilibrium_law(Sink(Well(0.5, 0.3, 4)), 0.5)
+    with pytest.raises(ParameterError, match="energy_runs"):
+        compare_with_law(np.ones((1, 100)), law, transient=0)
+    with pytest.raises(ParameterError, match="transient"):
+        compare_with_law(np.ones((2, 100)), law, transient=99)
+    with pytest.raises(ParameterError, match="fraction"):
+        compare_with_law(np.ones((2, 100)), law, transient=0, fractions=[1.0])
+
+
+def test_fig8_one_particle_returns_agree_with_kac():
+    # Fig. 8 set-up, k = 1: 8 runs x 2000 periods, the first 300 skipped.  The measured
+    # mean return times to {E_c >= f E} agree with Kac's 1 / P from the law within 3
+    # jackknife standard errors (runs independent), the mean within 3 of its errors, and
+    # the run-bootstrap KS test does not reject the law at 1%.
+    sink = Sink(Well(0.5, 0.3, 4), particles=1, mass=0.2)
+    settings = RunSettings(energy=0.5, runs=8, periods=2000, seed=3)
+    c, sim = measure_lifetimes(sink, settings, transient=300, fractions=[0.2, 0.5, 0.8])
+    assert sim.max_relative_energy_error < 1e-6
+    assert np.all(np.abs(c.return_time_z()) < 3), (c.return_time, c.kac_periods)
+    assert abs(c.mean - c.law.mean) < 3 * c.mean_stderr
+    assert c.ks_pvalue > 0.01
+    assert c.kac_periods == pytest.approx(1 / c.law.tail(c.fractions), rel=1e-15)
