@@ -7,22 +7,27 @@
   quantiles, tails and Kac's mean return times;
 * :mod:`~sinktheory.equilibrium.lifetime` -- measured return times, sojourns, entry
   intervals, autocorrelation times and a run-bootstrap KS comparison of simulated runs
-  with the law.
+  with the law;
+* :mod:`~sinktheory.equilibrium.relaxation` -- when the ensemble mean of E_c reaches the
+  law's mean (first passage into a band of standard errors) and the exponential rate.
 """
 
 from .area import area, area_quadrature, area_ratio, scaled_energy
 from .law import EquilibriumLaw, EquilibriumSummary, equilibrium_law
 from .lifetime import LawComparison, compare_with_law, measure_lifetimes
+from .relaxation import Relaxation, relaxation
 
 __all__ = [
     "EquilibriumLaw",
     "EquilibriumSummary",
     "LawComparison",
+    "Relaxation",
     "area",
     "area_quadrature",
     "area_ratio",
     "compare_with_law",
     "equilibrium_law",
     "measure_lifetimes",
+    "relaxation",
     "scaled_energy",
 ]
