@@ -209,7 +209,7 @@ def advance_fixed(pos, vel, tan, duration, kinds, coef, cap, hneg, gx, eps, reac
     """Advance k particles in a fixed table by ``duration`` (each independently),
     with their deviation vectors ``tan`` (k, 4) = (dq, dv) if tan.shape[0] > 0.
     ``hits`` (walls,) counts the collisions.  Returns (status, particle, time)."""
-    zero = np.zeros(2)
+    zeros = np.zeros(2)
     for j in range(pos.shape[0]):
         t = 0.0
         v = vel[j]
@@ -232,14 +232,10 @@ def advance_fixed(pos, vel, tan, duration, kinds, coef, cap, hneg, gx, eps, reac
                 break
             hits[w] += 1
             if tan.shape[0] > 0:
-                dq = tan[j, 0:2].copy()
-                dv = tan[j, 2:4].copy()
-                reflect_tangent(pos[j, 0], pos[j, 1], v, dq, dv, kinds[w], coef[w], cap[w])
-                tan[j, 0:2] = dq
-                tan[j, 2:4] = dv
+                dq, dv = tan[j, 0:2], tan[j, 2:4]  # views: updated in place
             else:
-                reflect_tangent(pos[j, 0], pos[j, 1], v, zero.copy(), zero.copy(),
-                                kinds[w], coef[w], cap[w])  # fmt: skip
+                dq, dv = zeros, zeros  # a zero deviation stays zero
+            reflect_tangent(pos[j, 0], pos[j, 1], v, dq, dv, kinds[w], coef[w], cap[w])
     return OK, -1, duration
 
 
