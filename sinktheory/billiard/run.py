@@ -308,6 +308,7 @@ def billiard(
     settings = settings or RunSettings()
     sink = Sink(Well(alpha, beta, 1, shape=shape), particles=particles, mass=mass)
     settings.check_box(sink.well)
+    settings.check_memory(sink, ("container", "container", "container"))  # E_c, E, logs
     table = rigid_table(shape, alpha, beta)
     k = sink.particles
     pos = random_positions(settings, k)
