@@ -48,6 +48,38 @@ def check_gali(gali: int, dim: int) -> int:
     return k
 
 
+def check_renorm(renorm) -> int:
+    """Steps between renormalisations inside a segment: 0 (none) or up to
+    :data:`~sinktheory.validation.MAX_STEPS_PER_PERIOD` (more steps than a period has
+    would never renormalise, and the engine counts steps in 64-bit integers).
+
+    Examples
+    --------
+    >>> check_renorm(0), check_renorm(50.0)
+    (0, 50)
+    >>> check_renorm(1e308)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: renorm = 1e+308 is not allowed: must be an integer in \
+[0, 1000000000]
+    """
+    return val.positive_int("renorm", renorm, minimum=0, maximum=val.MAX_STEPS_PER_PERIOD)
+
+
+def check_block(block) -> int | None:
+    """Runs per engine block: None (the engine's choice) or an integer in [1, MAX_RUNS]."""
+    from ..model import MAX_RUNS
+
+    return None if block is None else val.positive_int("block", block, maximum=MAX_RUNS)
+
+
+def check_bound(bound) -> float:
+    """Largest relative energy error tolerated: a number > 0, or inf (no audit)."""
+    if not val._is_bool(bound) and isinstance(bound, int | float) and bound == math.inf:
+        return math.inf
+    return val.positive("bound", bound)
+
+
 def check_spectrum(spectrum) -> str | None:
     """None (no spectrum), "full" (True or "full") or "half" (see :func:`indicators`).
 
@@ -164,10 +196,14 @@ def indicators(
     D, R = q.shape
     scheme = get_scheme(method)
     gali = check_gali(gali, D)
-    renorm = val.positive_int("renorm", renorm, minimum=0)
-    segments = val.positive_int("segments", segments)
-    steps = val.positive_int("steps", steps)
+    renorm = check_renorm(renorm)
+    segments = val.positive_int("segments", segments, maximum=val.MAX_STEPS_PER_PERIOD)
+    steps = val.positive_int("steps", steps, maximum=val.MAX_STEPS_PER_PERIOD)
     dt = val.positive("dt", dt)
+    megno = val.flag("megno", megno)
+    system = val.engine_system("system", system)
+    block = check_block(block)
+    bound = check_bound(bound)
     opts = {
         "renorm": renorm,
         "bound": bound,

@@ -43,8 +43,8 @@ from ..simulate import (
     start_state,
     total_energy,
 )
-from ..stepsize import resolve_step
-from .general import indicators
+from ..worklimit import check_particle_steps, step_of, tangent_steps
+from .general import check_block, check_gali, check_renorm, check_spectrum, indicators
 from .result import ChaosResult
 
 
@@ -54,6 +54,63 @@ def transverse_mask(particles: int) -> np.ndarray:
     mask = np.zeros(2 * D, bool)
     mask[1 + particles : D] = True
     return mask
+
+
+def tangent_runs(dim: int, spectrum: str | None, gali: int, transverse: bool) -> list[int]:
+    """Deviation vectors of each ensemble :func:`chaos` integrates (see
+    :func:`~sinktheory.chaos.general.indicators`): the spectrum's (2D, or D for "half"),
+    the normalised ones (k of GALI_k, or 1 for lambda_1) unless the spectrum carries
+    lambda_1 alone, and 1 for the transverse runs.
+
+    Examples
+    --------
+    >>> tangent_runs(3, "full", 0, True), tangent_runs(3, None, 4, False)
+    ([6, 1], [4])
+    """
+    runs = []
+    if spectrum:
+        runs.append(2 * dim if spectrum == "full" else dim)
+    if gali or not spectrum:
+        runs.append(max(gali, 1))
+    if transverse:
+        runs.append(1)
+    return runs
+
+
+def check_tangent_work(
+    sink: Sink, settings: RunSettings, steps: int, spectrum: str | None, gali: int, transverse
+) -> None:
+    """Refuse, before any integration, an analysis whose deviation vectors would not fit in
+    memory or could not finish within the work limit (:mod:`sinktheory.worklimit`).
+
+    The spectrum's 2D vectors of dimension 2D make its cost grow with the square of the
+    number of particles; it is named when the analysis without it would fit, else the
+    larger of ``runs`` and ``periods``.
+    """
+    dim = 1 + 2 * sink.particles
+    R, P = settings.runs, settings.periods
+    vectors = tangent_runs(dim, spectrum, gali, transverse)
+    base = R * P * steps
+
+    def work(vecs):
+        return base * sum(tangent_steps(sink.particles, m) for m in vecs)
+
+    def check(name, vecs):
+        value = {"spectrum": spectrum, "periods": P, "runs": R}[name]
+        what = f"{R} run(s) x {P} period(s) x {steps} step(s) with "
+        what += f"{'+'.join(map(str, vecs))} deviation vector(s) of {sink.particles} particle(s)"
+        val.fits_memory(name, value, 16.0 * dim * max(vecs) * R, what, "smaller")
+        check_particle_steps(name, value, work(vecs), what)
+
+    name = "periods" if P > R else "runs"
+    if spectrum:
+        try:
+            check(name, tangent_runs(dim, None, gali, transverse))
+        except ParameterError:
+            pass
+        else:  # the spectrum alone makes it too large
+            name = "spectrum"
+    check(name, vectors)
 
 
 def chaos(
@@ -117,6 +174,12 @@ def chaos(
         raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
     scheme = get_scheme(method)
     bound = val.positive("energy_bound", energy_bound)
+    megno = val.flag("megno", megno)
+    transverse = val.flag("transverse", transverse)
+    spectrum = check_spectrum(spectrum)
+    gali = check_gali(gali, 1 + 2 * sink.particles)
+    check_renorm(renorm)
+    block = check_block(block)
     positions = start_positions(sink, settings, initial)
     values = start_state(sink, settings.energy, positions)
     h0 = total_energy(sink, values)
@@ -130,7 +193,8 @@ def chaos(
         qt, vt = split_values(tvalues)
         trans = (qt, vt, transverse_mask(sink.particles))
     sink.well.check_energy(top)
-    _, dt, steps, _ = resolve_step(sink, top, method=scheme.name, dt=dt, tol=tol)
+    _, dt, steps, _ = step_of(sink, top, method=scheme.name, dt=dt, tol=tol, settings=settings)
+    check_tangent_work(sink, settings, steps, spectrum, gali, transverse)
     q, v = split_values(values)
     w = sink.well
     return indicators(

@@ -3,10 +3,13 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import shutil
+import signal
+import sys
 import uuid
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -28,6 +31,49 @@ class Output:
     writers: dict[Path, Any] = field(default_factory=dict)
     #: 1 when the command finished but part of it failed numerically (reported in data)
     exit_status: int = 0
+
+
+class Interrupted(KeyboardInterrupt):
+    """SIGTERM turned into an exception, so it unwinds like Ctrl-C (stores closed, workers
+    ended); ``signum`` is the signal received."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+@contextlib.contextmanager
+def interruptible(prog: str, hint: str = "--resume continues") -> Iterator[None]:
+    """Turn SIGINT (Ctrl-C) and SIGTERM into one line on stderr and the shell's status.
+
+    Inside, SIGTERM raises :class:`Interrupted` (SIGINT raises KeyboardInterrupt, as
+    always), so ``finally`` blocks close the store and end the worker processes.  Then
+    ``PROG: interrupted; HINT`` is printed and SystemExit raised with status 128 + the
+    signal's number: 130 for SIGINT, 143 for SIGTERM (what a shell reports for a process
+    the signal ended, so job managers see the usual codes).
+    """
+
+    def on_term(signum, frame):
+        raise Interrupted(signum)
+
+    try:
+        previous = signal.signal(signal.SIGTERM, on_term)
+    except ValueError:  # not the main thread: leave SIGTERM alone
+        previous = None
+    try:
+        yield
+    except KeyboardInterrupt as e:
+        signum = getattr(e, "signum", signal.SIGINT)
+        e.__traceback__ = None  # let the frames go: a pool's queues are freed before exit
+        print(f"{prog}: interrupted; {hint}", file=sys.stderr, flush=True)
+        status = 128 + int(signum)
+    else:
+        status = None
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
+    if status is not None:
+        raise SystemExit(status)
 
 
 def number(text: str) -> int | float:

@@ -25,7 +25,7 @@ from ..errors import ParameterError
 from ..sweep.grid import parse_param
 from ..validation import writable_directory
 from . import HELP as HELPS
-from ._common import Output, add_json, as_directory, number, output_directory
+from ._common import Output, add_json, as_directory, interruptible, number, output_directory
 
 NAME = "design"
 HELP = HELPS[NAME]
@@ -135,6 +135,14 @@ def params_of(args: argparse.Namespace) -> dict:
 
 
 def run(args: argparse.Namespace) -> Output:
+    """Ctrl-C or SIGTERM at any point: one line, status 130 or 143
+    (:func:`~sinktheory.commands._common.interruptible`); the store keeps every point
+    finished and ``--resume`` continues it."""
+    with interruptible("sinktheory design"):
+        return _run(args)
+
+
+def _run(args: argparse.Namespace) -> Output:
     if not str(args.out).strip():
         raise ParameterError("out", args.out, "the path of a Zarr store (not empty)")
     writable_directory("out", args.out, Path(args.out).parent)

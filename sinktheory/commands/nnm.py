@@ -76,12 +76,15 @@ def _check(args) -> None:
         raise ParameterError("continue", args.continue_in, "energy, beta, alpha or gamma")
     if args.mode not in (None, "container", "particle"):
         raise ParameterError("mode", args.mode, "container or particle")
-    if not isinstance(args.steps, int) or args.steps < 8 or args.steps % 2:
-        raise ParameterError("steps", args.steps, "an even integer >= 8")
+    from ..nnm.continuation import check_ds
+    from ..nnm.shooting import MAX_SHOOT_STEPS
+
+    allowed = f"an even integer in [8, {MAX_SHOOT_STEPS}]"
+    if not isinstance(args.steps, int) or not 8 <= args.steps <= MAX_SHOOT_STEPS or args.steps % 2:
+        raise ParameterError("steps", args.steps, allowed)
     if not isinstance(args.points, int) or not 2 <= args.points <= 10_000:
         raise ParameterError("points", args.points, "an integer in [2, 10000]")
-    if not (isinstance(args.ds, int | float) and math.isfinite(args.ds) and args.ds > 0):
-        raise ParameterError("ds", args.ds, "a positive number")
+    check_ds(args.ds)
     if args.agreement is not None:
         if args.continue_in != "beta":
             raise ParameterError("agreement", args.agreement, "only with --continue beta")

@@ -18,7 +18,7 @@ from ..sweep.grid import Value, parse_param
 from ..sweep.kinds import KINDS
 from ..validation import writable_directory
 from . import HELP as HELPS
-from ._common import Output, add_json, number
+from ._common import Output, add_json, interruptible, number
 
 NAME = "sweep"
 HELP = HELPS[NAME]
@@ -71,6 +71,14 @@ def params_of(specs: list[str]) -> dict[str, list[Value]]:
 
 
 def run(args: argparse.Namespace) -> Output:
+    """Ctrl-C or SIGTERM at any point: one line, status 130 or 143
+    (:func:`~sinktheory.commands._common.interruptible`); the store keeps every point
+    finished and ``--resume`` continues it."""
+    with interruptible("sinktheory sweep"):
+        return _run(args)
+
+
+def _run(args: argparse.Namespace) -> Output:
     if not args.out.strip():
         raise ParameterError("out", args.out, "the path of a Zarr store (not empty)")
     writable_directory("out", args.out, Path(args.out).parent)  # before any work

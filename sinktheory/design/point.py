@@ -42,9 +42,10 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
-from ..model import RunSettings, Sink, Well
+from ..model import MAX_PERIODS, RunSettings, Sink, Well
 from ..sinkstats import ensemble_mean
 from ..stepsize import check_tol
+from ..worklimit import check_particle_steps, step_of, tangent_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of
 
 #: Results of a point that come from its ensemble (besides the container energy).
@@ -71,11 +72,30 @@ def settings_of(p: dict, seed: int) -> RunSettings:
     )
 
 
+#: Most bootstrap resamples: the bootstrap's own relative error ~ 1 / sqrt(2 B) is 0.2 %
+#: at 1e5 resamples, and each resample is a pass over the point's (P + 1) means.
+MAX_BOOTSTRAP = 10**5
+
+
 def check(p: dict) -> None:
-    """Raise ParameterError for anything the point cannot run with."""
+    """Raise ParameterError for anything the point cannot run with, naming the parameter;
+    the step is chosen here, so a well too stiff for any step is named before anything
+    runs, and the work (ensemble and lambda_1 runs with their tangent vector) is checked
+    against the work limit (:mod:`sinktheory.worklimit`)."""
     sink = sink_of(p)
-    settings_of(p, 0).check(sink)
+    settings = settings_of(p, 0)
+    try:
+        settings.check(sink)
+    except OverflowError:  # the box's corner lies so far out that the wall ratio overflows
+        raise ParameterError(
+            "box", p["box"], "a half-width whose start box lies inside the walls"
+        ) from None
     check_tol(p["tol"])
+    _, _, steps, _ = step_of(
+        sink, settings.total_energy_bound(sink), tol=p["tol"], settings=settings
+    )
+    v.positive_int("replica", p["replica"], minimum=0)
+    v.positive_int("lyapunov_periods", p["lyapunov_periods"], maximum=MAX_PERIODS)
     if p["energy_bound"] is not None:
         v.positive("energy_bound", p["energy_bound"])
     horizons_of(p["horizons"], p["periods"])
@@ -85,16 +105,32 @@ def check(p: dict) -> None:
     if not 0 < v.positive("risk_level", p["risk_level"]) < 1:
         raise ParameterError("risk_level", p["risk_level"], "a fraction in (0, 1)")
     v.positive("rqa_eps", p["rqa_eps"])
-    v.positive_int("bootstrap", p["bootstrap"], minimum=2)
+    v.positive_int("bootstrap", p["bootstrap"], minimum=2, maximum=MAX_BOOTSTRAP)
+    v.fits_memory(
+        "bootstrap",
+        p["bootstrap"],
+        8.0 * p["bootstrap"] * (p["runs"] + p["periods"] + 1),
+        f"{p['bootstrap']} resample(s) of {p['runs']} run(s) x {p['periods'] + 1} values",
+        "smaller",
+    )
     v.positive_int("lyapunov_runs", p["lyapunov_runs"], minimum=0, maximum=p["runs"])
     if p["lyapunov_runs"]:
-        v.positive_int("lyapunov_periods", p["lyapunov_periods"])
         RunSettings(
             energy=p["energy"], runs=p["lyapunov_runs"], periods=p["lyapunov_periods"]
         ).check(sink)
     v.nonnegative("damping", p["damping"])
     if p["runs"] < 2:
         raise ParameterError("runs", p["runs"], "at least 2 (standard errors need two runs)")
+    lyapunov = p["lyapunov_runs"] * p["lyapunov_periods"] * tangent_steps(p["particles"], 1)
+    ensemble = p["runs"] * p["periods"] * p["particles"]
+    name = "periods" if ensemble >= lyapunov else "lyapunov_periods"
+    check_particle_steps(
+        name,
+        p[name],
+        steps * (ensemble + lyapunov),
+        f"{p['runs']} run(s) x {p['periods']} period(s) and {p['lyapunov_runs']} lambda_1 "
+        f"run(s) x {p['lyapunov_periods']} period(s) at {steps} steps per period",
+    )
 
 
 def lyapunov(p: dict, seed: int) -> tuple[float, float]:

@@ -56,13 +56,61 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
+from .. import validation as v
 from ..errors import ParameterError
-from .shooting import Orbit, ShootingError, ShootingProblem, checked_start, subspace_indices
+from ..worklimit import check_particle_steps, tangent_steps
+from .shooting import (
+    Orbit,
+    ShootingError,
+    ShootingProblem,
+    checked_start,
+    checked_steps,
+    subspace_indices,
+)
 from .stability import angles, classify
 from .system import FlowSystem
 
 #: Arclength-step limits relative to the initial step.
 DS_MIN_FACTOR = 1e-4
+#: First arclength steps accepted: below 1e-6 the smallest step (x DS_MIN_FACTOR) nears
+#: the corrector's tolerance (XTOL = 1e-11) and a branch would not move; above 10 one
+#: step spans e^10 in energy, more than any continuation range.
+DS_RANGE = (1e-6, 10.0)
+#: Most points of one branch.
+MAX_POINTS = 100_000
+
+
+def check_ds(ds, name: str = "ds") -> float:
+    """An arclength step inside :data:`DS_RANGE`.
+
+    Examples
+    --------
+    >>> check_ds(0.1)
+    0.1
+    >>> check_ds(1e-300)
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: ds = 1e-300 is not allowed: must be a number in [1e-06, 10]
+    """
+    lo, hi = DS_RANGE
+    x = v.positive(name, ds)
+    if not lo <= x <= hi:
+        raise ParameterError(name, ds, f"a number in [{lo:g}, {hi:g}]")
+    return x
+
+
+def check_stop(stop) -> tuple[float, float]:
+    """(lo, hi) of a continuation: two numbers, not NaN, lo < hi (hi may be inf)."""
+    allowed = "two numbers (lo, hi) with lo < hi, not NaN"
+    try:
+        lo, hi = (float(x) for x in stop)
+    except (TypeError, ValueError):
+        raise ParameterError("stop", stop, allowed) from None
+    if any(v._is_bool(x) for x in stop) or not lo < hi:  # NaN compares False
+        raise ParameterError("stop", stop, allowed)
+    return lo, hi
+
+
 #: Iterations of the event location.
 LOCATE_ITER = 30
 #: Largest change of a multiplier's rotation angle over one step (radians).
@@ -201,12 +249,21 @@ def continue_orbits(
     Branch
     """
     z0, h = checked_start(system, z0, energy)
-    if direction not in (1, -1):
+    steps, T = checked_steps(steps, T)
+    if isinstance(direction, bool) or direction not in (1, -1):
         raise ParameterError("direction", direction, "+1 or -1")
-    lo, hi = map(float, stop)
+    lo, hi = check_stop(stop)
+    ds = check_ds(ds)
+    ds_max = None if ds_max is None else check_ds(ds_max, "ds_max")
+    max_points = v.positive_int("max_points", max_points, maximum=MAX_POINTS)
+    work = 2 * max_points * steps * tangent_steps(system.members or 1, 2 * system.dim)
+    check_particle_steps(
+        "steps", steps, work, f"{max_points} point(s) x {steps} step(s) per period, each "
+        f"shooting at least twice with {2 * system.dim} tangent vectors"
+    )  # fmt: skip
     free = subspace_indices(system, subspace)
     problem = ShootingProblem(
-        system, int(steps), free, z0, parameter, h, phase, phase_index, phase_ref=z0.copy()
+        system, steps, free, z0, parameter, h, phase, phase_index, phase_ref=z0.copy()
     )
     u = problem.pack(z0, T, 0.0, problem.lam(system, h))
     u, J, data, it = problem.newton(u)

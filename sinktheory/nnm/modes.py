@@ -32,6 +32,7 @@ import math
 
 import numpy as np
 
+from .. import validation as v
 from .._generated import oscillator as _osc
 from ..errors import ParameterError
 from ..model import Sink
@@ -65,10 +66,11 @@ def mode_guess(sink: Sink, mode: str, energy: float) -> tuple[np.ndarray, float]
     energy : float > 0
         Total energy H.
     """
-    if mode not in MODES:
-        raise ParameterError("mode", mode, f"one of {MODES}")
-    if not (math.isfinite(energy) and energy > 0):
-        raise ParameterError("energy", energy, "a finite positive energy")
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    v.choice("mode", mode, MODES)
+    energy = v.positive("energy", energy)
+    sink.well.check_energy(energy)  # no particle can hold more than the total
     w, k = sink.well, sink.particles
     L = w.alpha - w.beta
     z0 = np.zeros(2 * (1 + 2 * k))

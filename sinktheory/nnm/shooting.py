@@ -59,6 +59,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import validation as v
 from ..errors import NumericalError, ParameterError
 from .stability import Floquet, floquet
 from .system import FlowSystem
@@ -69,6 +70,10 @@ XTOL = 1e-11
 MAX_ITER = 25
 #: Largest Newton update in scaled units (a damped step beyond it).
 MAX_STEP = 0.25
+#: Most integration steps per period of a shooting: the splitting schemes' error is at
+#: round-off long before (sixth order: (h omega)^6 ~ 1e-16 near 500 steps per fastest
+#: oscillation), and every Newton iteration carries 2D tangent vectors over them.
+MAX_SHOOT_STEPS = 10**6
 
 
 class ShootingError(NumericalError):
@@ -350,15 +355,33 @@ def subspace_indices(system: FlowSystem, subspace: str | None) -> np.ndarray:
 
 
 def checked_start(system, z0, energy=None) -> tuple[np.ndarray, float]:
-    """(z0 as a float state, target energy h): ParameterError unless z0 has the system's
-    length 2D and h (default: the energy of z0) is positive."""
-    z0 = np.asarray(z0, dtype=float)
-    if z0.shape != (2 * system.dim,):
-        raise ParameterError("z0", z0.shape, f"a state of length {2 * system.dim}")
-    h = system.energy(z0) if energy is None else float(energy)
-    if not h > 0:
-        raise ParameterError("energy", h, "a positive energy")
+    """(z0 as a float state, target energy h): ParameterError unless ``system`` is a
+    :class:`FlowSystem`, z0 a finite state of its length 2D and h (default: the energy
+    of z0) a finite positive number."""
+    if not isinstance(system, FlowSystem):
+        raise ParameterError("system", system, "a sinktheory.nnm.system.FlowSystem")
+    z0 = v.real_array("z0", z0)
+    if z0.shape != (2 * system.dim,) or not np.isfinite(z0).all():
+        raise ParameterError("z0", z0.shape, f"a finite state of length {2 * system.dim}")
+    h = v.positive("energy", system.energy(z0) if energy is None else energy)
     return z0, h
+
+
+def checked_steps(steps, T) -> tuple[int, float]:
+    """(steps, T): steps per period an integer in [2, :data:`MAX_SHOOT_STEPS`], the
+    period guess a finite number > 0.
+
+    Examples
+    --------
+    >>> checked_steps(400, 6.28)
+    (400, 6.28)
+    >>> checked_steps(10**12, 6.28)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: steps = 1000000000000 is not allowed: must be an \
+integer in [2, 1000000]
+    """
+    return v.positive_int("steps", steps, minimum=2, maximum=MAX_SHOOT_STEPS), v.positive("T", T)
 
 
 def shoot(
@@ -400,9 +423,10 @@ def shoot(
         If Newton does not converge.
     """
     z0, h = checked_start(system, z0, energy)
+    steps, T = checked_steps(steps, T)
     free = subspace_indices(system, subspace)
     problem = ShootingProblem(
-        system, int(steps), free, z0, "energy", h, phase, phase_index, phase_ref=z0.copy()
+        system, steps, free, z0, "energy", h, phase, phase_index, phase_ref=z0.copy()
     )
     u = problem.pack(z0, T, 0.0, problem.lam(system, h))
     u, J, data, it = problem.newton(u)

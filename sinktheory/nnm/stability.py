@@ -51,6 +51,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import validation as v
+from ..errors import ParameterError
+
 #: |mu| <= 1 + STABILITY_TOL counts as on the unit circle.
 STABILITY_TOL = 1e-6
 
@@ -174,7 +177,13 @@ def floquet(M: np.ndarray, f: np.ndarray, g: np.ndarray, free=None) -> Floquet:
     free : sequence of int, optional
         State indices of the invariant subspace holding the orbit (default: all).
     """
-    n = M.shape[0]
+    M, f, g = (v.real_array(name, x) for name, x in (("M", M), ("f", f), ("g", g)))
+    n = M.shape[0] if M.ndim == 2 else 0
+    if M.shape != (n, n) or f.shape != (n,) or g.shape != (n,) or n == 0:
+        raise ParameterError("M", f"arrays of shapes {M.shape}, {f.shape}, {g.shape}",
+                             "a square (2D, 2D) monodromy with f and g of shape (2D,)")  # fmt: skip
+    if not (np.isfinite(M).all() and np.isfinite(f).all() and np.isfinite(g).all()):
+        raise ParameterError("M", "non-finite entries", "finite M, f and g")
     free = np.arange(n) if free is None else np.asarray(free, dtype=int)
     other = np.setdiff1d(np.arange(n), free)
     Mi = M[np.ix_(free, free)]

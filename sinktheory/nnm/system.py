@@ -39,10 +39,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import validation as val
 from ..engine.core import Ensemble
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..layout import SINK_PARAMS
+from ..model import MAX_RUNS
 
 
 def parameter_names(system: str) -> tuple[str, ...]:
@@ -81,11 +83,15 @@ class FlowSystem:
     masses: np.ndarray = field(init=False)
 
     def __post_init__(self) -> None:
-        self.params = np.ascontiguousarray(self.params, dtype=float)
+        self.system = val.engine_system("system", self.system)
+        self.params = np.ascontiguousarray(val.real_array("params", self.params)).reshape(-1)
+        self.members = val.positive_int("members", self.members, minimum=0, maximum=MAX_RUNS)
         names = parameter_names(self.system)
-        if self.params.size != len(names):
+        if self.params.size != len(names) or not np.isfinite(self.params).all():
             raise ParameterError(
-                "params", self.params.tolist(), f"{len(names)} values {names} for {self.system}"
+                "params",
+                self.params.tolist(),
+                f"{len(names)} finite values {names} for {self.system}",
             )
         self._scheme = get_scheme(self.scheme)
         from ..engine.cache import load

@@ -59,8 +59,9 @@ from ..errors import ParameterError
 from ..floquet import model_hill, model_problem
 from ..hill import DEFAULT_RTOL
 from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
-from ..model import MAX_PERIODS, SHAPES, RunSettings, Sink, Well
+from ..model import MAX_PERIODS, SHAPES, RunSettings, Sink, Well, check_work
 from ..simulate import ENERGY_BOUND, simulate
+from ..worklimit import step_of
 
 REQUIRED = object()
 #: Rough cost of one container period of one particle (n = 10, single thread: 24 sections
@@ -165,6 +166,13 @@ class Kind:
                     raise ParameterError(
                         name, value, "a single value (it sets the length of the results)"
                     )
+                if len(values) > 1 and name in self.results:
+                    raise ParameterError(
+                        name,
+                        value,
+                        f"a single value (a result of the {self.name} kind has this name, "
+                        "so it cannot also label a swept dimension)",
+                    )
                 out[name] = values
             else:
                 out[name] = p.coerce(name, value)
@@ -243,13 +251,20 @@ def _settings(p: dict, seed: int) -> RunSettings:
     )
 
 
-def _ensemble_check(p: dict) -> None:
-    _settings(p, 0).check(_sink(p))
+def _ensemble_check(p: dict) -> int:
+    """Check an ensemble point; its steps per period (a well too stiff for any step
+    names the parameter responsible, and the work is checked against the limit)."""
+    sink, settings = _sink(p), _settings(p, 0)
+    settings.check(sink)
     get_scheme(p["method"])
     if p["dt"] is not None:
         v.time_step("dt", p["dt"])
     v.positive("energy_bound", p["energy_bound"])
     v.positive_int("replica", p.get("replica", 0), minimum=0)
+    energy = settings.total_energy_bound(sink)
+    _, _, steps, _ = step_of(sink, energy, method=p["method"], dt=p["dt"], settings=settings)
+    check_work(settings, sink, steps)
+    return steps
 
 
 def _ensemble(p: dict, seed: int) -> dict[str, Any]:
@@ -424,12 +439,15 @@ KINDS = {
 
 # --------------------------------------------------------------------------- chaos
 def _chaos_check(p: dict) -> None:
-    from ..chaos.general import check_gali
+    from ..chaos.general import check_gali, check_renorm
+    from ..chaos.sink import check_tangent_work
 
-    _ensemble_check(p)
-    v.positive_int("renorm", p["renorm"], minimum=0)
+    steps = _ensemble_check(p)
+    check_renorm(p["renorm"])
+    v.positive_int("megno", p["megno"], minimum=0, maximum=1)
     v.positive_int("transverse", p["transverse"], minimum=0, maximum=1)
-    check_gali(p["gali"], 1 + 2 * p["particles"])
+    gali = check_gali(p["gali"], 1 + 2 * p["particles"])
+    check_tangent_work(_sink(p), _settings(p, 0), steps, None, gali, bool(p["transverse"]))
 
 
 def _chaos(p: dict, seed: int) -> dict[str, Any]:

@@ -35,6 +35,7 @@ import contextlib
 import math
 import multiprocessing
 import os
+import signal
 import sys
 import threading
 import time
@@ -215,6 +216,7 @@ class _Engine:
         self.workers = workers
         self.where = "this process"
         self._close = None
+        self._abort = None
         self._client = None
 
     def __enter__(self) -> _Engine:
@@ -254,12 +256,34 @@ class _Engine:
             workers, mp_context=_context(), initializer=_start_worker, initargs=(os.getpid(),)
         )
         self._close = lambda: pool.shutdown(wait=True, cancel_futures=True)
+        self._abort = lambda: _end_workers(pool)
         self.where = f"{workers} local processes"
         return _run_pool(pool, kind.name, tasks)
 
-    def __exit__(self, *exc) -> None:
-        if self._close is not None:
+    def __exit__(self, kind, error, traceback) -> None:
+        if kind is not None and self._abort is not None:
+            self._abort()  # interrupted or failed: running tasks are not waited for
+        elif self._close is not None:
             self._close()
+        self._close = self._abort = None  # the pool and its queues can be freed now
+
+
+def _end_workers(pool: ProcessPoolExecutor, grace: float = 2.0) -> None:
+    """End a pool at once, its running tasks too (an interrupt, a failed point): queued
+    tasks are cancelled and the worker processes terminated (SIGTERM, then SIGKILL after
+    ``grace`` seconds), so neither the driver nor its workers wait for tasks in flight."""
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    for process in processes:
+        if process.is_alive():
+            process.terminate()
+    deadline = time.monotonic() + grace
+    for process in processes:
+        process.join(max(0.0, deadline - time.monotonic()))
+        if process.is_alive():
+            process.kill()
+            process.join(1.0)
+    # the workers are gone: the pool's manager thread sees it at once and cleans up
+    pool.shutdown(wait=True, cancel_futures=True)
 
 
 def _run_here(kind: str, tasks: list) -> Iterator[tuple[list, list]]:
@@ -330,12 +354,15 @@ def _start_worker(driver: int) -> None:
     """Set up a local worker process.
 
     One numba thread per process: the processes already use every core (a run's
-    arithmetic does not depend on the thread count).  A watchdog thread ends the worker
-    when the driver is gone (killed with kill -9, a pool's workers would otherwise wait
-    for work forever).
+    arithmetic does not depend on the thread count).  SIGINT is ignored: Ctrl-C reaches
+    the whole process group, and the driver alone decides, ending its workers
+    (:func:`_end_workers`); a worker interrupted on its own would only print a traceback.
+    A watchdog thread ends the worker when the driver is gone (killed with kill -9, a
+    pool's workers would otherwise wait for work forever).
     """
     import numba
 
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     numba.set_num_threads(1)
     threading.Thread(target=_watch, args=(driver,), daemon=True).start()
 
