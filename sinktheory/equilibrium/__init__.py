@@ -9,7 +9,9 @@
   intervals, autocorrelation times and a run-bootstrap KS comparison of simulated runs
   with the law;
 * :mod:`~sinktheory.equilibrium.relaxation` -- when the ensemble mean of E_c reaches the
-  law's mean (first passage into a band of standard errors) and the exponential rate.
+  law's mean (first passage into a band of standard errors) and the exponential rate;
+* :mod:`~sinktheory.equilibrium.ergodicity` -- the ergodicity map: the runs' distance
+  from the law beside lambda_1, point by point (also the sweep kind ``ergodicity``).
 """
 
 from .area import area, area_quadrature, area_ratio, scaled_energy

@@ -95,3 +95,62 @@ def plot_lifetimes(fractions, particles, predicted, measured=None, ax=None):
     ax.set_ylabel(r"mean return time to $\{E_c \geq fE\}$ (periods $T$)")
     ax.legend(fontsize=8)
     return fig
+
+
+#: Colours of the ergodicity verdicts (:func:`sinktheory.equilibrium.ergodicity.verdict`).
+VERDICTS = {
+    2: ("chaotic, samples the law", "C2"),
+    1: ("chaotic, not sampling the law", "C1"),
+    0: ("regular", "C0"),
+    -1: ("undecided (no lambda_1)", "0.5"),
+}
+
+
+def plot_ergodicity(result, ax=None):
+    """An :class:`~sinktheory.equilibrium.ergodicity.ErgodicityMap`: the KS distance of the
+    runs from the law (top) and lambda_1 with its errors (bottom) against beta, each point
+    coloured by its verdict.
+
+    Examples
+    --------
+    >>> from sinktheory.equilibrium.ergodicity import ergodicity_map
+    >>> m = ergodicity_map([0.2, 0.3], alpha=0.5, n=4, runs=2, periods=40, transient=10,
+    ...                    lyapunov_runs=0, progress=False)
+    >>> [a.get_ylabel() for a in plot_ergodicity(m).axes]
+    ['KS distance to the law', '$\\\\lambda_1$']
+    """
+    if ax is None:
+        fig = Figure(figsize=(7.0, 5.5), layout="constrained")
+        top, bottom = fig.subplots(2, 1, sharex=True)
+    else:
+        fig = ax.figure
+        top, bottom = ax
+    beta = np.asarray(result.beta)
+    for code, (label, colour) in VERDICTS.items():
+        pick = result.verdict == code
+        if not pick.any():
+            continue
+        top.plot(beta[pick], result.ks_distance[pick], "o", color=colour, ms=4, label=label)
+        bottom.errorbar(
+            beta[pick],
+            result.lambda1[pick],
+            yerr=3 * result.lambda1_se[pick],
+            fmt="o",
+            color=colour,
+            ms=4,
+            capsize=2,
+        )
+    top.plot(beta, result.ks_distance, color="0.7", lw=0.8, zorder=0)
+    top.set_ylabel("KS distance to the law")
+    top.legend(fontsize=7)
+    bottom.axhline(0.0, color="0.6", lw=0.8)
+    bottom.set_ylabel("$\\lambda_1$")
+    bottom.set_xlabel("$\\beta$")
+    p = result.parameters
+    top.set_title(
+        f"{p.get('shape', 'flat')} well $\\alpha$={p.get('alpha')}, $n$={p.get('n')}, "
+        f"$k$={p.get('particles', 1)}: {p['runs']} runs x {p['periods'] - p['transient']} "
+        "periods after the transient; bars: 3 se",
+        fontsize=8,
+    )
+    return fig

@@ -55,6 +55,7 @@ import numpy as np
 
 from .. import validation as v
 from ..bifurcation import QUANTITIES, section
+from ..equilibrium import ergodicity as _ergodicity
 from ..errors import ParameterError
 from ..floquet import model_hill, model_problem
 from ..hill import DEFAULT_RTOL
@@ -524,6 +525,32 @@ KINDS["chaos"] = Kind(
     lambda p: {"run": np.arange(p["runs"])},
     cost=lambda p: (
         3 * (1 + p["transverse"]) * SECONDS_PER_PERIOD * p["periods"] * p["runs"] * p["particles"]
+    ),
+)
+
+
+#: The ``ergodicity`` kind (issue 21): the runs' late E_c against the exact equilibrium
+#: law (KS distance, tail ratios) beside lambda_1; the code is
+#: :mod:`sinktheory.equilibrium.ergodicity`.
+KINDS["ergodicity"] = Kind(
+    "ergodicity",
+    {
+        **WELL,
+        **SINK,
+        **{
+            name: Param(type(value), value, sweepable=name != "fractions")
+            for name, value in _ergodicity.DEFAULTS.items()
+        },
+        "replica": Param(int, 0),
+    },
+    {name: Result(dims, "float64", text) for name, (dims, text) in _ergodicity.RESULTS.items()},
+    _ergodicity.check_point,
+    _ergodicity.ergodicity_point,
+    lambda p: {"fraction": _ergodicity.fractions_of(p["fractions"])},
+    cost=lambda p: (
+        SECONDS_PER_PERIOD
+        * p["particles"]
+        * (p["periods"] * p["runs"] + 3 * p["lyapunov_periods"] * p["lyapunov_runs"])
     ),
 )
 

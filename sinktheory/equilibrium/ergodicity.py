@@ -1,0 +1,235 @@
+"""Ergodicity map: where the runs sample the equilibrium law, beside the chaos map lambda_1.
+
+For one parameter point, :func:`ergodicity_point` simulates ``runs`` runs of ``periods``
+periods, compares E_c after ``transient`` periods with the law
+(:func:`~sinktheory.equilibrium.lifetime.compare_with_law`: KS distance and its
+run-bootstrap p-value, the mean's z, the tail ratios occupation / P with errors) and,
+with ``lyapunov_runs`` > 0, computes the maximal Lyapunov exponent lambda_1 of a small
+ensemble (:func:`sinktheory.chaos.chaos`).  The verdict, a stated rule:
+
+* **chaotic** when lambda_1 - 3 se(lambda_1) > 0 (se over the Lyapunov runs), else
+  **regular**;
+* **sampling the law** when the KS p-value > :data:`P_LEVEL` and |mean z| < 3;
+* verdict 2 = chaotic and sampling the law (ergodic as far as the runs tell),
+  1 = chaotic but not sampling it (islands, slow mixing, or a transient too short),
+  0 = regular; -1 = undecided (no Lyapunov runs).
+
+The sweep kind ``ergodicity`` (:mod:`sinktheory.sweep.kinds`) computes the same point
+function over any grid of parameters; :func:`ergodicity_map` runs it over a list of beta
+for the chart (:func:`sinktheory.plot.equilibrium.plot_ergodicity`).
+
+Examples
+--------
+>>> out = ergodicity_point(
+...     {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 2, "periods": 40, "transient": 10,
+...      "lyapunov_runs": 0}, seed=1)
+>>> sorted(out)[:4], int(out["verdict"])
+(['autocorrelation_time', 'kac_periods', 'ks_distance', 'ks_pvalue'], -1)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import validation as v
+from ..results import Result
+from .law import check_fractions
+
+#: KS p-value below which the runs are said not to sample the law.
+P_LEVEL = 0.01
+#: The point's parameters beyond the well and the sink, with defaults.
+DEFAULTS = {
+    "runs": 8,
+    "periods": 3000,
+    "transient": 1000,
+    "box": 0.01,
+    "tol": 1e-8,
+    "fractions": "0.2,0.5,0.8",
+    "lyapunov_runs": 4,
+    "lyapunov_periods": 200,
+}
+#: Results: name -> (extra dimensions, description).
+RESULTS = {
+    "law_mean": ((), "the law's <E_c>"),
+    "mean": ((), "measured <E_c> after the transient"),
+    "mean_z": ((), "(measured - law) / standard error across runs"),
+    "ks_distance": ((), "sup |F_hat - F| of E_c / E"),
+    "ks_pvalue": ((), "run-bootstrap p-value of the KS distance"),
+    "autocorrelation_time": ((), "integrated autocorrelation time of E_c (periods)"),
+    "tail_ratio": (("fraction",), "occupation of {E_c >= f E} over the law's P"),
+    "tail_ratio_se": (("fraction",), "standard error of tail_ratio (jackknife over runs)"),
+    "kac_periods": (("fraction",), "Kac's mean return time 1/P (periods)"),
+    "return_time": (("fraction",), "measured mean return time (periods)"),
+    "lambda1": ((), "maximal Lyapunov exponent (per unit time; NaN without Lyapunov runs)"),
+    "lambda1_se": ((), "standard error of lambda1 over the Lyapunov runs"),
+    "verdict": (
+        (),
+        "2 chaotic and sampling the law, 1 chaotic not sampling it, 0 regular, -1 undecided",
+    ),
+}
+
+
+def fractions_of(text: str) -> np.ndarray:
+    """The fractions of a comma-separated string ("0.2,0.5,0.8")."""
+    try:
+        values = [float(x) for x in str(text).split(",")]
+    except ValueError:
+        raise v.ParameterError("fractions", text, "comma-separated numbers in (0, 1)") from None
+    return check_fractions(values)
+
+
+def _sink_settings(p: dict, seed: int):
+    from ..model import RunSettings, Sink, Well
+
+    well = Well(
+        p["alpha"], p["beta"], p["n"], gamma=p.get("gamma", 1.0), shape=p.get("shape", "flat")
+    )
+    sink = Sink(well, particles=p.get("particles", 1), mass=p.get("mass", 0.2))
+    settings = RunSettings(
+        energy=p.get("energy", 0.5),
+        runs=p["runs"],
+        periods=p["periods"],
+        seed=seed,
+        box=p.get("box", 0.01),
+    )
+    return sink, settings
+
+
+def check_point(p: dict) -> None:
+    """Refuse a point before anything runs (the model's validators name the parameter)."""
+    p = {**DEFAULTS, **p}
+    sink, settings = _sink_settings(p, 0)
+    settings.check(sink)
+    v.positive_int("runs", p["runs"], minimum=2)
+    v.positive_int("transient", p["transient"], minimum=0, maximum=p["periods"] - 4)
+    fractions_of(p["fractions"])
+    v.positive_int("lyapunov_runs", p["lyapunov_runs"], minimum=0)
+    v.positive_int("lyapunov_periods", p["lyapunov_periods"])
+    v.positive("tol", p["tol"])
+
+
+def verdict(lambda1: float, lambda1_se: float, ks_pvalue: float, mean_z: float) -> int:
+    """The rule of the module docstring."""
+    if not math.isfinite(lambda1):
+        return -1
+    if not lambda1 - 3 * lambda1_se > 0:
+        return 0
+    return 2 if ks_pvalue > P_LEVEL and abs(mean_z) < 3 else 1
+
+
+def ergodicity_point(p: dict, seed: int) -> dict:
+    """Results of :data:`RESULTS` at one parameter point (dict of the well, sink and
+    :data:`DEFAULTS` parameters), runs seeded with ``seed``."""
+    from ..equilibrium import equilibrium_law
+    from ..simulate import simulate
+    from .lifetime import compare_with_law
+
+    p = {**DEFAULTS, **p}
+    check_point(p)
+    sink, settings = _sink_settings(p, seed)
+    sim = simulate(sink, settings, tol=p["tol"], progress=False)
+    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
+    c = compare_with_law(
+        sim.container_energy,
+        law,
+        transient=p["transient"],
+        fractions=fractions_of(p["fractions"]),
+        seed=seed,
+    )
+    lam, lam_se = math.nan, math.nan
+    if p["lyapunov_runs"] > 0:
+        from dataclasses import replace
+
+        from ..chaos import chaos
+
+        res = chaos(
+            sink,
+            replace(settings, runs=p["lyapunov_runs"], periods=p["lyapunov_periods"]),
+            tol=p["tol"],
+            progress=False,
+        )
+        summary = res.as_dict()["lambda1"]
+        lam, lam_se = float(summary["mean"]), float(summary["stderr"])
+    mean_z = (c.mean - law.mean) / c.mean_stderr if c.mean_stderr > 0 else math.nan
+    return {
+        "law_mean": law.mean,
+        "mean": c.mean,
+        "mean_z": mean_z,
+        "ks_distance": c.ks_distance,
+        "ks_pvalue": c.ks_pvalue,
+        "autocorrelation_time": c.autocorrelation_time,
+        "tail_ratio": c.occupation / c.tails,
+        "tail_ratio_se": c.occupation_stderr / c.tails,
+        "kac_periods": c.kac_periods,
+        "return_time": c.return_time,
+        "lambda1": lam,
+        "lambda1_se": lam_se,
+        "verdict": verdict(lam, lam_se, c.ks_pvalue, mean_z),
+    }
+
+
+@dataclass(frozen=True)
+class ErgodicityMap(Result):
+    """:func:`ergodicity_point` over a list of beta (other parameters fixed)."""
+
+    beta: np.ndarray
+    fractions: np.ndarray
+    parameters: dict
+    law_mean: np.ndarray
+    mean: np.ndarray
+    mean_z: np.ndarray
+    ks_distance: np.ndarray
+    ks_pvalue: np.ndarray
+    autocorrelation_time: np.ndarray
+    tail_ratio: np.ndarray
+    tail_ratio_se: np.ndarray
+    lambda1: np.ndarray
+    lambda1_se: np.ndarray
+    verdict: np.ndarray
+
+    DIMS = {
+        **{name: ("beta",) for name in RESULTS if not RESULTS[name][0]},
+        "tail_ratio": ("beta", "fraction"),
+        "tail_ratio_se": ("beta", "fraction"),
+    }
+    COORDS = {"fractions": "fraction"}
+
+
+def ergodicity_map(betas, *, seed: int = 0, progress: bool = True, **parameters) -> ErgodicityMap:
+    """:func:`ergodicity_point` at each beta of ``betas`` (the other parameters as keyword
+    arguments: alpha, n, shape, gamma, particles, mass, energy and :data:`DEFAULTS`),
+    every point seeded with ``seed``.
+
+    Examples
+    --------
+    >>> m = ergodicity_map([0.2, 0.3], alpha=0.5, n=4, runs=2, periods=40, transient=10,
+    ...                    lyapunov_runs=0, progress=False)
+    >>> m.verdict.tolist(), m.tail_ratio.shape
+    ([-1, -1], (2, 3))
+    """
+    from ..progress import ProgressBar
+
+    betas = np.atleast_1d(v.real_array("beta", betas))
+    points = [{**parameters, "beta": float(b)} for b in betas]
+    for p in points:
+        check_point(p)
+    bar = ProgressBar(len(points), enabled=progress, label="ergodicity ")
+    rows = []
+    for p in points:
+        rows.append(ergodicity_point(p, seed))
+        bar.update(1)
+    bar.close()
+    full = {**DEFAULTS, **parameters}
+    return ErgodicityMap(
+        beta=betas,
+        fractions=fractions_of(full["fractions"]),
+        parameters=full,
+        **{
+            name: np.array([r[name] for r in rows])
+            for name in RESULTS
+            if name not in ("kac_periods", "return_time")
+        },
+    )

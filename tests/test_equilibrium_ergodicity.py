@@ -1,0 +1,67 @@
+"""The ergodicity map: the verdict rule, the point function, the sweep kind and the chart."""
+
+import math
+
+import numpy as np
+import pytest
+
+from sinktheory.equilibrium.ergodicity import (
+    ergodicity_map,
+    ergodicity_point,
+    fractions_of,
+    verdict,
+)
+from sinktheory.errors import ParameterError
+from sinktheory.sweep import point_seed, run_sweep
+
+SMALL = {
+    "alpha": 0.5,
+    "n": 4,
+    "runs": 3,
+    "periods": 120,
+    "transient": 20,
+    "lyapunov_runs": 2,
+    "lyapunov_periods": 30,
+}
+
+
+def test_verdict_rule():
+    assert verdict(math.nan, math.nan, 0.5, 0.0) == -1
+    assert verdict(0.01, 0.01, 0.5, 0.0) == 0  # lambda_1 within 3 se of zero: regular
+    assert verdict(0.3, 0.01, 0.5, 0.5) == 2
+    assert verdict(0.3, 0.01, 0.001, 0.5) == 1  # the KS test rejects the law
+    assert verdict(0.3, 0.01, 0.5, 4.0) == 1  # the mean misses the law's
+
+
+def test_sweep_points_equal_the_point_function():
+    ds = run_sweep("ergodicity", {**SMALL, "beta": [0.2, 0.3]}, seed=5, workers=1, progress=False)
+    assert ds.tail_ratio.dims == ("beta", "fraction")
+    assert ds.fraction.values.tolist() == [0.2, 0.5, 0.8]
+    for i, beta in enumerate((0.2, 0.3)):
+        direct = ergodicity_point({**SMALL, "beta": beta}, point_seed(5, i))
+        for name in ("ks_distance", "ks_pvalue", "lambda1", "verdict", "mean_z"):
+            assert ds[name].sel(beta=beta).item() == pytest.approx(direct[name], rel=1e-15)
+        assert np.array_equal(ds.tail_ratio.sel(beta=beta).values, direct["tail_ratio"])
+
+
+def test_map_and_chart():
+    from sinktheory.plot.equilibrium import plot_ergodicity
+
+    m = ergodicity_map([0.2, 0.3], seed=2, progress=False, **SMALL)
+    assert m.verdict.shape == (2,) and set(m.verdict.tolist()) <= {0, 1, 2}
+    assert np.all(m.lambda1 > 0)  # the Fig. 8 well is chaotic at these beta
+    ds = m.to_dataset()
+    assert ds.tail_ratio.dims == ("beta", "fraction")
+    fig = plot_ergodicity(m)
+    assert len(fig.axes) == 2
+
+
+def test_bad_points_are_refused_before_running():
+    with pytest.raises(ParameterError, match="fractions"):
+        fractions_of("0.2,x")
+    with pytest.raises(ParameterError, match="fraction"):
+        fractions_of("0.2,1.5")
+    with pytest.raises(ParameterError, match="transient"):
+        run_sweep("ergodicity", {**SMALL, "beta": 0.3, "transient": 200}, progress=False)
+    with pytest.raises(ParameterError, match="runs"):
+        run_sweep("ergodicity", {**SMALL, "beta": 0.3, "runs": 1}, progress=False)
