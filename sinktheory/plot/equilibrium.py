@@ -109,7 +109,8 @@ VERDICTS = {
 def plot_ergodicity(result, ax=None):
     """An :class:`~sinktheory.equilibrium.ergodicity.ErgodicityMap`: the KS distance of the
     runs from the law (top) and lambda_1 with its errors (bottom) against beta, each point
-    coloured by its verdict.
+    coloured by its verdict.  ``ax``: a pair of Axes (top, bottom) to draw into; a new
+    Figure otherwise.
 
     Examples
     --------
@@ -123,8 +124,8 @@ def plot_ergodicity(result, ax=None):
         fig = Figure(figsize=(7.0, 5.5), layout="constrained")
         top, bottom = fig.subplots(2, 1, sharex=True)
     else:
-        fig = ax.figure
         top, bottom = ax
+        fig = top.figure
     beta = np.asarray(result.beta)
     for code, (label, colour) in VERDICTS.items():
         pick = result.verdict == code

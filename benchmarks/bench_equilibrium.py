@@ -1,0 +1,221 @@
+"""The equilibrium law: its cost and accuracy, and the Fig. 8 runs measured against it.
+
+Usage::
+
+    python benchmarks/bench_equilibrium.py [--quick] [--png FILE]
+
+1. Cost of a law (flat, circular, symmetric wells; k = 1, 5, 100, 1000) and its agreement
+   with the flat well's exact Beta mixture (the test suite's reference, rebuilt here).
+2. Fig. 8 set-up (flat, alpha 0.5, beta 0.3, n 4, m 0.2, E0 0.5), k = 1 and 2: 8 runs x
+   3000 periods after a transient (500 periods for k = 1, 1500 for k = 2), against the
+   law: mean +- error across runs, KS distance and run-bootstrap p-value, occupation of
+   {E_c >= f E} against P, mean return times against Kac's 1/P (jackknife z).
+3. Relaxation of <E_c>(t) for k = 1..5 (16 runs; 3000 periods, 8000 for k = 5): first
+   window of 50 periods within 2 standard errors of the law's mean, exponential rate,
+   both with jackknife errors over runs.
+4. Kac's predicted return times 1/P(E_c >= f E) for k = 1..5: for which k and f the
+   container stays drained longer than 10^4 periods on average.
+5. With ``--map FILE.png``: the ergodicity map (k = 1, 8 runs x 1500 periods after 500,
+   lambda_1 from 4 runs x 200 periods) over the beta ranges of Fig. 3 (flat, alpha 0.5,
+   n = 2 and 10, beta in [-0.7, 0.45]) and Fig. 11 (symmetric, alpha 1, n = 6, the
+   confining beta), 12 beta per panel; a table of the verdicts and the chart.
+
+``--quick`` divides the periods by 5 (figures then only show that the script runs).
+``--png`` writes the lifetime chart (Kac against f for k = 1..5 with the k = 1, 2
+measured points).  Wall times depend on the machine's load, printed with them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import platform
+import time
+
+import numpy as np
+
+from sinktheory import RunSettings, Sink, Well
+from sinktheory.equilibrium import compare_with_law, equilibrium_law, relaxation
+from sinktheory.simulate import simulate
+
+FIG8 = Well(0.5, 0.3, 4)
+
+
+def law_costs() -> None:
+    print("\n1. cost of a law (wall, best of 3)")
+    print(f"   {'well':28s} {'k':>5s} {'ms':>8s}  <E_c>/E")
+    wells = [
+        ("flat 0.5 0.3 4", FIG8),
+        ("circular 0.5 0.3 4", Well(0.5, 0.3, 4, shape="circular")),
+        ("symmetric 1 0.1 6", Well(1.0, 0.1, 6, shape="symmetric")),
+    ]
+    for name, well in wells:
+        for k in (1, 5, 100, 1000):
+            best = math.inf
+            for _ in range(3):
+                t = time.perf_counter()
+                law = equilibrium_law(Sink(well, particles=k), 0.5)
+                best = min(best, time.perf_counter() - t)
+            print(f"   {name:28s} {k:5d} {1e3 * best:8.1f}  {law.mean_fraction:.6g}")
+
+
+def fig8_against_law(k: int, transient: int, periods: int, seed: int):
+    sink = Sink(FIG8, particles=k, mass=0.2)
+    settings = RunSettings(energy=0.5, runs=8, periods=transient + periods, seed=seed)
+    t = time.perf_counter()
+    sim = simulate(sink, settings, progress=False)
+    seconds = time.perf_counter() - t
+    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
+    c = compare_with_law(
+        sim.container_energy, law, transient=transient, fractions=[0.2, 0.5, 0.8], seed=seed
+    )
+    print(f"\n2. Fig. 8, k = {k}: {sim.message} ({seconds:.1f} s)")
+    print(
+        f"   kept {c.runs} x {c.samples} periods after {c.transient}; autocorrelation time "
+        f"{c.autocorrelation_time:.3g} periods, {c.effective_samples:.3g} effective samples"
+    )
+    print(
+        f"   <E_c> measured {c.mean:.5f} +- {c.mean_stderr:.5f}; law {law.mean:.5f} "
+        f"(z {(c.mean - law.mean) / c.mean_stderr:+.2f}); homogeneous {law.homogeneous_mean:.5f}"
+    )
+    print(f"   KS distance {c.ks_distance:.4f}, run-bootstrap p-value {c.ks_pvalue:.3f}")
+    print("   f     P law     occupation         Kac 1/P   return time        z")
+    for i, f in enumerate(c.fractions):
+        print(
+            f"   {f:<4g}  {c.tails[i]:<8.4f}  {c.occupation[i]:.4f} +- {c.occupation_stderr[i]:.4f}"
+            f"   {c.kac_periods[i]:<8.3f}  {c.return_time[i]:.3f} +- {c.return_time_stderr[i]:.3f}"
+            f"  {c.return_time_z()[i]:+.2f}"
+        )
+    return c
+
+
+def relaxation_table(periods_scale: float, seed: int) -> None:
+    print("\n3. relaxation of <E_c>(t) to the law's mean (16 runs, windows of 50 periods, z = 2)")
+    print(
+        f"   {'k':>2s} {'periods':>7s} {'s':>6s}  {'law mean':>9s}  {'settle':>16s}  "
+        f"{'tau (fit)':>16s}  {'chi2':>5s}  late z"
+    )
+    for k in (1, 2, 3, 4, 5):
+        periods = int((8000 if k == 5 else 3000) * periods_scale)
+        sink = Sink(FIG8, particles=k, mass=0.2)
+        t = time.perf_counter()
+        sim = simulate(
+            sink, RunSettings(energy=0.5, runs=16, periods=periods, seed=seed), progress=False
+        )
+        seconds = time.perf_counter() - t
+        law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
+        r = relaxation(sim.container_energy, law.mean, window=50)
+        print(
+            f"   {k:2d} {periods:7d} {seconds:6.1f}  {law.mean:9.5f}  "
+            f"{r.settle_time:7.0f} +- {r.settle_stderr:5.0f}  {r.rate_time:7.0f} +- "
+            f"{r.rate_stderr:5.0f}  {r.chi2:5.2f}  {r.late_z:+.2f}"
+        )
+
+
+def kac_table():
+    print("\n4. Kac's mean return time 1/P(E_c >= f E) in periods (law; E = 0.5)")
+    fractions = [0.3, 0.5, 0.7, 0.8, 0.9]
+    print("   k   " + "".join(f"f={f:<9g}" for f in fractions))
+    rows = []
+    for k in (1, 2, 3, 4, 5):
+        kac = equilibrium_law(Sink(FIG8, particles=k), 0.5).kac_periods(fractions)
+        rows.append(kac)
+        print(f"   {k}   " + "".join(f"{x:<11.4g}" for x in kac))
+    held = [
+        (k, f)
+        for k, row in zip((1, 2, 3, 4, 5), rows, strict=True)
+        for f, x in zip(fractions, row, strict=True)
+        if x > 1e4
+    ]
+    print("   longer than 10^4 periods: " + ", ".join(f"k={k} f={f:g}" for k, f in held))
+
+
+def ergodicity_maps(path: str, scale: float, seed: int) -> None:
+    from matplotlib.figure import Figure
+
+    from sinktheory.equilibrium.ergodicity import ergodicity_map
+    from sinktheory.model import confining_betas
+    from sinktheory.plot.equilibrium import plot_ergodicity
+
+    panels = [
+        ("Fig. 3a flat n=2", {"alpha": 0.5, "n": 2, "shape": "flat"}, (-0.7, 0.45)),
+        ("Fig. 3b flat n=10", {"alpha": 0.5, "n": 10, "shape": "flat"}, (-0.7, 0.45)),
+        ("Fig. 11 symmetric n=6", {"alpha": 1.0, "n": 6, "shape": "symmetric"}, (-0.6, 1.0)),
+    ]
+    fig = Figure(figsize=(7.0 * len(panels), 5.5), layout="constrained")
+    axes = fig.subplots(2, len(panels))
+    print(
+        "\n5. ergodicity maps (verdict 2: chaotic and sampling the law, 1: chaotic, not "
+        "sampling it, 0: regular)"
+    )
+    for j, (name, well, (lo, hi)) in enumerate(panels):
+        valid = confining_betas(well["alpha"], well["n"], 0.5, shape=well["shape"], lo=lo, hi=hi)
+        betas = np.concatenate(
+            [
+                np.linspace(
+                    a + 0.01, b - 0.01, max(2, round(12 * (b - a) / sum(y - x for x, y in valid)))
+                )
+                for a, b in valid
+            ]
+        )
+        t = time.perf_counter()
+        m = ergodicity_map(
+            betas,
+            seed=seed,
+            progress=False,
+            runs=8,
+            periods=int(2000 * scale),
+            transient=int(500 * scale),
+            **well,
+        )
+        print(f"   {name} ({time.perf_counter() - t:.0f} s)")
+        print("   beta    " + " ".join(f"{b:6.3f}" for b in m.beta))
+        print("   KS      " + " ".join(f"{d:6.3f}" for d in m.ks_distance))
+        print("   p       " + " ".join(f"{p:6.3f}" for p in m.ks_pvalue))
+        print("   lambda1 " + " ".join(f"{x:6.3f}" for x in m.lambda1))
+        print("   verdict " + " ".join(f"{int(x):6d}" for x in m.verdict))
+        plot_ergodicity(m, ax=(axes[0, j], axes[1, j]))
+        axes[0, j].set_title(name, fontsize=9)
+    fig.savefig(path, dpi=120)
+    print(f"   wrote {path}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--png", default=None)
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--map", default=None, help="draw the ergodicity maps into this PNG")
+    args = parser.parse_args()
+    scale = 0.2 if args.quick else 1.0
+    print(
+        f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
+        f"load {os.getloadavg()[0]:.2f}; python {platform.python_version()}"
+    )
+    law_costs()
+    measured = []
+    for k, transient in ((1, 500), (2, 1500)):
+        c = fig8_against_law(k, int(transient * scale), int(3000 * scale), args.seed)
+        measured += [
+            (k, f, c.return_time[i], c.return_time_stderr[i])
+            for i, f in enumerate(c.fractions)
+            if np.isfinite(c.return_time[i])
+        ]
+    relaxation_table(scale, args.seed)
+    kac_table()
+    if args.map:
+        ergodicity_maps(args.map, scale, args.seed)
+    if args.png:
+        from sinktheory.plot.equilibrium import plot_lifetimes
+
+        grid = np.linspace(0.05, 0.95, 19)
+        predicted = [
+            equilibrium_law(Sink(FIG8, particles=k), 0.5).kac_periods(grid) for k in (1, 2, 3, 4, 5)
+        ]
+        plot_lifetimes(grid, [1, 2, 3, 4, 5], predicted, measured).savefig(args.png, dpi=150)
+        print(f"\nwrote {args.png}")
+
+
+if __name__ == "__main__":
+    main()
