@@ -12,7 +12,11 @@ Prints (with the machine description):
    moving-container lambda_1 and final <E> for the flat well, alpha = 0.5, beta from
    -0.45 to 0.45: the rigid-limit rows of the paper's billiard analogies (beta > 0
    dispersing, beta < 0 focusing);
-4. with --plot, a PNG of item 3.
+4. with --soft, the container's <E> at t = 50 T and 100 T of soft-wall ensembles
+   (``simulate``, tol 1e-8) at n = 4, 10, 20, 50 beside the rigid limit, same start
+   (flat well, alpha 0.5, beta 0.3, k = 5, m = 0.2, 25 runs; each new n compiles its
+   engine once, about a minute);
+5. with --plot, a PNG of item 3.
 """
 
 from __future__ import annotations
@@ -109,9 +113,35 @@ def analogies(quick: bool):
     return np.array(rows)
 
 
+def soft_against_rigid() -> None:
+    from sinktheory.model import Sink, Well
+    from sinktheory.simulate import simulate
+
+    s = RunSettings(runs=25, periods=100)
+    print("   n      <E>(50 T)         <E>(100 T)        seconds")
+    for n in (4, 10, 20, 50):
+        t0 = time.perf_counter()
+        r = simulate(Sink(Well(0.5, 0.3, n), 5, 0.2), s, tol=1e-8, progress=False)
+        mean, se = r.ensemble_energy()
+        dt = time.perf_counter() - t0
+        print(
+            f"  {n:<4d}  {mean[50]:.4f} +- {se[50]:.4f}   {mean[100]:.4f} +- {se[100]:.4f}   "
+            f"{dt:.0f}"
+        )
+    t0 = time.perf_counter()
+    r = billiard("flat", 0.5, 0.3, particles=5, mass=0.2, settings=s)
+    e = r.container_energy
+    se = e.std(axis=0, ddof=1) / math.sqrt(len(e))
+    print(
+        f"  oo    {e[:, 50].mean():.4f} +- {se[50]:.4f}   {e[:, 100].mean():.4f} +- "
+        f"{se[100]:.4f}   {time.perf_counter() - t0:.1f}"
+    )
+
+
 def main() -> None:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--quick", action="store_true", help="fewer runs (a minute)")
+    p.add_argument("--soft", action="store_true", help="also soft-wall ensembles (minutes)")
     p.add_argument("--plot", help="write the lambda_1(beta) chart to FILE.png")
     a = p.parse_args()
     print(f"Machine: {machine()}")
@@ -124,6 +154,9 @@ def main() -> None:
         "E0 = 0.5, m = 0.2) and moving (k = 5, m = 0.2, E0 = 0.5)"
     )
     rows = analogies(a.quick)
+    if a.soft:
+        print("4. soft walls against the rigid limit: container energy, flat 0.5/0.3, k = 5")
+        soft_against_rigid()
     if a.plot:
         from matplotlib.figure import Figure
 
