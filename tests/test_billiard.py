@@ -332,3 +332,20 @@ def test_time_reversal_retraces_the_run(moving):
     np.testing.assert_allclose(vel, vel0, atol=1e-6)
     if moving:
         np.testing.assert_allclose(cont, cont0, atol=1e-6)
+
+
+@pytest.mark.parametrize("miss", [-1e-9, 1e-9])
+def test_moving_wall_that_just_reaches_a_resting_particle(miss):
+    # rectangle |x| <= 0.5 (flat, beta = 0); the container swings X(t) = 0.3 cos t and a
+    # particle rests at absolute u, so its relative x(t) = u - 0.3 cos t peaks at
+    # u + 0.3 at t = pi.  With u + 0.3 = 0.5 (1 + e) the wall reaches the particle iff
+    # e > 0, first at cos t = (u - 0.5) / 0.3 (a near-tangency: g' ~ 1e-5 there)
+    t = rigid_table("flat", 0.5, 0.0)
+    u = 0.5 * (1 + miss) - 0.3
+    h, wall, status = K.next_hit(u - 0.3, 0.0, 0.0, 0.0, 0.3, 0.0, 2 * math.pi, *_arrays(t))
+    assert status == 0
+    if miss > 0:
+        assert wall == 0
+        assert h == pytest.approx(math.acos((u - 0.5) / 0.3), abs=1e-9)
+    else:
+        assert wall == -1 and h == 2 * math.pi
