@@ -6,6 +6,7 @@ the store API and the command; the Python API through a property-based test
 (test_hardening_api.py).
 """
 
+import numpy as np
 import pytest
 from test_hardening import refused
 
@@ -178,3 +179,125 @@ def test_interrupt_ends_workers_and_exits_promptly(argv, signame, group, status,
     assert not any(_alive(p) for p in below), [p for p in below if _alive(p)]
     ds = xr.open_zarr(tmp_path / "s.zarr")  # whole: created before the points ran
     assert ds.done.shape == ((40,) if argv is SLOW_SWEEP else (20,))
+
+
+# --------------------------------------------------------------------------- damaged stores
+FLOQUET = {"alpha": 0.5, "beta": [-0.3, -0.2, -0.1, 0.1, 0.2, 0.3], "n": [2, 10]}
+
+
+def _store(path):
+    import xarray as xr
+
+    from sinktheory.sweep import run_sweep
+
+    run_sweep("floquet", FLOQUET, store=path, workers=1, progress=False)
+    return xr.open_zarr(path).load()
+
+
+def _resume(path, repair=False):
+    import xarray as xr
+
+    from sinktheory.sweep import execute
+    from sinktheory.sweep.plan import Sweep
+
+    done = execute(Sweep.make("floquet", FLOQUET), store=path, resume=True, repair=repair,
+                   progress=False)  # fmt: skip
+    return done, xr.open_zarr(path).load()
+
+
+def _set(path, name, change):
+    """Rewrite array ``name`` of the store through zarr (every chunk still decodes)."""
+    import zarr
+
+    group = zarr.open_group(path, mode="r+", use_consolidated=False)
+    values = group[name][...]
+    change(values)
+    group[name][...] = values
+
+
+def _flip_last_bit(values):
+    values.view(np.uint64)[2, 1] ^= np.uint64(1)
+
+
+def _nan_at(values):
+    values[4, 0] = np.nan
+
+
+DAMAGE = [
+    ("lam value flipped", lambda p: _set(p, "lam", _flip_last_bit), 1),
+    ("phi NaN, still done", lambda p: _set(p, "phi", _nan_at), 1),
+    ("lam chunk deleted", lambda p: (p / "lam" / "c" / "0" / "0").unlink(), 12),
+    ("done chunk deleted", lambda p: (p / "done" / "c" / "0" / "0").unlink(), 12),
+    ("checksum chunk deleted", lambda p: (p / "checksum" / "c" / "0" / "0").unlink(), 12),
+]
+
+
+@pytest.mark.parametrize(("what", "damage", "count"), DAMAGE, ids=[d[0] for d in DAMAGE])
+def test_damaged_points_are_counted_and_recomputed(what, damage, count, tmp_path):
+    path = tmp_path / "s.zarr"
+    pristine = _store(path)
+    damage(path)
+    done, after = _resume(path)
+    assert done.computed == done.repaired == count, (done.computed, done.repaired)
+    for name in ("lam", "phi_half", "phi", "stable", "checksum"):
+        np.testing.assert_array_equal(after[name].values, pristine[name].values)
+    again, _ = _resume(path)
+    assert again.computed == again.repaired == 0  # nothing left to repair
+
+
+def test_lost_checksum_array_refuses_the_store(tmp_path):
+    """Not mistaken for a store of the format before checksums (where a decodable flip
+    would be kept): the store recorded that it keeps them."""
+    import shutil
+
+    from sinktheory.errors import ParameterError
+
+    path = tmp_path / "s.zarr"
+    _store(path)
+    _set(path, "lam", _flip_last_bit)
+    shutil.rmtree(path / "checksum")
+    for repair in (False, True):
+        with pytest.raises(ParameterError, match="checksum array is missing"):
+            _resume(path, repair)
+
+
+@pytest.mark.parametrize(("key", "value"), [("alpha", 0.6), ("sweep_seed", 999)])
+def test_edited_attribute_refuses_the_store(key, value, tmp_path):
+    import zarr
+
+    from sinktheory.errors import ParameterError
+
+    path = tmp_path / "s.zarr"
+    _store(path)
+    zarr.open_group(path, mode="r+", use_consolidated=False).attrs[key] = value
+    with pytest.raises(ParameterError, match=f"attribute {key} is {value!r}"):
+        _resume(path)
+
+
+def test_damage_is_said_by_sweep_and_design(capsys, tmp_path, monkeypatch):
+    """Both commands say how many damaged points they recomputed; design has --repair."""
+    import json
+
+    from _cli import run_cli
+
+    monkeypatch.chdir(tmp_path)
+    argv = ["sweep", "floquet", "--param", "alpha=0.5", "--param", "beta=-0.2,0.1"]
+    argv += ["--param", "n=4", "--out", "s.zarr", "--quiet"]
+    assert run_cli(argv, capsys)[0] == 0
+    (tmp_path / "s.zarr" / "phi" / "c" / "0").unlink()
+    code, out, err = run_cli([*argv, "--resume"], capsys)
+    assert code == 0, err
+    assert "2 point(s) computed (2 of them found damaged in the store and recomputed)" in out
+
+    design = ["design", "--beta", "0.1,0.3", "--n", "4", "--runs", "2", "--periods", "12"]
+    design += ["--horizons", "6,12", "--lyapunov-runs", "0", "--bootstrap", "10"]
+    design += ["--no-estimate", "--workers", "1", "--out", "d.zarr", "--quiet", "--json"]
+    assert run_cli(design, capsys)[0] == 0
+    chunk = tmp_path / "d.zarr" / "depth" / "c" / "0"
+    chunk.write_bytes(chunk.read_bytes()[:5])  # no longer decodes
+    code, out, err = run_cli([*design, "--resume"], capsys)
+    assert code == 2 and "damaged" in err and len(err.strip().splitlines()) == 1
+    code, out, err = run_cli([*design, "--resume", "--repair"], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["computed"] == data["repaired"] == 2

@@ -76,6 +76,17 @@ def interruptible(prog: str, hint: str = "--resume continues") -> Iterator[None]
         raise SystemExit(status)
 
 
+def damage_note(repaired: int) -> str:
+    """`` (N of them found damaged in the store and recomputed)`` or nothing.
+
+    Examples
+    --------
+    >>> damage_note(0), damage_note(3)
+    ('', ' (3 of them found damaged in the store and recomputed)')
+    """
+    return f" ({repaired} of them found damaged in the store and recomputed)" if repaired else ""
+
+
 def number(text: str) -> int | float:
     """argparse type: an int or float literal (nan and inf pass, so the model can name them)."""
     try:

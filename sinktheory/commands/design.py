@@ -25,7 +25,15 @@ from ..errors import ParameterError
 from ..sweep.grid import parse_param
 from ..validation import writable_directory
 from . import HELP as HELPS
-from ._common import Output, add_json, as_directory, interruptible, number, output_directory
+from ._common import (
+    Output,
+    add_json,
+    as_directory,
+    damage_note,
+    interruptible,
+    number,
+    output_directory,
+)
 
 NAME = "design"
 HELP = HELPS[NAME]
@@ -111,6 +119,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     o.add_argument("--report", default=None, metavar="DIR", help="charts, table, report.md")
     o.add_argument("--top", type=number, default=10, help="designs in the report (10)")
     o.add_argument("--resume", action="store_true", help="continue the sweep in STORE")
+    o.add_argument(
+        "--repair",
+        action="store_true",
+        help="with --resume: remove chunks that no longer decode and recompute their points",
+    )
     o.add_argument("--scheduler", default=None, metavar="ADDRESS", help="Dask scheduler")
     o.add_argument("--workers", type=number, default=None, help="local processes (all cores)")
     o.add_argument("--no-estimate", action="store_true", help="skip the cost calibration")
@@ -159,7 +172,7 @@ def _run(args: argparse.Namespace) -> Output:
     from ..sweep.runner import execute
 
     sweep = plan(params_of(args), args.seed)
-    todo = todo_of(sweep, store, args.resume)
+    todo, repaired = todo_of(sweep, store, args.resume, args.repair)
     est = None
     if todo.size and not args.no_estimate:
         from ..design.cost import estimate
@@ -173,8 +186,12 @@ def _run(args: argparse.Namespace) -> Output:
         scheduler=args.scheduler,
         workers=args.workers,
         resume=args.resume,
+        repair=args.repair,
         progress=not args.quiet,
     )
+    # opening the store again counts the points todo_of flagged (their checksums stay),
+    # except where a removed checksum chunk took the checksums with it
+    repaired = max(repaired, done.repaired)
     ds = done.dataset
     ranked = rank(ds)
     dims = list(ds.done.dims)
@@ -185,6 +202,7 @@ def _run(args: argparse.Namespace) -> Output:
         "dims": sweep.dims,
         "points": sweep.grid.size,
         "computed": done.computed,
+        "repaired": repaired,
         "skipped": done.skipped,
         "seconds": done.seconds,
         "estimated_seconds": None if est is None else est.total_seconds,
@@ -195,7 +213,8 @@ def _run(args: argparse.Namespace) -> Output:
     }
     lines = [
         sweep.describe(),
-        f"{done.computed} design(s) computed, {done.skipped} already done, in "
+        f"{done.computed} design(s) computed{damage_note(repaired)}, {done.skipped} already "
+        "done, in "
         f"{done.seconds:.1f} s on {done.where}"
         + ("" if est is None else f" (estimated {est.total_seconds:.0f} s)"),
         f"results: {done.store} (xarray.open_zarr)",
@@ -213,7 +232,15 @@ def _run(args: argparse.Namespace) -> Output:
         from ..design.report import write_report
 
         run = DesignRun(
-            ds, ranked, done.store, done.computed, done.skipped, done.seconds, done.where, est
+            ds,
+            ranked,
+            done.store,
+            done.computed,
+            done.skipped,
+            done.seconds,
+            done.where,
+            est,
+            repaired,
         )
         writers[report] = as_directory(
             lambda path: write_report(ds, path, ranked=ranked, top=top, run=run)

@@ -18,7 +18,7 @@ from ..sweep.grid import Value, parse_param
 from ..sweep.kinds import KINDS
 from ..validation import writable_directory
 from . import HELP as HELPS
-from ._common import Output, add_json, interruptible, number
+from ._common import Output, add_json, damage_note, interruptible, number
 
 NAME = "sweep"
 HELP = HELPS[NAME]
@@ -101,6 +101,7 @@ def _run(args: argparse.Namespace) -> Output:
         "dims": sweep.dims,
         "points": sweep.grid.size,
         "computed": done.computed,
+        "repaired": done.repaired,
         "skipped": done.skipped,
         "seconds": done.seconds,
         "where": done.where,
@@ -110,8 +111,8 @@ def _run(args: argparse.Namespace) -> Output:
     text = "\n".join(
         [
             sweep.describe(),
-            f"{done.computed} point(s) computed, {done.skipped} already done, "
-            f"in {done.seconds:.1f} s on {done.where}",
+            f"{done.computed} point(s) computed{damage_note(done.repaired)}, {done.skipped} "
+            f"already done, in {done.seconds:.1f} s on {done.where}",
             f"results: {done.store} (xarray.open_zarr)",
         ]
     )

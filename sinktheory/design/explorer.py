@@ -50,6 +50,8 @@ class DesignRun:
     where : str
     estimate : Estimate or None
         The calibrated estimate made before starting (None if not asked for).
+    repaired : int
+        Points found damaged in the store and computed again (part of ``computed``).
     """
 
     dataset: Any
@@ -60,6 +62,7 @@ class DesignRun:
     seconds: float
     where: str
     estimate: Any = None
+    repaired: int = 0
 
 
 def plan(params: Mapping[str, Any], seed: int = 0):
@@ -69,18 +72,23 @@ def plan(params: Mapping[str, Any], seed: int = 0):
     return Sweep.make("design", params, seed)
 
 
-def todo_of(sweep, store: str | Path | None, resume: bool) -> np.ndarray:
-    """Indices of the points still to compute (all of them unless resuming a store)."""
+def todo_of(
+    sweep, store: str | Path | None, resume: bool, repair: bool = False
+) -> tuple[np.ndarray, int]:
+    """(indices of the points still to compute, points found damaged): all of them, and
+    none damaged, unless resuming a store.  Opening the store checks it (see
+    :meth:`sinktheory.sweep.store.SweepStore.open`; ``repair`` removes chunks that no
+    longer decode) and flags damaged points not done, so they are among the indices."""
     if store is None or not resume or not Path(store).exists():
-        return np.arange(sweep.grid.size)
+        return np.arange(sweep.grid.size), 0
     from ..sweep.store import SweepStore
 
-    target = SweepStore.open(store, sweep)
+    target = SweepStore.open(store, sweep, repair=repair)
     try:
         done = np.asarray(target.done()).reshape(-1)
     finally:
         target.close()
-    return np.flatnonzero(~done)
+    return np.flatnonzero(~done), target.repaired
 
 
 def explore(
@@ -91,6 +99,7 @@ def explore(
     scheduler: Any = None,
     workers: int | None = None,
     resume: bool = False,
+    repair: bool = False,
     progress: bool = True,
     estimate_first: bool = True,
     report: str | Path | None = None,
@@ -109,7 +118,7 @@ def explore(
         Sweep seed (point i gets ``SeedSequence(seed, spawn_key=(i,))``).
     store : path, optional
         Zarr store (None: in memory).
-    scheduler, workers, resume, progress
+    scheduler, workers, resume, repair, progress
         As for :func:`sinktheory.sweep.run_sweep`.
     estimate_first : bool
         Calibrate and print the estimated time on stderr before starting.
@@ -125,11 +134,12 @@ def explore(
     from ..sweep.runner import execute
 
     sweep = plan(params, seed)
+    todo, repaired = todo_of(sweep, store, resume, repair)
     est = None
     if estimate_first:
         from .cost import estimate
 
-        est = estimate(sweep, workers=workers, todo=todo_of(sweep, store, resume))
+        est = estimate(sweep, workers=workers, todo=todo)
         if est.points:
             print(est.describe(), file=sys.stderr, flush=True)
     done = execute(
@@ -139,6 +149,7 @@ def explore(
         workers=workers,
         resume=resume,
         progress=progress,
+        repair=repair,
     )
     ranked = rank(done.dataset)
     run = DesignRun(
@@ -150,6 +161,7 @@ def explore(
         done.seconds,
         done.where,
         est,
+        max(repaired, done.repaired),  # counted twice but for removed checksum chunks
     )
     if report is not None:
         from .report import write_report

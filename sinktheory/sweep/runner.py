@@ -73,6 +73,8 @@ class SweepRun:
     skipped: int
     seconds: float
     where: str
+    #: points found damaged when the store was opened, computed again (in ``computed``)
+    repaired: int = 0
 
 
 def run_sweep(
@@ -184,6 +186,7 @@ def execute(
         skipped=sweep.grid.size - pending,
         seconds=time.perf_counter() - start,
         where=engine.where,
+        repaired=getattr(target, "repaired", 0),
     )
 
 

@@ -82,6 +82,9 @@ from .plan import MARK, Sweep
 LOCK = ".sweep.lock"
 #: Variable holding each point's checksum: BLAKE2b (64 bits) of its stored results.
 CHECKSUM = "checksum"
+#: Root attribute recording that the store keeps checksums (a store with it that lost its
+#: ``checksum`` array is damaged, not of the format before checksums).
+CHECKSUM_ATTR = "sweep_checksums"
 #: Target number of values in one chunk of a result array.
 CHUNK_VALUES = 4096
 
@@ -119,6 +122,7 @@ class SweepStore:
                 np.zeros(sweep.grid.shape, np.uint64),
                 {"description": "BLAKE2b-64 of the point's stored results (0: none yet)"},
             )
+            template.attrs[CHECKSUM_ATTR] = f"BLAKE2b-64 of each point's results in {CHECKSUM}"
             encoding = {name: {"chunks": _chunks(sweep, name)} for name in sweep.kind.results}
             encoding["done"] = {"chunks": _flag_chunks(sweep)}
             encoding[CHECKSUM] = {"chunks": _flag_chunks(sweep)}
@@ -170,6 +174,15 @@ class SweepStore:
                 str(path),
                 "a store made by this same sweep (kind, grid, fixed parameters, seed)",
                 why=_difference(json.loads(spec), json.loads(sweep.spec)),
+            )
+        _check_attributes(path, attrs, sweep)
+        if CHECKSUM_ATTR in attrs and CHECKSUM not in group:
+            raise ParameterError(
+                "store",
+                str(path),
+                "an intact sweep store",
+                why=f"damaged: its {CHECKSUM} array is missing, so the stored points cannot "
+                "be verified (start the sweep again in a new store)",
             )
         store = None
         try:
@@ -224,9 +237,9 @@ class SweepStore:
         its points are flagged not done.
         """
         self._check_coordinates()
-        if repair:
-            self._drop_undecodable()
+        reset = self._drop_undecodable() if repair else np.zeros(self.sweep.grid.shape, bool)
         if self._checksum is None:
+            self.repaired += int(reset.sum())
             return
         names = list(self.sweep.kind.results)
         stored = {name: np.asarray(self._arrays[name][...]) for name in names}
@@ -234,10 +247,14 @@ class SweepStore:
         flat = {name: value.reshape(size, -1) for name, value in stored.items()}
         expected = _point_checksums(self.sweep, flat).reshape(self.sweep.grid.shape)
         done = self.done()
-        damaged = done & (np.asarray(self._checksum[...]) != expected)
+        sums = np.asarray(self._checksum[...])
+        damaged = done & (sums != expected)
         if damaged.any():
             self._arrays["done"][...] = done & ~damaged
-            self.repaired += int(damaged.sum())
+        # a point with a checksum but no flag lost its flag (a deleted or reset chunk of
+        # ``done``), or its write was cut short between the two: computed again either way
+        unflagged = ~done & (sums != 0)
+        self.repaired += int(damaged.sum()) + int((unflagged | reset).sum())
 
     def _check_coordinates(self) -> None:
         expected = {**self.sweep.coords(), "point_seed": self.sweep.point_seeds()}
@@ -262,8 +279,9 @@ class SweepStore:
                     why=f"damaged: the coordinate {name} differs from the sweep's{why}",
                 )
 
-    def _drop_undecodable(self) -> None:
-        """Remove result or flag chunks that do not decode; flag their points not done."""
+    def _drop_undecodable(self) -> np.ndarray:
+        """Remove result or flag chunks that do not decode; flag their points not done
+        (returned: the points of the removed chunks)."""
         ndim = len(self.sweep.grid.shape)
         reset = np.zeros(self.sweep.grid.shape, dtype=bool)
         arrays = {**self._arrays}
@@ -287,7 +305,7 @@ class SweepStore:
         if reset.any():
             flags = self._arrays["done"]
             flags[...] = np.asarray(flags[...], dtype=bool) & ~reset
-            self.repaired += int(reset.sum())
+        return reset
 
     def dataset(self) -> xr.Dataset:
         """The stored results, opened lazily with ``xarray.open_zarr``."""
@@ -458,6 +476,23 @@ def _empty_results(sweep: Sweep) -> dict[str, da.Array]:
         fill = False if spec.dtype == "bool" else np.nan
         out[name] = da.full(sweep.shape(name), fill, dtype=spec.dtype, chunks=_chunks(sweep, name))
     return out
+
+
+def _check_attributes(path: Path, attrs: dict, sweep: Sweep) -> None:
+    """Refuse a store whose root attributes differ from the sweep's own (an edited
+    ``runs``, say: the fingerprint covers the description, not these copies of it).
+    The package version may differ (a store resumed by a newer sinktheory)."""
+    for key, value in sweep.attrs().items():
+        if key == "sinktheory_version":
+            continue
+        if key not in attrs or json.dumps(attrs[key]) != json.dumps(value):
+            raise ParameterError(
+                "store",
+                str(path),
+                "an intact sweep store",
+                why=f"damaged: its attribute {key} is {attrs.get(key, '(missing)')!r}, its "
+                f"sweep's description says {value!r}",
+            )
 
 
 def _swept(dims: list) -> str:
