@@ -4,6 +4,8 @@ Usage::
 
     python benchmarks/bench_equilibrium.py [--quick] [--png FILE]
 
+0. ``sinktheory equilibrium`` for the Fig. 8 well, k = 5, as a fresh process: wall and
+   CPU time (best of 3; most of it is Python and numba's import).
 1. Cost of a law (flat, circular, symmetric wells; k = 1, 5, 100, 1000); its accuracy is
    the test suite's business (tests/test_equilibrium.py).
 2. Fig. 8 set-up (flat, alpha 0.5, beta 0.3, n 4, m 0.2, E0 0.5), k = 1 and 2: 8 runs x
@@ -40,6 +42,40 @@ from sinktheory.equilibrium import compare_with_law, equilibrium_law, relaxation
 from sinktheory.simulate import simulate
 
 FIG8 = Well(0.5, 0.3, 4)
+
+
+def command_cost() -> None:
+    import resource
+    import subprocess
+    import sys
+
+    cmd = [
+        sys.executable,
+        "-m",
+        "sinktheory",
+        "equilibrium",
+        "--alpha",
+        "0.5",
+        "--beta",
+        "0.3",
+        "--n",
+        "4",
+        "--particles",
+        "5",
+    ]
+    best_wall, best_cpu = math.inf, math.inf
+    for _ in range(3):
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        t = time.perf_counter()
+        subprocess.run(cmd, check=True, capture_output=True)
+        wall = time.perf_counter() - t
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
+        best_wall, best_cpu = min(best_wall, wall), min(best_cpu, cpu)
+    print(
+        f"\n0. sinktheory equilibrium (Fig. 8 well, k = 5): wall {best_wall:.2f} s, "
+        f"CPU {best_cpu:.2f} s (best of 3)"
+    )
 
 
 def law_costs() -> None:
@@ -193,6 +229,7 @@ def main() -> None:
         f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
         f"load {os.getloadavg()[0]:.2f}; python {platform.python_version()}"
     )
+    command_cost()
     law_costs()
     measured = []
     for k, transient in ((1, 500), (2, 1500)):
