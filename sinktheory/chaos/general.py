@@ -73,6 +73,52 @@ def check_block(block) -> int | None:
     return None if block is None else val.positive_int("block", block, maximum=MAX_RUNS)
 
 
+def check_params(system: str, params) -> np.ndarray:
+    """The runtime parameters of engine ``system``: as many finite numbers as it has
+    (:func:`sinktheory.nnm.system.parameter_names`)."""
+    from ..nnm.system import parameter_names
+
+    names = parameter_names(system)
+    p = val.real_array("params", params).reshape(-1) if np.ndim(params) <= 1 else None
+    if p is None or p.size != len(names) or not np.isfinite(p).all():
+        shown = params if isinstance(params, str | list | tuple) else type(params).__name__
+        raise ParameterError("params", shown, f"{len(names)} finite values {names} for {system}")
+    return p
+
+
+def check_run(system, q, v, dt, steps, segments) -> tuple[str, np.ndarray, np.ndarray, float,
+                                                          int, int]:  # fmt: skip
+    """(system, q, v, dt, steps, segments) of an engine run, each validated: a known engine
+    system, finite start states q and v of one shape (D, R), dt > 0, and steps and
+    segments integers in [1, :data:`~sinktheory.validation.MAX_STEPS_PER_PERIOD`]."""
+    system = val.engine_system("system", system)
+    q = val.real_array("q", q)
+    v = val.real_array("v", v)
+    if q.ndim != 2 or q.shape != v.shape or 0 in q.shape:
+        raise ParameterError("q", f"arrays of shapes {q.shape}, {v.shape}",
+                             "positions q and velocities v of one shape (D, R)")  # fmt: skip
+    if not (np.isfinite(q).all() and np.isfinite(v).all()):
+        raise ParameterError("q", "non-finite start states", "finite q and v")
+    dt = val.positive("dt", dt)
+    steps = val.positive_int("steps", steps, maximum=val.MAX_STEPS_PER_PERIOD)
+    segments = val.positive_int("segments", segments, maximum=val.MAX_STEPS_PER_PERIOD)
+    return system, q, v, dt, steps, segments
+
+
+def check_transverse(transverse, dim: int, runs: int) -> tuple:
+    """(q, v, mask) of the transverse runs: finite start states of shape (D, R) and a
+    boolean mask of the 2D phase-space directions."""
+    allowed = f"(q, v, mask): states of shape ({dim}, {runs}) and {2 * dim} booleans"
+    if not isinstance(transverse, tuple | list) or len(transverse) != 3:
+        raise ParameterError("transverse", type(transverse).__name__, allowed)
+    q, v, mask = (val.real_array("transverse", a, allowed) for a in transverse)
+    if q.shape != (dim, runs) or v.shape != (dim, runs) or mask.shape != (2 * dim,):
+        raise ParameterError("transverse", f"shapes {q.shape}, {v.shape}, {mask.shape}", allowed)
+    if not (np.isfinite(q).all() and np.isfinite(v).all() and np.isin(mask, (0, 1)).all()):
+        raise ParameterError("transverse", "non-finite states or a non-boolean mask", allowed)
+    return q, v, mask.astype(bool)
+
+
 def check_bound(bound) -> float:
     """Largest relative energy error tolerated: a number > 0, or inf (no audit)."""
     if not val._is_bool(bound) and isinstance(bound, int | float) and bound == math.inf:
@@ -192,16 +238,16 @@ def indicators(
     -------
     ChaosResult
     """
-    q = np.asarray(q, float)
+    system, q, v, dt, steps, segments = check_run(system, q, v, dt, steps, segments)
+    params = check_params(system, params)
     D, R = q.shape
     scheme = get_scheme(method)
+    if transverse is not None:
+        transverse = check_transverse(transverse, D, R)
     gali = check_gali(gali, D)
     renorm = check_renorm(renorm)
-    segments = val.positive_int("segments", segments, maximum=val.MAX_STEPS_PER_PERIOD)
-    steps = val.positive_int("steps", steps, maximum=val.MAX_STEPS_PER_PERIOD)
-    dt = val.positive("dt", dt)
     megno = val.flag("megno", megno)
-    system = val.engine_system("system", system)
+    seed = val.positive_int("seed", seed, minimum=0)
     block = check_block(block)
     bound = check_bound(bound)
     opts = {
@@ -216,11 +262,14 @@ def indicators(
     if vectors is None:
         dq, dv = random_vectors(D, count, R, seed)
     else:
-        dq, dv = (np.asarray(a, float) for a in vectors)
-        if dq.shape != dv.shape or dq.shape[0] != D or dq.shape[2] != R or dq.shape[1] < count:
-            raise ParameterError(
-                "vectors", f"arrays of shapes {dq.shape}, {dv.shape}", f"({D}, >= {count}, {R})"
-            )
+        allowed = f"(dq, dv) of shape ({D}, >= {count}, {R}), finite"
+        if not isinstance(vectors, tuple | list) or len(vectors) != 2:
+            raise ParameterError("vectors", type(vectors).__name__, allowed)
+        dq, dv = (val.real_array("vectors", a, allowed) for a in vectors)
+        if dq.shape != dv.shape or dq.ndim != 3 or dq.shape[::2] != (D, R) or dq.shape[1] < count:
+            raise ParameterError("vectors", f"arrays of shapes {dq.shape}, {dv.shape}", allowed)
+        if not (np.isfinite(dq).all() and np.isfinite(dv).all()):
+            raise ParameterError("vectors", "non-finite vectors", allowed)
     times = dt * steps * np.arange(segments + 1)
     worst = np.zeros(R)
     out: dict = {}

@@ -32,6 +32,7 @@ import math
 
 import numpy as np
 
+from .. import validation as v
 from ..errors import ParameterError
 
 #: The finite-time exponent of a regular orbit is ~ ln t / t; a chaotic verdict needs the
@@ -61,9 +62,12 @@ def chaos_map(
     dimension beta (see :data:`sinktheory.sweep.kinds.KINDS` ``["chaos"]``)."""
     from ..sweep import run_sweep
 
+    grid = v.real_array("betas", betas, "a sequence of betas")
+    if grid.ndim != 1 or grid.size == 0:
+        raise ParameterError("betas", f"an array of shape {grid.shape}", "a sequence of betas")
     params = {
         "alpha": alpha,
-        "beta": [float(b) for b in betas],
+        "beta": grid.tolist(),
         "n": n,
         "shape": shape,
         "particles": particles,
@@ -71,7 +75,7 @@ def chaos_map(
         "energy": energy,
         "runs": runs,
         "periods": periods,
-        "transverse": int(bool(transverse)),
+        "transverse": int(v.flag("transverse", transverse)),
         "dt": dt,
     }
     return run_sweep("chaos", params, seed=seed, workers=workers, store=store, progress=progress)
@@ -79,7 +83,27 @@ def chaos_map(
 
 def beta_grid(ranges, points: int) -> np.ndarray:
     """About ``points`` betas over the intervals ``ranges`` [(lo, hi), ...], shared in
-    proportion to their lengths (at least two per interval)."""
+    proportion to their lengths (at least two per interval).
+
+    Examples
+    --------
+    >>> beta_grid([(0.0, 0.2), (0.4, 0.5)], 6).round(3).tolist()  # 6 x 2/3 and 6 x 1/3
+    [0.0, 0.067, 0.133, 0.2, 0.4, 0.5]
+    >>> beta_grid([(0.2, 0.0)], 6)
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: ranges = [(0.2, 0.0)] is not allowed: must be \
+intervals (lo, hi) of finite numbers with lo < hi
+    """
+    from ..sweep.grid import MAX_POINTS
+
+    points = v.positive_int("points", points, minimum=2, maximum=MAX_POINTS)
+    bounds = v.real_array("ranges", ranges, "intervals (lo, hi) of finite numbers")
+    if bounds.ndim != 2 or bounds.shape[1] != 2 or not bounds.size:
+        raise ParameterError("ranges", ranges, "intervals (lo, hi) of finite numbers")
+    if not (np.isfinite(bounds).all() and (bounds[:, 0] < bounds[:, 1]).all()):
+        raise ParameterError("ranges", ranges, "intervals (lo, hi) of finite numbers with lo < hi")
+    ranges = bounds.tolist()
     total = sum(b - a for a, b in ranges)
     return np.concatenate(
         [np.linspace(a, b, max(2, round(points * (b - a) / total))) for a, b in ranges]

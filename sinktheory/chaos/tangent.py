@@ -25,8 +25,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import validation as val
 from ..engine.core import Ensemble
 from ..integrators import DEFAULT_SCHEME, get_scheme
+from .general import check_block, check_params, check_run
 
 
 def monodromy(
@@ -59,7 +61,10 @@ def monodromy(
     ndarray (R, 2D, 2D)
         M[r] maps (dq, dv) at the start to (dq, dv) at the end, in (q, v) coordinates.
     """
-    q = np.array(q, float)  # a copy: the engine advances its arrays in place
+    system, q, v, dt, steps, segments = check_run(system, q, v, dt, steps, segments)
+    params = check_params(system, params)
+    block = check_block(block)
+    q = q.copy()  # the engine advances its arrays in place
     D, R = q.shape
     eye = np.broadcast_to(np.eye(2 * D)[:, :, None], (2 * D, 2 * D, R))
     ens = Ensemble(
@@ -110,8 +115,9 @@ def finite_difference_jacobian(
     -------
     ndarray (R, 2D, 2D), as :func:`monodromy`.
     """
-    q = np.asarray(q, float)
-    v = np.asarray(v, float)
+    system, q, v, dt, steps, segments = check_run(system, q, v, dt, steps, segments)
+    params = check_params(system, params)
+    h = val.positive("h", h)
     D, R = q.shape
     z = np.concatenate([q, v])  # (2D, R)
     step = h * np.maximum(1.0, np.abs(z))  # (2D, R)

@@ -20,8 +20,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import validation as val
 from ..engine.core import Ensemble
+from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, get_scheme
+from .general import check_params, check_run
 from .vectors import random_vectors
 
 
@@ -52,10 +55,17 @@ def two_orbit_exponent(
         :func:`~sinktheory.chaos.vectors.random_vectors` (the one ``indicators`` uses for
         lambda_1 with the same seed).
     """
-    q = np.asarray(q, float)
-    v = np.asarray(v, float)
+    system, q, v, dt, steps, segments = check_run(system, q, v, dt, steps, segments)
+    params = check_params(system, params)
+    d0 = val.positive("d0", d0)
     D, R = q.shape
-    dq, dv = random_vectors(D, 1, R, seed) if direction is None else direction
+    if direction is None:
+        dq, dv = random_vectors(D, 1, R, seed)
+    else:
+        dq, dv = (val.real_array("direction", a) for a in direction)
+        if dq.shape != (D, 1, R) or dv.shape != (D, 1, R):
+            raise ParameterError("direction", f"arrays of shapes {dq.shape}, {dv.shape}",
+                                 f"(dq, dv) of shape ({D}, 1, {R})")  # fmt: skip
     u = np.concatenate([dq[:, 0], dv[:, 0]])
     u = u / np.sqrt((u**2).sum(0))
     z = np.concatenate([q, v])

@@ -25,7 +25,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import validation as v
 from ..errors import ParameterError
+
+#: Largest number of coordinates D (1 + 2k for k = 10^5 particles).
+MAX_DIM = 200_001
 
 
 def orthonormalise(W: np.ndarray) -> np.ndarray:
@@ -67,10 +71,26 @@ def random_vectors(
     -------
     dq, dv : arrays (D, M, R)
     """
-    mask = np.ones(2 * dim, bool) if mask is None else np.asarray(mask, bool)
+    from ..model import MAX_RUNS
+
+    dim = v.positive_int("dim", dim, maximum=MAX_DIM)
+    runs = v.positive_int("runs", runs, maximum=MAX_RUNS)
+    seed = v.positive_int("seed", seed, minimum=0)
+    if mask is None:
+        mask = np.ones(2 * dim, bool)
+    else:
+        mask = v.real_array("mask", mask)
+        if mask.shape != (2 * dim,) or not np.isin(mask, (0, 1)).all():
+            raise ParameterError("mask", f"an array of shape {mask.shape}",
+                                 f"{2 * dim} booleans")  # fmt: skip
+        mask = mask.astype(bool)
     free = int(mask.sum())
-    if mask.shape != (2 * dim,) or not 1 <= count <= free:
-        raise ParameterError("vectors", count, f"between 1 and {free} (free directions)")
+    count = v.positive_int("count", count, maximum=max(free, 1))
+    if count > free:  # an all-False mask
+        raise ParameterError("mask", "no free direction", "at least one True")
+    # the square draw per run below: free^2 numbers, besides the vectors themselves
+    v.fits_memory("runs", runs, 8.0 * (2 * dim * count * runs + free * free), "the vectors",
+                  "smaller")  # fmt: skip
     W = np.zeros((2 * dim, count, runs))
     for r in range(runs):
         g = np.random.default_rng(vector_seed(seed, r))
