@@ -32,7 +32,8 @@ HELP = {
     "Kac return times",
     "lifetime": "measured return times of the container energy against Kac's prediction from "
     "the equilibrium law",
-    "sweep": "parameter sweep (floquet, bifurcation, ensemble) into a resumable Zarr store",
+    "sweep": "parameter sweep of any analysis kind (sweep --help lists them) into a resumable "
+    "Zarr store",
 }
 NAMES = tuple(HELP)
 
