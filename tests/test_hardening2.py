@@ -301,3 +301,50 @@ def test_damage_is_said_by_sweep_and_design(capsys, tmp_path, monkeypatch):
     assert code == 0, err
     data = json.loads(out)
     assert data["computed"] == data["repaired"] == 2
+
+
+# --------------------------------------------------------------------------- cosmetics
+def test_sweep_help_names_every_kind(capsys):
+    from sinktheory.cli import main
+    from sinktheory.sweep.kinds import KINDS
+
+    with pytest.raises(SystemExit):
+        main(["sweep", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    listed = text.split("KIND one of ", 1)[1].split(" options:")[0]
+    assert [k.strip() for k in listed.split(",")] == list(KINDS)
+    assert "(floquet, bifurcation, ensemble)" not in text
+
+
+def test_nnm_prints_sigma_at_its_precision(capsys):
+    """sigma vanishes for a conservative flow; computed to Newton's tolerance it prints as 0
+    (the JSON keeps the computed value)."""
+    import json
+
+    from _cli import run_cli
+
+    argv = ["nnm", *WELL, "--continue", "energy", "--points", "3"]
+    code, out, err = run_cli(argv, capsys)
+    assert code == 0, err
+    assert "sigma = 0 (to the Newton tolerance 1e-11)" in out and "e-16" not in out
+    code, out, err = run_cli([*argv, "--json"], capsys)
+    assert 0 < json.loads(out)["max_abs_sigma"] < 1e-11
+
+
+def test_full_disk_message_names_the_file(capsys, tmp_path, monkeypatch):
+    """A write that fails without a file name (EFBIG from a size limit) names the output."""
+    from _cli import run_cli
+
+    from sinktheory.plot import simulate as drawing
+
+    class BigFigure:
+        def savefig(self, path, **kwargs):
+            raise OSError(27, "File too large")
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(drawing, "plot_ensemble_energy", lambda *args: BigFigure())
+    argv = ["simulate", *WELL, "--runs", "2", "--periods", "2", "--quiet", "--plot", "e.png"]
+    code, _, err = run_cli(argv, capsys)
+    assert code == 1
+    assert err.strip() == "sinktheory simulate: could not write e.png: File too large"
+    assert list(tmp_path.iterdir()) == []

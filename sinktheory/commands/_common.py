@@ -224,7 +224,10 @@ def write_outputs(writers: dict[Path, Callable[[Path], None]]) -> None:
             else:
                 tmp = path.with_name(f".{path.stem}.partial-{tag}{path.suffix}")
             staged.append((tmp, path, directory))
-            write(tmp)
+            try:
+                write(tmp)
+            except OSError as e:  # name the output, not the hidden staging file (or none)
+                raise OSError(e.errno, e.strerror or str(e), str(path)) from e
         for tmp, path, directory in staged:
             if directory:
                 path.mkdir(parents=True, exist_ok=True)

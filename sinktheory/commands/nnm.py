@@ -209,6 +209,25 @@ def _report(result, sink, mode, param) -> Output:
         f"stable at {int(result.stable.sum())} of {result.points} points\n"
         f"  events: {ev}\n"
         f"  checks: max trivial-multiplier error {data['max_trivial_error']:.2e}, "
-        f"max |sigma| {data['max_abs_sigma']:.2e}"
+        f"{_sigma_text(data['max_abs_sigma'])}"
     )
     return Output(data, text)
+
+
+def _sigma_text(largest: float) -> str:
+    """The unfolding parameter sigma at the precision it is computed with.
+
+    sigma vanishes exactly for a conservative system; Newton solves it only to its step
+    tolerance :data:`~sinktheory.nnm.shooting.XTOL`, so a value below that is printed as
+    0 (its digits are round-off), a larger one as it is (a sign of trouble).
+
+    Examples
+    --------
+    >>> _sigma_text(3.7e-16), _sigma_text(2e-9)
+    ('sigma = 0 (to the Newton tolerance 1e-11)', 'max |sigma| 2.00e-09')
+    """
+    from ..nnm.shooting import XTOL
+
+    if largest < XTOL:
+        return f"sigma = 0 (to the Newton tolerance {XTOL:g})"
+    return f"max |sigma| {largest:.2e}"
