@@ -167,7 +167,6 @@ def _run(args: argparse.Namespace) -> Output:
     if store.exists() and not args.resume:
         raise ParameterError("out", args.out, "a new store", why="it exists; --resume continues it")
     from ..design.explorer import DesignRun, plan, todo_of  # xarray, zarr: when exploring
-    from ..design.ranking import rank
     from ..design.report import label
     from ..sweep.runner import execute
 
@@ -189,11 +188,8 @@ def _run(args: argparse.Namespace) -> Output:
         repair=args.repair,
         progress=not args.quiet,
     )
-    # opening the store again counts the points todo_of flagged (their checksums stay),
-    # except where a removed checksum chunk took the checksums with it
-    repaired = max(repaired, done.repaired)
-    ds = done.dataset
-    ranked = rank(ds)
+    run = DesignRun.of(done, est, repaired)
+    ds, ranked, repaired = run.dataset, run.ranked, run.repaired
     dims = list(ds.done.dims)
     best = [_row(r, dims) for r in ranked[:top]]
     data = {
@@ -231,17 +227,6 @@ def _run(args: argparse.Namespace) -> Output:
     if report is not None:
         from ..design.report import write_report
 
-        run = DesignRun(
-            ds,
-            ranked,
-            done.store,
-            done.computed,
-            done.skipped,
-            done.seconds,
-            done.where,
-            est,
-            repaired,
-        )
         writers[report] = as_directory(
             lambda path: write_report(ds, path, ranked=ranked, top=top, run=run)
         )

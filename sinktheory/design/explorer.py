@@ -64,6 +64,26 @@ class DesignRun:
     estimate: Any = None
     repaired: int = 0
 
+    @classmethod
+    def of(cls, done, estimate=None, repaired: int = 0) -> DesignRun:
+        """The design run of a finished :class:`~sinktheory.sweep.runner.SweepRun`, ranked.
+
+        ``repaired``: damaged points :func:`todo_of` found before ``done`` ran; opening
+        the store again counts them once more (their checksums stay), except where a
+        removed checksum chunk took the checksums with it, hence the larger of the two.
+        """
+        return cls(
+            done.dataset,
+            rank(done.dataset),
+            done.store,
+            done.computed,
+            done.skipped,
+            done.seconds,
+            done.where,
+            estimate,
+            max(repaired, done.repaired),
+        )
+
 
 def plan(params: Mapping[str, Any], seed: int = 0):
     """The checked design :class:`~sinktheory.sweep.plan.Sweep` (ParameterError if bad)."""
@@ -151,18 +171,8 @@ def explore(
         progress=progress,
         repair=repair,
     )
-    ranked = rank(done.dataset)
-    run = DesignRun(
-        done.dataset,
-        ranked,
-        done.store,
-        done.computed,
-        done.skipped,
-        done.seconds,
-        done.where,
-        est,
-        max(repaired, done.repaired),  # counted twice but for removed checksum chunks
-    )
+    run = DesignRun.of(done, est, repaired)
+    ranked = run.ranked
     if report is not None:
         from .report import write_report
 
