@@ -12,9 +12,10 @@ Usage::
    3000 periods after a transient (500 periods for k = 1, 1500 for k = 2), against the
    law: mean +- error across runs, KS distance and run-bootstrap p-value, occupation of
    {E_c >= f E} against P, mean return times against Kac's 1/P (jackknife z).
-3. Relaxation of <E_c>(t) for k = 1..5 (16 runs; 3000 periods, 8000 for k = 5): first
-   window of 50 periods within 2 standard errors of the law's mean, exponential rate,
-   both with jackknife errors over runs.
+3. Relaxation of <E_c>(t) for k = 1..5 (16 runs; 3000 periods, 8000 for k = 5), then
+   for k = 3 with one of m, beta, n changed: first window of 50 periods within 2
+   standard errors of the law's mean, exponential rate, both with jackknife errors over
+   runs.
 4. Kac's predicted return times 1/P(E_c >= f E) for k = 1..5: for which k and f the
    container stays drained longer than 10^4 periods on average.
 5. With ``--map FILE.png``: the ergodicity map (k = 1, 8 runs x 1500 periods after 500,
@@ -126,15 +127,27 @@ def fig8_against_law(k: int, transient: int, periods: int, seed: int):
     return c
 
 
+#: Relaxation cases: (label, well, k, m, periods); the Fig. 8 well for k = 1..5, then one
+#: parameter changed at a time from k = 3 (m, beta, n).
+RELAXATION_CASES = [
+    *[(f"k={k}", FIG8, k, 0.2, 8000 if k == 5 else 3000) for k in (1, 2, 3, 4, 5)],
+    ("k=3 m=0.1", FIG8, 3, 0.1, 3000),
+    ("k=3 m=0.4", FIG8, 3, 0.4, 3000),
+    ("k=3 beta=0.1", Well(0.5, 0.1, 4), 3, 0.2, 3000),
+    ("k=3 beta=-0.3", Well(0.5, -0.3, 4), 3, 0.2, 3000),
+    ("k=3 n=10", Well(0.5, 0.3, 10), 3, 0.2, 3000),
+]
+
+
 def relaxation_table(periods_scale: float, seed: int) -> None:
     print("\n3. relaxation of <E_c>(t) to the law's mean (16 runs, windows of 50 periods, z = 2)")
     print(
-        f"   {'k':>2s} {'periods':>7s} {'s':>6s}  {'law mean':>9s}  {'settle':>16s}  "
+        f"   {'case':>13s} {'periods':>7s} {'s':>6s}  {'law mean':>9s}  {'settle':>16s}  "
         f"{'tau (fit)':>16s}  {'chi2':>5s}  late z"
     )
-    for k in (1, 2, 3, 4, 5):
-        periods = int((8000 if k == 5 else 3000) * periods_scale)
-        sink = Sink(FIG8, particles=k, mass=0.2)
+    for label, well, k, mass, periods in RELAXATION_CASES:
+        periods = int(periods * periods_scale)
+        sink = Sink(well, particles=k, mass=mass)
         t = time.perf_counter()
         sim = simulate(
             sink, RunSettings(energy=0.5, runs=16, periods=periods, seed=seed), progress=False
@@ -143,7 +156,7 @@ def relaxation_table(periods_scale: float, seed: int) -> None:
         law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
         r = relaxation(sim.container_energy, law.mean, window=50)
         print(
-            f"   {k:2d} {periods:7d} {seconds:6.1f}  {law.mean:9.5f}  "
+            f"   {label:>13s} {periods:7d} {seconds:6.1f}  {law.mean:9.5f}  "
             f"{r.settle_time:7.0f} +- {r.settle_stderr:5.0f}  {r.rate_time:7.0f} +- "
             f"{r.rate_stderr:5.0f}  {r.chi2:5.2f}  {r.late_z:+.2f}"
         )
