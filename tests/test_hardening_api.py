@@ -70,8 +70,9 @@ def entries():
     from sinktheory.chaos import chaos, indicators, monodromy, random_vectors
     from sinktheory.chaos import two_orbit_exponent as two_orbit
     from sinktheory.chaos.maps import beta_grid
-    from sinktheory.nnm.continuation import continue_orbits
-    from sinktheory.nnm.modes import mode_guess
+    from sinktheory.nnm.agreement import reach_energy
+    from sinktheory.nnm.continuation import continue_both, continue_orbits
+    from sinktheory.nnm.modes import mode_guess, sink_flow
     from sinktheory.nnm.shooting import shoot
     from sinktheory.nnm.stability import floquet
     from sinktheory.nnm.system import FlowSystem
@@ -139,6 +140,23 @@ def entries():
             ),
         ),  # fmt: skip
         ("mode_guess", mode_guess, dict(sink=_sink(), mode="container", energy=0.5)),
+        (
+            "continue_both",
+            continue_both,
+            dict(
+                sink=_sink(),
+                mode="container",
+                parameter="energy",
+                energy=1e-3,
+                stop=(5e-4, 2e-3),
+                steps=200,
+                points=2,
+                ds=0.1,
+                half_traces=False,
+            ),
+        ),  # fmt: skip
+        ("reach_energy", reach_energy, dict(sink=_sink(), energy=2e-4, steps=200, max_points=20)),
+        ("sink_flow", sink_flow, dict(sink=_sink())),
         ("floquet", floquet, dict(M=M, f=np.array([1.0, 0, 0, 0]), g=np.array([0, 1.0, 0, 0]))),
     ]
 

@@ -36,11 +36,11 @@ Examples
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import validation as v
 from ..errors import ParameterError
 from ..model import Sink
 from .continuation import continue_orbits, merge
@@ -65,7 +65,7 @@ def reach_energy(
     ShootingError
         If the branch ends before reaching ``energy``.
     """
-    if not (math.isfinite(energy) and energy > LOW_ENERGY):
+    if not v.positive("energy", energy) > LOW_ENERGY:
         raise ParameterError("energy", energy, f"a finite energy > {LOW_ENERGY:g}")
     system = sink_flow(sink)
     z0, T = mode_guess(sink, "container", LOW_ENERGY)

@@ -516,8 +516,16 @@ def switch_branch(
     ShootingError
         If the new orbit cannot be found.
     """
+    if not isinstance(branch, Branch):
+        raise ParameterError("branch", branch, "a Branch of continue_orbits")
+    if not isinstance(event, Event):
+        raise ParameterError("event", event, "an Event of a branch")
     if event.kind not in ("period-doubling", "transverse-period-doubling", "symmetry-breaking"):
         raise ParameterError("event", event.kind, "a period doubling or a symmetry-breaking point")
+    amplitude = v.positive("amplitude", amplitude)
+    ds = check_ds(ds)
+    max_points = v.positive_int("max_points", max_points, maximum=MAX_POINTS)
+    stop = check_stop(stop)
     old = branch.problem
     orbit = event.orbit
     target = 1.0 if event.kind == "symmetry-breaking" else -1.0

@@ -46,6 +46,8 @@ def sink_flow(sink: Sink, scheme: str | None = None) -> FlowSystem:
     parameters as :mod:`sinktheory.simulate` defines them)."""
     from ..simulate import engine_name, engine_params
 
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     kw = {} if scheme is None else {"scheme": scheme}
     return FlowSystem(engine_name(sink), engine_params(sink), members=sink.particles, **kw)
 
