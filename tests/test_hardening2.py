@@ -348,3 +348,14 @@ def test_full_disk_message_names_the_file(capsys, tmp_path, monkeypatch):
     assert code == 1
     assert err.strip() == "sinktheory simulate: could not write e.png: File too large"
     assert list(tmp_path.iterdir()) == []
+
+
+def test_run_sweep_warns_of_damage(tmp_path):
+    """The Python API says it too: a warning with the count."""
+    from sinktheory.sweep import DamagedStoreWarning, run_sweep
+
+    path = tmp_path / "s.zarr"
+    _store(path)
+    _set(path, "lam", _flip_last_bit)
+    with pytest.warns(DamagedStoreWarning, match="1 damaged point"):
+        run_sweep("floquet", FLOQUET, store=path, resume=True, progress=False)

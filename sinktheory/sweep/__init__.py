@@ -54,6 +54,7 @@ from .kinds import KINDS, get_kind
 #: and dask.
 _LAZY = {
     "Sweep": "plan",
+    "DamagedStoreWarning": "runner",
     "SweepPointError": "runner",
     "SweepRun": "runner",
     "execute": "runner",
@@ -71,6 +72,7 @@ def __getattr__(name: str):
 
 __all__ = [
     "KINDS",
+    "DamagedStoreWarning",
     "Grid",
     "Sweep",
     "SweepPointError",

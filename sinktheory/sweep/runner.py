@@ -39,6 +39,7 @@ import signal
 import sys
 import threading
 import time
+import warnings
 from collections.abc import Iterator, Mapping
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass
@@ -61,6 +62,11 @@ POOL_THRESHOLD = 2.0
 
 class SweepPointError(NumericalError):
     """A point of a sweep failed numerically; the message names the point."""
+
+
+class DamagedStoreWarning(UserWarning):
+    """Points of a resumed store were damaged (their results no longer matched their
+    checksums, or their flags were lost) and have been computed again."""
 
 
 @dataclass(frozen=True)
@@ -120,6 +126,12 @@ def run_sweep(
     xarray.Dataset
         Results over the swept parameters (opened lazily from ``store`` if given).
 
+    Warns
+    -----
+    DamagedStoreWarning
+        Resuming found damaged points (see :mod:`sinktheory.sweep.store`) and recomputed
+        them; the message says how many.
+
     Raises
     ------
     ParameterError
@@ -128,7 +140,7 @@ def run_sweep(
     SweepPointError
         A point failed numerically; the points finished before it stay stored.
     """
-    return execute(
+    done = execute(
         Sweep.make(kind, params, seed),
         store=store,
         scheduler=scheduler,
@@ -136,7 +148,14 @@ def run_sweep(
         resume=resume,
         progress=progress,
         repair=repair,
-    ).dataset
+    )
+    if done.repaired:  # the command line says it in its report; here a warning says it
+        warnings.warn(
+            f"{done.repaired} damaged point(s) found in the store {done.store} and recomputed",
+            DamagedStoreWarning,
+            stacklevel=2,
+        )
+    return done.dataset
 
 
 def execute(
