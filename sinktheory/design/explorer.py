@@ -173,6 +173,16 @@ def explore(
     )
     run = DesignRun.of(done, est, repaired)
     ranked = run.ranked
+    if run.repaired:
+        import warnings
+
+        from ..sweep.runner import DamagedStoreWarning
+
+        warnings.warn(
+            f"{run.repaired} damaged design(s) found in the store {run.store} and recomputed",
+            DamagedStoreWarning,
+            stacklevel=2,
+        )
     if report is not None:
         from .report import write_report
 
