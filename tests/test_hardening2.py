@@ -359,3 +359,19 @@ def test_run_sweep_warns_of_damage(tmp_path):
     _set(path, "lam", _flip_last_bit)
     with pytest.warns(DamagedStoreWarning, match="1 damaged point"):
         run_sweep("floquet", FLOQUET, store=path, resume=True, progress=False)
+
+
+def test_explore_warns_of_damage_and_repairs(tmp_path):
+    from sinktheory.design.explorer import explore
+    from sinktheory.sweep import DamagedStoreWarning
+
+    params = {"beta": [0.1, 0.3], "n": 4, "runs": 2, "periods": 12, "horizons": "6+12",
+              "lyapunov_runs": 0, "bootstrap": 10}  # fmt: skip
+    kw = dict(store=tmp_path / "d.zarr", workers=1, progress=False, estimate_first=False)
+    first = explore(params, **kw)
+    chunk = tmp_path / "d.zarr" / "depth" / "c" / "0"
+    chunk.write_bytes(chunk.read_bytes()[:5])
+    with pytest.warns(DamagedStoreWarning, match="2 damaged design"):
+        run = explore(params, resume=True, repair=True, **kw)
+    assert run.computed == run.repaired == 2
+    np.testing.assert_array_equal(run.dataset.depth.values, first.dataset.depth.values)
