@@ -39,7 +39,7 @@ import time
 import numpy as np
 
 from sinktheory import RunSettings, Sink, Well
-from sinktheory.equilibrium import compare_with_law, equilibrium_law, relaxation
+from sinktheory.equilibrium import compare_with_law, equilibrium_law, measure_relaxation
 from sinktheory.simulate import simulate
 
 FIG8 = Well(0.5, 0.3, 4)
@@ -154,7 +154,7 @@ def relaxation_table(periods_scale: float, seed: int) -> None:
         )
         seconds = time.perf_counter() - t
         law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
-        r = relaxation(sim.container_energy, law.mean, window=50)
+        r = measure_relaxation(sim.container_energy, law.mean, window=50)
         print(
             f"   {label:>13s} {periods:7d} {seconds:6.1f}  {law.mean:9.5f}  "
             f"{r.settle_time:7.0f} +- {r.settle_stderr:5.0f}  {r.rate_time:7.0f} +- "

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy import integrate, special, stats
 
-from sinktheory.equilibrium import area, area_quadrature, equilibrium_law, scaled_energy
+from sinktheory.equilibrium import area_quadrature, basin_area, equilibrium_law, scaled_energy
 from sinktheory.errors import NumericalError, ParameterError
 from sinktheory.model import Sink, Well
 from sinktheory.sinkstats import equipartition_container_energy
@@ -38,7 +38,7 @@ def test_homogeneous_areas_are_the_closed_forms(shape, n):
     scale = {"flat": alpha, "symmetric": alpha**2, "circular": math.pi * alpha**2}[shape]
     exact = scale * c2 * (1 if shape == "circular" else superellipse(n))
     assert area_quadrature(well, e) == pytest.approx(exact, rel=1e-12)
-    assert area(well, e) == pytest.approx(exact, rel=1e-12)
+    assert basin_area(well, e) == pytest.approx(exact, rel=1e-12)
 
 
 @pytest.mark.parametrize("beta,n", [(-0.3, 1), (-0.3, 4), (-0.3, 10), (0.3, 1), (0.3, 4)])
@@ -46,7 +46,7 @@ def test_flat_closed_form_equals_quadrature(beta, n):
     # two methods: the Beta-function closed form and the trapezoid rule over the rays
     well = Well(0.5, beta, n)
     for e in (0.01, 0.05):
-        assert area(well, e) == pytest.approx(area_quadrature(well, e), rel=1e-12)
+        assert basin_area(well, e) == pytest.approx(area_quadrature(well, e), rel=1e-12)
 
 
 def test_quadrature_refuses_a_basin_not_star_shaped():
@@ -55,7 +55,7 @@ def test_quadrature_refuses_a_basin_not_star_shaped():
     well = Well(0.5, 0.3, 10)
     with pytest.raises(NumericalError, match="star-shaped"):
         area_quadrature(well, 0.1)
-    assert area(well, 0.1) > 0
+    assert basin_area(well, 0.1) > 0
 
 
 def test_flat_closed_form_by_slices():
@@ -64,7 +64,7 @@ def test_flat_closed_form_by_slices():
     c = (2 * 4 * e) ** (1 / 8)
     width = lambda y: 2 * (0.2 + 0.3 * y**2) * (c**8 - y**8) ** (1 / 8)  # noqa: E731
     ref, err = integrate.quad(width, -c, c, epsabs=0, epsrel=1e-13, limit=200)
-    assert area(well, e) == pytest.approx(ref, rel=1e-11)
+    assert basin_area(well, e) == pytest.approx(ref, rel=1e-11)
 
 
 @pytest.mark.parametrize(
@@ -87,18 +87,18 @@ def test_area_against_monte_carlo(well, e):
     p = inside.mean()
     box = 4 * x_max * y_max
     se = box * math.sqrt(p * (1 - p) / N)
-    assert abs(area(well, e) - box * p) < 5 * se
+    assert abs(basin_area(well, e) - box * p) < 5 * se
 
 
 def test_area_refuses_energy_at_escape_and_bad_input():
     well = Well(0.5, 0.3, 2, shape="symmetric")  # escape (1/(4 0.3 0.2))^2 / 2 = 8.68
     escape = (1 / (4 * 0.3 * 0.2)) ** 2 / 2
     with pytest.raises(ParameterError, match="energy"):
-        area(well, escape)
+        basin_area(well, escape)
     with pytest.raises(ParameterError, match="energy"):
-        area(well, -1.0)
+        basin_area(well, -1.0)
     with pytest.raises(ParameterError, match="well"):
-        area("flat", 0.1)
+        basin_area("flat", 0.1)
 
 
 # --- the law ----------------------------------------------------------------------------
@@ -125,7 +125,7 @@ def beta_mixture(well, k, energy):
     coefficients are those of a polynomial's k-th power (exact convolution of powers)."""
     n = well.n
     u1, u2 = 0.5, 1.0  # A = a1 u + a2 u^2 with u = (e / E)^(1/n): solve from two areas
-    A1, A2 = area(well, energy * u1**n), area(well, energy * u2**n)
+    A1, A2 = basin_area(well, energy * u1**n), basin_area(well, energy * u2**n)
     a2 = (A2 / u2 - A1 / u1) / (u2 - u1)
     a1 = A1 / u1 - a2 * u1
     p = np.array([0.0, a1 * math.gamma(1 + 1 / n), a2 * math.gamma(1 + 2 / n)])

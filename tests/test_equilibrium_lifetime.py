@@ -137,7 +137,7 @@ def test_relaxation_of_a_known_exponential_approach():
     # recovers tau within 3 jackknife errors over 12 independent ensembles on average,
     # and the first window in the 2-sigma band starts where the exact curve enters it
     # (|0.3 exp(-t/150)| = 2 s, s the window's standard error) to within a few windows.
-    from sinktheory.equilibrium.relaxation import relaxation
+    from sinktheory.equilibrium.relaxation import measure_relaxation
 
     rng = np.random.default_rng(4)
     t = np.arange(3001)
@@ -145,7 +145,7 @@ def test_relaxation_of_a_known_exponential_approach():
     for _ in range(12):
         noise = signal.lfilter([1.0], [1.0, -0.9], rng.standard_normal((16, t.size)), axis=1)
         runs = 0.2 + 0.3 * np.exp(-t / 150.0) + 0.01 * noise
-        r = relaxation(runs, 0.2, window=50)
+        r = measure_relaxation(runs, 0.2, window=50)
         zs.append((r.rate_time - 150) / r.rate_stderr)
         settles.append(r.settle_time)
         assert r.chi2 < 3 and abs(r.late_z) < 4
@@ -156,12 +156,12 @@ def test_relaxation_of_a_known_exponential_approach():
 
 
 def test_relaxation_never_settling_is_nan():
-    from sinktheory.equilibrium.relaxation import relaxation
+    from sinktheory.equilibrium.relaxation import measure_relaxation
 
     runs = 0.3 + 0.001 * np.random.default_rng(1).standard_normal((5, 400))
-    r = relaxation(runs, 0.2, window=20)
+    r = measure_relaxation(runs, 0.2, window=20)
     assert math.isnan(r.settle_time) and r.late_z > 10
     with pytest.raises(ParameterError, match="energy_runs"):
-        relaxation(runs[:2], 0.2)
+        measure_relaxation(runs[:2], 0.2)
     with pytest.raises(ParameterError, match="window"):
-        relaxation(runs, 0.2, window=200)
+        measure_relaxation(runs, 0.2, window=200)

@@ -14,22 +14,22 @@
   from the law beside lambda_1, point by point (also the sweep kind ``ergodicity``).
 """
 
-from .area import area, area_quadrature, area_ratio, scaled_energy
+from .area import area_quadrature, area_ratio, basin_area, scaled_energy
 from .law import EquilibriumLaw, EquilibriumSummary, equilibrium_law
 from .lifetime import LawComparison, compare_with_law, measure_lifetimes
-from .relaxation import Relaxation, relaxation
+from .relaxation import Relaxation, measure_relaxation
 
 __all__ = [
     "EquilibriumLaw",
     "EquilibriumSummary",
     "LawComparison",
     "Relaxation",
-    "area",
+    "basin_area",
     "area_quadrature",
     "area_ratio",
     "compare_with_law",
     "equilibrium_law",
     "measure_lifetimes",
-    "relaxation",
+    "measure_relaxation",
     "scaled_energy",
 ]

@@ -32,11 +32,11 @@ Examples
 --------
 >>> from sinktheory.model import Well
 >>> well = Well(0.5, 0.3, 4)
->>> a = area(well, 0.25)
+>>> a = basin_area(well, 0.25)
 >>> abs(area_quadrature(well, 0.25) / a - 1) < 1e-12
 True
 >>> import math
->>> round(area(Well(0.5, 0.3, 2, shape="circular"), 0.25) / (math.pi * 0.2**2), 12)  # t = 1
+>>> round(basin_area(Well(0.5, 0.3, 2, shape="circular"), 0.25) / (math.pi * 0.2**2), 12)  # t = 1
 1.0
 """
 
@@ -100,7 +100,7 @@ def _check(well: Well, energy: float) -> float:
     return e
 
 
-def area(well: Well, energy: float) -> float:
+def basin_area(well: Well, energy: float) -> float:
     """A(e): area of the basin {V < e} around the centre (closed form where there is one,
     else :func:`area_quadrature`).
 
@@ -125,7 +125,7 @@ def area(well: Well, energy: float) -> float:
     Examples
     --------
     >>> from sinktheory.model import Well
-    >>> round(area(Well(1.0, 0.0, 1), 0.5), 12)  # the unit disc (n = 1, beta = 0)
+    >>> round(basin_area(Well(1.0, 0.0, 1), 0.5), 12)  # the unit disc (n = 1, beta = 0)
     3.14159265359
     """
     e = _check(well, energy)

@@ -21,7 +21,7 @@ Examples
 >>> rng = np.random.default_rng(0)
 >>> t = np.arange(2001)
 >>> runs = 0.2 + 0.3 * np.exp(-t / 150.0) + 0.02 * rng.standard_normal((16, t.size))
->>> r = relaxation(runs, 0.2, window=50)
+>>> r = measure_relaxation(runs, 0.2, window=50)
 >>> abs(r.rate_time / 150 - 1) < 0.1, 300 < r.settle_time < 1200
 (True, True)
 """
@@ -117,7 +117,9 @@ def _fit(times, means, stderr, target) -> tuple[float, float, float]:
     return float(tau), float(a), chi2
 
 
-def relaxation(energy_runs, target: float, *, window: int = 50, z: float = 2.0) -> Relaxation:
+def measure_relaxation(
+    energy_runs, target: float, *, window: int = 50, z: float = 2.0
+) -> Relaxation:
     """Settling time and exponential rate of the ensemble mean of ``energy_runs`` (R, P + 1)
     at ``target`` (the law's mean), by the rule of the module docstring.
 
