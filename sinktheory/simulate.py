@@ -274,7 +274,8 @@ def first_order_rhs(sink: Sink):
     """
     from .engine.cache import load
 
-    module, params = load(engine_name(sink)), engine_params(sink)
+    module = load(engine_name(sink))
+    params = module.table_of(engine_params(sink), 1)
     L = StateLayout(sink.particles)
 
     def f(t: float, z: np.ndarray) -> np.ndarray:

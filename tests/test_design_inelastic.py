@@ -107,7 +107,8 @@ def test_dissipative_stage_removes_exactly_the_work_it_counts():
     from sinktheory.engine.cache import load
     from sinktheory.simulate import engine_name, engine_params
 
-    engine, params = load(engine_name(SINK2)), engine_params(SINK2)
+    engine = load(engine_name(SINK2))
+    params = engine.table_of(engine_params(SINK2), 6)
     rng = np.random.default_rng(0)
     q, vel = rng.uniform(-0.3, 0.3, (5, 6)), rng.uniform(-1, 1, (5, 6))
     c = rng.uniform(0.5, 3.0, (2, 6))

@@ -42,7 +42,7 @@ def test_kernels_match_the_separable_hamiltonian(shape, n):
     sh, U, masses, grad, hess = _exact(shape, n)
     mod = load(sink_name(shape, n))
     q = np.array([[float(s)] for s in STATE])
-    P = np.array([float(PARAMS[s]) for s in (S.alpha, S.beta, S.gamma, S.mu)])
+    P = mod.table_of([float(PARAMS[s]) for s in (S.alpha, S.beta, S.gamma, S.mu)], 1)
     a = mod.block_accelerations(q, P)[:, 0]
     expected = [-float(g / m) for g, m in zip(grad, masses, strict=True)]
     np.testing.assert_allclose(a, expected, rtol=RTOL, atol=RTOL * np.max(np.abs(expected)))
@@ -137,3 +137,44 @@ def test_bitwise_identical_for_any_block_size_and_thread_count(tangent):
     for other in results[1:]:
         for a, b in zip(results[0], other, strict=True):
             assert np.array_equal(a, b)
+
+
+def _run(q, v, params, **options):
+    """Final state and records of a 3-period ensemble (blanes-moan6, 400 steps)."""
+    ens = Ensemble(sink_name("flat", 4), q, v, params)
+    rec = ens.run(get_scheme("blanes-moan6"), dt=2 * np.pi / 400, steps=400, segments=3,
+                  record=("shared", "members"), **options)  # fmt: skip
+    return ens.q, ens.v, rec.shared, rec.members, rec.worst
+
+
+@pytest.mark.parametrize("runs", [1, 5, 13, 17])
+def test_automatic_plan_with_inert_copies_is_bitwise_the_plain_run(runs):
+    """Whatever block, padding and threads the policy picks, each run's numbers equal a
+    one-run-per-block computation bit for bit, and no inert copy leaks into the results."""
+    sink, q, v = _fig8_like(runs)
+    auto = _run(q, v, engine_params(sink))
+    plain = _run(q, v, engine_params(sink), block=1)
+    assert auto[0].shape == q.shape and auto[2].shape[0] == runs and auto[4].shape == (runs,)
+    for a, b in zip(auto, plain, strict=True):
+        assert a.shape == b.shape and np.array_equal(a, b)
+
+
+def test_runs_with_their_own_parameters_equal_separate_ensembles():
+    """One ensemble over a grid of (beta, mu) equals one ensemble per point, bitwise."""
+    sink, q, v = _fig8_like(6)
+    base = engine_params(sink)
+    grid = np.repeat(base[:, None], 6, axis=1)
+    grid[1] = [0.1, 0.1, 0.2, 0.2, 0.3, 0.3]  # beta
+    grid[3] = [0.05, 0.1, 0.05, 0.1, 0.05, 0.1]  # mu
+    together = _run(q, v, grid)
+    for r in range(6):
+        alone = _run(q[:, r : r + 1], v[:, r : r + 1], grid[:, r])
+        assert np.array_equal(together[0][:, r], alone[0][:, 0])
+        assert np.array_equal(together[2][r], alone[2][0])
+        assert np.array_equal(together[3][r], alone[3][0])
+
+
+def test_parameters_of_the_wrong_shape_are_refused():
+    sink, q, v = _fig8_like(3)
+    with pytest.raises(ValueError, match="params"):
+        Ensemble(sink_name("flat", 4), q, v, np.ones((4, 2)))

@@ -6,6 +6,8 @@ Jacobian of the discrete flow and is symplectic.  On top of it:
 
 * :func:`chaos` -- the container + particles ensemble, set up like ``simulate``:
   lambda_1, the full spectrum, GALI_k / SALI, MEGNO, the transverse exponent of y = 0;
+  :func:`chaos_batch` -- the same for many set-ups (a map's betas) as one ensemble whose
+  runs carry their own parameters;
 * :func:`indicators` -- the same for any engine system and start states (Henon-Heiles...),
   from :mod:`sinktheory.chaos.general`;
 * :class:`ChaosResult` -- per-run values, ensemble mean +- standard error, finite-time
@@ -33,7 +35,7 @@ Examples
 
 from .general import indicators
 from .result import ChaosResult, sali_from_gali2
-from .sink import chaos
+from .sink import chaos, chaos_batch
 from .tangent import canonical, finite_difference_jacobian, monodromy, symplectic_defect
 from .twoorbit import two_orbit_exponent
 from .vectors import random_vectors
@@ -42,6 +44,7 @@ __all__ = [
     "ChaosResult",
     "canonical",
     "chaos",
+    "chaos_batch",
     "finite_difference_jacobian",
     "indicators",
     "monodromy",

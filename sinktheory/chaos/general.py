@@ -141,6 +141,12 @@ def check_spectrum(spectrum) -> str | None:
     raise ParameterError("spectrum", spectrum, 'False, True, "full" or "half"')
 
 
+def vector_count(dim: int, spectrum, gali: int) -> int:
+    """Deviation vectors per run that :func:`indicators` needs: 2D for the full spectrum, D
+    for the half, k for GALI_k, at least one (lambda_1)."""
+    return max({"full": 2 * dim, "half": dim, None: 0}[check_spectrum(spectrum)], gali, 1)
+
+
 def _run(system, q, v, params, vectors, mode, scheme, dt, steps, segments, opts, **kw):
     """One ensemble with deviation vectors: (Records, Ensemble)."""
     dq, dv = vectors
@@ -200,8 +206,8 @@ def indicators(
         Engine system (``sink_<shape>_n<N>_k<K>``, ``henon_heiles``, ``duffing2``).
     q, v : arrays (D, R)
         Start states (positions, velocities); not modified.
-    params : sequence of float
-        The system's runtime parameters.
+    params : array (NPARAMS,) or (NPARAMS, R)
+        The system's runtime parameters, shared or one column per run.
     dt, steps, segments : float, int, int
         Step, steps per segment (records and renormalisation at every segment end), and
         number of segments.
@@ -214,9 +220,10 @@ def indicators(
         k of GALI_k (0: none; 2 also gives SALI).
     megno : bool
         MEGNO Y(t) of the first vector.
-    transverse : (q, v, mask), optional
+    transverse : (q, v, mask) or (q, v, mask, (dq, dv)), optional
         Start states (D, R) on an invariant subspace and the phase-space directions
-        (bool, 2D) transverse to it: the growth of one vector confined to them.
+        (bool, 2D) transverse to it: the growth of one vector confined to them (seeded
+        random, or the given (D, 1, R) vectors).
     vectors : (dq, dv) arrays (D, M, R), optional
         Start deviation vectors instead of the seeded random orthonormal ones (M at least
         the number needed: 2D for the spectrum, k for GALI_k, 1 else).
@@ -258,7 +265,7 @@ def indicators(
         "reference_energy": reference_energy,
     }
     spectrum = check_spectrum(spectrum)
-    count = max({"full": 2 * D, "half": D, None: 0}[spectrum], gali, 1)
+    count = vector_count(D, spectrum, gali)
     if vectors is None:
         dq, dv = random_vectors(D, count, R, seed)
     else:
@@ -321,8 +328,8 @@ def indicators(
             out["megno"] = rec.megno
         worst = np.maximum(worst, rec.worst)
     if transverse is not None:
-        qt, vt, mask = transverse
-        vecs = random_vectors(D, 1, R, seed, mask=mask)
+        qt, vt, mask, *given = transverse
+        vecs = given[0] if given else random_vectors(D, 1, R, seed, mask=mask)
         topts = dict(opts, reference_energy=None)
         rec, _ = _run(
             system,
@@ -342,7 +349,7 @@ def indicators(
         worst = np.maximum(worst, rec.worst)
     info = {
         "system": system,
-        "params": [float(p) for p in np.atleast_1d(np.asarray(params, float))],
+        "params": np.asarray(params, float).tolist(),
         "method": scheme.name,
         "dt": float(dt),
         "steps_per_segment": int(steps),

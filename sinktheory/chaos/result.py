@@ -7,7 +7,7 @@ renormalised the deviation vectors and recorded the indicators.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -98,6 +98,23 @@ class ChaosResult(Result):
     parameters: dict = field(default_factory=dict)
 
     # ----------------------------------------------------------------- per run
+    def runs_of(self, runs: slice, parameters: dict) -> ChaosResult:
+        """The result of the runs ``runs`` alone, described by ``parameters``."""
+
+        def part(a):
+            return None if a is None else a[runs]
+
+        return replace(
+            self,
+            log_growth=self.log_growth[runs],
+            spectrum_logs=part(self.spectrum_logs),
+            gali=part(self.gali),
+            megno=part(self.megno),
+            transverse_logs=part(self.transverse_logs),
+            run_errors=self.run_errors[runs],
+            parameters=parameters,
+        )
+
     @property
     def runs(self) -> int:
         return self.log_growth.shape[0]

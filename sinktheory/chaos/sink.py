@@ -27,6 +27,7 @@ True
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -43,9 +44,18 @@ from ..simulate import (
     start_state,
     total_energy,
 )
+from ..stepsize import resolve_step
 from ..worklimit import check_particle_steps, step_of, tangent_steps
-from .general import check_block, check_gali, check_renorm, check_spectrum, indicators
+from .general import (
+    check_block,
+    check_gali,
+    check_renorm,
+    check_spectrum,
+    indicators,
+    vector_count,
+)
 from .result import ChaosResult
+from .vectors import random_vectors
 
 
 def transverse_mask(particles: int) -> np.ndarray:
@@ -168,65 +178,189 @@ def chaos(
         ``times`` are t_j = j T, exponents per unit time.
     """
     settings = RunSettings() if settings is None else settings
+    scheme = get_scheme(method)
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-    if not isinstance(settings, RunSettings):
-        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
-    scheme = get_scheme(method)
-    bound = val.positive("energy_bound", energy_bound)
-    megno = val.flag("megno", megno)
-    transverse = val.flag("transverse", transverse)
-    spectrum = check_spectrum(spectrum)
-    gali = check_gali(gali, 1 + 2 * sink.particles)
-    check_renorm(renorm)
+    options = _options(sink, spectrum, gali, megno, transverse, renorm, energy_bound, progress)
     block = check_block(block)
-    positions = start_positions(sink, settings, initial)
-    values = start_state(sink, settings.energy, positions)
-    h0 = total_energy(sink, values)
-    top = float(np.max(h0))
-    trans = None
-    if transverse:
-        on_plane = positions.copy()
-        on_plane[:, :, 1] = 0.0
-        tvalues = start_state(sink, settings.energy, on_plane)
-        top = max(top, float(np.max(total_energy(sink, tvalues))))
-        qt, vt = split_values(tvalues)
-        trans = (qt, vt, transverse_mask(sink.particles))
-    sink.well.check_energy(top)
-    _, dt, steps, _ = step_of(sink, top, method=scheme.name, dt=dt, tol=tol, settings=settings)
-    check_tangent_work(sink, settings, steps, spectrum, gali, transverse)
-    q, v = split_values(values)
-    w = sink.well
-    return indicators(
-        engine_name(sink),
-        q,
-        v,
-        engine_params(sink),
-        dt=dt,
-        steps=steps,
-        segments=settings.periods,
-        spectrum=spectrum,
-        gali=gali,
-        megno=megno,
-        transverse=trans,
-        method=scheme.name,
-        renorm=renorm,
-        seed=settings.seed,
-        bound=bound,
-        block=block,
-        progress=progress,
-        reference_energy=h0,
-        parameters={
+    point = _Point.of(sink, settings, options["transverse"], initial)
+    _, dt, steps, _ = step_of(
+        sink, point.top, method=scheme.name, dt=dt, tol=tol, settings=settings
+    )
+    check_tangent_work(
+        sink, settings, steps, options["spectrum"], options["gali"], options["transverse"]
+    )
+    return _together([point], scheme.name, dt, steps, block, options)[0]
+
+
+def chaos_batch(
+    sinks,
+    settings,
+    *,
+    dt: float,
+    spectrum: bool | str = False,
+    gali: int = 0,
+    megno: bool = False,
+    transverse: bool = False,
+    method: str = DEFAULT_SCHEME,
+    renorm: int = 0,
+    energy_bound: float = ENERGY_BOUND,
+    progress: bool | None = None,
+) -> list[ChaosResult]:
+    """:func:`chaos` of several set-ups at once, as one ensemble whose runs carry their own
+    parameters: a chaos map's betas (or alphas, gammas, masses, seeds) vectorised together.
+
+    ``sinks`` and ``settings`` are sequences of equal length; the set-ups must share the
+    engine (shape, n, particles) and the number of periods, and take the same step ``dt``
+    (required: the step :func:`chaos` would pick depends on the well).  Each result is
+    bitwise the result of ``chaos(sink, settings, dt=dt, ...)`` on its own (tested).
+
+    Examples
+    --------
+    >>> from sinktheory import RunSettings, Sink, Well
+    >>> sinks = [Sink(Well(0.5, b, 4), particles=1, mass=0.2) for b in (0.1, 0.3)]
+    >>> runs = [RunSettings(runs=2, periods=5, seed=s) for s in (1, 2)]
+    >>> both = chaos_batch(sinks, runs, dt=0.01)
+    >>> alone = chaos(sinks[1], runs[1], dt=0.01)
+    >>> bool((both[1].lambda1 == alone.lambda1).all())
+    True
+    """
+    sinks, settings = list(sinks), list(settings)
+    if not sinks or len(sinks) != len(settings):
+        raise ParameterError(
+            "sinks, settings", f"{len(sinks)} and {len(settings)} items", "equal, non-zero"
+        )
+    points = [_Point.of(k, s, transverse, None) for k, s in zip(sinks, settings, strict=True)]
+    engines = {(engine_name(p.sink), p.sink.particles, p.settings.periods) for p in points}
+    if len(engines) > 1:
+        raise ParameterError(
+            "sinks", f"{len(engines)} engines or period counts", "one shape, n, k and periods"
+        )
+    scheme = get_scheme(method)
+    top = max(p.top for p in points)
+    _, dt, steps, _ = resolve_step(points[0].sink, top, method=scheme.name, dt=dt)
+    options = _options(sinks[0], spectrum, gali, megno, transverse, renorm, energy_bound, progress)
+    for p in points:
+        check_tangent_work(p.sink, p.settings, steps, options["spectrum"], options["gali"],
+                           options["transverse"])  # fmt: skip
+    return _together(points, scheme.name, dt, steps, None, options)
+
+
+def start_energy(sink: Sink, settings: RunSettings, transverse: bool = False) -> float:
+    """The largest total energy the runs of :func:`chaos` start with (what its step is
+    chosen for)."""
+    return _Point.of(sink, settings, transverse, None).top
+
+
+def _options(sink, spectrum, gali, megno, transverse, renorm, energy_bound, progress) -> dict:
+    """The analysis options, each checked (``sink`` gives the dimension for ``gali``)."""
+    return {
+        "spectrum": check_spectrum(spectrum),
+        "gali": check_gali(gali, 1 + 2 * sink.particles),
+        "megno": val.flag("megno", megno),
+        "transverse": val.flag("transverse", transverse),
+        "renorm": check_renorm(renorm),
+        "bound": val.positive("energy_bound", energy_bound),
+        "progress": progress,
+    }
+
+
+@dataclass(frozen=True)
+class _Point:
+    """One set-up's start: sink, settings, states (engine layout), energies."""
+
+    sink: Sink
+    settings: RunSettings
+    q: np.ndarray
+    v: np.ndarray
+    h0: np.ndarray
+    on_plane: tuple | None  # (q, v) started on y = 0, for the transverse exponent
+    top: float  # the largest energy any of its runs starts with
+
+    @classmethod
+    def of(cls, sink, settings, transverse: bool, initial) -> _Point:
+        if not isinstance(sink, Sink):
+            raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+        if not isinstance(settings, RunSettings):
+            raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
+        positions = start_positions(sink, settings, initial)
+        values = start_state(sink, settings.energy, positions)
+        h0 = total_energy(sink, values)
+        top = float(np.max(h0))
+        on_plane = None
+        if transverse:
+            flat = positions.copy()
+            flat[:, :, 1] = 0.0
+            tvalues = start_state(sink, settings.energy, flat)
+            top = max(top, float(np.max(total_energy(sink, tvalues))))
+            on_plane = split_values(tvalues)
+        sink.well.check_energy(top)
+        return cls(sink, settings, *split_values(values), h0, on_plane, top)
+
+    def parameters(self) -> dict:
+        w, s = self.sink.well, self.settings
+        return {
             "shape": w.shape,
             "alpha": w.alpha,
             "beta": w.beta,
             "n": w.n,
             "gamma": w.gamma,
-            "particles": sink.particles,
-            "mass": sink.mass,
-            "energy": settings.energy,
-            "runs": settings.runs,
-            "periods": settings.periods,
+            "particles": self.sink.particles,
+            "mass": self.sink.mass,
+            "energy": s.energy,
+            "runs": s.runs,
+            "periods": s.periods,
             "period": 2.0 * math.pi,
-        },
+        }
+
+
+def _together(points: list[_Point], method, dt, steps, block, o) -> list[ChaosResult]:
+    """One engine ensemble over every point's runs (each run with its point's parameters,
+    start state and seeded deviation vectors); the result split back per point."""
+    D = points[0].q.shape[0]
+    count = vector_count(D, o["spectrum"], o["gali"])
+    vectors = [random_vectors(D, count, p.settings.runs, p.settings.seed) for p in points]
+    transverse = None
+    if o["transverse"]:
+        mask = transverse_mask(points[0].sink.particles)
+        tvec = [random_vectors(D, 1, p.settings.runs, p.settings.seed, mask=mask) for p in points]
+        transverse = (
+            _join(p.on_plane[0] for p in points),
+            _join(p.on_plane[1] for p in points),
+            mask,
+            (_join(t[0] for t in tvec), _join(t[1] for t in tvec)),
+        )
+    params = _join(np.repeat(engine_params(p.sink)[:, None], p.settings.runs, 1) for p in points)
+    res = indicators(
+        engine_name(points[0].sink),
+        _join(p.q for p in points),
+        _join(p.v for p in points),
+        params,
+        dt=dt,
+        steps=steps,
+        segments=points[0].settings.periods,
+        spectrum=o["spectrum"],
+        gali=o["gali"],
+        megno=o["megno"],
+        transverse=transverse,
+        vectors=(_join(x[0] for x in vectors), _join(x[1] for x in vectors)),
+        method=method,
+        renorm=o["renorm"],
+        seed=points[0].settings.seed,
+        bound=o["bound"],
+        block=block,
+        progress=o["progress"],
+        reference_energy=np.concatenate([p.h0 for p in points]),
     )
+    out, start = [], 0
+    for p in points:
+        runs = slice(start, start + p.settings.runs)
+        start = runs.stop
+        info = dict(res.parameters, params=engine_params(p.sink).tolist(), seed=p.settings.seed)
+        out.append(res.runs_of(runs, info | p.parameters()))
+    return out
+
+
+def _join(arrays) -> np.ndarray:
+    """Arrays with runs last, side by side."""
+    return np.concatenate(list(arrays), axis=-1)

@@ -192,7 +192,7 @@ def setup(
     values = start_state(sink, settings.energy, random_positions(settings, sink.particles))
     q, vel = split_values(values)
     engine = load(engine_name(sink))
-    params = engine_params(sink)
+    params = engine.table_of(engine_params(sink), q.shape[1])
     h0 = engine.block_energies(q, vel, params)[0]
     sink.well.check_energy(float(np.max(h0)))
     method, dt, steps, tol = resolve_step(sink, float(np.max(h0)), method=method, dt=dt, tol=tol)

@@ -7,11 +7,13 @@ This file is not imported: :mod:`sinktheory.engine.printer` copies the text belo
 inlinable.  Keeping it a real Python file lets linters and readers see it whole.
 
 Data layout (structure of arrays, runs last and contiguous): ``q[i, r]``, ``v[i, r]`` are
-coordinate / velocity i of run r; ``dq[i, m, r]``, ``dv[i, m, r]`` deviation vector m.  A
-*segment* is ``steps`` steps of size ``dt`` (one container period for the sink); the energy
-audit, the renormalisation of deviation vectors and all per-segment records happen at
-segment ends.  Runs are processed in blocks; a block is copied into contiguous local arrays,
-advanced, and copied back.  The arithmetic of a run does not depend on which block or thread
+coordinate / velocity i of run r; ``dq[i, m, r]``, ``dv[i, m, r]`` deviation vector m;
+``P[p, r]`` the per-run parameter table (``parameter_table``: every run may carry its own
+parameters).  A *segment* is ``steps`` steps of size ``dt`` (one container period for the
+sink); the energy audit, the renormalisation of deviation vectors and all per-segment
+records happen at segment ends.  Runs are processed in blocks (their size and the threads
+are chosen by :mod:`sinktheory.engine.blocks`); a block is copied into contiguous local
+arrays, advanced, and copied back.  The arithmetic of a run does not depend on which block or thread
 it is in (no reductions across runs, no fast-math reassociation), so the numbers are
 bitwise the same for any block size and thread count.
 """
@@ -226,8 +228,9 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
 
 @numba.njit(cache=True, parallel=True, error_model="numpy")
 def advance(Q, V, DQ, DV, P, scheme, seg0, seg1, block, tangent, logs, meg, audit, rec):
-    """Advance every run (columns of Q, V) over segments [seg0, seg1), blocks of ``block``
-    runs spread over threads; blocks holding a stopped run are skipped."""
+    """Advance every run (columns of Q, V; P its parameter table, see
+    ``parameter_table``) over segments [seg0, seg1), blocks of ``block`` runs spread over
+    threads; blocks holding a stopped run are skipped."""
     status = audit[2]
     R = Q.shape[1]
     nblocks = (R + block - 1) // block
@@ -246,7 +249,8 @@ def advance(Q, V, DQ, DV, P, scheme, seg0, seg1, block, tangent, logs, meg, audi
         dv = DV[:, :, r0:r1].copy()
         lg = logs[:, r0:r1].copy()
         mg = meg[:, r0:r1].copy()
-        _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, lg, mg, audit, rec)
+        p = P[:, r0:r1].copy()
+        _run_block(q, v, dq, dv, p, scheme, seg0, seg1, r0, tangent, lg, mg, audit, rec)
         Q[:, r0:r1] = q
         V[:, r0:r1] = v
         DQ[:, :, r0:r1] = dq
@@ -255,9 +259,21 @@ def advance(Q, V, DQ, DV, P, scheme, seg0, seg1, block, tangent, logs, meg, audi
         meg[:, r0:r1] = mg
 
 
+def table_of(params, runs):
+    """The kernels' parameter table (NTABLE, runs) from parameters shared by every run
+    (NPARAMS,) or given per run (NPARAMS, runs); what every kernel and ``block_*`` takes."""
+    p = np.asarray(params, dtype=np.float64)
+    if p.ndim == 1:
+        p = np.repeat(p.reshape(-1, 1), runs, axis=1)
+    if p.shape != (NPARAMS, runs):
+        raise ValueError(f"params: shape {p.shape}, expected ({NPARAMS},) or ({NPARAMS}, {runs})")
+    return parameter_table(np.ascontiguousarray(p))
+
+
 @numba.njit(cache=True, error_model="numpy")
 def block_energies(Q, V, P):
-    """(total, shared, members) energies of every run: (R,), (R,), (K, R)."""
+    """(total, shared, members) energies of every run: (R,), (R,), (K, R); P is the
+    parameter table (NTABLE, R)."""
     R = Q.shape[1]
     total = np.empty(R)
     shared = np.empty(R)
@@ -268,7 +284,7 @@ def block_energies(Q, V, P):
 
 @numba.njit(cache=True, error_model="numpy")
 def block_accelerations(Q, P):
-    """Accelerations of every run (D, R)."""
+    """Accelerations of every run (D, R); P is the parameter table (NTABLE, R)."""
     a = np.empty(Q.shape)
     accelerations(np.ascontiguousarray(Q), a, P)
     return a

@@ -29,15 +29,14 @@ import numpy as np
 
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from ..progress import ProgressBar
-from .cache import load
+from . import blocks
+from .cache import cost_table_path, load
 
 #: Tangent modes: none (raw deviation vectors, e.g. a monodromy matrix), Gram-Schmidt
 #: orthonormalisation at every renormalisation (Lyapunov spectrum), or independent
 #: normalisation (GALI/SALI, maximal exponent).
 TANGENT_MODES = {"none": 0, "orthonormalise": 1, "normalise": 2}
 _RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
-#: Runs per block: enough for the vector units, small enough for the L1/L2 caches.
-DEFAULT_BLOCK = 64
 
 
 @dataclass(frozen=True)
@@ -71,8 +70,9 @@ class Ensemble:
         Engine name (see :func:`sinktheory.engine.cache.load`), e.g. ``sink_flat_n4_k5``.
     q, v : array (D, R)
         Positions and velocities (masses as in the system; for the sink, absolute ones).
-    params : sequence of float
-        The system's runtime parameters (sink: alpha, beta, gamma, mu).
+    params : array (NPARAMS,) or (NPARAMS, R)
+        The system's runtime parameters (sink: alpha, beta, gamma, mu), shared by every
+        run or one column per run (so one ensemble can cover a grid of parameter values).
     dq, dv : array (D, M, R), optional
         Deviation vectors (M of them per run).
     tangent : {"none", "orthonormalise", "normalise"}
@@ -107,7 +107,11 @@ class Ensemble:
                 f"shapes {self.q.shape}, {self.v.shape}",
                 f"(D, R) each with D = {mod.SHARED} + {C} x members",
             )
-        self.params = np.ascontiguousarray(params, dtype=float)
+        try:
+            self.table = mod.table_of(params, R)
+        except ValueError as e:
+            raise ParameterError("params", np.shape(params), f"({mod.NPARAMS},) or "
+                                 f"({mod.NPARAMS}, {R}) values") from e  # fmt: skip
         if dq is None:
             dq = np.zeros((D, 0, R))
             dv = np.zeros((D, 0, R))
@@ -147,7 +151,7 @@ class Ensemble:
 
     def energies(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(total (R,), shared (R,), members (K, R)) energies of the current state."""
-        return self.module.block_energies(self.q, self.v, self.params)
+        return self.module.block_energies(self.q, self.v, self.table)
 
     def run(
         self,
@@ -183,25 +187,28 @@ class Ensemble:
         S = int(segments)
         if gali > M or (megno and M == 0):
             raise ParameterError("gali", gali, f"at most the number of deviation vectors ({M})")
+        threads = numba.get_num_threads()
+        policy = self.plan(threads) if block is None else blocks.fixed(R, block, threads)
+        Rp = policy.padded  # runs advanced: R real ones, then inert copies of the last
         rec = {
-            "shared": np.zeros((R, S + 1 if "shared" in record else 0)),
-            "members": np.zeros((R, S + 1 if "members" in record else 0, K)),
-            "logs": np.zeros((R, S + 1 if "logs" in record else 0, M)),
-            "gali": np.zeros((R, S + 1 if gali else 0)),
-            "megno": np.zeros((R, S + 1 if megno else 0)),
+            "shared": np.zeros((Rp, S + 1 if "shared" in record else 0)),
+            "members": np.zeros((Rp, S + 1 if "members" in record else 0, K)),
+            "logs": np.zeros((Rp, S + 1 if "logs" in record else 0, M)),
+            "gali": np.zeros((Rp, S + 1 if gali else 0)),
+            "megno": np.zeros((Rp, S + 1 if megno else 0)),
         }
         total, shared, members = self.energies()
         if "shared" in record:
-            rec["shared"][:, 0] = shared
+            rec["shared"][:R, 0] = shared
         if "members" in record:
-            rec["members"][:, 0] = members.T
+            rec["members"][:R, 0] = members.T
         if "logs" in record:
-            rec["logs"][:, 0] = self.logs.T
+            rec["logs"][:R, 0] = self.logs.T
         samples = S * steps // stride + 1 if stride > 0 and "trajectory" in record else 0
-        traj = np.zeros((R, samples, 2 * D))
+        traj = np.zeros((Rp, samples, 2 * D))
         if samples:
             Sh = self.module.SHARED
-            traj[:, 0] = np.concatenate(
+            traj[:R, 0] = np.concatenate(
                 [self.q[:Sh].T, self.v[:Sh].T, self.q[Sh:].T, self.v[Sh:].T], axis=1
             )
         stride = stride if samples else 0
@@ -210,33 +217,35 @@ class Ensemble:
         if megno:
             rec["megno"][:, 0] = 2.0  # the limit of Y(t) as t -> 0 (ln|delta| ~ linear)
         ah, bh = scheme.arrays()
-        fail_segment = np.zeros(R, dtype=np.int64)
-        fail_energy = np.zeros(R)
-        worst = np.zeros(R)
+        # the state the engine advances: the real runs' own arrays, or padded copies
+        state = [_pad(a, Rp) for a in (self.q, self.v, self.dq, self.dv, self.logs, self.meg)]
+        Q, V, DQ, DV, logs, meg = state
+        table, h0, status = (_pad(a, Rp) for a in (self.table, self.h0, self.status))
+        fail_segment = np.zeros(Rp, dtype=np.int64)
+        fail_energy = np.zeros(Rp)
+        worst = np.zeros(Rp)
         mode = TANGENT_MODES[self.tangent]
-        block = self._block(block)
         chunk = max(1, math.ceil(S / 100))
         bar = ProgressBar(S, enabled=progress is not False, label=label)
-        threads = numba.get_num_threads()
-        numba.set_num_threads(max(1, min(threads, -(-R // block))))
+        numba.set_num_threads(policy.threads)
         seg_base = self.segments_done
         try:
             for start in range(0, S, chunk):
                 stop = min(S, start + chunk)
                 self.module.advance(
-                    self.q,
-                    self.v,
-                    self.dq,
-                    self.dv,
-                    self.params,
+                    Q,
+                    V,
+                    DQ,
+                    DV,
+                    table,
                     (ah, bh, float(dt), int(steps)),
                     start,
                     stop,
-                    block,
+                    policy.block,
                     (mode, int(renorm), int(gali), bool(megno), self.time - self.tangent_start),
-                    self.logs,
-                    self.meg,
-                    (self.h0, float(bound), self.status, fail_segment, fail_energy, worst),
+                    logs,
+                    meg,
+                    (h0, float(bound), status, fail_segment, fail_energy, worst),
                     (
                         rec["shared"],
                         rec["members"],
@@ -247,13 +256,23 @@ class Ensemble:
                         rec["megno"],
                     ),
                 )
-                self._raise_on_failure(fail_segment, fail_energy, dt * steps, seg_base, bound, unit)
+                self.status[:] = status[:R]
+                self._raise_on_failure(
+                    fail_segment[:R], fail_energy[:R], dt * steps, seg_base, bound, unit
+                )
                 bar.update(stop - start)
         finally:
             numba.set_num_threads(threads)
             bar.close()
+            for own, advanced in zip(
+                (self.q, self.v, self.dq, self.dv, self.logs, self.meg), state, strict=True
+            ):
+                if advanced is not own:
+                    own[...] = advanced[..., :R]
         self.segments_done += S
         self.time += S * steps * dt
+        rec = {name: a[:R] for name, a in rec.items()}
+        traj, worst = traj[:R], worst[:R]
         return Records(
             shared=rec["shared"] if "shared" in record else None,
             members=rec["members"] if "members" in record else None,
@@ -264,17 +283,22 @@ class Ensemble:
             worst=worst,
         )
 
-    def _block(self, block: int | None) -> int:
-        """Runs per block: the default, but never fewer blocks than threads."""
-        if block is not None:
-            return max(1, int(block))
-        threads = numba.get_num_threads()
-        per_thread = -(-self.runs // threads)
-        return max(1, min(DEFAULT_BLOCK, per_thread))
+    def plan(self, threads: int | None = None) -> blocks.BlockPlan:
+        """How :meth:`run` cuts these runs into blocks and threads (see
+        :mod:`sinktheory.engine.blocks`): from this machine's measured cost table of the
+        engine, at most ``threads`` threads (default: numba's current number)."""
+        if threads is None:
+            threads = numba.get_num_threads()
+        D = self.q.shape[0]
+        one = (self.q[:, :1], self.v[:, :1], self.table[:, :1])
+        costs = blocks.block_costs(
+            self.module, cost_table_path(self.system, D), self.module.members_of(D), one
+        )
+        return blocks.plan(self.runs, costs, threads)
 
     def _raise_on_failure(self, fail_segment, fail_energy, segment_time, seg_base, bound, unit):
         """Raise for the earliest failure (segment, then run): the same whatever the
-        block size or thread count."""
+        block size or thread count (inert copies are not looked at)."""
         failed = np.flatnonzero(self.status != _RUNNING)
         if failed.size == 0:
             return
@@ -294,3 +318,14 @@ class Ensemble:
             f"{where}: relative total-energy error {err:.3g} > bound {bound:.3g} "
             f"(H = {float(fail_energy[r])!r}, H0 = {h0!r}); use a smaller dt or tolerance"
         )
+
+
+def _pad(a: np.ndarray, runs: int) -> np.ndarray:
+    """``a`` (runs last) with inert copies of its last run appended up to ``runs`` (``a``
+    itself when it has them all)."""
+    extra = runs - a.shape[-1]
+    if extra == 0:
+        return a
+    return np.ascontiguousarray(
+        np.concatenate([a, np.repeat(a[..., -1:], extra, axis=-1)], axis=-1)
+    )

@@ -23,6 +23,7 @@ reciprocal (SymPy's CSE of x/D and x D^-k).  Build time only: needs SymPy.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import sympy as sp
@@ -103,19 +104,41 @@ def _masses(system: SeparableSystem) -> dict[sp.Symbol, sp.Expr]:
 
 
 def _inverse_masses(system: SeparableSystem) -> tuple[dict[sp.Symbol, sp.Symbol], list[str]]:
-    """Symbols im_<coordinate> for 1/m and the lines that compute them once per call."""
+    """Symbols im_<coordinate> for 1/m: constant masses get a line computed once per call;
+    masses that depend on the parameters are rows of the parameter table (see
+    :func:`_table_rows`) and are loaded per run inside the loops."""
     masses = _masses(system)
     names = {c: sp.Symbol(f"im_{c.name}") for c in masses}
-    return names, [f"{names[c].name} = {_p(1 / m)}" for c, m in masses.items()]
+    return names, [f"{names[c].name} = {_p(1 / m)}" for c, m in masses.items() if m.is_number]
+
+
+def _table_rows(system: SeparableSystem) -> list[tuple[str, sp.Expr]]:
+    """Rows of the per-run parameter table: each parameter, then each distinct inverse mass
+    that depends on the parameters (1/mu for the sink), so a kernel divides by a mass once
+    per run rather than once per particle and step."""
+    rows = [(p.name, p) for p in system.params]
+    for m in dict.fromkeys(m for m in _masses(system).values() if not m.is_number):
+        rows.append((f"inverse mass {m}", 1 / m))
+    return rows
 
 
 def _params(system: SeparableSystem) -> list[str]:
-    return [f"{p.name} = P[{i}]" for i, p in enumerate(system.params)]
+    """Per-run loads of the table rows, each parameter and im_<coordinate> (put inside a
+    ``for b`` loop by :func:`_loop`, which keeps the ones its body uses)."""
+    rows = _table_rows(system)
+    index = {e: i for i, (_, e) in enumerate(rows)}
+    lines = [f"{p.name} = P[{i}, b]" for i, p in enumerate(system.params)]
+    return lines + [
+        f"im_{c.name} = P[{index[1 / m]}, b]" for c, m in _masses(system).items() if not m.is_number
+    ]
 
 
-def _loop(body: list[str], member: bool, runs_var: str = "B") -> list[str]:
-    """``for b`` (and ``for j`` over members) around ``body``."""
-    inner = [f"for b in range({runs_var}):", *("    " + s for s in body)]
+def _loop(body: list[str], member: bool, runs_var: str = "B", params=()) -> list[str]:
+    """``for b`` (and ``for j`` over members) around ``body``, with the run's parameter
+    loads ``params`` first."""
+    text = "\n".join(body)
+    params = [p for p in params if re.search(rf"\b{p.split(' = ')[0]}\b", text)]
+    inner = [f"for b in range({runs_var}):", *("    " + s for s in [*params, *body])]
     if member:
         return ["for j in range(K):", *("    " + s for s in inner)]
     return inner
@@ -147,7 +170,7 @@ def _accelerations(system: SeparableSystem, im) -> str:
         for c, val in zip(coords, values, strict=True):
             if val != "0":
                 inner.append(f"a[{_index(system, c)}, b] += {val}")
-        body += _loop(inner, member)
+        body += _loop(inner, member, params=_params(system))
     return body
 
 
@@ -180,7 +203,7 @@ def _hessian(system: SeparableSystem) -> list[str]:
         inner += [
             f"h[{_h_index(system, member, first, e)}, b] = {val}" for e, val in enumerate(values)
         ]
-        body += _loop(inner, member)
+        body += _loop(inner, member, params=_params(system))
     return body
 
 
@@ -211,7 +234,7 @@ def _tangent_kick(system: SeparableSystem, im) -> list[str]:
         for c, val in zip(coords, values, strict=True):
             if val != "0":
                 inner.append(f"dv[{_index(system, c)}, m, b] += {val}")
-        body += ["    " + s for s in _loop(inner, member)]
+        body += ["    " + s for s in _loop(inner, member, params=_params(system))]
     return body
 
 
@@ -221,18 +244,18 @@ def _energies(system: SeparableSystem) -> list[str]:
     shared_kin = " + ".join(
         f"0.5*({_p(m)})*v[{i}, b]*v[{i}, b]" for i, m in enumerate(system.shared_masses)
     )
-    body += ["for b in range(B):", f"    shared[b] = {shared_kin}"]
+    body += _loop([f"shared[b] = {shared_kin}"], False, params=_params(system))
     if system.member:
         kin = " + ".join(
             f"0.5*({_p(masses[c])})*v[{_index(system, c)}, b]*v[{_index(system, c)}, b]"
             for c in system.member
         )
-        body += _loop([f"members[j, b] = {kin}"], True)
+        body += _loop([f"members[j, b] = {kin}"], True, params=_params(system))
     for term, member in _terms(system):
         assign, (value,) = _cse([term.value], "t")
         inner = _load(system, member) + _local_lines(term) + assign
         inner.append(f"{'members[j, b]' if member else 'shared[b]'} += {value}")
-        body += _loop(inner, member)
+        body += _loop(inner, member, params=_params(system))
     body += ["for b in range(B):", "    total[b] = shared[b]"]
     if system.member:
         body += _loop(["total[b] += members[j, b]"], True)
@@ -242,7 +265,6 @@ def _energies(system: SeparableSystem) -> list[str]:
 def render(system: SeparableSystem, banner: str) -> str:
     """Source text of the engine module of ``system``."""
     im, im_lines = _inverse_masses(system)
-    params = _params(system)
     _, shared_rows, member_rows = _hessian_rows(system)
     C = len(system.member)
     head = (
@@ -251,6 +273,7 @@ def render(system: SeparableSystem, banner: str) -> str:
         'sinktheory.engine.printer)."""\n'
         "import math  # noqa: F401\n\nimport numba\nimport numpy as np\n\n"
         f"SHARED = {len(system.shared)}\nMEMBER_COORDS = {C}\nNPARAMS = {len(system.params)}\n"
+        f"NTABLE = {len(_table_rows(system))}\n"
         f"SHARED_HESSIAN = {shared_rows}\nMEMBER_HESSIAN = {member_rows}\n"
     )
     sizes = _function(
@@ -264,32 +287,45 @@ def render(system: SeparableSystem, banner: str) -> str:
         "Rows of the Hessian buffer for a state with D coordinates.",
         ["return SHARED_HESSIAN + MEMBER_HESSIAN * members_of(D)"],
     )
+    rows = _table_rows(system)
+    loads = [f"{p.name} = P[{i}, b]" for i, p in enumerate(system.params)]
+    table = _function(
+        "parameter_table",
+        "P",
+        "The kernels' per-run table (NTABLE, R) from the parameters P (NPARAMS, R).",
+        ["R = P.shape[1]", "T = np.empty((NTABLE, R))"]
+        + (["for b in range(R):"] if rows else [])
+        + ["    " + s for s in loads]
+        + [f"    T[{i}, b] = {_p(e)}" for i, (_, e) in enumerate(rows)]
+        + ["return T"],
+    )
     parts = [
         head,
         sizes,
+        table,
         _function(
             "accelerations",
             "q, a, P",
             "a = -M^-1 grad U(q) for a block q[coordinate, run].",
-            params + im_lines + _accelerations(system, im),
+            im_lines + _accelerations(system, im),
         ),
         _function(
             "hessian",
             "q, h, P",
             "Local Hessian entries of every potential term, h[entry, run].",
-            params + _hessian(system),
+            _hessian(system),
         ),
         _function(
             "tangent_kick",
             "h, dq, dv, c, P",
             "dv[:, m] += -c M^-1 Hess U dq[:, m]: the derivative of the kick v += c a(q).",
-            params + im_lines + _tangent_kick(system, im),
+            im_lines + _tangent_kick(system, im),
         ),
         _function(
             "energies",
             "q, v, P, total, shared, members",
             "Total energy H, its shared (container) part and each member's part, per run.",
-            params + _energies(system),
+            _energies(system),
         ),
     ]
     stepper = STEPPER.read_text()

@@ -102,7 +102,7 @@ class FlowSystem:
         q = np.zeros((D, D + 1))
         v = np.zeros((D, D + 1))
         v[:, 1:] = np.eye(D)
-        total = self.module.block_energies(q, v, self.params)[0]
+        total = self.module.block_energies(q, v, self.module.table_of(self.params, D + 1))[0]
         self.masses = 2.0 * (total[1:] - total[0])
 
     @property
@@ -135,11 +135,13 @@ class FlowSystem:
         D = self.dim
         z = np.asarray(z, float)
         p = self.params if params is None else params
-        return float(self.module.block_energies(z[:D, None], z[D:, None], p)[0][0])
+        table = self.module.table_of(p, 1)
+        return float(self.module.block_energies(z[:D, None], z[D:, None], table)[0][0])
 
     def accelerations(self, q: np.ndarray) -> np.ndarray:
         """Accelerations (D,) at positions q (D,)."""
-        return self.module.block_accelerations(np.asarray(q, float)[:, None], self.params)[:, 0]
+        table = self.module.table_of(self.params, 1)
+        return self.module.block_accelerations(np.asarray(q, float)[:, None], table)[:, 0]
 
     def vector_field(self, z: np.ndarray) -> np.ndarray:
         """f(z) = (v, a(q))."""

@@ -130,7 +130,8 @@ class Kind:
 
     ``extra_coords(point)`` gives the coordinates of the result dimensions beyond the
     swept ones (they depend on fixed parameters only).  Grouping points into tasks
-    (``batch``) never changes a result: each point is computed on its own.
+    (``batch``) never changes a result: each point is computed on its own, or together
+    with others by ``compute_many`` to the same bits.
     """
 
     name: str
@@ -139,6 +140,10 @@ class Kind:
     check: Callable[[dict], None]
     compute: Callable[[dict, int], dict[str, Any]]
     extra_coords: Callable[[dict], dict[str, np.ndarray]] = field(default=lambda p: {})
+    #: Optional: the points of a task [(params, seed), ...] computed together (for
+    #: example as one vectorised ensemble); each output must equal ``compute`` of its
+    #: point bitwise, so grouping still never changes a result.
+    compute_many: Callable[[list], list[dict[str, Any]]] | None = None
     #: Points per task at most (cheap points are grouped to save scheduling overhead).
     batch: int = 1
     #: Rough seconds a point takes, to decide whether local processes are worth starting.
@@ -454,20 +459,57 @@ def _chaos_check(p: dict) -> None:
 def _chaos(p: dict, seed: int) -> dict[str, Any]:
     """lambda_1 (and the transverse exponent, GALI_k, <Y>) of an ensemble seeded with the
     point's seed (:func:`sinktheory.chaos.chaos`): mean and standard error over the runs."""
-    from ..chaos import chaos
+    return _chaos_many([(p, seed)])[0]
 
-    res = chaos(
-        _sink(p),
-        _settings(p, seed),
-        gali=p["gali"],
-        megno=bool(p["megno"]),
-        transverse=bool(p["transverse"]),
-        method=p["method"],
-        dt=p["dt"],
-        renorm=p["renorm"],
-        energy_bound=p["energy_bound"],
-        progress=False,
-    )
+
+def _chaos_step(p: dict, seed: int) -> float:
+    """The point's step: ``dt`` if given, else the step for the default tolerance taken
+    down to the ladder of :func:`sinktheory.stepsize.ladder_step`, so that neighbouring
+    betas share a step and run as one ensemble."""
+    from ..chaos.sink import start_energy
+    from ..stepsize import ladder_step, resolve_step
+
+    if p["dt"] is not None:
+        return p["dt"]
+    sink = _sink(p)
+    top = start_energy(sink, _settings(p, seed), bool(p["transverse"]))
+    return ladder_step(resolve_step(sink, top, method=p["method"])[1])[0]
+
+
+def _chaos_many(points: list) -> list[dict[str, Any]]:
+    """The points of a task grouped by engine, periods and step, each group one ensemble
+    whose runs carry their own parameters (:func:`sinktheory.chaos.chaos_batch`)."""
+    from ..chaos import chaos_batch
+
+    groups: dict[tuple, list[int]] = {}
+    steps = [_chaos_step(p, seed) for p, seed in points]
+    for i, (p, _) in enumerate(points):
+        same = ("shape", "n", "particles", "periods", "method", "gali", "megno", "transverse",
+                "renorm", "energy_bound")  # fmt: skip
+        groups.setdefault((*(p[k] for k in same), steps[i]), []).append(i)
+    out: list = [None] * len(points)
+    for members in groups.values():
+        first = points[members[0]][0]
+        results = chaos_batch(
+            [_sink(points[i][0]) for i in members],
+            [_settings(points[i][0], points[i][1]) for i in members],
+            dt=steps[members[0]],
+            gali=first["gali"],
+            megno=bool(first["megno"]),
+            transverse=bool(first["transverse"]),
+            method=first["method"],
+            renorm=first["renorm"],
+            energy_bound=first["energy_bound"],
+            progress=False,
+        )
+        for i, res in zip(members, results, strict=True):
+            out[i] = _chaos_summary(res)
+    return out
+
+
+def _chaos_summary(res) -> dict[str, Any]:
+    """What the chaos kind stores of a ChaosResult: per-run lambda_1, ensemble means and
+    standard errors (as_dict's), the audit and the step."""
     d = res.as_dict()  # per-run finals with their ensemble mean and standard error
     out = {
         "lambda1_runs": res.lambda1,
@@ -523,9 +565,11 @@ KINDS["chaos"] = Kind(
     _chaos_check,
     _chaos,
     lambda p: {"run": np.arange(p["runs"])},
+    batch=256,
     cost=lambda p: (
         3 * (1 + p["transverse"]) * SECONDS_PER_PERIOD * p["periods"] * p["runs"] * p["particles"]
     ),
+    compute_many=_chaos_many,
 )
 
 

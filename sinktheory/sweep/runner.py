@@ -335,7 +335,13 @@ def _run_dask(client, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
 
 
 def _checked(kind: str, task: list) -> list[dict[str, Any]]:
-    """Compute each point of a task on its own; a numerical failure names the point."""
+    """Compute the points of a task (together, if the kind can: see ``Kind.compute_many``);
+    a numerical failure names the point (the points are then computed one by one)."""
+    if KINDS[kind].compute_many is not None and len(task) > 1:
+        try:
+            return KINDS[kind].compute_many([(params, seed) for _, params, seed in task])
+        except NumericalError:
+            pass  # find the failing point below
     compute = KINDS[kind].compute
     outputs = []
     for index, params, seed in task:

@@ -1,0 +1,210 @@
+"""How the engine cuts an ensemble into blocks and threads: measured, not assumed.
+
+The engine's loops run over the runs of a block, and what a block of B runs costs depends
+on how the compiler vectorised those loops on this machine: on a CPU with 512-bit vectors
+numba 0.68 runs blocks of 16, 24 or 32 runs about four times cheaper per run than blocks of
+8 or 13, and a block of 20 pays a scalar remainder of 4 runs.  No constant block size is
+right everywhere, so the policy is:
+
+1. **Measure** (:func:`block_costs`): the cost per run and step of the compiled engine for
+   the block sizes :data:`SIZES`, timed on the engine itself (one thread, a synthetic state
+   of the same system and number of members).  The table is cached on disk beside the
+   compiled kernels, keyed by the engine, the number of members and the machine (CPU name
+   and features, numba version), so each machine measures once (about 0.2-0.5 s).
+2. **Plan** (:func:`plan`): for R runs and up to T threads pick the block size b from
+   :data:`SIZES` and the thread count t that minimise the predicted wall time
+   ceil(ceil(R / b) / t) b c(b).  The last block is filled up to b with *inert copies* of
+   the last run (their results are discarded), which is cheaper than a remainder loop
+   whenever the table says so; four runs, for example, may cost less as a padded block of
+   16 than as a block of 4.  A second thread is used only when the prediction gains at
+   least :data:`THREAD_GAIN` from it, so each thread gets at least one efficient block.
+
+Results do not depend on the plan: a run's arithmetic is the same in every block and
+thread, and inert copies never touch real runs (``tests/test_engine.py`` checks the numbers
+bitwise for several block sizes, thread counts and paddings).
+
+Examples
+--------
+>>> import numpy as np
+>>> costs = {1: 1.0, 4: 0.5, 16: 0.1}          # seconds per run-step for b = 1, 4, 16
+>>> p = plan(13, costs, threads=1)
+>>> p.block, p.padded, p.threads                # 13 runs as one padded block of 16
+(16, 16, 1)
+>>> plan(1, costs, threads=2).block             # one run: no padding pays
+1
+>>> plan(32, costs, threads=2).threads          # two efficient blocks: two threads
+2
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import os
+import tempfile
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+#: Block sizes the policy measures and chooses from (a last block is padded up to one).
+SIZES = (1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 28, 32, 40, 48, 56, 64)
+#: A second thread must cut the predicted wall time by this factor to be used (a thread
+#: start and a shared core cost something the per-block table does not see).
+THREAD_GAIN = 1.15
+#: Runs and steps of each calibration measurement (about 0.2-2 ms each).
+_CALIBRATION_WORK = 8192
+
+
+@dataclass(frozen=True)
+class BlockPlan:
+    """How an ensemble of ``runs`` runs is advanced.
+
+    block : runs per block
+    padded : runs advanced, ``blocks * block`` >= runs (the extra ones are inert copies)
+    threads : threads used
+    predicted : predicted seconds per step of the whole ensemble (from the cost table)
+    """
+
+    runs: int
+    block: int
+    padded: int
+    threads: int
+    predicted: float
+
+    @property
+    def blocks(self) -> int:
+        return -(-self.padded // self.block)
+
+
+def plan(runs: int, costs: dict[int, float], threads: int) -> BlockPlan:
+    """The block size and thread count with the smallest predicted wall time.
+
+    ``costs`` maps block size to seconds per run and step (:func:`block_costs`); ties go to
+    fewer threads, then to fewer padded runs.
+    """
+    runs, threads = int(runs), max(1, int(threads))
+    best = None
+    for b, c in sorted(costs.items()):
+        blocks = -(-runs // b)
+        for t in range(1, min(threads, blocks) + 1):
+            wall = -(-blocks // t) * b * c
+            score = wall * (THREAD_GAIN if t > 1 else 1.0)
+            key = (score, t, blocks * b)
+            if best is None or key < best[0]:
+                best = (key, BlockPlan(runs, b, blocks * b, t, wall))
+    return best[1]
+
+
+def fixed(runs: int, block: int, threads: int) -> BlockPlan:
+    """A plan with a block size the caller chose: no padding, at most one thread per
+    block."""
+    block = max(1, int(block))
+    blocks = -(-int(runs) // block)
+    return BlockPlan(int(runs), block, int(runs), max(1, min(int(threads), blocks)), math.nan)
+
+
+def machine_key() -> str:
+    """What the cost table depends on besides the engine: CPU name and features, numba and
+    llvmlite versions (a digest)."""
+    import llvmlite
+    import llvmlite.binding as llvm
+    import numba
+
+    text = "|".join(
+        [
+            llvm.get_host_cpu_name(),
+            llvm.get_host_cpu_features().flatten(),
+            numba.__version__,
+            llvmlite.__version__,
+        ]
+    )
+    return hashlib.sha256(text.encode()).hexdigest()[:12]
+
+
+_memory: dict[tuple, dict[int, float]] = {}
+
+
+def block_costs(module, path, members: int, state) -> dict[int, float]:
+    """Seconds per run and step of ``module``'s engine for each block size in :data:`SIZES`.
+
+    Read from ``path`` (a JSON file whose name carries the engine's digest and
+    :func:`machine_key`), else measured with :func:`measure` and written there
+    (atomically).  ``state`` = (q, v, table) of one
+    run, repeated to fill the blocks.
+    """
+    key = (str(path), members)
+    if key in _memory:
+        return _memory[key]
+    try:
+        with open(path) as f:
+            costs = {int(b): float(c) for b, c in json.load(f)["costs"].items()}
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        costs = {}
+    if set(costs) != set(SIZES) or not all(c > 0 for c in costs.values()):
+        costs = measure(module, *state)
+        _write(path, {"members": members, "sizes": "seconds per run and leapfrog step",
+                      "costs": costs})  # fmt: skip
+    _memory[key] = costs
+    return costs
+
+
+def _write(path, data) -> None:
+    folder = os.path.dirname(path)
+    try:
+        os.makedirs(folder, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=folder, prefix=".blocks-", suffix=".json")
+        with os.fdopen(fd, "w") as f:
+            json.dump(data, f)
+        os.replace(tmp, path)
+    except OSError:  # a read-only cache only costs a new measurement next time
+        pass
+
+
+def measure(module, q, v, table) -> dict[int, float]:
+    """Time the compiled engine on one thread for every block size of :data:`SIZES`.
+
+    Each size runs a block of copies of the one-run state (q, v, table: columns of one run)
+    with the second-order leapfrog for s and 2s steps; the difference removes the fixed cost
+    of a call, and the best of three repeats is kept (the least disturbed by other
+    processes).  Returns seconds per run and step.
+    """
+    import numba
+
+    a = np.array([0.0, 1.0])
+    b = np.array([0.5, 0.5])
+    threads = numba.get_num_threads()
+    numba.set_num_threads(1)
+    try:
+        out = {}
+        for size in SIZES:
+            steps = max(16, _CALIBRATION_WORK // size)
+            reps = [_time(module, q, v, table, size, (a, b, 1e-3, s)) for s in (steps, 2 * steps)]
+            best = [min(r) for r in reps]
+            out[size] = max(best[1] - best[0], 1e-12) / (steps * size)
+        return out
+    finally:
+        numba.set_num_threads(threads)
+
+
+def _time(module, q, v, table, size, scheme) -> list[float]:
+    D = q.shape[0]
+    Q = np.repeat(q, size, axis=1)
+    V = np.repeat(v, size, axis=1)
+    P = np.repeat(table, size, axis=1)
+    empty3 = np.zeros((D, 0, size))
+    times = []
+    for _ in range(3):
+        Qc, Vc = Q.copy(), V.copy()
+        status = np.zeros(size, dtype=np.int64)
+        audit = (np.zeros(size), math.inf, status, np.zeros(size, dtype=np.int64),
+                 np.zeros(size), np.zeros(size))  # fmt: skip
+        rec = (np.zeros((size, 0)), np.zeros((size, 0, 0)), np.zeros((size, 0, 2 * D)), 0,
+               np.zeros((size, 0, 0)), np.zeros((size, 0)), np.zeros((size, 0)))  # fmt: skip
+        t0 = time.perf_counter()
+        module.advance(Qc, Vc, empty3, empty3.copy(), P, scheme, 0, 1, size,
+                       (0, 0, 0, False, 0.0), np.zeros((0, size)), np.zeros((2, size)),
+                       audit, rec)  # fmt: skip
+        times.append(time.perf_counter() - t0)
+    return times

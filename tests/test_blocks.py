@@ -1,0 +1,99 @@
+"""The engine's block policy (sinktheory.engine.blocks): the plan against brute force over
+every uniform blocking, its guarantees (padding below one block, a thread only with a block
+of its own, never a predicted slow-down from threads), and the on-disk cost table."""
+
+import json
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from sinktheory.engine import blocks
+
+COSTS = st.dictionaries(
+    st.sampled_from(blocks.SIZES), st.floats(1e-9, 1e-6), min_size=1, max_size=len(blocks.SIZES)
+)
+
+
+@settings(max_examples=200, deadline=None)
+@given(runs=st.integers(1, 600), costs=COSTS, threads=st.integers(1, 8))
+def test_plan_guarantees(runs, costs, threads):
+    p = blocks.plan(runs, costs, threads)
+    assert p.block in costs
+    assert runs <= p.padded < runs + p.block  # inert copies fill the last block only
+    assert p.padded % p.block == 0
+    assert p.threads <= min(threads, p.blocks)  # every thread has a block of its own
+    # never predicted slower than the best single-thread plan, by brute force over blocks
+    single = min(-(-runs // b) * b * c for b, c in costs.items())
+    assert p.predicted <= single * (1 + 1e-12)
+    if p.threads > 1:  # a second thread must pay its way
+        assert p.predicted * blocks.THREAD_GAIN <= single * (1 + 1e-12)
+
+
+def test_plan_pads_when_the_table_says_so():
+    # a machine where 16-run blocks vectorise and smaller ones do not (as measured on an
+    # AVX-512 CPU with numba 0.68): 13 runs go as one padded block of 16
+    costs = {1: 130e-9, 8: 53e-9, 12: 43e-9, 16: 15.6e-9, 24: 11.3e-9, 32: 10e-9}
+    assert (blocks.plan(13, costs, 1).block, blocks.plan(13, costs, 1).padded) == (16, 16)
+    fig8 = blocks.plan(25, costs, 2)  # Fig. 8's 25 runs: two 16-run blocks, one per core
+    assert (fig8.block, fig8.padded, fig8.threads) == (16, 32, 2)
+    assert blocks.plan(1, costs, 2) == blocks.BlockPlan(1, 1, 1, 1, 130e-9)
+
+
+def test_fixed_block_keeps_the_callers_choice():
+    p = blocks.fixed(11, 3, 8)
+    assert (p.block, p.padded, p.threads, p.blocks) == (3, 11, 4, 4)
+
+
+class _Counting:
+    """Stands in for measure(): counts calls, returns a fixed table."""
+
+    def __init__(self):
+        self.calls = 0
+
+    def __call__(self, module, q, v, table):
+        self.calls += 1
+        return {b: 1e-8 * (1 + b % 16) for b in blocks.SIZES}
+
+
+def test_cost_table_is_measured_once_then_read_from_disk(tmp_path, monkeypatch):
+    fake = _Counting()
+    monkeypatch.setattr(blocks, "measure", fake)
+    monkeypatch.setattr(blocks, "_memory", {})
+    path = tmp_path / "engine_D11.blocks.json"
+    state = (np.zeros((11, 1)),) * 3
+    first = blocks.block_costs(None, path, 5, state)
+    monkeypatch.setattr(blocks, "_memory", {})  # a new process
+    second = blocks.block_costs(None, path, 5, state)
+    assert fake.calls == 1 and first == second
+    # a damaged or incomplete table is measured again, never trusted
+    for damage in ["{not json", json.dumps({"costs": {"16": 1e-8}}),
+                   json.dumps({"costs": {str(b): -1.0 for b in blocks.SIZES}})]:  # fmt: skip
+        path.write_text(damage)
+        monkeypatch.setattr(blocks, "_memory", {})
+        assert blocks.block_costs(None, path, 5, state) == first
+    assert fake.calls == 4
+
+
+def test_measured_table_covers_every_size_with_positive_costs():
+    from sinktheory.engine.cache import load
+
+    mod = load("henon_heiles")
+    costs = blocks.measure(mod, np.array([[0.0], [0.1]]), np.array([[0.3], [0.0]]),
+                           mod.table_of([], 1))  # fmt: skip
+    assert set(costs) == set(blocks.SIZES)
+    assert all(np.isfinite(c) and c > 0 for c in costs.values())
+    # a block of 64 runs costs more in all than one run (a sanity check on the timing)
+    assert costs[64] * 64 > costs[1]
+
+
+@pytest.mark.parametrize("runs", [1, 7, 40])
+def test_ensemble_plan_is_the_policy_for_its_runs(runs):
+    from sinktheory.engine.core import Ensemble
+
+    q = np.tile(np.array([[0.0], [0.1]]), runs)
+    v = np.tile(np.array([[0.3], [0.0]]), runs)
+    ens = Ensemble("henon_heiles", q, v, [])
+    p = ens.plan(2)
+    assert p.runs == runs and p.padded >= runs and p.threads <= 2

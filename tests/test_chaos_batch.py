@@ -1,0 +1,61 @@
+"""Chaos indicators of many set-ups as one ensemble whose runs carry their own parameters:
+each set-up's numbers equal its own run of ``chaos`` bit for bit (the reference is the
+unbatched computation, which the rest of tests/test_chaos*.py checks against independent
+oracles), and the chaos sweep gives the same store whether its points run together or
+one by one."""
+
+import math
+
+import numpy as np
+import pytest
+
+from sinktheory import RunSettings, Sink, Well
+from sinktheory.chaos import chaos, chaos_batch
+from sinktheory.errors import ParameterError
+from sinktheory.stepsize import ladder_step
+from sinktheory.sweep.kinds import get_kind
+
+FIELDS = ("log_growth", "spectrum_logs", "gali", "megno", "transverse_logs", "run_errors")
+
+
+def test_batch_equals_each_setup_alone():
+    sinks = [Sink(Well(a, b, 4), particles=2, mass=m) for a, b, m in
+             [(0.5, 0.1, 0.2), (0.5, 0.3, 0.1), (0.6, -0.2, 0.2)]]  # fmt: skip
+    settings = [RunSettings(runs=r, periods=4, seed=s) for r, s in [(3, 1), (1, 2), (2, 7)]]
+    options = {"dt": 0.01, "gali": 3, "megno": True, "transverse": True, "spectrum": "half"}
+    together = chaos_batch(sinks, settings, **options)
+    for sink, s, res in zip(sinks, settings, together, strict=True):
+        alone = chaos(sink, s, **options)
+        assert res.parameters == alone.parameters
+        for name in FIELDS:
+            assert np.array_equal(getattr(res, name), getattr(alone, name)), name
+
+
+def test_batch_refuses_mixed_engines():
+    sinks = [Sink(Well(0.5, 0.1, 4), 1, 0.2), Sink(Well(0.5, 0.1, 2), 1, 0.2)]
+    with pytest.raises(ParameterError, match="sinks"):
+        chaos_batch(sinks, [RunSettings(runs=1, periods=2)] * 2, dt=0.01)
+    with pytest.raises(ParameterError, match="sinks, settings"):
+        chaos_batch(sinks[:1], [], dt=0.01)
+
+
+def test_ladder_step_is_never_larger_and_at_most_nine_percent_smaller():
+    for s in range(1, 3000, 7):
+        dt, steps = ladder_step(2 * math.pi / s)
+        assert s <= steps <= math.ceil(s * 2 ** (1 / 8))
+        assert dt == pytest.approx(2 * math.pi / steps, rel=1e-15)
+
+
+def test_chaos_sweep_points_together_equal_points_alone():
+    kind = get_kind("chaos")
+    base = {"alpha": 0.5, "n": 2, "runs": 2, "periods": 6, "transverse": 1}
+    points = [(kind.complete(base | {"beta": b}), seed) for b, seed in
+              [(-0.3, 11), (-0.295, 12), (0.1, 13), (0.102, 14)]]  # fmt: skip
+    together = kind.compute_many(points)
+    steps = {float(o["dt_used"]) for o in together}
+    assert len(steps) < len(points)  # the ladder let neighbours share a step
+    for (p, seed), out in zip(points, together, strict=True):
+        alone = kind.compute(p, seed)
+        assert set(out) == set(alone)
+        for name in out:
+            assert np.array_equal(out[name], alone[name], equal_nan=True), name
