@@ -289,12 +289,16 @@ class Ensemble:
         engine, at most ``threads`` threads (default: numba's current number)."""
         if threads is None:
             threads = numba.get_num_threads()
+        return blocks.plan(self.runs, self.block_costs(), threads)
+
+    def block_costs(self) -> dict[int, float]:
+        """This machine's cost per run and leapfrog step of the engine for each block size
+        (measured once, then read from the cache; :func:`blocks.block_costs`)."""
         D = self.q.shape[0]
         one = (self.q[:, :1], self.v[:, :1], self.table[:, :1])
-        costs = blocks.block_costs(
+        return blocks.block_costs(
             self.module, cost_table_path(self.system, D), self.module.members_of(D), one
         )
-        return blocks.plan(self.runs, costs, threads)
 
     def _raise_on_failure(self, fail_segment, fail_energy, segment_time, seg_base, bound, unit):
         """Raise for the earliest failure (segment, then run): the same whatever the

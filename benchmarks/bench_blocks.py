@@ -1,0 +1,182 @@
+"""The engine's block policy on this machine: per-run cost against the number of runs and
+threads, and a chaos map as one ensemble per step against one ensemble per beta.
+
+Usage::
+
+    python benchmarks/bench_blocks.py [--quick] [--png FILE] [--skip-map]
+
+1. Per-run cost: Fig. 8's workload (flat, alpha = 1/2, beta = 0.3, n = 4, k = 5, m = 0.2,
+   E0 = 0.5; blanes-moan6 at the 1197 steps per period that tol 1e-8 picks) for R = 1 ... 256
+   runs, with the policy's automatic plan on 1 and on 2 threads: milliseconds per run and
+   period (best of 3 repeats of a few periods), the plan used, and two checks printed as
+   PASS / FAIL: no R costs more per run than 1.3x the next larger multiple of the
+   efficient block width, and two threads are never slower than one (within 5 %, the
+   repeatability of a shared machine).
+2. Chaos map (issue 24's benchmark): 161 betas in [-0.7, 0.45] x 6 runs x 200 periods,
+   flat, alpha = 1/2, n = 2, k = 1, lambda_1 and the transverse exponent, as the chaos sweep
+   computes it: each beta as its own ensemble (two worker processes, as the sweep's local
+   pool ran them before) against the betas of each step rung as one ensemble
+   (``compute_many``, the engine's threads); both in this run, and the largest difference
+   of the means printed (they differ only where the steps do).
+
+The machine's description is printed first; ``--png`` writes the cost chart.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import time
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+import numba
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).parent))
+from machine import describe  # noqa: E402
+
+from sinktheory import RunSettings, Sink, Well  # noqa: E402
+from sinktheory.engine.core import Ensemble  # noqa: E402
+from sinktheory.integrators import get_scheme  # noqa: E402
+from sinktheory.simulate import (  # noqa: E402
+    engine_name,
+    engine_params,
+    random_positions,
+    split_values,
+    start_state,
+)
+from sinktheory.sweep.kinds import get_kind  # noqa: E402
+
+RUNS = (1, 2, 4, 8, 12, 13, 16, 20, 24, 25, 28, 32, 40, 48, 64, 96, 128, 256)
+STEPS = 1197  # tol 1e-8 on Fig. 8's well (sinktheory.stepsize.choose)
+
+
+def per_run_cost(runs: int, threads: int, periods: int) -> tuple[float, object]:
+    """Best of three: seconds per run and period, and the plan the engine used."""
+    sink = Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2)
+    values = start_state(sink, 0.5, random_positions(RunSettings(runs=runs, seed=1), 5))
+    q, v = split_values(values)
+    scheme = get_scheme("blanes-moan6")
+    previous = numba.get_num_threads()
+    numba.set_num_threads(threads)
+    try:
+        ens = Ensemble(engine_name(sink), q, v, engine_params(sink))
+        ens.run(scheme, dt=2 * math.pi / STEPS, steps=STEPS, segments=1, record=())
+        best = math.inf
+        for _ in range(3):
+            t = time.perf_counter()
+            ens.run(scheme, dt=2 * math.pi / STEPS, steps=STEPS, segments=periods, record=())
+            best = min(best, time.perf_counter() - t)
+        return best / (runs * periods), ens.plan(threads), ens.block_costs()
+    finally:
+        numba.set_num_threads(previous)
+
+
+def cost_table(periods: int) -> tuple[dict, int]:
+    """The table of per-run costs and the efficient block width: the smallest block size
+    whose measured cost is within 2x the cheapest."""
+    rows = {}
+    print(f"\nPer-run cost, Fig. 8 workload ({STEPS} steps/period, {periods} periods, best of 3)")
+    print(f"{'R':>5} {'1 thread ms':>12} {'plan':>16} {'2 threads ms':>13} {'plan':>16} {'2/1':>6}")
+    for R in RUNS:
+        c1, p1, costs = per_run_cost(R, 1, periods)
+        c2, p2, _ = per_run_cost(R, 2, periods)
+        rows[R] = (c1, c2)
+        print(
+            f"{R:5d} {1e3 * c1:12.3f} {_plan(p1):>16} {1e3 * c2:13.3f} {_plan(p2):>16} "
+            f"{c2 / c1:6.2f}",
+            flush=True,
+        )
+    width = min(b for b, c in costs.items() if c <= 2 * min(costs.values()))
+    return rows, width
+
+
+def _plan(p) -> str:
+    return f"{p.blocks}x{p.block}/{p.threads}t"
+
+
+def checks(rows: dict, width: int) -> None:
+    """The issue's two criteria, printed."""
+    worst_cliff, worst_threads = 0.0, 0.0
+    for R, (c1, c2) in rows.items():
+        ahead = [S for S in rows if S >= R and S % width == 0]
+        if ahead:
+            best = min(ahead)
+            worst_cliff = max(worst_cliff, min(c1, c2) / min(rows[best]))
+        worst_threads = max(worst_threads, c2 / c1)
+    print(f"\nlargest cost per run over that of the next multiple of {width} runs: "
+          f"{worst_cliff:.2f} (limit 1.3: {'PASS' if worst_cliff <= 1.3 else 'FAIL'})")  # fmt: skip
+    print(f"largest 2-thread / 1-thread time: {worst_threads:.2f} "
+          f"(limit 1.05: {'PASS' if worst_threads <= 1.05 else 'FAIL'})")  # fmt: skip
+
+
+def chaos_map(points: int, runs: int, periods: int) -> None:
+    kind = get_kind("chaos")
+    betas = np.linspace(-0.7, 0.45, points)
+    base = {"alpha": 0.5, "n": 2, "runs": runs, "periods": periods, "transverse": 1}
+    tasks = [(kind.complete(base | {"beta": float(b)}), 1000 + i) for i, b in enumerate(betas)]
+    print(f"\nChaos map: {points} betas x {runs} runs x {periods} periods (flat, n = 2, k = 1)")
+    t = time.perf_counter()
+    with ProcessPoolExecutor(2) as pool:
+        alone = list(pool.map(_one, tasks))
+    before = time.perf_counter() - t
+    print(f"  one ensemble per beta, 2 processes: {before:7.1f} s", flush=True)
+    t = time.perf_counter()
+    together = kind.compute_many(tasks)
+    after = time.perf_counter() - t
+    rungs = len({float(o["dt_used"]) for o in together})
+    print(f"  one ensemble per step rung ({rungs} rungs), engine threads: {after:7.1f} s "
+          f"({before / after:.1f}x)")  # fmt: skip
+    pairs = list(zip(alone, together, strict=True))
+    diff = max(abs(float(a["lambda1"]) - float(b["lambda1"])) for a, b in pairs)
+    same = all(np.array_equal(a["lambda1_runs"], b["lambda1_runs"]) for a, b in pairs)
+    print(f"  largest |difference| of mean lambda_1 between the two: {diff:.2e} "
+          f"(bitwise the same: {same})")  # fmt: skip
+
+
+def _one(task):
+    params, seed = task
+    return get_kind("chaos").compute(params, seed)
+
+
+def chart(rows: dict, path: str) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    R = np.array(list(rows))
+    c = np.array(list(rows.values()))
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    ax.loglog(R, 1e3 * c[:, 0], "o-", label="1 thread")
+    ax.loglog(R, 1e3 * c[:, 1], "s-", label="2 threads")
+    ax.set_xlabel("runs R")
+    ax.set_ylabel("ms per run and period")
+    ax.set_title("Fig. 8 workload, automatic block plan")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    fig.text(0.01, 0.01, describe(), fontsize=5)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    print(f"\nwrote {path}")
+
+
+def main(argv=None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--quick", action="store_true", help="fewer periods and a smaller map")
+    ap.add_argument("--png", help="write the cost chart here")
+    ap.add_argument("--skip-map", action="store_true", help="only the per-run cost table")
+    args = ap.parse_args(argv)
+    print(describe())
+    rows, width = cost_table(1 if args.quick else 3)
+    checks(rows, width)
+    if args.png:
+        chart(rows, args.png)
+    if not args.skip_map:
+        chaos_map(*((41, 6, 50) if args.quick else (161, 6, 200)))
+
+
+if __name__ == "__main__":
+    main()
