@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import multiprocessing
 import sys
 import time
 from concurrent.futures import ProcessPoolExecutor
@@ -119,7 +120,7 @@ def chaos_map(points: int, runs: int, periods: int) -> None:
     tasks = [(kind.complete(base | {"beta": float(b)}), 1000 + i) for i, b in enumerate(betas)]
     print(f"\nChaos map: {points} betas x {runs} runs x {periods} periods (flat, n = 2, k = 1)")
     t = time.perf_counter()
-    with ProcessPoolExecutor(2) as pool:
+    with ProcessPoolExecutor(2, mp_context=multiprocessing.get_context("spawn")) as pool:
         alone = list(pool.map(_one, tasks))
     before = time.perf_counter() - t
     print(f"  one ensemble per beta, 2 processes: {before:7.1f} s", flush=True)

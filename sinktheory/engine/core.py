@@ -22,6 +22,7 @@ Examples
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass
 
 import numba
@@ -188,8 +189,13 @@ class Ensemble:
         if gali > M or (megno and M == 0):
             raise ParameterError("gali", gali, f"at most the number of deviation vectors ({M})")
         threads = numba.get_num_threads()
-        policy = self.plan(threads) if block is None else blocks.fixed(R, block, threads)
-        Rp = policy.padded  # runs advanced: R real ones, then inert copies of the last
+        if block is None:
+            plans = [self.plan(threads)]
+            if plans[0].threads > 1:  # the one-thread plan, for _Chooser to compare
+                plans.append(self.plan(1))
+        else:
+            plans = [blocks.fixed(R, block, threads)]
+        Rp = max(p.padded for p in plans)  # rows of the records (inert ones discarded)
         rec = {
             "shared": np.zeros((Rp, S + 1 if "shared" in record else 0)),
             "members": np.zeros((Rp, S + 1 if "members" in record else 0, K)),
@@ -216,63 +222,38 @@ class Ensemble:
             rec["gali"][:, 0] = 1.0
         if megno:
             rec["megno"][:, 0] = 2.0  # the limit of Y(t) as t -> 0 (ln|delta| ~ linear)
-        ah, bh = scheme.arrays()
-        # the state the engine advances: the real runs' own arrays, or padded copies
-        state = [_pad(a, Rp) for a in (self.q, self.v, self.dq, self.dv, self.logs, self.meg)]
-        Q, V, DQ, DV, logs, meg = state
-        table, h0, status = (_pad(a, Rp) for a in (self.table, self.h0, self.status))
-        fail_segment = np.zeros(Rp, dtype=np.int64)
-        fail_energy = np.zeros(Rp)
-        worst = np.zeros(Rp)
-        mode = TANGENT_MODES[self.tangent]
+        fixed = (
+            (*scheme.arrays(), float(dt), int(steps)),
+            (TANGENT_MODES[self.tangent], int(renorm), int(gali), bool(megno),
+             self.time - self.tangent_start),
+            float(bound),
+            (rec["shared"], rec["members"], traj, int(stride), rec["logs"], rec["gali"],
+             rec["megno"]),
+        )  # fmt: skip
+        fails = (np.zeros(Rp, dtype=np.int64), np.zeros(Rp), np.zeros(Rp))  # segment, H, worst
         chunk = max(1, math.ceil(S / 100))
+        chooser = _Chooser(plans)
         bar = ProgressBar(S, enabled=progress is not False, label=label)
-        numba.set_num_threads(policy.threads)
         seg_base = self.segments_done
         try:
             for start in range(0, S, chunk):
                 stop = min(S, start + chunk)
-                self.module.advance(
-                    Q,
-                    V,
-                    DQ,
-                    DV,
-                    table,
-                    (ah, bh, float(dt), int(steps)),
-                    start,
-                    stop,
-                    policy.block,
-                    (mode, int(renorm), int(gali), bool(megno), self.time - self.tangent_start),
-                    logs,
-                    meg,
-                    (h0, float(bound), status, fail_segment, fail_energy, worst),
-                    (
-                        rec["shared"],
-                        rec["members"],
-                        traj,
-                        int(stride),
-                        rec["logs"],
-                        rec["gali"],
-                        rec["megno"],
-                    ),
-                )
-                self.status[:] = status[:R]
+                policy = chooser.next()
+                numba.set_num_threads(policy.threads)
+                t0 = time.perf_counter()
+                self._advance(policy, start, stop, fixed, fails)
+                chooser.record(policy, (time.perf_counter() - t0) / (stop - start))
                 self._raise_on_failure(
-                    fail_segment[:R], fail_energy[:R], dt * steps, seg_base, bound, unit
+                    fails[0][:R], fails[1][:R], dt * steps, seg_base, bound, unit
                 )
                 bar.update(stop - start)
         finally:
             numba.set_num_threads(threads)
             bar.close()
-            for own, advanced in zip(
-                (self.q, self.v, self.dq, self.dv, self.logs, self.meg), state, strict=True
-            ):
-                if advanced is not own:
-                    own[...] = advanced[..., :R]
         self.segments_done += S
         self.time += S * steps * dt
         rec = {name: a[:R] for name, a in rec.items()}
-        traj, worst = traj[:R], worst[:R]
+        traj, worst = traj[:R], fails[2][:R]
         return Records(
             shared=rec["shared"] if "shared" in record else None,
             members=rec["members"] if "members" in record else None,
@@ -282,6 +263,28 @@ class Ensemble:
             megno=rec["megno"] if megno else None,
             worst=worst,
         )
+
+    def _advance(self, policy, start, stop, fixed, fails) -> None:
+        """Segments [start, stop) of every run with ``policy``'s blocks and threads: the
+        runs' own arrays, or copies padded with inert runs that are written back."""
+        scheme, tangent, bound, rec = fixed
+        R, Rp = self.runs, policy.padded
+        own = (self.q, self.v, self.dq, self.dv, self.logs, self.meg)
+        state = [_pad(a, Rp) for a in own]
+        table, h0, status = (_pad(a, Rp) for a in (self.table, self.h0, self.status))
+        fail_segment, fail_energy, worst = (a[:Rp] for a in fails)
+        Q, V, DQ, DV, logs, meg = state
+        try:
+            self.module.advance(
+                Q, V, DQ, DV, table, scheme, start, stop, policy.block, tangent, logs, meg,
+                (h0, bound, status, fail_segment, fail_energy, worst),
+                tuple(a[:Rp] if isinstance(a, np.ndarray) else a for a in rec),
+            )  # fmt: skip
+        finally:
+            for mine, advanced in zip(own, state, strict=True):
+                if advanced is not mine:
+                    mine[...] = advanced[..., :R]
+            self.status[:] = status[:R]
 
     def plan(self, threads: int | None = None) -> blocks.BlockPlan:
         """How :meth:`run` cuts these runs into blocks and threads (see
@@ -333,3 +336,32 @@ def _pad(a: np.ndarray, runs: int) -> np.ndarray:
     return np.ascontiguousarray(
         np.concatenate([a, np.repeat(a[..., -1:], extra, axis=-1)], axis=-1)
     )
+
+
+class _Chooser:
+    """Which plan each chunk of segments runs with.  One plan: always it.  A plan with
+    several threads and the one-thread plan: chunk 0 warms up, chunks 1 and 2 time the two,
+    and the faster per segment runs from then on; every 16th chunk re-times the other, so
+    a core that becomes busy (or free) is noticed.  The numbers do not depend on it."""
+
+    REFRESH = 16
+
+    def __init__(self, plans):
+        self.plans = plans
+        self.seconds = [math.inf] * len(plans)
+        self.count = 0
+
+    def next(self) -> blocks.BlockPlan:
+        i, self.count = self.count, self.count + 1
+        if len(self.plans) == 1 or i == 0:
+            return self.plans[0]
+        if i <= len(self.plans):
+            return self.plans[i - 1]
+        best = min(range(len(self.plans)), key=self.seconds.__getitem__)
+        if i % self.REFRESH == 0:
+            return self.plans[1 - best]
+        return self.plans[best]
+
+    def record(self, plan, seconds_per_segment: float) -> None:
+        if self.count > 1:  # the warm-up chunk may include compilation
+            self.seconds[self.plans.index(plan)] = seconds_per_segment
