@@ -25,11 +25,23 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import validation as v
+from .engine.core import Ensemble
 from .errors import ParameterError
+from .integrators import DEFAULT_SCHEME, get_scheme
 from .layout import StateLayout
 from .model import RunSettings, Sink, Well
 from .results import Result
-from .simulate import default_step, simulate
+from .simulate import (
+    ENERGY_BOUND,
+    default_step,
+    engine_name,
+    engine_params,
+    simulate,
+    split_values,
+    start_state,
+    total_energy,
+)
+from .stepsize import ladder_step
 
 QUANTITIES = ("y", "energy")
 #: Start of the particle relative to the container (Fig. 4 of the paper).
@@ -101,17 +113,83 @@ def section(
     >>> s.shape
     (3,)
     """
-    if sink.particles != 1:
-        raise ParameterError("particles", sink.particles, "1 for a bifurcation diagram")
+    return sections([sink], transient=transient, count=count, quantity=quantity,
+                    energy=energy)[0]  # fmt: skip
+
+
+def section_step(sink: Sink, energy: float = 0.5) -> tuple[float, int]:
+    """(dt, steps per period) of a section run: the default scheme's step for the default
+    tolerance at the start's energy, taken down to the ladder of
+    :func:`sinktheory.stepsize.ladder_step` so that neighbouring betas share it."""
+    bound = RunSettings(energy=energy, runs=1, periods=1).total_energy_bound(sink)
+    return ladder_step(default_step(sink, bound)[0])
+
+
+def step_groups(sinks, energy: float = 0.5) -> dict[tuple, list[int]]:
+    """Indices of ``sinks`` grouped by engine and :func:`section_step` (what
+    :func:`sections` can run together)."""
+    groups: dict[tuple, list[int]] = {}
+    for i, k in enumerate(sinks):
+        groups.setdefault((engine_name(k), section_step(k, energy)), []).append(i)
+    return groups
+
+
+def sections(
+    sinks,
+    *,
+    transient: int = 200,
+    count: int = 200,
+    quantity: str = "y",
+    energy: float = 0.5,
+) -> np.ndarray:
+    """Sections (B, count) of single-particle runs in several wells at once.
+
+    The wells must share the engine (shape and n) and, through their stiffness, the step
+    (:func:`section_step`); the runs then advance as one ensemble whose runs carry their
+    own parameters, and each row is bitwise the section of its well alone.
+
+    Examples
+    --------
+    >>> wells = [Sink(Well(0.5, b, 4), 1, 0.2) for b in (0.30, 0.301)]
+    >>> both = sections(wells, transient=2, count=3)
+    >>> bool((both[1] == section(wells[1], transient=2, count=3)).all())
+    True
+    """
+    sinks = list(sinks)
+    for sink in sinks:
+        if not isinstance(sink, Sink):
+            raise ParameterError("sinks", sink, "sinktheory.model.Sink objects")
+        if sink.particles != 1:
+            raise ParameterError("particles", sink.particles, "1 for a bifurcation diagram")
     transient = v.positive_int("transient", transient, minimum=0)
     count = v.positive_int("count", count)
     quantity = v.choice("quantity", quantity, QUANTITIES)
-    settings = RunSettings(energy=energy, runs=1, periods=transient + count)
+    if not sinks:
+        raise ParameterError("sinks", "none", "at least one well")
+    if len(step_groups(sinks, energy)) > 1:
+        raise ParameterError(
+            "sinks", "wells of different engines or steps", "one shape and n, one section_step"
+        )
+    dt, steps = section_step(sinks[0], energy)
+    values = [start_state(k, energy, np.array([[START]])) for k in sinks]
+    for k, z in zip(sinks, values, strict=True):
+        k.well.check_energy(float(total_energy(k, z)[0]))
+    q, vel = split_values(np.concatenate(values))
+    params = np.stack([engine_params(k) for k in sinks], axis=1)
+    ens = Ensemble(engine_name(sinks[0]), q, vel, params)
+    rec = ens.run(
+        get_scheme(DEFAULT_SCHEME),
+        dt=dt,
+        steps=steps,
+        segments=transient + count,
+        record=("trajectory",) if quantity == "y" else ("shared",),
+        stride=steps,
+        bound=ENERGY_BOUND,
+        unit="period",
+    )
     if quantity == "energy":
-        res = simulate(sink, settings, initial=[START], record=("container",), progress=False)
-        return res.container_energy[0, transient + 1 :]
-    rows = sampled_run(sink, settings, START, per_period=1)
-    return rows[transient + 1 :, StateLayout(1).y][:, 0]
+        return rec.shared[:, transient + 1 :]
+    return rec.trajectory[:, transient + 1 :, StateLayout(1).y][:, :, 0]
 
 
 def bifurcation(
@@ -138,14 +216,14 @@ def bifurcation(
     sinks = [Sink(Well(alpha, b, n, gamma=gamma, shape=shape), 1, mass) for b in betas]
     for s in sinks:  # refuse bad input before any long computation
         RunSettings(energy=energy, runs=1, periods=1).check(s)
-    rows = [
-        section(s, transient=transient, count=count, quantity=quantity, energy=energy)
-        for s in sinks
-    ]
+    rows = np.empty((len(sinks), count))
+    for members in step_groups(sinks, energy).values():
+        rows[members] = sections([sinks[i] for i in members], transient=transient,
+                                 count=count, quantity=quantity, energy=energy)  # fmt: skip
     w = sinks[0].well
     return BifurcationDiagram(
         betas,
-        np.array(rows),
+        rows,
         quantity,
         w.alpha,
         w.n,

@@ -59,3 +59,17 @@ def test_chaos_sweep_points_together_equal_points_alone():
         assert set(out) == set(alone)
         for name in out:
             assert np.array_equal(out[name], alone[name], equal_nan=True), name
+
+
+def test_sections_together_equal_sections_alone():
+    from sinktheory.bifurcation import section, sections, step_groups
+
+    wells = [Sink(Well(0.5, b, 2), 1, 0.2) for b in (0.1, 0.101, 0.102)]
+    assert len(step_groups(wells)) == 1  # neighbours on one rung of the step ladder
+    for quantity in ("y", "energy"):
+        rows = sections(wells, transient=3, count=4, quantity=quantity)
+        for w, row in zip(wells, rows, strict=True):
+            alone = section(w, transient=3, count=4, quantity=quantity)
+            assert np.array_equal(row, alone)
+    with pytest.raises(ParameterError, match="sinks"):
+        sections([wells[0], Sink(Well(0.5, 0.1, 4), 1, 0.2)], transient=1, count=1)

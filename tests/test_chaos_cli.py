@@ -30,7 +30,9 @@ def test_spectrum_json_pairs_sum_to_zero(capsys):
 
 
 def test_half_spectrum_from_the_cli(capsys):
-    code, out, err = run_cli(BASE + ["--runs", "2", "--periods", "20", "--spectrum", "half"], capsys)
+    code, out, err = run_cli(
+        BASE + ["--runs", "2", "--periods", "20", "--spectrum", "half"], capsys
+    )
     assert code == 0, err
     assert "symplectic pairing" in out and "pairs lambda_i" not in out
     code, out, err = run_cli(BASE + ["--runs", "2", "--periods", "2", "--spectrum", "all"], capsys)

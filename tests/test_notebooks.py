@@ -22,8 +22,9 @@ def test_tour_executes(tmp_path, monkeypatch):
     # the kernel runs in tmp_path: make it import this work tree, not an installed copy
     monkeypatch.setenv("PYTHONPATH", str(NOTEBOOKS.parent))
     nb = nbformat.read(NOTEBOOKS / "tour.ipynb", as_version=4)
-    NotebookClient(nb, timeout=600, kernel_name="python3",
-                   resources={"metadata": {"path": str(tmp_path)}}).execute()
+    NotebookClient(
+        nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}
+    ).execute()
     outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs]
     assert not [o for o in outputs if o.output_type == "error"]
     text = "".join(o.get("text", "") for o in outputs)

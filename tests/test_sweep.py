@@ -369,9 +369,11 @@ def _params_args(params: dict) -> list[str]:
 
 
 # --------------------------------------------------------------------------- kill -9
+# an ensemble sweep writes point by point (bifurcation and chaos sweeps compute a task's
+# points together, so a small one is written at once and cannot be killed half-way)
 KILL_ARGS = (
-    "bifurcation --param alpha=0.5 --param beta=-0.3:0.4:8 --param n=4 "
-    "--param transient=30 --param count=30 --seed 5"
+    "ensemble --param alpha=0.5 --param beta=-0.3:0.4:8 --param n=4 --param particles=1 "
+    "--param runs=2 --param periods=40 --seed 5"
 ).split()
 
 
@@ -395,7 +397,7 @@ def test_kill_9_then_resume_gives_the_uninterrupted_results(tmp_path, capsys):
     assert proc.returncode == -signal.SIGKILL
     assert 2 <= before < 8, "the kill must land in the middle of the sweep"
     # a temporary chunk file as a killed write leaves it: removed on resume
-    leftover = store / "section" / "c" / "0" / "0.deadbeef.partial"
+    leftover = store / "mean_energy" / "c" / "0" / "0.deadbeef.partial"
     leftover.write_bytes(b"half a chunk")
 
     assert main(["sweep", *KILL_ARGS, "--out", str(store), "--resume", "--json", "--quiet"]) == 0
@@ -406,15 +408,16 @@ def test_kill_9_then_resume_gives_the_uninterrupted_results(tmp_path, capsys):
 
     resumed = xr.open_zarr(store)
     reference = run_sweep(
-        "bifurcation",
-        {"alpha": 0.5, "beta": np.linspace(-0.3, 0.4, 8), "n": 4, "transient": 30, "count": 30},
+        "ensemble",
+        {"alpha": 0.5, "beta": np.linspace(-0.3, 0.4, 8), "n": 4, "particles": 1, "runs": 2,
+         "periods": 40},  # fmt: skip
         seed=5,
         workers=1,
         progress=False,
     )
     assert bool(resumed.done.all())
     assert np.array_equal(resumed.beta.values, reference.beta.values)
-    assert np.array_equal(resumed.section.values, reference.section.values)
+    assert np.array_equal(resumed.mean_energy.values, reference.mean_energy.values)
     assert np.array_equal(resumed.point_seed.values, reference.point_seed.values)
 
 

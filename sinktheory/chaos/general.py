@@ -144,6 +144,7 @@ def check_spectrum(spectrum) -> str | None:
 def vector_count(dim: int, spectrum, gali: int) -> int:
     """Deviation vectors per run that :func:`indicators` needs: 2D for the full spectrum, D
     for the half, k for GALI_k, at least one (lambda_1)."""
+    gali = check_gali(gali, dim)
     return max({"full": 2 * dim, "half": dim, None: 0}[check_spectrum(spectrum)], gali, 1)
 
 

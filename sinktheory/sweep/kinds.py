@@ -54,7 +54,7 @@ from typing import Any
 import numpy as np
 
 from .. import validation as v
-from ..bifurcation import QUANTITIES, section
+from ..bifurcation import QUANTITIES
 from ..equilibrium import ergodicity as _ergodicity
 from ..errors import ParameterError
 from ..floquet import model_hill, model_problem
@@ -240,14 +240,31 @@ def _bifurcation_check(p: dict) -> None:
 
 
 def _bifurcation(p: dict, seed: int) -> dict[str, Any]:
-    s = section(
-        _sink(p),
-        transient=p["transient"],
-        count=p["count"],
-        quantity=p["quantity"],
-        energy=p["energy"],
-    )
-    return {"section": s}
+    return _bifurcation_many([(p, seed)])[0]
+
+
+def _bifurcation_many(points: list) -> list[dict[str, Any]]:
+    """Sections of a task's points, those sharing an engine, a step and the section's
+    settings as one ensemble (:func:`sinktheory.bifurcation.sections`)."""
+    from ..bifurcation import section_step, sections
+
+    groups: dict[tuple, list[int]] = {}
+    for i, (p, _) in enumerate(points):
+        key = (p["shape"], p["n"], p["transient"], p["count"], p["quantity"], p["energy"])
+        groups.setdefault((*key, section_step(_sink(p), p["energy"])), []).append(i)
+    out: list = [None] * len(points)
+    for members in groups.values():
+        first = points[members[0]][0]
+        rows = sections(
+            [_sink(points[i][0]) for i in members],
+            transient=first["transient"],
+            count=first["count"],
+            quantity=first["quantity"],
+            energy=first["energy"],
+        )
+        for i, row in zip(members, rows, strict=True):
+            out[i] = {"section": row}
+    return out
 
 
 # --------------------------------------------------------------------------- ensemble
@@ -382,7 +399,9 @@ KINDS = {
         _bifurcation_check,
         _bifurcation,
         lambda p: {"sample": np.arange(1, p["count"] + 1)},
+        batch=256,
         cost=lambda p: SECONDS_PER_PERIOD * (p["transient"] + p["count"]),
+        compute_many=_bifurcation_many,
     ),
     "ensemble": Kind(
         "ensemble",
