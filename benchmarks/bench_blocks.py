@@ -19,7 +19,9 @@ Usage::
    (``compute_many``, the engine's threads); both in this run, and the largest difference
    of the means printed (they differ only where the steps do).
 
-The machine's description is printed first; ``--png`` writes the cost chart.
+The machine's description is printed first; ``--png`` writes the cost chart and ``--rst``
+the tables as a reStructuredText fragment (``docs/guide/measured_blocks.inc``, which the
+simulation guide includes, is written this way).
 """
 
 from __future__ import annotations
@@ -98,8 +100,8 @@ def _plan(p) -> str:
     return f"{p.blocks}x{p.block}/{p.threads}t"
 
 
-def checks(rows: dict, width: int) -> None:
-    """The issue's two criteria, printed."""
+def checks(rows: dict, width: int) -> list[str]:
+    """The issue's two criteria, printed and returned as lines."""
     worst_cliff, worst_threads = 0.0, 0.0
     for R, (c1, c2) in rows.items():
         ahead = [S for S in rows if S >= R and S % width == 0]
@@ -107,13 +109,17 @@ def checks(rows: dict, width: int) -> None:
             best = min(ahead)
             worst_cliff = max(worst_cliff, min(c1, c2) / min(rows[best]))
         worst_threads = max(worst_threads, c2 / c1)
-    print(f"\nlargest cost per run over that of the next multiple of {width} runs: "
-          f"{worst_cliff:.2f} (limit 1.3: {'PASS' if worst_cliff <= 1.3 else 'FAIL'})")  # fmt: skip
-    print(f"largest 2-thread / 1-thread time: {worst_threads:.2f} "
-          f"(limit 1.05: {'PASS' if worst_threads <= 1.05 else 'FAIL'})")  # fmt: skip
+    lines = [
+        f"largest cost per run over that of the next multiple of {width} runs: "
+        f"{worst_cliff:.2f} (limit 1.3: {'PASS' if worst_cliff <= 1.3 else 'FAIL'})",
+        f"largest 2-thread / 1-thread time: {worst_threads:.2f} "
+        f"(limit 1.05: {'PASS' if worst_threads <= 1.05 else 'FAIL'})",
+    ]
+    print("\n" + "\n".join(lines))
+    return lines
 
 
-def chaos_map(points: int, runs: int, periods: int) -> None:
+def chaos_map(points: int, runs: int, periods: int) -> list[str]:
     kind = get_kind("chaos")
     betas = np.linspace(-0.7, 0.45, points)
     base = {"alpha": 0.5, "n": 2, "runs": runs, "periods": periods, "transverse": 1}
@@ -135,6 +141,12 @@ def chaos_map(points: int, runs: int, periods: int) -> None:
     same = all(np.array_equal(a["lambda1_runs"], b["lambda1_runs"]) for a, b in pairs)
     print(f"  largest |difference| of mean lambda_1 between the two: {diff:.2e} "
           f"(bitwise the same: {same})")  # fmt: skip
+    return [
+        f"chaos map, {points} betas x {runs} runs x {periods} periods (flat, n = 2, k = 1): "
+        f"{before:.1f} s as one ensemble per beta on 2 processes, {after:.1f} s as one "
+        f"ensemble per step rung ({rungs} rungs) on the engine's threads ({before / after:.1f}x; "
+        f"results bitwise the same: {same})"
+    ]
 
 
 def _one(task):
@@ -164,19 +176,44 @@ def chart(rows: dict, path: str) -> None:
     print(f"\nwrote {path}")
 
 
+def rst(rows: dict, lines: list[str]) -> str:
+    """The measured tables as a reStructuredText fragment."""
+    out = [
+        f"Measured {time.strftime('%Y-%m-%d')} by ``python benchmarks/bench_blocks.py --rst "
+        "docs/guide/measured_blocks.inc`` on this machine:",
+        "",
+        "``" + describe() + "``",
+        "",
+        ".. list-table:: Fig. 8 workload, milliseconds per run and period",
+        "   :header-rows: 1",
+        "",
+        "   * - runs",
+        "     - 1 thread",
+        "     - 2 threads",
+    ]
+    for R, (c1, c2) in rows.items():
+        out += [f"   * - {R}", f"     - {1e3 * c1:.3f}", f"     - {1e3 * c2:.3f}"]
+    out += [""] + [f"* {line}" for line in lines]
+    return "\n".join(out) + "\n"
+
+
 def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--quick", action="store_true", help="fewer periods and a smaller map")
     ap.add_argument("--png", help="write the cost chart here")
     ap.add_argument("--skip-map", action="store_true", help="only the per-run cost table")
+    ap.add_argument("--rst", help="write the tables here as reStructuredText")
     args = ap.parse_args(argv)
     print(describe())
     rows, width = cost_table(1 if args.quick else 3)
-    checks(rows, width)
+    lines = checks(rows, width)
     if args.png:
         chart(rows, args.png)
     if not args.skip_map:
-        chaos_map(*((41, 6, 50) if args.quick else (161, 6, 200)))
+        lines += chaos_map(*((41, 6, 50) if args.quick else (161, 6, 200)))
+    if args.rst:
+        Path(args.rst).write_text(rst(rows, lines))
+        print(f"wrote {args.rst}")
 
 
 if __name__ == "__main__":

@@ -97,3 +97,23 @@ def test_ensemble_plan_is_the_policy_for_its_runs(runs):
     ens = Ensemble("henon_heiles", q, v, [])
     p = ens.plan(2)
     assert p.runs == runs and p.padded >= runs and p.threads <= 2
+
+
+def test_chooser_keeps_the_faster_plan_and_looks_again_now_and_then():
+    from sinktheory.engine.core import _Chooser
+
+    two = blocks.BlockPlan(32, 16, 32, 2, 1.0)
+    one = blocks.BlockPlan(32, 32, 32, 1, 1.5)
+    speed = {two: 3.0, one: 1.0}  # a busy second core: two threads are slower here
+    seconds: dict = {}
+    chooser, picked, warm = _Chooser([two, one], seconds), [], False
+    for _ in range(40):
+        plan = chooser.next()
+        picked.append(plan.threads)
+        chooser.record(plan, speed[plan], warm)
+        warm = True
+    # warm-up, then each plan timed once, then the faster, re-timing the other every 16th
+    assert picked[:3] == [2, 2, 1]
+    assert [i for i, p in enumerate(picked) if p == 2 and i >= 3] == [15, 31]
+    # a later run of the same ensemble starts from what it learnt
+    assert _Chooser([two, one], seconds).next() is one

@@ -130,6 +130,8 @@ class Ensemble:
         self.time = 0.0
         self.tangent_start = 0.0
         self.segments_done = 0
+        self._seconds: dict = {}  # plan -> seconds per segment, as last timed (_Chooser)
+        self._warm = False  # the compiled code has run once in this ensemble
         total = self.energies()[0]
         self.h0 = total if reference_energy is None else np.asarray(reference_energy, float)
         if M and tangent != "none":
@@ -232,7 +234,7 @@ class Ensemble:
         )  # fmt: skip
         fails = (np.zeros(Rp, dtype=np.int64), np.zeros(Rp), np.zeros(Rp))  # segment, H, worst
         chunk = max(1, math.ceil(S / 100))
-        chooser = _Chooser(plans)
+        chooser = _Chooser(plans, self._seconds)
         bar = ProgressBar(S, enabled=progress is not False, label=label)
         seg_base = self.segments_done
         try:
@@ -242,7 +244,8 @@ class Ensemble:
                 numba.set_num_threads(policy.threads)
                 t0 = time.perf_counter()
                 self._advance(policy, start, stop, fixed, fails)
-                chooser.record(policy, (time.perf_counter() - t0) / (stop - start))
+                chooser.record(policy, (time.perf_counter() - t0) / (stop - start), self._warm)
+                self._warm = True
                 self._raise_on_failure(
                     fails[0][:R], fails[1][:R], dt * steps, seg_base, bound, unit
                 )
@@ -340,28 +343,31 @@ def _pad(a: np.ndarray, runs: int) -> np.ndarray:
 
 class _Chooser:
     """Which plan each chunk of segments runs with.  One plan: always it.  A plan with
-    several threads and the one-thread plan: chunk 0 warms up, chunks 1 and 2 time the two,
-    and the faster per segment runs from then on; every 16th chunk re-times the other, so
-    a core that becomes busy (or free) is noticed.  The numbers do not depend on it."""
+    several threads and the one-thread plan: until both have been timed (the first chunk
+    of an ensemble only warms up: it may include compilation), the untimed one; then the
+    faster per segment, with every 16th chunk re-timing the other, so that a core that
+    becomes busy (or free) is noticed.  ``seconds`` (plan -> seconds per segment) is the
+    ensemble's, kept across its runs.  The numbers do not depend on the choice."""
 
     REFRESH = 16
 
-    def __init__(self, plans):
+    def __init__(self, plans, seconds: dict):
         self.plans = plans
-        self.seconds = [math.inf] * len(plans)
+        self.seconds = seconds
         self.count = 0
 
     def next(self) -> blocks.BlockPlan:
         i, self.count = self.count, self.count + 1
-        if len(self.plans) == 1 or i == 0:
+        untimed = [p for p in self.plans if p not in self.seconds]
+        if len(self.plans) == 1 or not self.seconds:
             return self.plans[0]
-        if i <= len(self.plans):
-            return self.plans[i - 1]
-        best = min(range(len(self.plans)), key=self.seconds.__getitem__)
-        if i % self.REFRESH == 0:
-            return self.plans[1 - best]
-        return self.plans[best]
+        if untimed:
+            return untimed[0]
+        best = min(self.plans, key=self.seconds.__getitem__)
+        if i % self.REFRESH == self.REFRESH - 1:
+            return next(p for p in self.plans if p != best)
+        return best
 
-    def record(self, plan, seconds_per_segment: float) -> None:
-        if self.count > 1:  # the warm-up chunk may include compilation
-            self.seconds[self.plans.index(plan)] = seconds_per_segment
+    def record(self, plan, seconds_per_segment: float, warm: bool) -> None:
+        if warm:
+            self.seconds[plan] = seconds_per_segment
