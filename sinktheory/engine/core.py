@@ -235,7 +235,7 @@ class Ensemble:
         fails = (np.zeros(Rp, dtype=np.int64), np.zeros(Rp), np.zeros(Rp))  # segment, H, worst
         chunk = max(1, math.ceil(S / 100))
         chooser = _Chooser(plans, self._seconds)
-        bar = ProgressBar(S, enabled=progress is not False, label=label)
+        bar = ProgressBar(S, enabled=progress is not False, label=label, unit=unit)
         seg_base = self.segments_done
         try:
             for start in range(0, S, chunk):
