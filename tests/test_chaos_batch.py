@@ -73,3 +73,42 @@ def test_sections_together_equal_sections_alone():
             assert np.array_equal(row, alone)
     with pytest.raises(ParameterError, match="sinks"):
         sections([wells[0], Sink(Well(0.5, 0.1, 4), 1, 0.2)], transient=1, count=1)
+
+
+def test_staged_exponents_stop_settled_betas_and_keep_the_rest_bitwise():
+    """A settled beta's runs stop at a look with the exponent an unstopped run has at that
+    time; an unsettled one runs to the end with chaos_batch's numbers, bit for bit."""
+    from sinktheory.chaos.maps import threshold
+    from sinktheory.chaos.staged import looks, staged_chaos
+    from sinktheory.sinkstats import ensemble_mean
+
+    sinks = [Sink(Well(0.5, b, 2), 1, 0.2) for b in (0.3, -0.3)]
+    settings = [RunSettings(runs=4, periods=80, seed=s) for s in (1, 2)]
+    staged = staged_chaos(sinks, settings, dt=0.05, transverse=True, method="blanes-moan6")
+    full = chaos_batch(sinks, settings, dt=0.05, transverse=True)
+    assert looks(80) == [(20, 4.0), (40, 3.0)]
+    chaotic, other = staged[0]["lambda1"], staged[1]["lambda1"]
+    assert set(chaotic.periods) == {40} and set(other.periods) == {80}
+    assert np.array_equal(other.exponent, full[1].lambda1)
+    # the stopped runs' exponents are those of the same runs integrated for 40 periods
+    short = chaos(sinks[0], RunSettings(runs=4, periods=40, seed=1), dt=0.05)
+    assert np.array_equal(chaotic.exponent, short.lambda1)
+    # and the look's rule (4 s.e. at 20 T not met, 3 s.e. at 40 T met) was applied
+    mean, se = ensemble_mean(short.lambda1[:, None])
+    assert mean[0] - 3 * se[0] > threshold(40)
+    # stopping early never turns a verdict: settled at a look => chaotic by the final rule
+    assert mean[0] - 2 * se[0] > threshold(80)
+
+
+def test_chaos_sweep_stop_early_points_together_equal_points_alone():
+    kind = get_kind("chaos")
+    base = {"alpha": 0.5, "n": 2, "runs": 3, "periods": 40, "transverse": 1, "stop_early": 1}
+    points = [(kind.complete(base | {"beta": b}), seed) for b, seed in
+              [(0.3, 11), (0.302, 12), (-0.3, 13)]]  # fmt: skip
+    together = kind.compute_many(points)
+    for (p, seed), out in zip(points, together, strict=True):
+        alone = kind.compute(p, seed)
+        for name in out:
+            assert np.array_equal(out[name], alone[name], equal_nan=True), name
+    with pytest.raises(ParameterError, match="stop_early"):
+        kind.check(kind.complete(base | {"beta": 0.3, "gali": 2}))

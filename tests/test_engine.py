@@ -178,3 +178,27 @@ def test_parameters_of_the_wrong_shape_are_refused():
     sink, q, v = _fig8_like(3)
     with pytest.raises(ValueError, match="params"):
         Ensemble(sink_name("flat", 4), q, v, np.ones((4, 2)))
+
+
+def test_take_continues_the_chosen_runs_bitwise():
+    sink, q, v = _fig8_like(7)
+    D = q.shape[0]
+    rng = np.random.default_rng(3)
+    vectors = {"dq": rng.normal(size=(D, 1, 7)), "dv": rng.normal(size=(D, 1, 7))}
+    scheme, dt = get_scheme("blanes-moan6"), 2 * np.pi / 400
+
+    def fresh():
+        return Ensemble(sink_name("flat", 4), q, v, engine_params(sink), tangent="normalise",
+                        **vectors)  # fmt: skip
+
+    whole = fresh()
+    whole.run(scheme, dt=dt, steps=400, segments=4, record=())
+    part = fresh()
+    part.run(scheme, dt=dt, steps=400, segments=2, record=())
+    kept = np.array([1, 4, 6])
+    part = part.take(kept)
+    rec = part.run(scheme, dt=dt, steps=400, segments=2, record=("logs",))
+    assert part.runs == 3 and part.time == whole.time
+    for name in ("q", "v", "dq", "dv", "logs"):
+        assert np.array_equal(getattr(part, name), getattr(whole, name)[..., kept]), name
+    assert np.array_equal(rec.logs[:, -1, 0], whole.logs[0, kept])

@@ -57,9 +57,12 @@ def chaos_map(
     workers: int | None = None,
     store=None,
     progress: bool = False,
+    stop_early: bool = False,
 ):
     """lambda_1 (and the transverse exponent) over ``betas``: an xarray Dataset with
-    dimension beta (see :data:`sinktheory.sweep.kinds.KINDS` ``["chaos"]``)."""
+    dimension beta (see :data:`sinktheory.sweep.kinds.KINDS` ``["chaos"]``); with
+    ``stop_early`` a beta's runs stop as soon as they are settled chaotic
+    (:mod:`sinktheory.chaos.staged`)."""
     from ..sweep import run_sweep
 
     grid = v.real_array("betas", betas, "a sequence of betas")
@@ -77,6 +80,7 @@ def chaos_map(
         "periods": periods,
         "transverse": int(v.flag("transverse", transverse)),
         "dt": dt,
+        "stop_early": int(bool(stop_early)),
     }
     return run_sweep("chaos", params, seed=seed, workers=workers, store=store, progress=progress)
 

@@ -148,6 +148,17 @@ class Ensemble:
     def runs(self) -> int:
         return self.q.shape[1]
 
+    def take(self, runs) -> Ensemble:
+        """A new ensemble of the runs ``runs`` (indices or a boolean mask), continuing
+        exactly where these are: state, deviation vectors and their logs, audit reference,
+        time.  Advancing it gives each run bitwise what advancing this one would."""
+        new = object.__new__(Ensemble)
+        new.__dict__.update(self.__dict__)
+        for name in ("q", "v", "dq", "dv", "logs", "meg", "table", "status", "h0"):
+            setattr(new, name, np.ascontiguousarray(getattr(self, name)[..., runs]))
+        new._seconds = {}  # other runs, other plans
+        return new
+
     @property
     def vectors(self) -> int:
         return self.dq.shape[1]

@@ -471,7 +471,11 @@ def _chaos_check(p: dict) -> None:
     check_renorm(p["renorm"])
     v.positive_int("megno", p["megno"], minimum=0, maximum=1)
     v.positive_int("transverse", p["transverse"], minimum=0, maximum=1)
+    v.positive_int("stop_early", p["stop_early"], minimum=0, maximum=1)
     gali = check_gali(p["gali"], 1 + 2 * p["particles"])
+    if p["stop_early"] and (gali or p["megno"]):
+        raise ParameterError("stop_early", 1, "0 when gali or megno is asked for (they need "
+                             "every run to the end)")  # fmt: skip
     check_tangent_work(_sink(p), _settings(p, 0), steps, None, gali, bool(p["transverse"]))
 
 
@@ -497,38 +501,67 @@ def _chaos_step(p: dict, seed: int) -> float:
 
 def _chaos_many(points: list) -> list[dict[str, Any]]:
     """The points of a task grouped by engine, periods and step, each group one ensemble
-    whose runs carry their own parameters (:func:`sinktheory.chaos.chaos_batch`)."""
-    from ..chaos import chaos_batch
-
+    whose runs carry their own parameters (:func:`sinktheory.chaos.chaos_batch`, or with
+    ``stop_early`` :func:`sinktheory.chaos.staged.staged_chaos`)."""
     groups: dict[tuple, list[int]] = {}
     steps = [_chaos_step(p, seed) for p, seed in points]
     for i, (p, _) in enumerate(points):
         same = ("shape", "n", "particles", "periods", "method", "gali", "megno", "transverse",
-                "renorm", "energy_bound")  # fmt: skip
+                "renorm", "energy_bound", "stop_early")  # fmt: skip
         groups.setdefault((*(p[k] for k in same), steps[i]), []).append(i)
     out: list = [None] * len(points)
     for members in groups.values():
         first = points[members[0]][0]
-        results = chaos_batch(
-            [_sink(points[i][0]) for i in members],
-            [_settings(points[i][0], points[i][1]) for i in members],
-            dt=steps[members[0]],
-            gali=first["gali"],
-            megno=bool(first["megno"]),
-            transverse=bool(first["transverse"]),
-            method=first["method"],
-            renorm=first["renorm"],
-            energy_bound=first["energy_bound"],
-            progress=False,
-        )
-        for i, res in zip(members, results, strict=True):
-            out[i] = _chaos_summary(res)
+        sinks = [_sink(points[i][0]) for i in members]
+        settings = [_settings(points[i][0], points[i][1]) for i in members]
+        options = {
+            "dt": steps[members[0]],
+            "transverse": bool(first["transverse"]),
+            "method": first["method"],
+            "renorm": first["renorm"],
+            "energy_bound": first["energy_bound"],
+        }
+        if first["stop_early"]:
+            from ..chaos.staged import staged_chaos
+
+            runs = staged_chaos(sinks, settings, **options)
+            summaries = [_staged_summary(r, options["dt"]) for r in runs]
+        else:
+            from ..chaos import chaos_batch
+
+            extra = {"gali": first["gali"], "megno": bool(first["megno"]), "progress": False}
+            results = chaos_batch(sinks, settings, **extra, **options)
+            summaries = [_chaos_summary(res, first["periods"]) for res in results]
+        for i, summary in zip(members, summaries, strict=True):
+            out[i] = summary
     return out
 
 
-def _chaos_summary(res) -> dict[str, Any]:
+def _staged_summary(res: dict, dt: float) -> dict[str, Any]:
+    """The chaos kind's results from :func:`~sinktheory.chaos.staged.staged_chaos`: the
+    same means and standard errors over the runs, each exponent at its stopping time."""
+    from ..sinkstats import ensemble_mean
+
+    lam, trans = res["lambda1"], res["transverse"]
+    out = {"lambda1_runs": lam.exponent, "dt_used": np.array(dt)}
+    worst = lam.worst if trans is None else np.maximum(lam.worst, trans.worst)
+    out["max_relative_energy_error"] = np.array(float(worst.max()))
+    for name, s in (("lambda1", lam), ("transverse", trans)):
+        if s is None:
+            mean = se = periods = np.nan
+        else:
+            m, e = ensemble_mean(s.exponent[:, None])
+            mean, se, periods = m[0], e[0], float(s.periods.max())
+        out[name], out[f"{name}_se"] = np.array(mean), np.array(se)
+        out[f"{name}_periods"] = np.array(periods)
+    for name in ("gali", "mean_megno"):
+        out[name] = out[f"{name}_se"] = np.array(np.nan)
+    return out
+
+
+def _chaos_summary(res, periods: int) -> dict[str, Any]:
     """What the chaos kind stores of a ChaosResult: per-run lambda_1, ensemble means and
-    standard errors (as_dict's), the audit and the step."""
+    standard errors (as_dict's), the audit, the step, and the periods each exponent ran."""
     d = res.as_dict()  # per-run finals with their ensemble mean and standard error
     out = {
         "lambda1_runs": res.lambda1,
@@ -541,6 +574,8 @@ def _chaos_summary(res) -> dict[str, Any]:
         # None (absent, or a NaN in JSON) is stored as NaN
         out[name] = np.array(summary.get("mean"), dtype=float)
         out[f"{name}_se"] = np.array(summary.get("stderr"), dtype=float)
+    out["lambda1_periods"] = np.array(float(periods))
+    out["transverse_periods"] = np.array(float(periods) if "transverse" in d else np.nan)
     return out
 
 
@@ -556,6 +591,10 @@ def _chaos_results() -> dict[str, Result]:
         out[name] = Result((), "float64", description)
         out[f"{name}_se"] = Result((), "float64", f"standard error of {name} over the runs")
     out["lambda1_runs"] = Result(("run",), "float64", "lambda_1 of each run")
+    for name in ("lambda1", "transverse"):
+        out[f"{name}_periods"] = Result(
+            (), "float64", f"periods {name} ran (fewer where stop_early settled it)"
+        )
     out["max_relative_energy_error"] = Result((), "float64", "largest |H - H0|/H0 of all runs")
     out["dt_used"] = Result((), "float64", "integration step used")
     return out
@@ -578,6 +617,7 @@ KINDS["chaos"] = Kind(
         "gali": Param(int, 0),
         "megno": Param(int, 0),
         "transverse": Param(int, 0),
+        "stop_early": Param(int, 0),
         "replica": Param(int, 0),
     },
     _chaos_results(),
