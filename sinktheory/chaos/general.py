@@ -73,16 +73,20 @@ def check_block(block) -> int | None:
     return None if block is None else val.positive_int("block", block, maximum=MAX_RUNS)
 
 
-def check_params(system: str, params) -> np.ndarray:
+def check_params(system: str, params, runs: int | None = None) -> np.ndarray:
     """The runtime parameters of engine ``system``: as many finite numbers as it has
-    (:func:`sinktheory.nnm.system.parameter_names`)."""
+    (:func:`sinktheory.nnm.system.parameter_names`), shared by every run or, given the
+    number of ``runs``, one column of them per run (shape (count, runs))."""
     from ..nnm.system import parameter_names
 
     names = parameter_names(system)
-    p = val.real_array("params", params).reshape(-1) if np.ndim(params) <= 1 else None
-    if p is None or p.size != len(names) or not np.isfinite(p).all():
+    p = val.real_array("params", params) if np.ndim(params) <= 2 else None
+    shapes = {(len(names),)} | ({(len(names), runs)} if runs is not None else set())
+    if p is None or p.shape not in shapes or not np.isfinite(p).all():
         shown = params if isinstance(params, str | list | tuple) else type(params).__name__
-        raise ParameterError("params", shown, f"{len(names)} finite values {names} for {system}")
+        per_run = f", or a column of them for each of {runs} runs" if runs is not None else ""
+        raise ParameterError("params", shown, f"{len(names)} finite values {names} for "
+                             f"{system}{per_run}")  # fmt: skip
     return p
 
 
@@ -106,17 +110,27 @@ def check_run(system, q, v, dt, steps, segments) -> tuple[str, np.ndarray, np.nd
 
 
 def check_transverse(transverse, dim: int, runs: int) -> tuple:
-    """(q, v, mask) of the transverse runs: finite start states of shape (D, R) and a
-    boolean mask of the 2D phase-space directions."""
-    allowed = f"(q, v, mask): states of shape ({dim}, {runs}) and {2 * dim} booleans"
-    if not isinstance(transverse, tuple | list) or len(transverse) != 3:
+    """(q, v, mask) or (q, v, mask, (dq, dv)) of the transverse runs: finite start states of
+    shape (D, R), a boolean mask of the 2D phase-space directions and, optionally, the
+    deviation vectors (D, 1, R) to start from."""
+    allowed = (f"(q, v, mask[, (dq, dv)]): states of shape ({dim}, {runs}), {2 * dim} "
+               f"booleans and optionally vectors of shape ({dim}, 1, {runs})")  # fmt: skip
+    if not isinstance(transverse, tuple | list) or len(transverse) not in (3, 4):
         raise ParameterError("transverse", type(transverse).__name__, allowed)
-    q, v, mask = (val.real_array("transverse", a, allowed) for a in transverse)
+    q, v, mask = (val.real_array("transverse", a, allowed) for a in transverse[:3])
     if q.shape != (dim, runs) or v.shape != (dim, runs) or mask.shape != (2 * dim,):
         raise ParameterError("transverse", f"shapes {q.shape}, {v.shape}, {mask.shape}", allowed)
     if not (np.isfinite(q).all() and np.isfinite(v).all() and np.isin(mask, (0, 1)).all()):
         raise ParameterError("transverse", "non-finite states or a non-boolean mask", allowed)
-    return q, v, mask.astype(bool)
+    if len(transverse) == 3:
+        return q, v, mask.astype(bool)
+    given = transverse[3]
+    if not isinstance(given, tuple | list) or len(given) != 2:
+        raise ParameterError("transverse", "vectors that are not a pair (dq, dv)", allowed)
+    dq, dv = (val.real_array("transverse", a, allowed) for a in given)
+    if dq.shape != (dim, 1, runs) or dv.shape != dq.shape or not np.isfinite(dq).all():
+        raise ParameterError("transverse", f"vectors of shapes {dq.shape}, {dv.shape}", allowed)
+    return q, v, mask.astype(bool), (dq, dv)
 
 
 def check_bound(bound) -> float:
@@ -247,8 +261,8 @@ def indicators(
     ChaosResult
     """
     system, q, v, dt, steps, segments = check_run(system, q, v, dt, steps, segments)
-    params = check_params(system, params)
     D, R = q.shape
+    params = check_params(system, params, R)
     scheme = get_scheme(method)
     if transverse is not None:
         transverse = check_transverse(transverse, D, R)
