@@ -48,7 +48,10 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 from sympy.printing.c import C99CodePrinter
 
-from sinktheory import RunSettings, Sink, Well
+sys.path.insert(0, str(Path(__file__).parent))
+from machine import describe  # noqa: E402
+
+from sinktheory import RunSettings, Sink, Well  # noqa: E402
 from sinktheory import symbolic as S
 from sinktheory.engine.printer import _chain
 from sinktheory.engine.systems import sink_system
@@ -91,13 +94,13 @@ def _warm(sink) -> None:
 
 
 # --------------------------------------------------------------------------- ours
-def ours(sink, full: RunSettings, sweep: RunSettings) -> tuple[list[Point], Point]:
-    """Each scheme at each tolerance on ``sweep`` (scaled), and the automatic choice on the
-    whole workload at tol 1e-8 (measured, not scaled)."""
+def ours(sink, full: RunSettings, sweep: RunSettings | None) -> tuple[list[Point], Point]:
+    """Each scheme at each tolerance on ``sweep`` (scaled; skipped when None), and the
+    automatic choice on the whole workload at tol 1e-8 (measured, not scaled)."""
     _warm(sink)
     points = []
-    scale = full.runs * full.periods / (sweep.runs * sweep.periods)
-    for tol in TOLS:
+    scale = full.runs * full.periods / (sweep.runs * sweep.periods) if sweep else 1.0
+    for tol in TOLS if sweep else ():
         for method in SCHEMES:
             if method == "verlet" and tol < 1e-6:
                 continue  # millions of steps per period
@@ -421,7 +424,14 @@ def main(argv=None) -> int:
     parser.add_argument(
         "--scaling-only", action="store_true", help="only the per-run cost against ensemble size"
     )
+    parser.add_argument(
+        "--fig8-only",
+        action="store_true",
+        help="only the Fig. 8 headline: our automatic choice at tol 1e-8 against heyoka, plain "
+        "C and DOP853 (no scheme sweep, no stiff workload, no scaling chart)",
+    )
     args = parser.parse_args(argv)
+    print(describe())
     full = RunSettings(runs=25, periods=1500, seed=0)
     sweep = RunSettings(runs=25, periods=300, seed=0)
     hy_periods, scipy_horizon, counts = 150, 5, [1, 4, 16, 64, 256, 1024, 4096]
@@ -435,10 +445,12 @@ def main(argv=None) -> int:
     }
     print(f"Workload: {full.runs} runs x {full.periods} periods, E0 = 0.5; {os.cpu_count()} cores")
     results = {}
+    if args.fig8_only:
+        workloads = dict(list(workloads.items())[:1])
     for label, sink in workloads.items() if not args.scaling_only else ():
         print(f"\n== {label}", flush=True)
         simulate(sink, RunSettings(runs=2, periods=1), progress=False)  # compile once
-        points, head = ours(sink, full, sweep)
+        points, head = ours(sink, full, None if args.fig8_only else sweep)
         cfn = c_reference(sink)
         cpoint = None
         if cfn is not None:
@@ -462,6 +474,8 @@ def main(argv=None) -> int:
                 f"{cpoint.error:.1e}) -> ours {cpoint.wall / head.wall:.1f}x faster"
             )
         results[label] = (points + others, head, cpoint)
+    if args.fig8_only:
+        return 0
     print("\n== per-run cost (Fig. 8 system, tol 1e-8 step, 5 periods)", flush=True)
     fig8 = next(iter(workloads.values()))
     scale = scaling(fig8, counts, 5 if not args.quick else 2, c_reference(fig8), args.baseline)
