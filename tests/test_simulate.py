@@ -206,11 +206,11 @@ def test_single_run_from_given_positions():
 
 
 def test_energy_the_well_cannot_hold_is_refused():
-    # beta = -0.5: D(y) = 1 - y^2/2 vanishes at |y| = sqrt 2; a particle starting at y = 1.4
-    # has enough energy (1.4^8/8 = 1.84, plus E0) to get there, where V is singular
+    # beta = -0.5: D(y) = 1 - y^2/2 vanishes at |y| = sqrt 2; with E0 = 2 a particle can
+    # take enough energy (sqrt(2)^8/8 = 2) to get there, where V is singular
     sink = Sink(Well(0.5, -0.5, 4), particles=1, mass=0.2)
     with pytest.raises(ParameterError) as info:
-        simulate(sink, RunSettings(runs=1, periods=1), initial=[(0.0, 1.4)])
+        simulate(sink, RunSettings(energy=2.0, runs=1, periods=1), initial=[(0.0, 0.5)])
     assert info.value.name == "beta"
 
 
