@@ -112,3 +112,23 @@ def test_chaos_sweep_stop_early_points_together_equal_points_alone():
             assert np.array_equal(out[name], alone[name], equal_nan=True), name
     with pytest.raises(ParameterError, match="stop_early"):
         kind.check(kind.complete(base | {"beta": 0.3, "gali": 2}))
+
+
+def test_transient_is_left_out_of_the_exponents():
+    """With a transient t0 the stored exponent is (ln|delta(t)| - ln|delta(t0)|)/(t - t0):
+    checked against the log growth chaos() records, for the staged and the plain path."""
+    kind = get_kind("chaos")
+    base = {"alpha": 0.5, "n": 2, "runs": 3, "periods": 60, "transverse": 1, "beta": -0.3}
+    sink = Sink(Well(0.5, -0.3, 2), 1, 0.2)
+    for stop_early in (0, 1):
+        p = kind.complete(base | {"transient": 6, "stop_early": stop_early})
+        out = kind.compute(p, 21)
+        ref = chaos(sink, RunSettings(runs=3, periods=60, seed=21), dt=float(out["dt_used"]),
+                    transverse=True)  # fmt: skip
+        t = ref.times[-1] - ref.times[6]
+        rate = (ref.log_growth[:, -1] - ref.log_growth[:, 6]) / t
+        if out["lambda1_periods"] == 60:  # not stopped at a look
+            assert np.array_equal(out["lambda1_runs"], rate)
+        assert not np.array_equal(rate, ref.lambda1)  # the transient made a difference
+    with pytest.raises(ParameterError, match="transient"):
+        kind.check(kind.complete(base | {"transient": 60}))

@@ -58,10 +58,12 @@ def chaos_map(
     store=None,
     progress: bool = False,
     stop_early: bool = False,
+    transient: int = 0,
 ):
     """lambda_1 (and the transverse exponent) over ``betas``: an xarray Dataset with
     dimension beta (see :data:`sinktheory.sweep.kinds.KINDS` ``["chaos"]``); with
-    ``stop_early`` a beta's runs stop as soon as they are settled chaotic
+    ``stop_early`` a beta's runs stop as soon as they are settled chaotic, and the growth
+    over the first ``transient`` periods is left out of the exponents
     (:mod:`sinktheory.chaos.staged`)."""
     from ..sweep import run_sweep
 
@@ -81,6 +83,7 @@ def chaos_map(
         "transverse": int(v.flag("transverse", transverse)),
         "dt": dt,
         "stop_early": int(bool(stop_early)),
+        "transient": transient,
     }
     return run_sweep("chaos", params, seed=seed, workers=workers, store=store, progress=progress)
 

@@ -11,6 +11,11 @@ final rule; groups that do not settle run to the end and get exactly the numbers
 unstopped run.  Only "chaotic" is ever decided early: a regular orbit's exponent decays
 like ln t / t and is judged at the end.
 
+A transient of ``transient`` periods can be left out: the exponent is then the growth
+rate from its end, (ln|delta(t)| - ln|delta(t_0)|) / (t - t_0).  A regular orbit's
+deviation grows at most linearly, so its rate from t_0 is ln(t / t_0) / (t - t_0), below
+ln t / t once t > t_0 > e: the same threshold stays a safe bound.
+
 Error rate: under a normal approximation for the mean of the runs, a group that the final
 look would call regular is stopped as chaotic at a look with probability at most
 Phi(-4) + Phi(-3) = 0.0014, so the sequential map's false-chaotic rate is at most
@@ -43,12 +48,13 @@ LOOKS = ((0.25, 4.0), (0.5, 3.0))
 MIN_LOOK = 20
 
 
-def looks(periods: int) -> list[tuple[int, float]]:
-    """The looks (period, z) of a run of ``periods`` periods (none before MIN_LOOK)."""
+def looks(periods: int, transient: int = 0) -> list[tuple[int, float]]:
+    """The looks (period, z) of a run of ``periods`` periods whose first ``transient``
+    are discarded (none before MIN_LOOK periods after the transient)."""
     out = []
     for fraction, z in LOOKS:
         at = int(periods * fraction)
-        if MIN_LOOK <= at < periods:
+        if transient + MIN_LOOK <= at < periods:
             out.append((at, z))
     return out
 
@@ -58,7 +64,8 @@ class StagedExponent:
     """Finite-time exponent of deviation vector 0 of each run, at the time its group
     stopped.
 
-    exponent : (R,) ln|delta(t_r)| / t_r per unit time
+    exponent : (R,) (ln|delta(t_r)| - ln|delta(t_0)|) / (t_r - t_0) per unit time, t_0 the
+        end of the discarded transient (0 without one)
     periods : (R,) t_r in periods (the run's group stopped at a look, or ran to the end)
     worst : (R,) largest relative energy error of the run while it ran
     """
@@ -69,7 +76,8 @@ class StagedExponent:
 
 
 def staged_chaos(sinks, settings, *, dt: float, transverse: bool, method: str,
-                 renorm: int = 0, energy_bound: float = ENERGY_BOUND) -> list[dict]:  # fmt: skip
+                 renorm: int = 0, energy_bound: float = ENERGY_BOUND,
+                 transient: int = 0) -> list[dict]:  # fmt: skip
     """lambda_1 (and the transverse exponent) of several set-ups as in
     :func:`~sinktheory.chaos.chaos_batch`, each set-up's runs stopped at the first look
     where they are settled chaotic.
@@ -107,7 +115,8 @@ def staged_chaos(sinks, settings, *, dt: float, transverse: bool, method: str,
             reference_energy=None if mask is not None else np.concatenate([p.h0 for p in points]),
         )
         out.append(staged_exponent(ens, groups, scheme, dt=dt, steps=steps, periods=periods,
-                                   bound=energy_bound, renorm=renorm))  # fmt: skip
+                                   bound=energy_bound, renorm=renorm,
+                                   transient=transient))  # fmt: skip
     return [
         {
             "lambda1": _part(out[0], groups == i),
@@ -122,22 +131,29 @@ def _part(s: StagedExponent, runs) -> StagedExponent:
 
 
 def staged_exponent(ensemble: Ensemble, groups, scheme, *, dt: float, steps: int,
-                    periods: int, bound: float, renorm: int = 0) -> StagedExponent:  # fmt: skip
+                    periods: int, bound: float, renorm: int = 0,
+                    transient: int = 0) -> StagedExponent:  # fmt: skip
     """Advance ``ensemble`` (deviation vector 0 normalised each period) for up to
     ``periods`` periods, stopping the runs of each group (``groups``: (R,) labels) at the
-    first look where the group is settled chaotic (module docstring)."""
+    first look where the group is settled chaotic (module docstring); the growth over the
+    first ``transient`` periods is left out of the exponents."""
     groups = np.asarray(groups)
     R = ensemble.runs
     exponent, used, worst = np.empty(R), np.full(R, periods), np.zeros(R)
+    start = np.zeros(R)  # ln|delta| at the end of the transient
+    times = dt * steps * np.arange(periods + 1)  # as ChaosResult.times
     active = np.arange(R)
     done = 0
-    for at, z in [*looks(periods), (periods, None)]:
+    stages = [(transient, None)] if transient else []
+    for at, z in [*stages, *looks(periods, transient), (periods, None)]:
         rec = ensemble.run(scheme, dt=dt, steps=steps, segments=at - done, record=(),
                            renorm=renorm, bound=bound, unit="period")  # fmt: skip
         done = at
         worst[active] = np.maximum(worst[active], rec.worst)
-        t = (dt * steps * np.arange(at + 1))[-1]  # as ChaosResult.duration
-        exponent[active] = ensemble.logs[0] / t
+        if at == transient:
+            start[active] = ensemble.logs[0]
+            continue
+        exponent[active] = (ensemble.logs[0] - start[active]) / (times[at] - times[transient])
         if z is None:
             break
         stop = np.zeros(active.size, bool)

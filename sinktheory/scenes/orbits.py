@@ -65,7 +65,7 @@ def _panel(alpha, n, shape, ranges, quick, ax, ax_map):
     lo, hi = ranges[0][0], ranges[-1][1]
     floq = scan(model_problem(alpha, n, shape=shape), lo, hi, 400)
     cmap = chaos_map(alpha, n, betas, shape=shape, runs=f["runs"], periods=f["periods"],
-                     stop_early=True)  # fmt: skip
+                     stop_early=True, transient=f["periods"] // 10)  # fmt: skip
     gaps = [(a, b) for (_, a), (b, _) in zip(ranges[:-1], ranges[1:], strict=True)]
     title = f"{shape}, n = {n}: {f['runs']} runs x {f['periods']} periods per beta"
     unstable = _unstable(floq.stable_intervals, lo, hi)
@@ -86,7 +86,8 @@ def _claims(panels, label_of) -> list[Claim]:
         basis = (
             f"chaotic where the mean lambda_1 of {cmap.attrs['runs']} runs minus 2 standard "
             f"errors exceeds {THRESHOLD_FACTOR:g} ln t / t = {v['threshold']:.3g} "
-            f"(t = {cmap.attrs['periods']} T; {early} betas settled chaotic at an earlier "
+            f"(t = {cmap.attrs['periods']} T; lambda_1 is the growth rate after a transient "
+            f"of {cmap.attrs['transient']} T; {early} betas settled chaotic at an earlier "
             "look by 4 or 3 standard errors, sinktheory.chaos.staged)"
         )
         neg = bool(np.any(chaotic[diagram.beta < 0]))

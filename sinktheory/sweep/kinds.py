@@ -472,6 +472,7 @@ def _chaos_check(p: dict) -> None:
     v.positive_int("megno", p["megno"], minimum=0, maximum=1)
     v.positive_int("transverse", p["transverse"], minimum=0, maximum=1)
     v.positive_int("stop_early", p["stop_early"], minimum=0, maximum=1)
+    v.positive_int("transient", p["transient"], minimum=0, maximum=max(0, p["periods"] - 1))
     gali = check_gali(p["gali"], 1 + 2 * p["particles"])
     if p["stop_early"] and (gali or p["megno"]):
         raise ParameterError("stop_early", 1, "0 when gali or megno is asked for (they need "
@@ -507,7 +508,7 @@ def _chaos_many(points: list) -> list[dict[str, Any]]:
     steps = [_chaos_step(p, seed) for p, seed in points]
     for i, (p, _) in enumerate(points):
         same = ("shape", "n", "particles", "periods", "method", "gali", "megno", "transverse",
-                "renorm", "energy_bound", "stop_early")  # fmt: skip
+                "renorm", "energy_bound", "stop_early", "transient")  # fmt: skip
         groups.setdefault((*(p[k] for k in same), steps[i]), []).append(i)
     out: list = [None] * len(points)
     for members in groups.values():
@@ -524,14 +525,16 @@ def _chaos_many(points: list) -> list[dict[str, Any]]:
         if first["stop_early"]:
             from ..chaos.staged import staged_chaos
 
-            runs = staged_chaos(sinks, settings, **options)
+            runs = staged_chaos(sinks, settings, transient=first["transient"], **options)
             summaries = [_staged_summary(r, options["dt"]) for r in runs]
         else:
             from ..chaos import chaos_batch
 
             extra = {"gali": first["gali"], "megno": bool(first["megno"]), "progress": False}
             results = chaos_batch(sinks, settings, **extra, **options)
-            summaries = [_chaos_summary(res, first["periods"]) for res in results]
+            summaries = [
+                _chaos_summary(res, first["periods"], first["transient"]) for res in results
+            ]
         for i, summary in zip(members, summaries, strict=True):
             out[i] = summary
     return out
@@ -559,29 +562,36 @@ def _staged_summary(res: dict, dt: float) -> dict[str, Any]:
     return out
 
 
-def _chaos_summary(res, periods: int) -> dict[str, Any]:
-    """What the chaos kind stores of a ChaosResult: per-run lambda_1, ensemble means and
-    standard errors (as_dict's), the audit, the step, and the periods each exponent ran."""
-    d = res.as_dict()  # per-run finals with their ensemble mean and standard error
-    out = {
-        "lambda1_runs": res.lambda1,
-        "max_relative_energy_error": d["max_relative_energy_error"],
-        "dt_used": d["parameters"]["dt"],
-    }
+def _chaos_summary(res, periods: int, transient: int) -> dict[str, Any]:
+    """What the chaos kind stores of a ChaosResult: per-run lambda_1 (the growth after
+    ``transient`` periods), ensemble means and standard errors, the audit, the step, and
+    the periods each exponent ran; GALI and MEGNO as ``as_dict`` gives them."""
+    from ..chaos.staged import StagedExponent
+
+    t = res.times[-1] - res.times[transient]
+    exponents = {}
+    for name, logs in (("lambda1", res.log_growth), ("transverse", res.transverse_logs)):
+        if logs is not None:
+            rate = (logs[:, -1] - logs[:, transient]) / t
+            exponents[name] = StagedExponent(rate, np.full(rate.size, periods), res.run_errors)
+    out = _staged_summary(
+        {"lambda1": exponents["lambda1"], "transverse": exponents.get("transverse")},
+        res.parameters["dt"],
+    )
+    d = res.as_dict()
     keys = {"gali": f"gali{res.gali_order}"}  # as_dict's name where it differs
-    for name in ("lambda1", "transverse", "gali", "mean_megno"):
-        summary = d.get(keys.get(name, name), {})  # absent when not computed
+    for name in ("gali", "mean_megno"):
+        summary = d.get(keys[name] if name in keys else name, {})  # absent when not computed
         # None (absent, or a NaN in JSON) is stored as NaN
         out[name] = np.array(summary.get("mean"), dtype=float)
         out[f"{name}_se"] = np.array(summary.get("stderr"), dtype=float)
-    out["lambda1_periods"] = np.array(float(periods))
-    out["transverse_periods"] = np.array(float(periods) if "transverse" in d else np.nan)
     return out
 
 
 def _chaos_results() -> dict[str, Result]:
     text = {
-        "lambda1": "maximal Lyapunov exponent per unit time, mean over the runs",
+        "lambda1": "maximal Lyapunov exponent per unit time (growth after the transient), "
+        "mean over the runs",
         "transverse": "transverse exponent of y = 0 (NaN unless transverse = 1)",
         "gali": "GALI_k at the end, mean over the runs (NaN unless gali = k >= 2)",
         "mean_megno": "time-averaged MEGNO <Y> at the end (NaN unless megno = 1)",
@@ -618,6 +628,7 @@ KINDS["chaos"] = Kind(
         "megno": Param(int, 0),
         "transverse": Param(int, 0),
         "stop_early": Param(int, 0),
+        "transient": Param(int, 0),
         "replica": Param(int, 0),
     },
     _chaos_results(),
