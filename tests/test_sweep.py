@@ -409,8 +409,14 @@ def test_kill_9_then_resume_gives_the_uninterrupted_results(tmp_path, capsys):
     resumed = xr.open_zarr(store)
     reference = run_sweep(
         "ensemble",
-        {"alpha": 0.5, "beta": np.linspace(-0.3, 0.4, 8), "n": 4, "particles": 1, "runs": 2,
-         "periods": 40},  # fmt: skip
+        {
+            "alpha": 0.5,
+            "beta": np.linspace(-0.3, 0.4, 8),
+            "n": 4,
+            "particles": 1,
+            "runs": 2,
+            "periods": 40,
+        },  # fmt: skip
         seed=5,
         workers=1,
         progress=False,
