@@ -32,7 +32,6 @@ Examples
 from __future__ import annotations
 
 import contextlib
-import math
 import multiprocessing
 import os
 import signal
@@ -186,7 +185,7 @@ def execute(
             target = SweepStore.create(store, sweep)
         tasks = _tasks(sweep, target.done())
         pending = sum(len(t) for t in tasks)
-        bar = _SweepBar(pending, enabled=progress, label="sweep ")
+        bar = ProgressBar(pending, enabled=progress, label="sweep ", unit="point")
         try:
             for task, outputs in engine.run(sweep.kind, tasks):
                 indices = np.array([index for index, _, _ in task])
@@ -402,21 +401,3 @@ def _watch(driver: int) -> None:
             os.kill(driver, 0)
         except ProcessLookupError:
             os._exit(1)
-
-
-class _SweepBar(ProgressBar):
-    """:class:`~sinktheory.progress.ProgressBar` counting points, with rate and time left."""
-
-    def update(self, units: int) -> None:
-        self.done = min(self.done + units, self.total)
-        elapsed = time.perf_counter() - self.start
-        if not self.enabled or elapsed < self.delay:
-            return
-        rate = self.done / elapsed
-        left = (self.total - self.done) / rate if rate > 0 else math.inf
-        self.stream.write(
-            f"\r{self.label}{self.done}/{self.total} points  {rate:8.3g} points/s  "
-            f"{left:6.0f} s left "
-        )
-        self.stream.flush()
-        self.drawn = True
