@@ -27,6 +27,7 @@ from sinktheory.cli import main
 from sinktheory.errors import ParameterError
 from sinktheory.floquet import model_hill
 from sinktheory.model import RunSettings, Sink, Well
+from sinktheory.progress import ProgressBar
 from sinktheory.simulate import simulate
 from sinktheory.sweep import (
     Grid,
@@ -36,7 +37,6 @@ from sinktheory.sweep import (
     point_seed,
     run_sweep,
 )
-from sinktheory.sweep.runner import _SweepBar
 
 # small, fast bifurcation points (~0.05 s each)
 BIF = {"alpha": 0.5, "beta": [-0.3, -0.1, 0.1, 0.3], "n": 4, "transient": 2, "count": 3}
@@ -155,18 +155,32 @@ def test_bifurcation_diagram_view_equals_the_serial_diagram():
         bifurcation_diagram(run_sweep("floquet", {"alpha": 0.5, "beta": [0.1, 0.2], "n": 4}))
 
 
-def test_progress_bar_counts_points_rate_and_time_left():
+def test_progress_counts_points_on_a_terminal_and_in_a_log():
+    """The sweep's progress (ProgressBar counting points): a bar with rate on a terminal,
+    plain lines with the count when stderr is a file."""
+
     class Terminal(io.StringIO):
         def isatty(self):
             return True
 
-    bar = _SweepBar(4, enabled=True, stream=Terminal(), delay=0.0, label="sweep ")
-    bar.update(1)
-    bar.close()
-    text = bar.stream.getvalue()
-    assert "sweep 1/4 points" in text and "points/s" in text and "s left" in text
-    quiet = _SweepBar(4, enabled=False, stream=Terminal(), delay=0.0)
+    def bar(stream, **kw):
+        return ProgressBar(4, enabled=True, stream=stream, delay=0.0, label="sweep ",
+                           unit="point", **kw)  # fmt: skip
+
+    shown = bar(Terminal())
+    shown.update(1)
+    shown.close()
+    assert "sweep" in shown.stream.getvalue() and "1/4" in shown.stream.getvalue()
+    assert "point/s" in shown.stream.getvalue()
+    log = bar(io.StringIO(), interval=0.0)
+    log.update(2)
+    log.update(2)
+    log.close()
+    lines = log.stream.getvalue().splitlines()
+    assert lines and "\r" not in log.stream.getvalue() and "4/4" in lines[-1]
+    quiet = ProgressBar(4, enabled=False, stream=Terminal(), delay=0.0)
     quiet.update(4)
+    quiet.close()
     assert quiet.stream.getvalue() == ""
 
 
