@@ -24,13 +24,13 @@ sinktheory.errors.ParameterError: beta = 0.5 is not allowed: must be < alpha = 0
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import validation as v
-from ._generated import oscillator as _osc
 from ._generated import shapes as _shapes
 from .errors import ParameterError
 from .results import Result
@@ -61,9 +61,22 @@ MAX_SECONDS = 30 * 86400.0
 MAX_N = 1000
 
 
-# scalar geometry by Python (see sinktheory.twins): light commands never start numba
-_denominator = python_kernel(_osc.denominator)
-_axis_reach_factor = python_kernel(_osc.axis_reach_factor)
+# scalar geometry by Python (see sinktheory.twins): light commands never start numba's
+# compiler, and the generated module (which imports numba) is loaded on first use only, so
+# refusing bad parameters stays fast
+@functools.cache
+def _geometry(name: str):
+    from ._generated import oscillator
+
+    return python_kernel(getattr(oscillator, name))
+
+
+def _denominator(s, alpha, beta):
+    return _geometry("denominator")(s, alpha, beta)
+
+
+def _axis_reach_factor(energy, gamma, n):
+    return _geometry("axis_reach_factor")(energy, gamma, n)
 
 
 @dataclass(frozen=True)
