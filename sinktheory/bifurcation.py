@@ -25,7 +25,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import validation as v
-from .engine.core import Ensemble
 from .errors import ParameterError
 from .integrators import DEFAULT_SCHEME, get_scheme
 from .layout import StateLayout
@@ -176,6 +175,8 @@ def sections(
         k.well.check_energy(float(total_energy(k, z)[0]))
     q, vel = split_values(np.concatenate(values))
     params = np.stack([engine_params(k) for k in sinks], axis=1)
+    from .engine.core import Ensemble  # numba loads when a section is computed
+
     ens = Ensemble(engine_name(sinks[0]), q, vel, params)
     rec = ens.run(
         get_scheme(DEFAULT_SCHEME),

@@ -21,6 +21,11 @@ True
 
 import numpy as np
 
+#: Default relative tolerance of one step of the Hill integration (:mod:`sinktheory.hill`);
+#: gives phi to about 1e-11 (see tests).  Kept here, beside the tableau, so that modules
+#: that only need the number (the sweep kinds) do not load the compiled kernels.
+DEFAULT_RTOL = 1e-13
+
 #: Stages of one step (the 13th, at c = 1 with the weights B, is the next step's first).
 N_STAGES = 12
 

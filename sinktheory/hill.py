@@ -66,11 +66,10 @@ from . import validation as v
 from ._generated import oscillator as _osc
 from ._generated._support import ipow
 from ._generated.oscillator import oscillator_acceleration
+from .dop853 import DEFAULT_RTOL
 from .errors import NonFiniteStateError, NumericalError, ParameterError
 from .twins import python_kernel
 
-#: Default relative tolerance of one step; gives phi to about 1e-11 (see tests).
-DEFAULT_RTOL = 1e-13
 #: Solution pairs are divided by 2^RENORM_BITS when their size exceeds 2^RENORM_BITS.
 RENORM_BITS = 400
 

@@ -46,8 +46,6 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import validation as v
-from .engine.cache import sink_name
-from .engine.core import Ensemble
 from .errors import ParameterError
 from .integrators import DEFAULT_SCHEME, get_scheme
 from .layout import StateLayout, pack_params
@@ -232,6 +230,8 @@ def total_energy(sink: Sink, values: np.ndarray) -> np.ndarray:
 
 def engine_name(sink: Sink) -> str:
     """Name of the generated engine of this sink (shape, n and k fixed in its code)."""
+    from .engine.cache import sink_name  # the engine (numba) loads when first needed
+
     return sink_name(sink.well.shape, sink.well.n)
 
 
@@ -252,6 +252,8 @@ def join_values(q: np.ndarray, v: np.ndarray) -> np.ndarray:
 def _engine_energies(sink: Sink, values: np.ndarray):
     """(total (R,), container (R,), particles (R, k)) from the generated energy kernel."""
     q, v = split_values(values)
+    from .engine.core import Ensemble
+
     ens = Ensemble(engine_name(sink), q, v, engine_params(sink))
     total, shared, members = ens.energies()
     return total, shared, members.T
@@ -446,6 +448,8 @@ def simulate(
         stride, samples = 0, 0
 
     q, vel = split_values(values)
+    from .engine.core import Ensemble
+
     ens = Ensemble(engine_name(sink), q, vel, engine_params(sink), reference_energy=h0)
     ens.time = t0
     rec = ens.run(

@@ -55,10 +55,9 @@ import numpy as np
 
 from .. import validation as v
 from ..bifurcation import QUANTITIES
+from ..dop853 import DEFAULT_RTOL
 from ..equilibrium import ergodicity as _ergodicity
 from ..errors import ParameterError
-from ..floquet import model_hill, model_problem
-from ..hill import DEFAULT_RTOL
 from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
 from ..model import MAX_PERIODS, SHAPES, RunSettings, Sink, Well, check_work
 from ..simulate import ENERGY_BOUND, simulate
@@ -187,6 +186,8 @@ class Kind:
 
 # --------------------------------------------------------------------------- floquet
 def _floquet_check(p: dict) -> None:
+    from ..floquet import model_problem  # the Floquet layer loads with its first point
+
     model_problem(
         p["alpha"],
         p["n"],
@@ -198,6 +199,8 @@ def _floquet_check(p: dict) -> None:
 
 
 def _floquet(p: dict, seed: int) -> dict[str, Any]:
+    from ..floquet import model_hill
+
     c = model_hill(
         p["alpha"],
         [p["beta"]],
