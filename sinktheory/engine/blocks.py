@@ -38,6 +38,7 @@ Examples
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import math
@@ -105,6 +106,7 @@ def fixed(runs: int, block: int, threads: int) -> BlockPlan:
     return BlockPlan(int(runs), block, int(runs), max(1, min(int(threads), blocks)), math.nan)
 
 
+@functools.cache
 def machine_key() -> str:
     """What the cost table depends on besides the engine: CPU name and features, numba and
     llvmlite versions (a digest)."""

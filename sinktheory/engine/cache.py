@@ -18,6 +18,7 @@ Examples
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import importlib.util
 import os
@@ -54,6 +55,7 @@ def cache_dir() -> Path:
     return Path(base) / "sinktheory" / "engines"
 
 
+@functools.cache
 def _digest() -> str:
     here = Path(__file__).parent
     h = hashlib.sha256(__version__.encode())
