@@ -30,6 +30,8 @@ CASES = [
     ([*DESIGN, "--bootstrap", "1e308"], "bootstrap", "[2, 100000]"),
     ([*SWEEP_CHAOS, "--param", "gali=2,6", *OUT], "gali", "a single value"),
     ([*SWEEP_CHAOS, "--param", "transverse=0,1", *OUT], "transverse", "a single value"),
+    ([*SWEEP_CHAOS, "--param", "box=1e308", *OUT], "box", "inside the walls"),
+    ([*SWEEP_ENSEMBLE, "--param", "box=1e308", *OUT], "box", "inside the walls"),
     # item 2: the parameter responsible, before any file exists
     ([*SWEEP_ENSEMBLE, "--param", "gamma=1e308", *OUT], "gamma", "with gamma = 1 it can"),
     ([*DESIGN, "--gamma", "1e308"], "gamma", "with gamma = 1 it can"),

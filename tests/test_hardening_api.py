@@ -207,6 +207,7 @@ def test_named_cases_of_the_issue():
         (lambda: chaos(_sink(), small, block=2.5, dt=0.05), "block"),
         (lambda: chaos(_sink(), small, block=1e12, dt=0.05), "block"),
         (lambda: chaos(_sink(), RunSettings(runs=1), initial=[[5, 5]], dt=0.05), "initial"),
+        (lambda: chaos(_sink(), RunSettings(runs=1, box=1e308), dt=0.05), "box"),
         (lambda: simulate(_sink(), RunSettings(runs=1), initial=[[5, 5]]), "initial"),
         (lambda: shoot(_flow(), duffing[0], -1.0, steps=400), "T"),
         (lambda: shoot(_flow(), *duffing, steps=10**12), "steps"),

@@ -45,7 +45,7 @@ from ..simulate import (
     total_energy,
 )
 from ..stepsize import resolve_step
-from ..worklimit import check_particle_steps, step_of, tangent_steps
+from ..worklimit import check_particle_steps, check_settings, step_of, tangent_steps
 from .general import (
     check_block,
     check_gali,
@@ -183,6 +183,8 @@ def chaos(
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     options = _options(sink, spectrum, gali, megno, transverse, renorm, energy_bound, progress)
     block = check_block(block)
+    if initial is None and isinstance(settings, RunSettings):
+        check_settings(settings, sink)  # a start box overflowing the wall ratio names box
     point = _Point.of(sink, settings, options["transverse"], initial)
     _, dt, steps, _ = step_of(
         sink, point.top, method=scheme.name, dt=dt, tol=tol, settings=settings

@@ -45,7 +45,7 @@ from ..errors import ParameterError
 from ..model import MAX_PERIODS, RunSettings, Sink, Well
 from ..sinkstats import ensemble_mean
 from ..stepsize import check_tol
-from ..worklimit import check_particle_steps, step_of, tangent_steps
+from ..worklimit import check_particle_steps, check_settings, step_of, tangent_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of
 
 #: Results of a point that come from its ensemble (besides the container energy).
@@ -84,12 +84,7 @@ def check(p: dict) -> None:
     against the work limit (:mod:`sinktheory.worklimit`)."""
     sink = sink_of(p)
     settings = settings_of(p, 0)
-    try:
-        settings.check(sink)
-    except OverflowError:  # the box's corner lies so far out that the wall ratio overflows
-        raise ParameterError(
-            "box", p["box"], "a half-width whose start box lies inside the walls"
-        ) from None
+    check_settings(settings, sink)
     check_tol(p["tol"])
     _, _, steps, _ = step_of(
         sink, settings.total_energy_bound(sink), tol=p["tol"], settings=settings

@@ -61,7 +61,7 @@ from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
 from ..model import MAX_PERIODS, SHAPES, RunSettings, Sink, Well, check_work
 from ..simulate import ENERGY_BOUND, simulate
-from ..worklimit import step_of
+from ..worklimit import check_settings, step_of
 
 REQUIRED = object()
 #: Rough cost of one container period of one particle (n = 10, single thread: 24 sections
@@ -281,7 +281,7 @@ def _ensemble_check(p: dict) -> int:
     """Check an ensemble point; its steps per period (a well too stiff for any step
     names the parameter responsible, and the work is checked against the limit)."""
     sink, settings = _sink(p), _settings(p, 0)
-    settings.check(sink)
+    check_settings(settings, sink)
     get_scheme(p["method"])
     if p["dt"] is not None:
         v.time_step("dt", p["dt"])
