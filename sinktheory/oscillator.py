@@ -76,10 +76,18 @@ import mpmath
 import numpy as np
 
 from . import validation as v
-from ._generated import oscillator as _osc
 from .errors import BracketError, NumericalError, ParameterError
 from .model import MAX_N
 from .results import Result
+
+
+def _generated():
+    """The generated kernels (they import numba: loaded on first use, so the light commands
+    and refusals stay fast)."""
+    from ._generated import oscillator
+
+    return oscillator
+
 
 #: Extra decimal digits carried internally by the mp paths.
 GUARD_DIGITS = 10
@@ -205,10 +213,10 @@ def oscillator(
     with mpmath.workdps(dps + GUARD_DIGITS):
         x = mpmath.mpf(value)
         if name == "amplitude":
-            a0, e = x, _osc.energy_of_amplitude_mp(n, x)
+            a0, e = x, _generated().energy_of_amplitude_mp(n, x)
         else:
-            a0, e = _osc.amplitude_of_energy_mp(n, x), x
-        t = _osc.period_mp(n, a0)
+            a0, e = _generated().amplitude_of_energy_mp(n, x), x
+        t = _generated().period_mp(n, a0)
     with mpmath.workdps(dps):
         return Oscillator(n, +a0, +e, +t, dps)
 
@@ -265,7 +273,7 @@ def triangle_wave_derivative(phase):
 # --- exact shape Z(q): float64 ------------------------------------------------------------
 def _quarter_integral(n: int) -> float:
     """K = int_0^1 dz / sqrt(1 - z^(2n)) = T_n(A0 = 1) / (4 sqrt(n)) (generated kernel)."""
-    return _osc.period(n, 1.0) / (4.0 * math.sqrt(n))
+    return _generated().period(n, 1.0) / (4.0 * math.sqrt(n))
 
 
 def exact_shape(tau, n: int) -> np.ndarray:
@@ -325,7 +333,7 @@ def exact_shape(tau, n: int) -> np.ndarray:
 
 def _float_period(n: int, amplitude: float) -> float:
     try:
-        t = _osc.period(n, amplitude)
+        t = _generated().period(n, amplitude)
     except ZeroDivisionError:  # A0^(n-1) underflowed to 0 inside the kernel
         t = math.inf
     if not (math.isfinite(t) and t > 0 and math.isfinite(1.0 / t)):
@@ -380,7 +388,7 @@ def _shape_mp(q: mpmath.mpf, n: int) -> mpmath.mpf:
     if q == 0 or q == 1:
         return q
     a = mpmath.mpf(1) / (2 * n)
-    k = _osc.period_mp(n, mpmath.mpf(1)) / (4 * mpmath.sqrt(n))
+    k = _generated().period_mp(n, mpmath.mpf(1)) / (4 * mpmath.sqrt(n))
     z_switch = mpmath.mpf(2) ** (-a)  # z^(2n) = 1/2
 
     def low(z):  # F(z) - q K, increasing in z

@@ -33,7 +33,6 @@ import math
 import numpy as np
 
 from .. import validation as val
-from ..engine.core import Ensemble
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from .result import ChaosResult
@@ -165,6 +164,8 @@ def vector_count(dim: int, spectrum, gali: int) -> int:
 def _run(system, q, v, params, vectors, mode, scheme, dt, steps, segments, opts, **kw):
     """One ensemble with deviation vectors: (Records, Ensemble)."""
     dq, dv = vectors
+    from ..engine.core import Ensemble  # numba loads with the first run
+
     ens = Ensemble(
         system,
         np.array(q, float),  # copies: the engine advances its arrays in place

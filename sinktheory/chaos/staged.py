@@ -33,14 +33,17 @@ Examples
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..engine.core import Ensemble
 from ..simulate import ENERGY_BOUND
 from ..sinkstats import ensemble_mean
 from ..stepsize import aligned_step
 from .maps import threshold
+
+if TYPE_CHECKING:
+    from ..engine.core import Ensemble
 
 #: (fraction of the periods, z): where the groups are looked at and the margin asked for.
 LOOKS = ((0.25, 4.0), (0.5, 3.0))
@@ -104,6 +107,8 @@ def staged_chaos(sinks, settings, *, dt: float, transverse: bool, method: str,
     for mask in masks:
         vecs = [random_vectors(D, 1, p.settings.runs, p.settings.seed, mask=mask) for p in points]
         states = [p.on_plane if mask is not None else (p.q, p.v) for p in points]
+        from ..engine.core import Ensemble  # numba loads with the first run
+
         ens = Ensemble(
             system,
             _join(s[0] for s in states),

@@ -26,7 +26,6 @@ from __future__ import annotations
 import numpy as np
 
 from .. import validation as val
-from ..engine.core import Ensemble
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from .general import check_block, check_params, check_run
 
@@ -67,6 +66,8 @@ def monodromy(
     q = q.copy()  # the engine advances its arrays in place
     D, R = q.shape
     eye = np.broadcast_to(np.eye(2 * D)[:, :, None], (2 * D, 2 * D, R))
+    from ..engine.core import Ensemble  # numba loads with the first run
+
     ens = Ensemble(
         system, q, np.array(v, float), params, dq=eye[:D].copy(), dv=eye[D:].copy(), tangent="none"
     )
@@ -128,6 +129,8 @@ def finite_difference_jacobian(
             zz[i] += sign * step[i]
             cols.append(zz)
     Z = np.concatenate(cols, axis=1)  # (2D, 2 * 2D * R), column block (sign, i) has R runs
+    from ..engine.core import Ensemble  # numba loads with the first run
+
     ens = Ensemble(system, Z[:D], Z[D:], params)
     ens.run(get_scheme(method), dt=dt, steps=steps, segments=segments, record=())
     out = np.concatenate([ens.q, ens.v]).reshape(2 * D, 2, 2 * D, R)  # (j, sign, i, r)

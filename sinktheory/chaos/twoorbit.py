@@ -21,7 +21,6 @@ from __future__ import annotations
 import numpy as np
 
 from .. import validation as val
-from ..engine.core import Ensemble
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from .general import check_params, check_run
@@ -70,6 +69,8 @@ def two_orbit_exponent(
     u = u / np.sqrt((u**2).sum(0))
     z = np.concatenate([q, v])
     Z = np.concatenate([z, z + d0 * u], axis=1)  # reference runs, then shadow runs
+    from ..engine.core import Ensemble  # numba loads with the first run
+
     ens = Ensemble(system, Z[:D].copy(), Z[D:].copy(), params)
     ens.h0 = np.concatenate([ens.h0[:R], ens.h0[:R]])  # audit both against the reference
     scheme = get_scheme(method)
