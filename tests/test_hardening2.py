@@ -18,6 +18,8 @@ SWEEP_CHAOS = ["sweep", "chaos", "--param", "alpha=0.5", "--param", "beta=0.3", 
 SWEEP_DESIGN = ["sweep", "design", "--param", "beta=0.3", "--param", "n=4"]
 SWEEP_ENSEMBLE = ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=0.3"]
 SWEEP_ENSEMBLE += ["--param", "n=4"]
+SWEEP_BIF = ["sweep", "bifurcation", "--param", "alpha=0.5", "--param", "beta=0.3,0.1"]
+SWEEP_BIF += ["--param", "n=4", "--param", "count=3"]
 OUT = ["--out", "s.zarr", "--quiet"]
 
 # (argv, parameter named, text the line must contain)
@@ -31,6 +33,7 @@ CASES = [
     ([*SWEEP_CHAOS, "--param", "gali=2,6", *OUT], "gali", "a single value"),
     ([*SWEEP_CHAOS, "--param", "transverse=0,1", *OUT], "transverse", "a single value"),
     ([*SWEEP_CHAOS, "--param", "box=1e308", *OUT], "box", "inside the walls"),
+    ([*SWEEP_BIF, "--param", "gamma=1e308", *OUT], "gamma", "with gamma = 1 it can"),
     ([*SWEEP_ENSEMBLE, "--param", "box=1e308", *OUT], "box", "inside the walls"),
     # item 2: the parameter responsible, before any file exists
     ([*SWEEP_ENSEMBLE, "--param", "gamma=1e308", *OUT], "gamma", "with gamma = 1 it can"),

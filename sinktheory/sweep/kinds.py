@@ -239,7 +239,12 @@ def _bifurcation_check(p: dict) -> None:
     v.positive_int("transient", p["transient"], minimum=0, maximum=MAX_PERIODS)
     v.positive_int("count", p["count"], maximum=MAX_PERIODS)
     v.choice("quantity", p["quantity"], QUANTITIES)
-    RunSettings(energy=p["energy"], runs=1, periods=1).check(sink)
+    settings = RunSettings(energy=p["energy"], runs=1, periods=p["transient"] + p["count"])
+    check_settings(settings, sink)
+    # a well too stiff to integrate names the parameter responsible, and the section's
+    # periods are checked against the work limit
+    _, _, steps, _ = step_of(sink, p["energy"], settings=settings)
+    check_work(settings, sink, steps)
 
 
 def _bifurcation(p: dict, seed: int) -> dict[str, Any]:
