@@ -8,7 +8,8 @@ Usage::
 1. Per-run cost: Fig. 8's workload (flat, alpha = 1/2, beta = 0.3, n = 4, k = 5, m = 0.2,
    E0 = 0.5; blanes-moan6 at the 1197 steps per period that tol 1e-8 picks) for R = 1 ... 256
    runs, with the policy's automatic plan on 1 and on 2 threads: milliseconds per run and
-   period (best of 3 repeats of a few periods), the plan used, and two checks printed as
+   period (best of 3 repeats of a few periods), the plan the run settled on (blocks x
+   size / threads), and two checks printed as
    PASS / FAIL: no R costs more per run than 1.3x the next larger multiple of the
    efficient block width, and two threads are never slower than one (within 5 %, the
    repeatability of a shared machine).
@@ -72,7 +73,9 @@ def per_run_cost(runs: int, threads: int, periods: int) -> tuple[float, object]:
             t = time.perf_counter()
             ens.run(scheme, dt=2 * math.pi / STEPS, steps=STEPS, segments=periods, record=())
             best = min(best, time.perf_counter() - t)
-        return best / (runs * periods), ens.plan(threads), ens.block_costs()
+        timed = ens.timings()  # the plan the ensemble settled on, if it compared several
+        used = min(timed, key=timed.get) if timed else ens.plan(threads)
+        return best / (runs * periods), used, ens.block_costs()
     finally:
         numba.set_num_threads(previous)
 
@@ -101,20 +104,26 @@ def _plan(p) -> str:
 
 
 def checks(rows: dict, width: int) -> list[str]:
-    """The issue's two criteria, printed and returned as lines."""
-    worst_cliff, worst_threads = 0.0, 0.0
+    """The issue's two criteria, printed and returned as lines.  The cliff criterion is
+    given over every R, and over R >= one block (below one block no padding can help: a
+    run costs what it costs, see the single-run row)."""
+    cliffs, worst_threads = {}, 0.0
     for R, (c1, c2) in rows.items():
         ahead = [S for S in rows if S >= R and S % width == 0]
         if ahead:
-            best = min(ahead)
-            worst_cliff = max(worst_cliff, min(c1, c2) / min(rows[best]))
+            cliffs[R] = min(c1, c2) / min(rows[min(ahead)])
         worst_threads = max(worst_threads, c2 / c1)
-    lines = [
-        f"largest cost per run over that of the next multiple of {width} runs: "
-        f"{worst_cliff:.2f} (limit 1.3: {'PASS' if worst_cliff <= 1.3 else 'FAIL'})",
+    lines = []
+    for label, keep in (("every R", lambda R: True), (f"R >= {width}", lambda R: R >= width)):
+        R, worst = max(((R, c) for R, c in cliffs.items() if keep(R)), key=lambda x: x[1])
+        lines.append(
+            f"largest cost per run over that of the next multiple of {width} runs, {label}: "
+            f"{worst:.2f} at R = {R} (limit 1.3: {'PASS' if worst <= 1.3 else 'FAIL'})"
+        )
+    lines.append(
         f"largest 2-thread / 1-thread time: {worst_threads:.2f} "
-        f"(limit 1.05: {'PASS' if worst_threads <= 1.05 else 'FAIL'})",
-    ]
+        f"(limit 1.05: {'PASS' if worst_threads <= 1.05 else 'FAIL'})"
+    )
     print("\n" + "\n".join(lines))
     return lines
 

@@ -18,6 +18,11 @@ right everywhere, so the policy is:
    whenever the table says so; four runs, for example, may cost less as a padded block of
    16 than as a block of 4.  A second thread is used only when the prediction gains at
    least :data:`THREAD_GAIN` from it, so each thread gets at least one efficient block.
+3. **Check while running** (:func:`candidates`, ``sinktheory.engine.core``): the table is
+   measured on one thread, and two threads that share a core's vector units or caches do
+   not run twice as fast, so the chosen plan, the best one-thread plan and the plans
+   predicted nearly as fast are each timed on a few chunks of the run, and the fastest
+   carries on (re-timed now and then).
 
 Results do not depend on the plan: a run's arithmetic is the same in every block and
 thread, and inert copies never touch real runs (``tests/test_engine.py`` checks the numbers
@@ -96,6 +101,32 @@ def plan(runs: int, costs: dict[int, float], threads: int) -> BlockPlan:
             if best is None or key < best[0]:
                 best = (key, BlockPlan(runs, b, blocks * b, t, wall))
     return best[1]
+
+
+def candidates(runs: int, costs: dict[int, float], threads: int, *, within: float = 1.1,
+               limit: int = 3) -> list[BlockPlan]:  # fmt: skip
+    """The plans worth timing while the ensemble runs: :func:`plan`'s choice, the best
+    one-thread plan, and the plans predicted within ``within`` of the fastest (at most
+    ``limit`` in all).  The table is measured on one thread, so it cannot tell which of
+    several near-equal plans two threads that share a core's resources run fastest.
+
+    Examples
+    --------
+    >>> costs = {16: 16.7e-9, 24: 11.1e-9, 32: 10.7e-9}
+    >>> [(p.block, p.threads) for p in candidates(25, costs, 2)]
+    [(24, 2), (32, 1), (16, 2)]
+    """
+    chosen = plan(runs, costs, threads)
+    options = []
+    for b, c in costs.items():
+        blocks = -(-int(runs) // b)
+        for t in range(1, min(max(1, int(threads)), blocks) + 1):
+            options.append(BlockPlan(int(runs), b, blocks * b, t, -(-blocks // t) * b * c))
+    options.sort(key=lambda p: (p.predicted, p.threads, p.padded))
+    single = min((p for p in options if p.threads == 1), key=lambda p: p.predicted)
+    near = [p for p in options if p.predicted <= within * options[0].predicted]
+    out = list(dict.fromkeys([chosen, single, *near]))
+    return out[:limit]
 
 
 def fixed(runs: int, block: int, threads: int) -> BlockPlan:

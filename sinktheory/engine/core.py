@@ -202,10 +202,8 @@ class Ensemble:
         if gali > M or (megno and M == 0):
             raise ParameterError("gali", gali, f"at most the number of deviation vectors ({M})")
         threads = numba.get_num_threads()
-        if block is None:
-            plans = [self.plan(threads)]
-            if plans[0].threads > 1:  # the one-thread plan, for _Chooser to compare
-                plans.append(self.plan(1))
+        if block is None:  # the plans _Chooser times against each other
+            plans = blocks.candidates(self.runs, self.block_costs(), threads)
         else:
             plans = [blocks.fixed(R, block, threads)]
         Rp = max(p.padded for p in plans)  # rows of the records (inert ones discarded)
@@ -308,6 +306,11 @@ class Ensemble:
             threads = numba.get_num_threads()
         return blocks.plan(self.runs, self.block_costs(), threads)
 
+    def timings(self) -> dict[blocks.BlockPlan, float]:
+        """The plans this ensemble has timed while running, with the best of their recent
+        seconds per segment (the fastest is the one it runs)."""
+        return {p: min(t) for p, t in self._seconds.items()}
+
     def block_costs(self) -> dict[int, float]:
         """This machine's cost per run and leapfrog step of the engine for each block size
         (measured once, then read from the cache; :func:`blocks.block_costs`)."""
@@ -353,14 +356,17 @@ def _pad(a: np.ndarray, runs: int) -> np.ndarray:
 
 
 class _Chooser:
-    """Which plan each chunk of segments runs with.  One plan: always it.  A plan with
-    several threads and the one-thread plan: until both have been timed (the first chunk
-    of an ensemble only warms up: it may include compilation), the untimed one; then the
-    faster per segment, with every 16th chunk re-timing the other, so that a core that
-    becomes busy (or free) is noticed.  ``seconds`` (plan -> seconds per segment) is the
-    ensemble's, kept across its runs.  The numbers do not depend on the choice."""
+    """Which plan each chunk of segments runs with.  One plan: always it.  Several (see
+    :func:`blocks.candidates`): until each has been timed :data:`TRIES` times (the first
+    chunk of an ensemble only warms up: it may include compilation), the one timed least;
+    then the one whose best of its last TRIES timings is fastest per segment (a best-of is
+    robust to the pauses of a shared machine), with every 16th chunk re-timing one of the
+    others in turn, so that a core that becomes busy (or free) is noticed.  ``seconds``
+    (plan -> recent seconds per segment) is the ensemble's, kept across its runs.  The
+    numbers do not depend on the choice."""
 
     REFRESH = 16
+    TRIES = 2
 
     def __init__(self, plans, seconds: dict):
         self.plans = plans
@@ -369,16 +375,19 @@ class _Chooser:
 
     def next(self) -> blocks.BlockPlan:
         i, self.count = self.count, self.count + 1
-        untimed = [p for p in self.plans if p not in self.seconds]
         if len(self.plans) == 1 or not self.seconds:
             return self.plans[0]
-        if untimed:
-            return untimed[0]
-        best = min(self.plans, key=self.seconds.__getitem__)
-        if i % self.REFRESH == self.REFRESH - 1:
-            return next(p for p in self.plans if p != best)
+        timed = {p: len(self.seconds.get(p, ())) for p in self.plans}
+        if min(timed.values()) < self.TRIES:
+            return min(self.plans, key=timed.__getitem__)
+        best = min(self.plans, key=lambda p: min(self.seconds[p]))
+        others = [p for p in self.plans if p != best]
+        if others and i % self.REFRESH == self.REFRESH - 1:
+            return others[(i // self.REFRESH) % len(others)]
         return best
 
     def record(self, plan, seconds_per_segment: float, warm: bool) -> None:
         if warm:
-            self.seconds[plan] = seconds_per_segment
+            recent = self.seconds.setdefault(plan, [])
+            recent.append(seconds_per_segment)
+            del recent[: -self.TRIES]
