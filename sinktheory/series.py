@@ -79,19 +79,24 @@ Examples
 
 from __future__ import annotations
 
+import functools
+import sys
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 import mpmath
 import numpy as np
-import sympy as sp
 
 from . import validation as v
 from .errors import ParameterError
 from .model import MAX_N
 from .oscillator import exact_shape, period, triangle_wave, triangle_wave_derivative
 from .results import Result
+
+if TYPE_CHECKING:
+    import sympy
 
 __all__ = [
     "MAX_ORDER",
@@ -104,15 +109,29 @@ __all__ = [
     "check_bounds",
     "error_table",
     "triangle_series",
-    "tau_symbol",
+    "tau_symbol",  # noqa: F822 - provided by the module __getattr__ (SymPy on first use)
     "triangle_wave",
     "triangle_wave_derivative",
 ]
 
 #: Highest order built (exact rational arithmetic grows like order^4).
 MAX_ORDER = 20
-#: The variable of the series' SymPy expressions.
-tau_symbol = sp.Symbol("tau", real=True)
+
+
+@functools.cache
+def _tau():
+    """The variable of the series' SymPy expressions (``tau_symbol``).  SymPy is imported
+    only for the symbolic parts, so the numeric series and its refusals start fast."""
+    import sympy
+
+    return sympy.Symbol("tau", real=True)
+
+
+def __getattr__(name: str):
+    if name == "tau_symbol":  # the variable of the series' SymPy expressions
+        return _tau()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 Poly = list  # coefficients c_m of sum_m c_m s^m, s = tau^(2n)
 
@@ -139,7 +158,7 @@ class TriangleSeries:
     :class:`fractions.Fraction` for an integer n, SymPy expressions for a symbolic n.
     """
 
-    n: int | sp.Symbol
+    n: int | sympy.Symbol
     kappa: tuple
     corrections: tuple
 
@@ -161,13 +180,19 @@ class TriangleSeries:
     def remainder(self, i: int):
         """R_i(tau) as a SymPy expression (R_1 = tau^(2n+1)/(2n+1))."""
         c = self.corrections[v.positive_int("i", i, maximum=self.order) - 1]
-        t, n = tau_symbol, self.n
-        return -sum(sp.sympify(cm) * t ** (2 * n * m + 1) for m, cm in enumerate(c))
+        import sympy
+
+        t, n = _tau(), self.n
+        return -sum(sympy.sympify(cm) * t ** (2 * n * m + 1) for m, cm in enumerate(c))
 
     def shape_expr(self, order: int | None = None):
         """U_i / A = tau - R_1 - ... - R_i as a SymPy expression."""
-        t, n = tau_symbol, self.n
-        return sum(sp.sympify(cm) * t ** (2 * n * m + 1) for m, cm in enumerate(self._sum(order)))
+        import sympy
+
+        t, n = _tau(), self.n
+        return sum(
+            sympy.sympify(cm) * t ** (2 * n * m + 1) for m, cm in enumerate(self._sum(order))
+        )
 
     def frequency_factor(self, order: int | None = None):
         """kappa_0 + ... + kappa_{i-1} = (T_i/4)^2 A^(2n-2), the order-i period factor."""
@@ -206,7 +231,7 @@ class TriangleSeries:
             return +t
 
 
-def triangle_series(n: int | sp.Symbol, order: int) -> TriangleSeries:
+def triangle_series(n: int | sympy.Symbol, order: int) -> TriangleSeries:
     """Build the successive approximations up to ``order`` (see the module docstring).
 
     Parameters
@@ -226,7 +251,8 @@ def triangle_series(n: int | sp.Symbol, order: int) -> TriangleSeries:
     (Fraction(2, 1), Fraction(1, 3), Fraction(4, 45))
     """
     order = v.positive_int("order", order, maximum=MAX_ORDER)
-    if isinstance(n, sp.Symbol):
+    sp = sys.modules.get("sympy")  # a SymPy symbol n means SymPy is loaded already
+    if sp is not None and isinstance(n, sp.Symbol):
         one, simplify = sp.Integer(1), sp.factor
     else:
         n = v.positive_int("n", n, maximum=MAX_N)
