@@ -35,21 +35,21 @@ MODULES = {
 FIGURES = tuple(sorted(MODULES))
 
 #: Wall seconds of each figure as (quick, paper) fidelity, printed by
-#: ``python benchmarks/bench_reproduce.py`` on the project's 2-core machine while it was
-#: shared (load average 2-6, warm compilation cache; an idle machine is faster), except
-#: Figs. 3 and 11 at paper fidelity: 143 s and 99 s measured on 2 idle cores (issue 25).
-#: ``reproduce`` announces them before each figure as its estimate.
+#: ``python benchmarks/bench_reproduce.py --fidelity both`` on the project's 2-core machine
+#: (AVX-512, load average 1.2-1.5, warm compilation cache; 2026-11-23: 13.3 s and 81.2 s in
+#: all, 17.9 s and 86.8 s for the whole process).  ``reproduce`` announces them before each
+#: figure as its estimate.
 SECONDS = {
-    2: (1.6, 2.4),
-    3: (27.7, 143.0),
-    4: (0.7, 1.5),
-    5: (2.5, 6.7),
-    7: (0.3, 0.5),
-    8: (2.8, 52.3),
-    9: (1.9, 29.3),
+    2: (0.5, 0.5),
+    3: (5.7, 33.8),
+    4: (0.3, 0.5),
+    5: (0.1, 0.5),
+    7: (0.0, 0.1),
+    8: (0.3, 4.2),
+    9: (0.1, 1.6),
     10: (0.1, 0.1),
-    11: (20.9, 99.0),
-    12: (1.0, 5.9),
+    11: (5.9, 39.0),
+    12: (0.1, 1.0),
 }
 
 
