@@ -242,3 +242,16 @@ def write_outputs(writers: dict[Path, Callable[[Path], None]]) -> None:
                 shutil.rmtree(tmp, ignore_errors=True)
             elif tmp.exists():
                 tmp.unlink()
+
+
+def add_fraction_argument(group, default, what: str) -> None:
+    """``--fraction F ...``: fractions f in (0, 1) of the total energy (``what`` says what
+    they select), checked by the equilibrium law."""
+    group.add_argument(
+        "--fraction",
+        type=number,
+        nargs="+",
+        default=list(default),
+        metavar="F",
+        help=f"fractions f in (0, 1) {what} (default {' '.join(map(str, default))})",
+    )

@@ -5,7 +5,15 @@ from __future__ import annotations
 import argparse
 
 from . import HELP as HELPS
-from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
+from ._common import (
+    Output,
+    add_fraction_argument,
+    add_json,
+    add_well_arguments,
+    number,
+    png_path,
+    well_from_args,
+)
 
 NAME = "equilibrium"
 HELP = HELPS[NAME]
@@ -32,15 +40,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="total energy E > 0 (default 0.5; a run's E0 plus the particles' initial "
         "potential energy)",
     )
-    g.add_argument(
-        "--fraction",
-        type=number,
-        nargs="+",
-        default=list(FRACTIONS),
-        metavar="F",
-        help="fractions f in (0, 1) for the tails P(E_c >= f E) and Kac's return times "
-        f"(default {' '.join(map(str, FRACTIONS))})",
-    )
+    add_fraction_argument(g, FRACTIONS, "for the tails P(E_c >= f E) and Kac's return times")
     parser.add_argument("--plot", metavar="FILE.png", help="draw the density of E_c / E")
     add_json(parser)
 

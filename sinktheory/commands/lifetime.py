@@ -8,6 +8,7 @@ import argparse
 from . import HELP as HELPS
 from ._common import (
     Output,
+    add_fraction_argument,
     add_json,
     add_sink_arguments,
     add_well_arguments,
@@ -33,14 +34,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=None,
         help="periods skipped before sampling (default: a third of --periods)",
     )
-    g.add_argument(
-        "--fraction",
-        type=number,
-        nargs="+",
-        default=list(FRACTIONS),
-        metavar="F",
-        help="fractions f in (0, 1) of the sets {E_c >= f E} (default 0.2 0.5 0.8)",
-    )
+    add_fraction_argument(g, FRACTIONS, "of the sets {E_c >= f E}")
     g.add_argument(
         "--tol",
         type=number,
