@@ -4,6 +4,7 @@ unbatched computation, which the rest of tests/test_chaos*.py checks against ind
 oracles), and the chaos sweep gives the same store whether its points run together or
 one by one."""
 
+import json
 import math
 
 import numpy as np
@@ -132,3 +133,25 @@ def test_transient_is_left_out_of_the_exponents():
         assert not np.array_equal(rate, ref.lambda1)  # the transient made a difference
     with pytest.raises(ParameterError, match="transient"):
         kind.check(kind.complete(base | {"transient": 60}))
+
+
+def test_chaos_transient_is_the_growth_rate_from_its_end(capsys):
+    from sinktheory.cli import main
+
+    sink = Sink(Well(0.5, 0.3, 2), 1, 0.2)
+    s = RunSettings(runs=2, periods=30, seed=5)
+    plain = chaos(sink, s, dt=0.02, transverse=True)
+    later = chaos(sink, s, dt=0.02, transverse=True, transient=10)
+    t = plain.times[-1] - plain.times[10]
+    pairs = ((plain.log_growth, later.lambda1), (plain.transverse_logs, later.transverse))
+    for logs, rate in pairs:
+        assert np.array_equal(rate, (logs[:, -1] - logs[:, 10]) / t)
+    assert np.array_equal(later.log_growth, plain.log_growth)  # the runs are the same
+    with pytest.raises(ParameterError, match="transient"):
+        chaos(sink, s, dt=0.02, transient=30)
+    args = "chaos --alpha 0.5 --beta 0.3 --n 2 --runs 2 --periods 30 --seed 5 --dt 0.02"
+    args = [*args.split(), "--transient", "10", "--json"]
+    assert main(args) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["lambda1"]["mean"] == pytest.approx(float(later.lambda1.mean()), rel=1e-12)
+    assert out["transient_time"] == pytest.approx(10 * 2 * np.pi, rel=1e-12)

@@ -84,6 +84,10 @@ class ChaosResult(Result):
         Largest relative total-energy error of each run (of every ensemble that ran).
     parameters : dict
         What was run (system, parameters, method, dt, steps, renorm, seed, ...).
+    transient : int
+        Segments left out of :attr:`lambda1` and :attr:`transverse`: with t_0 =
+        times[transient] they are the growth rates from t_0, (ln|delta(t)| -
+        ln|delta(t_0)|) / (t - t_0), so the approach to the attractor does not weigh in.
     """
 
     times: np.ndarray
@@ -96,6 +100,7 @@ class ChaosResult(Result):
     transverse_logs: np.ndarray | None = None
     run_errors: np.ndarray = field(default_factory=lambda: np.zeros(0))
     parameters: dict = field(default_factory=dict)
+    transient: int = 0
 
     # ----------------------------------------------------------------- per run
     def runs_of(self, runs: slice, parameters: dict) -> ChaosResult:
@@ -123,10 +128,18 @@ class ChaosResult(Result):
     def duration(self) -> float:
         return float(self.times[-1] - self.times[0])
 
+    def _rate(self, logs: np.ndarray) -> np.ndarray:
+        """Growth rate of ``logs`` (R, S + 1) over the run, after the transient."""
+        if self.transient == 0:
+            return logs[:, -1] / self.duration
+        tr = self.transient
+        return (logs[:, -1] - logs[:, tr]) / (self.times[-1] - self.times[tr])
+
     @property
     def lambda1(self) -> np.ndarray:
-        """Maximal Lyapunov exponent of each run at the last time, (R,)."""
-        return self.log_growth[:, -1] / self.duration
+        """Maximal Lyapunov exponent of each run at the last time (after the transient),
+        (R,)."""
+        return self._rate(self.log_growth)
 
     @property
     def finite_time_lambda1(self) -> np.ndarray:
@@ -172,10 +185,11 @@ class ChaosResult(Result):
 
     @property
     def transverse(self) -> np.ndarray | None:
-        """Transverse exponent of the invariant subspace y = 0 of each run, (R,)."""
+        """Transverse exponent of the invariant subspace y = 0 of each run (after the
+        transient), (R,)."""
         if self.transverse_logs is None:
             return None
-        return self.transverse_logs[:, -1] / self.duration
+        return self._rate(self.transverse_logs)
 
     def window_exponents(self, window: int, logs: np.ndarray | None = None):
         """Finite-time exponents over consecutive windows of ``window`` segments.
@@ -222,6 +236,7 @@ class ChaosResult(Result):
         out: dict = {"parameters": plain(self.parameters), "runs": self.runs}
         out["note"] = PER_RUN_NOTE
         out["time"] = self.duration
+        out["transient_time"] = float(self.times[self.transient] - self.times[0])
         out["max_relative_energy_error"] = float(np.max(self.run_errors, initial=0.0))
         out["spectrum_paired"] = self.spectrum_paired
         names = ["lambda1"]

@@ -27,7 +27,7 @@ True
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -139,6 +139,7 @@ def chaos(
     energy_bound: float = ENERGY_BOUND,
     block: int | None = None,
     progress: bool | None = None,
+    transient: int = 0,
 ) -> ChaosResult:
     """Lyapunov exponent(s), GALI/SALI, MEGNO and the transverse exponent of an ensemble.
 
@@ -171,6 +172,9 @@ def chaos(
         Engine runs per block (the numbers do not depend on it).
     progress : bool, optional
         Progress bar on stderr (on a terminal only).
+    transient : int >= 0
+        Periods left out of lambda_1 and the transverse exponent (their growth rates from
+        then on; :attr:`ChaosResult.transient`), fewer than ``periods``.
 
     Returns
     -------
@@ -186,13 +190,16 @@ def chaos(
     if initial is None and isinstance(settings, RunSettings):
         check_settings(settings, sink)  # a start box overflowing the wall ratio names box
     point = _Point.of(sink, settings, options["transverse"], initial)
+    transient = val.positive_int("transient", transient, minimum=0,
+                                 maximum=max(0, settings.periods - 1))  # fmt: skip
     _, dt, steps, _ = step_of(
         sink, point.top, method=scheme.name, dt=dt, tol=tol, settings=settings
     )
     check_tangent_work(
         sink, settings, steps, options["spectrum"], options["gali"], options["transverse"]
     )
-    return _together([point], scheme.name, dt, steps, block, options)[0]
+    result = _together([point], scheme.name, dt, steps, block, options)[0]
+    return replace(result, transient=transient)
 
 
 def chaos_batch(

@@ -48,6 +48,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     c.add_argument(
         "--transverse", action="store_true", help="transverse exponent of the invariant y = 0"
     )
+    c.add_argument(
+        "--transient",
+        type=number,
+        default=0,
+        metavar="P",
+        help="periods left out of lambda_1 and the transverse exponent (their growth rates "
+        "from then on; default 0)",
+    )
     i = parser.add_argument_group("integrator")
     i.add_argument(
         "--method",
@@ -95,6 +103,7 @@ def run(args: argparse.Namespace) -> Output:
         tol=args.tol,
         renorm=args.renorm,
         progress=not args.quiet,
+        transient=args.transient,
     )
     data = result.as_dict()
     w = sink.well
@@ -104,7 +113,9 @@ def run(args: argparse.Namespace) -> Output:
         f"k={sink.particles}, m={sink.mass:g}; {settings.runs} run(s) x {settings.periods} "
         f"period(s), {p['method']}, dt = {p['dt']:.6g}; max relative energy error "
         f"{data['max_relative_energy_error']:.3g}",
-        "exponents per unit time (x T = 2 pi for per period); mean +- standard error",
+        "exponents per unit time (x T = 2 pi for per period); mean +- standard error"
+        + (f"; lambda_1 and the transverse exponent from t = {args.transient:g} T on"
+           if args.transient else ""),  # fmt: skip
         f"lambda_1 = {_fmt(*result.mean('lambda1'))}",
     ]
     if result.spectrum is not None:

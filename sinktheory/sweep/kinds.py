@@ -574,14 +574,16 @@ def _chaos_summary(res, periods: int, transient: int) -> dict[str, Any]:
     """What the chaos kind stores of a ChaosResult: per-run lambda_1 (the growth after
     ``transient`` periods), ensemble means and standard errors, the audit, the step, and
     the periods each exponent ran; GALI and MEGNO as ``as_dict`` gives them."""
+    from dataclasses import replace
+
     from ..chaos.staged import StagedExponent
 
-    t = res.times[-1] - res.times[transient]
-    exponents = {}
-    for name, logs in (("lambda1", res.log_growth), ("transverse", res.transverse_logs)):
-        if logs is not None:
-            rate = (logs[:, -1] - logs[:, transient]) / t
-            exponents[name] = StagedExponent(rate, np.full(rate.size, periods), res.run_errors)
+    res = replace(res, transient=transient)
+    exponents = {
+        name: StagedExponent(rate, np.full(rate.size, periods), res.run_errors)
+        for name, rate in (("lambda1", res.lambda1), ("transverse", res.transverse))
+        if rate is not None
+    }
     out = _staged_summary(
         {"lambda1": exponents["lambda1"], "transverse": exponents.get("transverse")},
         res.parameters["dt"],
