@@ -67,8 +67,7 @@ class StagedExponent:
     """Finite-time exponent of deviation vector 0 of each run, at the time its group
     stopped.
 
-    exponent : (R,) (ln|delta(t_r)| - ln|delta(t_0)|) / (t_r - t_0) per unit time, t_0 the
-        end of the discarded transient (0 without one)
+    exponent : (R,) growth rate of ln|delta| from t_0 (transient's end, or 0) to t_r
     periods : (R,) t_r in periods (the run's group stopped at a look, or ran to the end)
     worst : (R,) largest relative energy error of the run while it ran
     """

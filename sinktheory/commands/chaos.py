@@ -114,8 +114,11 @@ def run(args: argparse.Namespace) -> Output:
         f"period(s), {p['method']}, dt = {p['dt']:.6g}; max relative energy error "
         f"{data['max_relative_energy_error']:.3g}",
         "exponents per unit time (x T = 2 pi for per period); mean +- standard error"
-        + (f"; lambda_1 and the transverse exponent from t = {args.transient:g} T on"
-           if args.transient else ""),  # fmt: skip
+        + (
+            f"; lambda_1 and the transverse exponent from t = {args.transient:g} T on"
+            if args.transient
+            else ""
+        ),  # fmt: skip
         f"lambda_1 = {_fmt(*result.mean('lambda1'))}",
     ]
     if result.spectrum is not None:

@@ -30,27 +30,14 @@ import llvmlite.binding as _llvm
 
 from .. import __version__
 
-
 # The engine's loops run over the runs of a block (often 8-32 of them).  LLVM's default
 # vectoriser interleaves 4 vector iterations, so a loop of fewer than 16 runs falls back to
 # scalar code; one vector per iteration keeps small blocks vectorised (measured 1.5x on
-# blocks of 13-25 runs).  LLVM may also pick two registers per iteration (on an AVX-512
-# CPU, 16 doubles: blocks below 16 runs then ran scalar, 2.4x the cost of 8 runs at 8
-# lanes), so the width is set to one native register of doubles, read from the CPU
-# (AVX-512: 8, AVX: 4, SSE2/NEON: 2).  Performance heuristics only: results are unchanged.
-@functools.cache
-def vector_width() -> int:
-    """Doubles in one native vector register of this CPU (0: leave LLVM's choice)."""
-    features = {f[1:] for f in _llvm.get_host_cpu_features().flatten().split(",") if f[0] == "+"}
-    for feature, width in (("avx512f", 8), ("avx", 4), ("sse2", 2), ("neon", 2)):
-        if feature in features:
-            return width
-    return 0
-
-
+# blocks of 13-25 runs).  A performance heuristic only: results are unchanged.  (Forcing
+# the vector width to one register as well made blocks of 8 runs 2.4x cheaper on an AVX-512
+# CPU, but LLVM options are global: every other numba loop that cannot be vectorised then
+# prints a "loop not vectorized" remark on stderr, so it is not done.)
 _llvm.set_option("sinktheory", "-force-vector-interleave=1")
-if vector_width():
-    _llvm.set_option("sinktheory", f"-force-vector-width={vector_width()}")
 
 _SOURCES = (
     "printer.py",
@@ -74,7 +61,7 @@ def cache_dir() -> Path:
 @functools.cache
 def _digest() -> str:
     here = Path(__file__).parent
-    h = hashlib.sha256(f"{__version__} vector width {vector_width()}".encode())
+    h = hashlib.sha256(__version__.encode())
     for name in _SOURCES:
         h.update((here / name).read_bytes())
     return h.hexdigest()[:12]
