@@ -328,18 +328,16 @@ def _together(points: list[_Point], method, dt, steps, block, o) -> list[ChaosRe
     start state and seeded deviation vectors); the result split back per point."""
     D = points[0].q.shape[0]
     count = vector_count(D, o["spectrum"], o["gali"])
-    vectors = [random_vectors(D, count, p.settings.runs, p.settings.seed) for p in points]
     transverse = None
     if o["transverse"]:
         mask = transverse_mask(points[0].sink.particles)
-        tvec = [random_vectors(D, 1, p.settings.runs, p.settings.seed, mask=mask) for p in points]
         transverse = (
             _join(p.on_plane[0] for p in points),
             _join(p.on_plane[1] for p in points),
             mask,
-            (_join(t[0] for t in tvec), _join(t[1] for t in tvec)),
+            _vectors(points, 1, mask),
         )
-    params = _join(np.repeat(engine_params(p.sink)[:, None], p.settings.runs, 1) for p in points)
+    params = _params(points)
     res = indicators(
         engine_name(points[0].sink),
         _join(p.q for p in points),
@@ -352,7 +350,7 @@ def _together(points: list[_Point], method, dt, steps, block, o) -> list[ChaosRe
         gali=o["gali"],
         megno=o["megno"],
         transverse=transverse,
-        vectors=(_join(x[0] for x in vectors), _join(x[1] for x in vectors)),
+        vectors=_vectors(points, count),
         method=method,
         renorm=o["renorm"],
         seed=points[0].settings.seed,
@@ -368,6 +366,19 @@ def _together(points: list[_Point], method, dt, steps, block, o) -> list[ChaosRe
         info = dict(res.parameters, params=engine_params(p.sink).tolist(), seed=p.settings.seed)
         out.append(res.runs_of(runs, info | p.parameters()))
     return out
+
+
+def _params(points: list[_Point]) -> np.ndarray:
+    """The engine parameters of every run, one column per run (NPARAMS, R)."""
+    return _join(np.repeat(engine_params(p.sink)[:, None], p.settings.runs, 1) for p in points)
+
+
+def _vectors(points: list[_Point], count: int, mask=None) -> tuple[np.ndarray, np.ndarray]:
+    """Each point's seeded deviation vectors (as :func:`chaos` draws them for it alone),
+    side by side: (dq, dv) of shape (D, count, R)."""
+    D = points[0].q.shape[0]
+    drawn = [random_vectors(D, count, p.settings.runs, p.settings.seed, mask=mask) for p in points]
+    return _join(x[0] for x in drawn), _join(x[1] for x in drawn)
 
 
 def _join(arrays) -> np.ndarray:

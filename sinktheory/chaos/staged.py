@@ -89,22 +89,20 @@ def staged_chaos(sinks, settings, *, dt: float, transverse: bool, method: str,
     exponents of ``chaos_batch`` (and of ``chaos`` alone) with the same step.
     """
     from ..integrators import get_scheme
-    from ..simulate import engine_name, engine_params
-    from .sink import _join, _Point, transverse_mask
-    from .vectors import random_vectors
+    from ..simulate import engine_name
+    from .sink import _join, _params, _Point, _vectors, transverse_mask
 
     points = [_Point.of(k, s, transverse, None) for k, s in zip(sinks, settings, strict=True)]
     system = engine_name(points[0].sink)
     scheme = get_scheme(method)
     dt, steps = aligned_step(dt)
     periods = points[0].settings.periods
-    D = points[0].q.shape[0]
     groups = np.concatenate([np.full(p.settings.runs, i) for i, p in enumerate(points)])
-    params = _join(np.repeat(engine_params(p.sink)[:, None], p.settings.runs, 1) for p in points)
+    params = _params(points)
     masks = [None] + ([transverse_mask(points[0].sink.particles)] if transverse else [])
     out = []
     for mask in masks:
-        vecs = [random_vectors(D, 1, p.settings.runs, p.settings.seed, mask=mask) for p in points]
+        dq, dv = _vectors(points, 1, mask)
         states = [p.on_plane if mask is not None else (p.q, p.v) for p in points]
         from ..engine.core import Ensemble  # numba loads with the first run
 
@@ -113,8 +111,8 @@ def staged_chaos(sinks, settings, *, dt: float, transverse: bool, method: str,
             _join(s[0] for s in states),
             _join(s[1] for s in states),
             params,
-            dq=_join(x[0] for x in vecs),
-            dv=_join(x[1] for x in vecs),
+            dq=dq,
+            dv=dv,
             tangent="normalise",
             reference_energy=None if mask is not None else np.concatenate([p.h0 for p in points]),
         )

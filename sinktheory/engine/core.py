@@ -299,9 +299,10 @@ class Ensemble:
             self.status[:] = status[:R]
 
     def plan(self, threads: int | None = None) -> blocks.BlockPlan:
-        """How :meth:`run` cuts these runs into blocks and threads (see
-        :mod:`sinktheory.engine.blocks`): from this machine's measured cost table of the
-        engine, at most ``threads`` threads (default: numba's current number)."""
+        """The plan the cost table predicts fastest for these runs (see
+        :mod:`sinktheory.engine.blocks`): at most ``threads`` threads (default: numba's
+        current number).  :meth:`run` times it against the other candidates while running
+        (:func:`blocks.candidates`) and keeps the fastest."""
         if threads is None:
             threads = numba.get_num_threads()
         return blocks.plan(self.runs, self.block_costs(), threads)
