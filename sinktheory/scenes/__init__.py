@@ -36,20 +36,20 @@ FIGURES = tuple(sorted(MODULES))
 
 #: Wall seconds of each figure as (quick, paper) fidelity, printed by
 #: ``python benchmarks/bench_reproduce.py --fidelity both`` on the project's 2-core machine
-#: (AVX-512, load average 1.2-1.5, warm compilation cache; 2026-11-23: 13.3 s and 81.2 s in
-#: all, 17.9 s and 86.8 s for the whole process).  ``reproduce`` announces them before each
+#: (AVX-512, load average 0.5-1.2, warm compilation cache; 2026-11-23: 13.9 s and 83.5 s in
+#: all, 18.5 s and 89.0 s for the whole process).  ``reproduce`` announces them before each
 #: figure as its estimate.
 SECONDS = {
     2: (0.5, 0.5),
-    3: (5.7, 33.8),
-    4: (0.3, 0.5),
-    5: (0.1, 0.5),
+    3: (5.8, 33.6),
+    4: (0.3, 0.6),
+    5: (0.2, 0.5),
     7: (0.1, 0.1),  # 0.0 and 0.1 s printed; 0.1 s, the resolution, as the estimate
-    8: (0.3, 4.2),
-    9: (0.1, 1.6),
+    8: (0.5, 4.5),
+    9: (0.2, 1.6),
     10: (0.1, 0.1),
-    11: (5.9, 39.0),
-    12: (0.1, 1.0),
+    11: (6.2, 40.9),
+    12: (0.2, 1.2),
 }
 
 
