@@ -38,14 +38,16 @@ def contact_weight(sink: Sink, q: np.ndarray) -> np.ndarray:
     return (2.0 * w.n / w.gamma) * np.asarray(w.potential(x, y), dtype=float)
 
 
-def dissipate(sink: Sink, q, vel, damping: float, tau: float) -> np.ndarray:
+def dissipate(sink: Sink, q, vel, damping: float, tau: float, kind: str = "contact"):
     """Apply D(tau) to the velocities ``vel`` (1 + 2k, R) in place; return the work (R,).
 
-    Exact pair flows, particles 1..k over tau/2 then k..1 over tau/2.  With ``damping``
-    = 0 every update adds an exact zero.
+    Exact pair flows, particles 1..k over tau/2 then k..1 over tau/2, with the contact
+    weight or (``kind`` = "viscous") the weight 1.  With ``damping`` = 0 every update
+    adds an exact zero.
     """
     k, mu = sink.particles, sink.mu
-    c = damping * contact_weight(sink, q)  # (k, R)
+    weight = contact_weight(sink, q) if kind == "contact" else np.ones((k, q.shape[1]))
+    c = damping * weight  # (k, R)
     work = np.zeros(vel.shape[1])
     half = 0.5 * tau
     for j in list(range(k)) + list(range(k - 1, -1, -1)):
@@ -70,15 +72,17 @@ def simulate_inelastic_reference(
     settings: RunSettings | None = None,
     *,
     damping: float = 0.0,
+    damping_kind: str = "contact",
     method: str | None = None,
     dt: float | None = None,
     tol: float | None = None,
     dissipative_stage: bool = True,
     energy_bound: float | None = None,
+    start=None,
 ) -> InelasticResult:
     """The NumPy integration of :func:`~sinktheory.design.inelastic.simulate_inelastic`
-    (same parameters, same start states, same checks; no progress bar)."""
-    s = setup(sink, settings, damping, method, dt, tol, energy_bound)
+    (same parameters, same start states, same checks; no sampling, no progress bar)."""
+    s = setup(sink, settings, damping, method, dt, tol, energy_bound, damping_kind, start)
     settings = RunSettings() if settings is None else settings
     q, vel, h0, engine, params = s.q, s.vel, s.h0, s.engine, s.params
     dt, steps = s.dt, s.steps
@@ -96,14 +100,14 @@ def simulate_inelastic_reference(
     for j in range(1, periods + 1):
         for _ in range(steps):
             if dissipative_stage:
-                work += dissipate(sink, q, vel, s.damping, 0.5 * dt)
+                work += dissipate(sink, q, vel, s.damping, 0.5 * dt, s.kind)
             for i in range(len(a)):
                 vel += (b[i] * dt) * acc
                 q += (a[i] * dt) * vel
                 acc = engine.block_accelerations(q, params)
             vel += (b[-1] * dt) * acc
             if dissipative_stage:
-                work += dissipate(sink, q, vel, s.damping, 0.5 * dt)
+                work += dissipate(sink, q, vel, s.damping, 0.5 * dt, s.kind)
             ec = 0.5 * (vel[0] * vel[0] + q[0] * q[0])
             integral += 0.5 * dt * (ec + ec_prev)
             ec_prev = ec
