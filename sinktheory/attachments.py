@@ -1,0 +1,320 @@
+"""The classic absorbers as configurations of the sink, with a dashpot: impulse responses.
+
+Three attachments of the same container (mass 1, spring 1), all built from the existing
+model, none with a formula of its own:
+
+* ``"nes"`` -- one particle on the invariant line y = 0 of a well (started there with
+  ydot = 0; the line's invariance is checked on the shape's symbolic potential,
+  :func:`sinktheory.symbolic.normal_mode_refusal`).  On the line the well is
+  V(x, 0) = gamma/(2n) (x / (alpha - beta))^(2n), a force ~ x^(2n - 1): n = 2 is the
+  cubic nonlinear energy sink (NES), n = 1 a linear absorber.  Integrated by the full
+  engine (:func:`sinktheory.design.inelastic.simulate_inelastic`), so whether the
+  particle stays on the line is the dynamics' verdict, not an assumption
+  (:attr:`ImpulseResponse.transverse`).
+* ``"impact"`` -- the rigid limit n -> oo on the line: the vibro-impact NES, a particle
+  in the clearance |x| <= alpha - beta, integrated exactly by
+  :mod:`sinktheory.vibroimpact` (n is ignored).
+* ``"well"`` -- the 2-D stochastic sink with k particles (flat or symmetric well, ...).
+
+Equal attachment mass: ``mass`` is the *total* particle mass m of every attachment
+(k particles of m / k).  Equal damping: a linear dashpot on each particle's velocity
+relative to the container (weight 1 everywhere, ``damping_kind="viscous"``), the total
+coefficient c shared equally, c / k per particle, so every particle relaxes at the same
+rate c / m as the single particle of a 1-D attachment and k particles moving together
+feel the one dashpot c.
+
+Impulsive start (the standard test of an absorber): the container at X = 0 with velocity
+sqrt(2 E), E = ``energy``, every particle at rest (absolute velocity 0: the impulse acts
+on the container alone, so H(0) = E up to the particles' tiny potential energy).  The
+particles start at seeded random positions of the start box, as
+:func:`sinktheory.simulate.random_positions` draws them for ``simulate`` (run r from the
+r-th child of the seed): in (-box, box)^2 for the 2-D well; for the 1-D attachments the
+same x with y = 0, so their runs differ only by that small seeded offset along the line
+(they coincide as box -> 0).
+
+Examples
+--------
+>>> res = impulse_response(Attachment("nes", n=2), 0.05, damping=0.02, periods=4, runs=2,
+...                        tol=1e-6)
+>>> res.container_x.shape, bool(res.max_audit_error < 1e-6)
+((2, 65), True)
+>>> bool(((0 < res.fraction_dissipated()) & (res.fraction_dissipated() < 1)).all())
+True
+>>> Attachment("nes", particles=2)  # doctest: +ELLIPSIS
+Traceback (most recent call last):
+...
+sinktheory.errors.ParameterError: particles = 2 is not allowed: must be 1 for a 1-D ...
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import validation as v
+from .errors import ParameterError
+from .layout import StateLayout
+from .model import SHAPES, RunSettings, Sink, Well
+from .results import Result
+from .simulate import random_positions
+
+#: The attachments (module docstring).
+KINDS = ("nes", "impact", "well")
+#: Attachments confined to the line y = 0.
+LINE_KINDS = ("nes", "impact")
+
+
+@functools.cache
+def _line_refusal(shape: str) -> str:
+    from .symbolic import normal_mode_refusal
+
+    return normal_mode_refusal(shape)
+
+
+@dataclass(frozen=True)
+class Attachment:
+    """One attachment of the container (module docstring); validated on construction.
+
+    Parameters
+    ----------
+    kind : {"nes", "impact", "well"}
+    shape, alpha, beta, n
+        The well (:class:`sinktheory.model.Well`); for ``"impact"`` only the clearance
+        alpha - beta matters (n is ignored).
+    particles : int
+        k: 1 for the 1-D attachments, 1..1000 for ``"well"``.
+    mass : float > 0
+        Total particle mass m (each particle m / k).
+    """
+
+    kind: str
+    shape: str = "flat"
+    alpha: float = 0.5
+    beta: float = 0.3
+    n: int = 2
+    particles: int = 1
+    mass: float = 0.2
+
+    def __post_init__(self) -> None:
+        set_ = object.__setattr__
+        set_(self, "kind", v.choice("kind", self.kind, KINDS))
+        well = Well(self.alpha, self.beta, self.n, shape=v.choice("shape", self.shape, SHAPES))
+        set_(self, "alpha", well.alpha)
+        set_(self, "beta", well.beta)
+        set_(self, "n", well.n)
+        sink = Sink(well, self.particles, self.mass)
+        set_(self, "particles", sink.particles)
+        set_(self, "mass", sink.mass)
+        if self.kind in LINE_KINDS:
+            if self.particles != 1:
+                raise ParameterError("particles", self.particles, "1 for a 1-D attachment")
+            why = _line_refusal(self.shape)
+            if why:
+                raise ParameterError("shape", self.shape, "a shape with an invariant line "
+                                     "y = 0 for a 1-D attachment", why=why)  # fmt: skip
+
+    @property
+    def well(self) -> Well:
+        return Well(self.alpha, self.beta, self.n, shape=self.shape)
+
+    @property
+    def sink(self) -> Sink:
+        """The sink the engine integrates (the well with k particles of m / k)."""
+        return Sink(self.well, self.particles, self.mass)
+
+    @property
+    def clearance(self) -> float:
+        """alpha - beta: the wall distance on the line (the vibro-impact clearance)."""
+        return self.well.wall_distance
+
+    @property
+    def label(self) -> str:
+        """A short name for legends, e.g. ``"NES n = 2"``, ``"well flat k = 5"``."""
+        if self.kind == "nes":
+            return f"NES n = {self.n}"
+        if self.kind == "impact":
+            return "vibro-impact"
+        return f"well {self.shape} k = {self.particles}"
+
+
+@dataclass(frozen=True)
+class ImpulseResponse(Result):
+    """The response of the container to an impulse, R runs sampled at S instants.
+
+    Attributes
+    ----------
+    t : ndarray (S,)
+        Sample times i T / s (s = samples per period).
+    container_x, container_v, container_energy : ndarray (R, S)
+        X, Xdot and E = (X^2 + Xdot^2)/2.
+    dissipated : ndarray (R, S)
+        W, the dashpots' work since t = 0.
+    initial_energy : ndarray (R,)
+        H(0) of each run.
+    max_audit_error : float
+        Largest |H + W - H(0)| / H(0) checked (the engine at period ends, the
+        vibro-impact integrator at every sample).
+    attachment : Attachment
+    damping, energy : float
+        Total dashpot coefficient c and the impulse's container energy E.
+    transverse : ndarray (R, S) or None
+        max_j |y_j| (None for ``"impact"``): how far the particles are from y = 0.
+    impacts : ndarray (R,) or None
+        Impacts of each run (``"impact"`` only).
+    integrator : str
+        What integrated it (scheme and step, or the exact vibro-impact flow).
+    """
+
+    t: np.ndarray
+    container_x: np.ndarray
+    container_v: np.ndarray
+    container_energy: np.ndarray
+    dissipated: np.ndarray
+    initial_energy: np.ndarray
+    max_audit_error: float
+    attachment: Attachment
+    damping: float
+    energy: float
+    transverse: np.ndarray | None = None
+    impacts: np.ndarray | None = None
+    integrator: str = ""
+
+    DIMS = {
+        "container_x": ("run", "time"),
+        "container_v": ("run", "time"),
+        "container_energy": ("run", "time"),
+        "dissipated": ("run", "time"),
+        "transverse": ("run", "time"),
+        "initial_energy": ("run",),
+        "impacts": ("run",),
+    }
+    COORDS = {"t": "time"}
+
+    def fraction_dissipated(self) -> np.ndarray:
+        """W / H(0) of each run at the end of the window, (R,)."""
+        return self.dissipated[:, -1] / self.initial_energy
+
+    def time_to_fraction(self, q: float = 0.9) -> np.ndarray:
+        """First time W reaches q H(0) in each run, (R,): linear interpolation between
+        the samples (W never decreases); inf where the window ends first.
+
+        Examples
+        --------
+        >>> r = ImpulseResponse(np.arange(3.0), *[np.zeros((1, 3))] * 3,
+        ...                     np.array([[0.0, 0.5, 1.0]]), np.ones(1), 0.0,
+        ...                     Attachment("well"), 0.1, 1.0)
+        >>> r.time_to_fraction(0.9).tolist(), r.time_to_fraction(0.25).tolist()
+        ([1.8], [0.5])
+        """
+        q = float(q)
+        if not 0 < q <= 1:
+            raise ParameterError("q", q, "a fraction in (0, 1]")
+        share = self.dissipated / self.initial_energy[:, None]
+        return np.array([_crossing(self.t, row, q) for row in share])
+
+    def time_leaving_line(self, threshold: float = 1e-6) -> np.ndarray:
+        """First sample time where some particle is farther than ``threshold`` from
+        y = 0, (R,) (inf if never; all inf for ``"impact"``, which has no y)."""
+        threshold = v.positive("threshold", threshold)
+        if self.transverse is None:
+            return np.full(self.initial_energy.shape, math.inf)
+        out = np.full(self.transverse.shape[0], math.inf)
+        for r, row in enumerate(self.transverse):
+            hit = np.flatnonzero(row > threshold)
+            if hit.size:
+                out[r] = self.t[hit[0]]
+        return out
+
+
+def _crossing(t: np.ndarray, y: np.ndarray, q: float) -> float:
+    above = np.flatnonzero(y >= q)
+    if not above.size:
+        return math.inf
+    i = above[0]
+    if i == 0:
+        return float(t[0])
+    return float(t[i - 1] + (q - y[i - 1]) / (y[i] - y[i - 1]) * (t[i] - t[i - 1]))
+
+
+def start_rows(att: Attachment, settings: RunSettings) -> np.ndarray:
+    """State rows (R, 2 + 4k) of the impulsive start (module docstring)."""
+    positions = random_positions(settings, att.particles)
+    if att.kind in LINE_KINDS:
+        positions[:, :, 1] = 0.0
+    rows = StateLayout(att.particles).start(0.0, positions)
+    rows[:, StateLayout.XDOT] = math.sqrt(2.0 * settings.energy)
+    return rows
+
+
+def impulse_response(
+    att: Attachment,
+    energy: float,
+    *,
+    damping: float,
+    periods: int,
+    runs: int = 8,
+    seed: int = 0,
+    samples_per_period: int = 16,
+    tol: float | None = None,
+    box: float = 0.01,
+    energy_bound: float | None = None,
+) -> ImpulseResponse:
+    """The container's response to an impulse of energy ``energy`` (module docstring).
+
+    Parameters
+    ----------
+    att : Attachment
+    energy : float > 0
+        E, the container's energy given by the impulse (Xdot(0) = sqrt(2 E)).
+    damping : float >= 0
+        c, the total dashpot coefficient (c / k per particle).
+    periods, runs, seed, box
+        As :class:`sinktheory.model.RunSettings` (box: the start box of the particles).
+    samples_per_period : int >= 1
+        Samples per period T = 2 pi of the records.
+    tol : float, optional
+        The engine's energy tolerance (default 1e-8; ``"impact"`` is exact and ignores it).
+    energy_bound : float > 0, optional
+        Largest audit error tolerated (default as simulate: max(1e-6, 100 tol)).
+
+    Returns
+    -------
+    ImpulseResponse
+    """
+    if not isinstance(att, Attachment):
+        raise ParameterError("att", att, "a sinktheory.attachments.Attachment")
+    damping = v.nonnegative("damping", damping)
+    samples = v.positive_int("samples_per_period", samples_per_period, maximum=100_000)
+    settings = RunSettings(energy=energy, runs=runs, periods=periods, seed=seed, box=box)
+    rows = start_rows(att, settings)
+    common = {"attachment": att, "damping": damping, "energy": settings.energy}
+    if att.kind == "impact":
+        from .vibroimpact import simulate_vibroimpact
+
+        L = StateLayout(1)
+        res = simulate_vibroimpact(rows[:, [L.X, L.XDOT, L.u.start, L.udot.start]],
+                                   clearance=att.clearance, mass=att.mass, damping=damping,
+                                   periods=settings.periods, samples_per_period=samples,
+                                   energy_bound=energy_bound)  # fmt: skip
+        x, xd = res.container_x, res.container_v
+        return ImpulseResponse(res.sample_times, x, xd, 0.5 * (x * x + xd * xd), res.dissipated,
+                               res.initial_energy, res.max_audit_error, impacts=res.impacts,
+                               integrator="exact flights and impacts (sinktheory.vibroimpact)",
+                               **common)  # fmt: skip
+    from .design.inelastic import simulate_inelastic
+
+    res = simulate_inelastic(att.sink, settings, damping=damping / att.particles,
+                             damping_kind="viscous", tol=tol, energy_bound=energy_bound,
+                             start=rows, samples_per_period=samples)  # fmt: skip
+    x, xd = res.container_x, res.container_v
+    return ImpulseResponse(res.sample_times, x, xd, 0.5 * (x * x + xd * xd),
+                           res.sample_dissipated, res.initial_energy, res.max_audit_error,
+                           transverse=res.transverse,
+                           integrator=f"{res.method}, dt = {res.dt:.6g}, with the exact "
+                           "dashpot flow (Strang)", **common)  # fmt: skip
+
+
+__all__ = ["KINDS", "Attachment", "ImpulseResponse", "impulse_response", "start_rows"]
