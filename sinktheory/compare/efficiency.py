@@ -1,0 +1,325 @@
+r"""The attachments side by side: energy dissipated from an impulse, against its energy.
+
+For each attachment (:class:`sinktheory.attachments.Attachment`: the 1-D cubic NES on
+the line y = 0, the 1-D vibro-impact NES, the 2-D well with k particles) at the same
+total mass m and the same damping coefficient, and for each initial container energy E0
+of a log-spaced list, :func:`sinktheory.attachments.impulse_response` runs ``runs``
+seeded impulsive starts for ``periods`` container periods T = 2 pi; then
+
+* the efficiency is the fraction of the initial energy dissipated by the end of the
+  window (mean over the runs and its standard error, ``ImpulseResponse.fraction_dissipated``);
+* the 90 % time is the first time the dissipated energy reaches 90 % of it (mean and
+  standard error over the runs that got there, and how many did:
+  ``ImpulseResponse.time_to_fraction``), in periods T.
+
+Every cell uses the same ``seed``, so the start states of the runs are the same at every
+energy (common random numbers: the curves against E0 are smoother than independent draws
+would give them).  The work of the whole grid is checked against the work limit
+(:mod:`sinktheory.worklimit`) before anything runs, and a progress bar counts the cells.
+
+Units: the paper's (container mass 1, spring 1, period T = 2 pi).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Sequence
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from .. import validation as v
+from ..errors import ParameterError
+from ..results import Result
+
+#: The attachment kinds, in the order the comparison lists them.
+KINDS = ("nes", "impact", "well")
+#: The share of the initial energy whose dissipation time is reported.
+FRACTION = 0.9
+#: Most initial energies of one comparison.
+MAX_ENERGIES = 1000
+
+
+def attachments_of(
+    kinds: Sequence[str],
+    *,
+    shapes: Sequence[str] = ("flat",),
+    particles: Sequence[int] = (1,),
+    alpha: float = 0.5,
+    beta: float = 0.3,
+    n: int = 2,
+    mass: float = 0.2,
+) -> list:
+    """The attachments of ``kinds`` at one total mass: ``nes`` and ``impact`` once each
+    (on the line y = 0 every registered shape has the same wall, so the first shape is
+    used), ``well`` once per shape and particle count.
+
+    Raises ParameterError for an unknown kind, an empty list or repeated entries.
+    """
+    from ..attachments import Attachment
+
+    kinds = _names("attachments", kinds, KINDS)
+    shapes = _names("shape", shapes, None)
+    counts = [v.positive_int("particles", k) for k in _listed("particles", particles)]
+    if len(set(counts)) != len(counts):
+        raise ParameterError("particles", list(particles), "distinct particle counts")
+    out = []
+    for kind in kinds:
+        if kind == "well":
+            for shape in shapes:
+                for k in counts:
+                    out.append(Attachment("well", shape, alpha, beta, n, k, mass))
+        else:
+            out.append(Attachment(kind, shapes[0], alpha, beta, n, 1, mass))
+    return out
+
+
+def _listed(name: str, values) -> list:
+    if isinstance(values, str) or not isinstance(values, Sequence) or not len(values):
+        raise ParameterError(name, values, "a non-empty list")
+    return list(values)
+
+
+def _names(name: str, values, options) -> list[str]:
+    values = _listed(name, values)
+    if options is not None:
+        values = [v.choice(name, x, options) for x in values]
+    if len(set(values)) != len(values):
+        raise ParameterError(name, values, "a list without repeated entries")
+    return values
+
+
+def energies_of(lo: float, hi: float, count: int) -> np.ndarray:
+    """``count`` log-spaced initial energies from ``lo`` to ``hi`` (both included).
+
+    Examples
+    --------
+    >>> energies_of(0.01, 1.0, 3).tolist()
+    [0.01, 0.1, 1.0]
+    >>> energies_of(1.0, 0.1, 3)
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: energies = (1.0, 0.1, 3) is not allowed: must be \
+LO HI COUNT with 0 < LO <= HI (LO = HI only with COUNT = 1)
+    """
+    allowed = "LO HI COUNT with 0 < LO <= HI (LO = HI only with COUNT = 1)"
+    lo, hi = v.positive("energies", lo), v.positive("energies", hi)
+    count = v.positive_int("energies", count, maximum=MAX_ENERGIES)
+    if lo > hi or (lo == hi) != (count == 1):
+        raise ParameterError("energies", (lo, hi, count), allowed)
+    return np.geomspace(lo, hi, count)
+
+
+@dataclass(frozen=True)
+class Comparison(Result):
+    """Efficiency and 90 % time of each attachment at each initial container energy.
+
+    Attributes
+    ----------
+    attachment : (A,) labels (``Attachment.label``)
+    energy : (E,) initial container energies E0
+    efficiency, efficiency_se : (A, E) fraction of the initial energy dissipated by the
+        end of the window: mean over the runs and its standard error
+    t90, t90_se : (A, E) periods until 90 % is dissipated: mean and standard error over
+        the runs that reached it (NaN where none did; the s.e. also where one did)
+    reached : (A, E) runs that reached 90 %
+    max_audit_error : (A, E) largest |H + W - H0| / H0 of the cell's runs
+    attachments : list of dict
+        Each attachment's parameters (kind, shape, alpha, beta, n, particles, mass).
+    damping, runs, periods, seed, samples_per_period, seconds
+    """
+
+    attachment: tuple
+    energy: np.ndarray
+    efficiency: np.ndarray
+    efficiency_se: np.ndarray
+    t90: np.ndarray
+    t90_se: np.ndarray
+    reached: np.ndarray
+    max_audit_error: np.ndarray
+    attachments: list
+    damping: float
+    runs: int
+    periods: int
+    seed: int
+    samples_per_period: int
+    seconds: float
+
+    DIMS = {
+        "attachment": ("attachment",),
+        "energy": ("energy",),
+        **dict.fromkeys(
+            ("efficiency", "efficiency_se", "t90", "t90_se", "reached", "max_audit_error"),
+            ("attachment", "energy"),
+        ),
+    }
+
+    def threshold(self, index: int, level: float = 0.5) -> float:
+        """The lowest energy at which the efficiency of attachment ``index`` reaches
+        ``level``, interpolated linearly in ln E0 between the grid's energies (NaN if it
+        never does, the lowest energy if it does there already)."""
+        eff = self.efficiency[index]
+        above = np.flatnonzero(eff >= level)
+        if not above.size:
+            return math.nan
+        j = int(above[0])
+        if j == 0:
+            return float(self.energy[0])
+        a, b = eff[j - 1], eff[j]
+        s = (level - a) / (b - a)
+        lo, hi = np.log(self.energy[j - 1]), np.log(self.energy[j])
+        return float(np.exp(lo + s * (hi - lo)))
+
+
+def _mean_se(x: np.ndarray) -> tuple[float, float]:
+    x = x[np.isfinite(x)]
+    if not x.size:
+        return math.nan, math.nan
+    se = float(x.std(ddof=1) / math.sqrt(x.size)) if x.size > 1 else math.nan
+    return float(x.mean()), se
+
+
+def steps_per_period(att, energy: float, *, runs: int, periods: int, tol=None) -> int:
+    """Integration steps per period of ``att`` after an impulse of ``energy``: the step
+    :func:`sinktheory.worklimit.step_of` picks for the start's total energy bound (a well
+    too stiff to integrate is refused naming its parameter); the vibro-impact flow is
+    exact between impacts and is counted as one step per recorded sample."""
+    from ..model import RunSettings
+    from ..worklimit import check_settings, step_of
+
+    if att.kind == "impact":
+        return 0
+    settings = RunSettings(energy=energy, runs=runs, periods=periods)
+    check_settings(settings, att.sink)
+    return step_of(att.sink, settings.total_energy_bound(att.sink), tol=tol, settings=settings)[2]
+
+
+def work(
+    attachments,
+    energies,
+    *,
+    runs: int,
+    periods: int,
+    samples_per_period: int,
+    tol: float | None = None,
+) -> float:
+    """Particle steps of the whole comparison, checked against the work limit before
+    anything runs (:func:`sinktheory.worklimit.check_particle_steps`, naming ``periods``)."""
+    from ..worklimit import check_particle_steps
+
+    periods = v.positive_int("periods", periods)
+    total = 0.0
+    for att in attachments:
+        for e in energies:
+            steps = steps_per_period(att, float(e), runs=runs, periods=periods, tol=tol)
+            steps = max(steps, samples_per_period)  # steps are a multiple of the samples
+            total += float(runs) * periods * steps * att.particles
+    check_particle_steps(
+        "periods",
+        periods,
+        total,
+        f"{len(attachments)} attachment(s) x {len(energies)} energies x {runs} run(s) x "
+        f"{periods} period(s)",
+    )
+    return total
+
+
+def compare(
+    attachments,
+    energies,
+    *,
+    damping: float,
+    periods: int,
+    runs: int = 8,
+    seed: int = 0,
+    samples_per_period: int = 16,
+    tol: float | None = None,
+    progress: bool = True,
+) -> Comparison:
+    """Efficiency and 90 % time of each attachment at each initial container energy.
+
+    Parameters
+    ----------
+    attachments : sequence of Attachment
+        E.g. :func:`attachments_of`; compared at their own (usually equal) mass.
+    energies : sequence of float > 0
+        Initial container energies E0 (e.g. :func:`energies_of`).
+    damping : float >= 0
+        The damping coefficient every attachment gets
+        (:func:`sinktheory.attachments.impulse_response`).
+    periods : int
+        The window, in container periods T = 2 pi.
+    runs : int >= 2
+        Seeded runs per cell (standard errors need two).
+    seed : int >= 0
+        The same for every cell.
+    samples_per_period : int
+        Recording resolution of the 90 % time.
+    tol : float, optional
+        Energy tolerance of the integration (the engine's default if None).
+    progress : bool
+        A progress bar on stderr for work longer than two seconds.
+
+    Returns
+    -------
+    Comparison
+    """
+    from ..attachments import impulse_response
+    from ..progress import ProgressBar
+
+    attachments = list(attachments)
+    if not attachments:
+        raise ParameterError("attachments", attachments, "a non-empty list")
+    energies = v.real_array("energies", energies)
+    if energies.ndim != 1 or not energies.size or not np.all(energies > 0):
+        raise ParameterError("energies", energies.tolist(), "a non-empty list of numbers > 0")
+    v.nonnegative("damping", damping)
+    runs = v.positive_int("runs", runs, minimum=2)
+    samples_per_period = v.positive_int("samples_per_period", samples_per_period,
+                                        maximum=100_000)  # fmt: skip
+    work(attachments, energies, runs=runs, periods=periods,
+         samples_per_period=samples_per_period, tol=tol)  # fmt: skip
+    shape = (len(attachments), energies.size)
+    eff, eff_se, t90, t90_se, audit = (np.full(shape, math.nan) for _ in range(5))
+    reached = np.zeros(shape, dtype=int)
+    start = time.perf_counter()
+    bar = ProgressBar(eff.size, enabled=progress, label="compare", unit="cell")
+    try:
+        for i, att in enumerate(attachments):
+            for j, e in enumerate(energies):
+                res = impulse_response(
+                    att,
+                    float(e),
+                    damping=damping,
+                    periods=periods,
+                    runs=runs,
+                    seed=seed,
+                    samples_per_period=samples_per_period,
+                    tol=tol,
+                )
+                eff[i, j], eff_se[i, j] = _mean_se(res.fraction_dissipated())
+                times = res.time_to_fraction(FRACTION) / (2 * math.pi)
+                reached[i, j] = int(np.isfinite(times).sum())
+                t90[i, j], t90_se[i, j] = _mean_se(times)
+                audit[i, j] = res.max_audit_error
+                bar.update(1)
+    finally:
+        bar.close()
+    return Comparison(
+        tuple(a.label for a in attachments),
+        energies,
+        eff,
+        eff_se,
+        t90,
+        t90_se,
+        reached,
+        audit,
+        [asdict(a) for a in attachments],
+        float(damping),
+        runs,
+        int(periods),
+        int(seed),
+        int(samples_per_period),
+        time.perf_counter() - start,
+    )

@@ -1,0 +1,173 @@
+r"""Targeted energy transfer seen through a wavelet: the container's instantaneous
+frequency against the energy left, over the normal modes' frequency-energy curves.
+
+:func:`transfer_map` runs one impulsive start of an attachment
+(:func:`sinktheory.attachments.impulse_response`), takes the Morlet wavelet map of the
+recorded container displacement X(t) (:func:`sinktheory.compare.wavelet.wavelet_map`)
+and pairs its ridge omega(t) with the total energy left at that time,
+H(t) = H(0) - W(t) (W the dashpot's work: the audited balance of the run).
+:func:`backbone` continues the in-plane normal modes (all particles on y = 0, moving
+together; :func:`sinktheory.nnm.continuation.continue_both`) of the attachment's sink
+over the same energies: the frequency-energy plot the ridge is drawn on
+(:func:`sinktheory.plot.compare.plot_transfer`).  A ridge that follows a branch as the
+energy falls is energy held in that mode; a ridge that leaves every branch is energy
+transferred elsewhere -- for the 2-D sink, out of the invariant plane.
+
+The vibro-impact attachment has no smooth normal modes in :mod:`sinktheory.nnm`; its
+backbone is empty.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import validation as v
+from ..errors import ParameterError
+from ..results import Result
+from .wavelet import DEFAULT_WAVELET, WaveletMap, wavelet_map
+
+#: Shooting steps per period and largest points per direction of the backbone.
+BACKBONE_STEPS = 200
+BACKBONE_POINTS = 150
+#: Start energies tried for a mode, log-spaced from lo, before it is left out.
+START_TRIES = 4
+
+
+@dataclass(frozen=True)
+class TransferMap(Result):
+    """One run's wavelet map and its ridge against the energy left.
+
+    Attributes
+    ----------
+    wavelet : WaveletMap
+        Of the container displacement X(t).
+    energy_left : (S,) total energy H(t) = H(0) - W(t) of the run
+    container_energy : (S,) the container's energy (X^2 + Xdot^2) / 2
+    label : str
+        The attachment's label.
+    energy, damping : float
+        The impulse's container energy and the dashpot coefficient.
+    run : int
+        Which run of the seeded ensemble.
+    """
+
+    wavelet: WaveletMap
+    energy_left: np.ndarray
+    container_energy: np.ndarray
+    label: str
+    energy: float
+    damping: float
+    run: int
+
+    DIMS = {"energy_left": ("t",), "container_energy": ("t",)}
+
+
+def transfer_map(
+    att,
+    energy: float,
+    *,
+    damping: float,
+    periods: int,
+    seed: int = 0,
+    run: int = 0,
+    samples_per_period: int = 16,
+    omega=(0.3, 3.0, 160),
+    wavelet: str = DEFAULT_WAVELET,
+    tol: float | None = None,
+) -> TransferMap:
+    """The wavelet map of run ``run`` of an impulsive start (module docstring).
+
+    Parameters
+    ----------
+    att : Attachment
+    energy, damping, periods, seed, samples_per_period, tol
+        As :func:`sinktheory.attachments.impulse_response`.
+    run : int >= 0
+        The run of the seeded ensemble (runs ``0..run`` are integrated).
+    omega, wavelet
+        As :func:`sinktheory.compare.wavelet.wavelet_map`.
+
+    Examples
+    --------
+    >>> from sinktheory.attachments import Attachment
+    >>> m = transfer_map(Attachment("nes", n=2), 0.05, damping=0.01, periods=30,
+    ...                  omega=(0.5, 2.0, 40))
+    >>> ridge = m.wavelet.ridge[np.isfinite(m.wavelet.ridge)]
+    >>> bool(ridge.size > 0 and (m.energy_left[-1] < m.energy_left[0]))
+    True
+    """
+    from ..attachments import impulse_response
+
+    run = v.positive_int("run", run, minimum=0, maximum=10**6)
+    res = impulse_response(
+        att,
+        energy,
+        damping=damping,
+        periods=periods,
+        runs=run + 1,
+        seed=seed,
+        samples_per_period=samples_per_period,
+        tol=tol,
+    )
+    w = wavelet_map(res.t, res.container_x[run], omega=omega, wavelet=wavelet)
+    left = res.initial_energy[run] - res.dissipated[run]
+    return TransferMap(
+        w,
+        left,
+        res.container_energy[run],
+        att.label,
+        float(res.energy),
+        float(res.damping),
+        run,
+    )
+
+
+def backbone(att, lo: float, hi: float, *, points: int = BACKBONE_POINTS) -> tuple[list, list]:
+    """The in-plane normal modes of ``att``'s sink between total energies ``lo`` and
+    ``hi``: (branches, notes).
+
+    The container mode is started at ``lo`` (where it is nearly linear), the particle
+    mode at the geometric mean of ``lo`` and ``hi``; where the shooting does not converge
+    from the mode's guess (:func:`sinktheory.nnm.modes.mode_guess`; the branches of an
+    essentially nonlinear attachment fold and tongue, so a plain guess does not converge
+    everywhere), the next of ``START_TRIES + 1`` log-spaced energies from ``lo`` is
+    tried.  Each mode is continued both ways
+    (:func:`sinktheory.nnm.continuation.continue_both`) until it leaves [lo, hi] or has
+    ``points`` points a side; a mode that never converges is left out and named in
+    ``notes``.  Empty for the vibro-impact attachment.
+    """
+    from ..nnm.continuation import continue_both
+    from ..nnm.shooting import ShootingError
+
+    lo, hi = v.positive("lo", lo), v.positive("hi", hi)
+    if not lo < hi:
+        raise ParameterError("hi", hi, f"an energy > lo = {lo:g}")
+    points = v.positive_int("points", points, minimum=2, maximum=10_000)
+    if att.kind == "impact":
+        return [], ["the vibro-impact attachment has no smooth normal modes"]
+    branches, notes = [], []
+    tries = np.geomspace(lo, hi, START_TRIES + 2)[: START_TRIES + 1]
+    for mode, starts in (("container", tries), ("particle", [math.sqrt(lo * hi), *tries])):
+        error = None
+        for start in starts:
+            try:
+                b = continue_both(
+                    att.sink,
+                    mode,
+                    energy=float(start),
+                    stop=(lo, hi),
+                    steps=BACKBONE_STEPS,
+                    points=points,
+                    ds=0.5,
+                )
+            except ShootingError as e:
+                error = e
+                continue
+            branches.append(b)
+            break
+        else:
+            notes.append(f"{mode} mode not converged from any start guess: {error}")
+    return branches, notes
