@@ -48,12 +48,19 @@ def attachments_of(
     particles: Sequence[int] = (1,),
     alpha: float = 0.5,
     beta: float = 0.3,
-    n: int = 2,
+    n: int = 4,
+    nes_n: int = 2,
     mass: float = 0.2,
 ) -> list:
-    """The attachments of ``kinds`` at one total mass: ``nes`` and ``impact`` once each
-    (on the line y = 0 every registered shape has the same wall, so the first shape is
-    used), ``well`` once per shape and particle count.
+    """The attachments of ``kinds`` at one total mass: ``nes`` (wall exponent ``nes_n``,
+    2: the cubic NES) and ``impact`` once each (on the line y = 0 every registered shape
+    has the same wall, so the first shape is used), ``well`` (wall exponent ``n``) once
+    per shape and particle count.
+
+    Examples
+    --------
+    >>> [a.label for a in attachments_of(["nes", "well"], particles=[1, 5])]
+    ['NES n = 2', 'well flat k = 1', 'well flat k = 5']
 
     Raises ParameterError for an unknown kind, an empty list or repeated entries.
     """
@@ -71,7 +78,7 @@ def attachments_of(
                 for k in counts:
                     out.append(Attachment("well", shape, alpha, beta, n, k, mass))
         else:
-            out.append(Attachment(kind, shapes[0], alpha, beta, n, 1, mass))
+            out.append(Attachment(kind, shapes[0], alpha, beta, nes_n, 1, mass))
     return out
 
 
@@ -155,21 +162,21 @@ class Comparison(Result):
         ),
     }
 
-    def threshold(self, index: int, level: float = 0.5) -> float:
-        """The lowest energy at which the efficiency of attachment ``index`` reaches
-        ``level``, interpolated linearly in ln E0 between the grid's energies (NaN if it
-        never does, the lowest energy if it does there already)."""
-        eff = self.efficiency[index]
-        above = np.flatnonzero(eff >= level)
+    def span(self, index: int, level: float = 0.5) -> tuple[float, float] | None:
+        """(lowest, highest) energy of the grid at which attachment ``index`` dissipates
+        at least ``level`` of the initial energy on average (None if at none).
+
+        Examples
+        --------
+        >>> c = Comparison(("a",), np.array([0.1, 1.0, 10.0]), np.array([[0.2, 0.6, 0.7]]),
+        ...                *[np.zeros((1, 3))] * 5, [], 0.0, 2, 10, 0, 16, 0.0)
+        >>> c.span(0), c.span(0, 0.9)
+        ((1.0, 10.0), None)
+        """
+        above = np.flatnonzero(self.efficiency[index] >= level)
         if not above.size:
-            return math.nan
-        j = int(above[0])
-        if j == 0:
-            return float(self.energy[0])
-        a, b = eff[j - 1], eff[j]
-        s = (level - a) / (b - a)
-        lo, hi = np.log(self.energy[j - 1]), np.log(self.energy[j])
-        return float(np.exp(lo + s * (hi - lo)))
+            return None
+        return float(self.energy[above[0]]), float(self.energy[above[-1]])
 
 
 def _mean_se(x: np.ndarray) -> tuple[float, float]:
