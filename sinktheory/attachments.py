@@ -26,11 +26,14 @@ feel the one dashpot c.
 Impulsive start (the standard test of an absorber): the container at X = 0 with velocity
 sqrt(2 E), E = ``energy``, every particle at rest (absolute velocity 0: the impulse acts
 on the container alone, so H(0) = E up to the particles' tiny potential energy).  The
-particles start at seeded random positions of the start box, as
+particles start at seeded random positions of a start box, as
 :func:`sinktheory.simulate.random_positions` draws them for ``simulate`` (run r from the
-r-th child of the seed): in (-box, box)^2 for the 2-D well; for the 1-D attachments the
-same x with y = 0, so their runs differ only by that small seeded offset along the line
-(they coincide as box -> 0).
+r-th child of the seed), in (-b, b)^2 with b = box sqrt(2 E): the box is relative to the
+container's amplitude sqrt(2 E), so the particles' start potential energy stays a
+negligible share of E at every energy (an absolute box of 0.01 holds about 1e-7 in the
+cubic NES, the whole impulse at E = 1e-7).  For the 1-D attachments the same x with
+y = 0, so their runs differ only by that small seeded offset along the line (they
+coincide as box -> 0).
 
 Examples
 --------
@@ -261,6 +264,7 @@ def impulse_response(
     tol: float | None = None,
     box: float = 0.01,
     energy_bound: float | None = None,
+    line_offset: float = 0.0,
 ) -> ImpulseResponse:
     """The container's response to an impulse of energy ``energy`` (module docstring).
 
@@ -271,14 +275,20 @@ def impulse_response(
         E, the container's energy given by the impulse (Xdot(0) = sqrt(2 E)).
     damping : float >= 0
         c, the total dashpot coefficient (c / k per particle).
-    periods, runs, seed, box
-        As :class:`sinktheory.model.RunSettings` (box: the start box of the particles).
+    periods, runs, seed
+        As :class:`sinktheory.model.RunSettings`.
+    box : float > 0
+        Half-width of the particles' start box relative to sqrt(2 E) (module docstring).
     samples_per_period : int >= 1
         Samples per period T = 2 pi of the records.
     tol : float, optional
         The engine's energy tolerance (default 1e-8; ``"impact"`` is exact and ignores it).
     energy_bound : float > 0, optional
         Largest audit error tolerated (default as simulate: max(1e-6, 100 tol)).
+    line_offset : float >= 0
+        Start the ``"nes"`` particle this far off the line (y(0) = line_offset): whether
+        it stays near y = 0 (:meth:`ImpulseResponse.time_leaving_line`) is the line's
+        stability.  Only for ``"nes"``.
 
     Returns
     -------
@@ -288,8 +298,14 @@ def impulse_response(
         raise ParameterError("att", att, "a sinktheory.attachments.Attachment")
     damping = v.nonnegative("damping", damping)
     samples = v.positive_int("samples_per_period", samples_per_period, maximum=100_000)
+    energy = v.positive("energy", energy)
+    box = v.positive("box", box) * math.sqrt(2.0 * energy)
     settings = RunSettings(energy=energy, runs=runs, periods=periods, seed=seed, box=box)
+    offset = v.nonnegative("line_offset", line_offset)
+    if offset and att.kind != "nes":
+        raise ParameterError("line_offset", offset, "0 unless the attachment is an 'nes'")
     rows = start_rows(att, settings)
+    rows[:, StateLayout(att.particles).y] += offset
     common = {"attachment": att, "damping": damping, "energy": settings.energy}
     if att.kind == "impact":
         from .vibroimpact import simulate_vibroimpact

@@ -35,6 +35,57 @@ def test_zero_damping_is_bitwise_the_simulator():
     assert on.max_audit_error == pytest.approx(ref.max_relative_energy_error, rel=1e-12)
 
 
+def test_zero_viscous_damping_is_bitwise_the_simulator():
+    """The viscous kind at c0 = 0 (constant factors, exactly 0): simulate's numbers."""
+    settings = RunSettings(runs=3, periods=3, seed=4)
+    on = simulate_inelastic(SINK2, settings, damping=0.0, damping_kind="viscous", tol=1e-6)
+    ref = simulate(SINK2, settings, tol=1e-6, progress=False)
+    assert (on.method, on.dt, on.damping_kind) == (ref.method, ref.dt, "viscous")
+    assert on.container_energy.tobytes() == ref.container_energy.tobytes()
+    assert not on.dissipated.any() and on.sample_times is None
+
+
+def test_samples_are_the_simulators_trajectory():
+    """samples_per_period = 8 with a step count divisible by 8: X and Xdot at the samples
+    are simulate's trajectory at the same step and stride, bitwise (c0 = 0)."""
+    settings = RunSettings(runs=2, periods=2, seed=3)
+    res = simulate_inelastic(SINK2, settings, damping=0.0, damping_kind="viscous",
+                             dt=2 * np.pi / 96, samples_per_period=8)  # fmt: skip
+    ref = simulate(SINK2, settings, dt=2 * np.pi / 96, record=("trajectory",), stride=12,
+                   progress=False)  # fmt: skip
+    assert res.steps_per_period == 96 and res.container_x.shape == (2, 17)
+    assert res.container_x.tobytes() == np.ascontiguousarray(ref.trajectory[:, :, 0]).tobytes()
+    assert res.container_v.tobytes() == np.ascontiguousarray(ref.trajectory[:, :, 1]).tobytes()
+    np.testing.assert_array_equal(res.sample_times, ref.trajectory_times)
+    y = np.abs(ref.trajectory[:, :, 4:6]).max(axis=2)
+    np.testing.assert_array_equal(res.transverse, y)
+    # a step count that 7 does not divide is rounded up to a multiple of 7
+    odd = simulate_inelastic(SINK2, RunSettings(runs=1, periods=1), dt=2 * np.pi / 96,
+                             samples_per_period=7)  # fmt: skip
+    assert odd.steps_per_period == 98 and odd.dt == 2 * np.pi / 98
+
+
+def test_viscous_compiled_equals_the_numpy_splitting_and_is_audited():
+    """The viscous weight in both versions of the splitting, from given start rows
+    (particles at absolute rest, the container kicked): equal to round-off; W sampled
+    agrees with W at the period ends; W is the energy lost (audit)."""
+    rows = np.zeros((3, 10))
+    rows[:, 1] = 1.0  # Xdot
+    rows[:, 2:4] = [[0.01, -0.02], [0.0, 0.03], [-0.02, 0.0]]  # u_1, u_2
+    rows[:, 4:6] = [[0.02, 0.0], [-0.01, 0.01], [0.0, -0.03]]  # y_1, y_2
+    settings = RunSettings(runs=3, periods=3)
+    kw = {"damping": 0.3, "damping_kind": "viscous", "tol": 1e-6, "start": rows}
+    fast = simulate_inelastic(SINK2, settings, **kw)
+    slow = simulate_inelastic_reference(SINK2, settings, **kw)
+    assert fast.dissipated[:, -1].min() > 0.05  # a dashpot everywhere takes a lot
+    np.testing.assert_allclose(fast.container_energy, slow.container_energy, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(fast.dissipated, slow.dissipated, rtol=1e-10, atol=1e-15)
+    assert fast.max_audit_error < 1e-6
+    sampled = simulate_inelastic(SINK2, settings, samples_per_period=4, **kw)
+    np.testing.assert_array_equal(sampled.sample_dissipated[:, ::4], sampled.dissipated)
+    np.testing.assert_allclose(sampled.dissipated, fast.dissipated, rtol=1e-5)
+
+
 def test_compiled_equals_the_numpy_splitting():
     """Same splitting written twice (numba with the generated energy kernel for the
     contact weight; NumPy with the well's own potential): equal to round-off over three
@@ -165,6 +216,10 @@ def test_seeded_and_independent_of_the_other_runs():
         ({"dt": 0.01, "tol": 1e-6}, "tol"),
         ({"method": "euler"}, "method"),
         ({"energy_bound": 0.0}, "energy_bound"),
+        ({"damping_kind": "coulomb"}, "damping_kind"),
+        ({"samples_per_period": -1}, "samples_per_period"),
+        ({"start": np.zeros((2, 6))}, "start"),
+        ({"start": np.tile([0, 0, 0.3, 0.3, 0, 0, 0, 0, 0, 0.0], (2, 1))}, "start"),
     ],
 )
 def test_bad_input_names_the_parameter(kw, name):
