@@ -3,7 +3,9 @@
 Each design option takes one value, a list ``V1,V2,...`` or a range ``LO:HI:COUNT``
 (``--shape flat,symmetric --beta -0.3:0.3:5 --n 4,6,10 --particles 1,3,5``), the contact
 damping too (``--damping 0,0.1,0.5``: inelastic wall contact, with the container's
-equivalent damping ratio per design).  Every point of the grid runs an ensemble
+equivalent damping ratio per design), and the attachment (``--attachment well,nes,impact``:
+the 1-D cubic NES and vibro-impact NES of :mod:`sinktheory.attachments` beside the 2-D
+well, ranked on the same measures).  Every point of the grid runs an ensemble
 (``--runs`` x ``--periods``) on the sweep layer (local processes or a Dask cluster) into
 the Zarr store ``--out``, point by point; a killed run is continued by the same command
 with ``--resume``.  Before starting, the per-point cost is calibrated and the estimated
@@ -49,6 +51,7 @@ GRID = {
     "mass": "mass",
     "energy": "energy",
     "damping": "damping",
+    "attachment": "attachment",
 }
 #: option -> setting of the design kind (one value each)
 SETTINGS = (
@@ -93,6 +96,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--damping",
         default="0",
         help="contact damping c0 >= 0 of inelastic wall contact (default 0: conservative)",
+    )
+    g.add_argument(
+        "--attachment",
+        default="well",
+        help="well (the 2-D sink), nes (1-D, on y = 0), impact (vibro-impact), "
+        "comma-separated (default well; nes and impact: impulsive start, --damping is "
+        "their dashpot)",
     )
     r = parser.add_argument_group("ensemble and measures (one value each)")
     r.add_argument("--runs", type=number, default=25, help="runs per design (default 25)")

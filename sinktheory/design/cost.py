@@ -11,9 +11,10 @@ process on one thread, and scales it to every point by
 
 with the steps per period from :func:`sinktheory.stepsize.choose` (no integration needed)
 and ``TANGENT`` the measured cost of a chaos step relative to a plain one; a design with
-contact damping (``damping`` > 0) runs the inelastic integrator instead
-(:mod:`sinktheory.design.inelastic`, no lambda_1), whose step costs ``DISSIPATIVE`` plain
-steps (measured too when the grid has such designs), plus a fixed
+contact damping (``damping`` > 0) or the 1-D NES attachment runs the inelastic
+integrator instead (:mod:`sinktheory.design.inelastic`, no lambda_1), whose step costs
+``DISSIPATIVE`` plain steps (measured too when the grid has such designs), and the
+vibro-impact attachment (exact flights) about one unit per run and period, plus a fixed
 overhead per point (the measures on data of the point's size, with their bootstrap and
 RQA, and the step choice), timed as well.  Times are wall-clock, so the current load of
 the machine is included; the total is divided by the number of workers.  It is an
@@ -130,9 +131,12 @@ def _duration(seconds: float) -> str:
 
 def work(point: dict, tangent: float = TANGENT, dissipative: float = DISSIPATIVE) -> float:
     """Units of work of a point (see the module docstring)."""
+    attachment = point.get("attachment", "well")
+    if attachment == "impact":  # exact flights: about one unit per recorded sample
+        return float(point["runs"] * point["periods"])
     steps = choose(sink_of(point), point["energy"], point["tol"]).steps_per_period
     dof = 1 + 2 * point["particles"]
-    if point["damping"] > 0:
+    if point["damping"] > 0 or attachment == "nes":  # the dissipative integrator
         return float(steps * dof * dissipative * point["runs"] * point["periods"])
     runs = point["runs"] * point["periods"]
     runs += tangent * point["lyapunov_runs"] * point["lyapunov_periods"]

@@ -1,9 +1,11 @@
 """Run (or resume) a design sweep and get the measures, the ranking and the report.
 
 :func:`explore` is the Python side of ``sinktheory design``: a grid over shape, alpha,
-beta, n, k (``particles``), m (``mass``), E0 (``energy``) and the contact damping c0
+beta, n, k (``particles``), m (``mass``), E0 (``energy``), the contact damping c0
 (``damping``: inelastic wall contact, :mod:`sinktheory.design.inelastic`; 0 is the
-conservative model) -- each a value or a list -- computed on the sweep layer
+conservative model) and the attachment (``"well"``, the default; ``"nes"`` and
+``"impact"``, the 1-D absorbers, see :mod:`sinktheory.design.point`) -- each a value or a
+list -- computed on the sweep layer
 (:func:`sinktheory.sweep.runner.execute`: this process, local processes or a Dask
 cluster; a Zarr store written point by point and resumable).
 
@@ -29,7 +31,17 @@ import numpy as np
 from .ranking import rank
 
 #: The design parameters a user sweeps (any other parameter of the kind may be given too).
-DESIGN_PARAMS = ("shape", "alpha", "beta", "n", "particles", "mass", "energy", "damping")
+DESIGN_PARAMS = (
+    "shape",
+    "alpha",
+    "beta",
+    "n",
+    "particles",
+    "mass",
+    "energy",
+    "damping",
+    "attachment",
+)
 
 
 @dataclass(frozen=True)

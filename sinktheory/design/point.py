@@ -17,6 +17,19 @@ indicators are of the conservative model); the equipartition share still compare
 the initial total energy, so its verdict is expected to be "below".  With c0 = 0,
 zeta_eq and the dissipated share are exactly 0.
 
+The ``attachment`` dimension (default ``"well"``: everything above, unchanged) also runs
+the 1-D absorbers of :mod:`sinktheory.attachments` at the point's mass: ``"nes"`` (one
+particle on the line y = 0 of the point's well, force ~ x^(2n-1); n = 2 is the cubic
+NES) and ``"impact"`` (the vibro-impact NES, clearance alpha - beta).  Their ensemble is
+:func:`sinktheory.attachments.impulse_response` seeded with the point seed: an impulsive
+start (container at X = 0 with energy E0, the particle at rest) instead of simulate's
+start states, with ``damping`` the dashpot coefficient c on the particle's velocity
+relative to the container (the viscous damper of the 1-D absorbers; 0: conservative).
+zeta_eq is the same equivalent ratio W(t) / (2 integral E_c dt) (trapezoid rule over
+``SAMPLES`` samples per period), lambda_1 is left out (NaN), and the equipartition
+share is the 2-D sink's formula, for comparison (a particle held on a line has half the
+degrees of freedom).  They need particles = 1 and gamma = 1.
+
 Examples
 --------
 >>> p = {"shape": "flat", "alpha": 0.5, "beta": 0.3, "n": 4, "gamma": 1.0,
@@ -59,6 +72,22 @@ ENSEMBLE_RESULTS = (
 )
 
 
+#: Samples per period of the 1-D attachments' records (for zeta_eq's integral).
+SAMPLES = 16
+
+
+def attachment_of(p: dict):
+    """The :class:`~sinktheory.attachments.Attachment` of a 1-D design point (ParameterError
+    naming the parameter a 1-D attachment cannot take)."""
+    from ..attachments import Attachment
+
+    if p["gamma"] != 1.0:
+        raise ParameterError("gamma", p["gamma"], f"1 for the {p['attachment']} attachment")
+    return Attachment(
+        p["attachment"], p["shape"], p["alpha"], p["beta"], p["n"], p["particles"], p["mass"]
+    )
+
+
 def sink_of(p: dict) -> Sink:
     """The :class:`~sinktheory.model.Sink` of a design point."""
     well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
@@ -84,6 +113,8 @@ def check(p: dict) -> None:
     against the work limit (:mod:`sinktheory.worklimit`)."""
     sink = sink_of(p)
     settings = settings_of(p, 0)
+    if p.get("attachment", "well") != "well":
+        attachment_of(p)
     check_settings(settings, sink)
     check_tol(p["tol"])
     _, _, steps, _ = step_of(
@@ -132,9 +163,10 @@ def lyapunov(p: dict, seed: int) -> tuple[float, float]:
     """Mean lambda_1 (per unit time) of the first ``lyapunov_runs`` runs and its s.e.
 
     NaN, NaN when ``lyapunov_runs`` is 0, the contact is damped (the chaos indicators are
-    of the conservative model) or :mod:`sinktheory.chaos` cannot be imported.
+    of the conservative model), the attachment is 1-D or :mod:`sinktheory.chaos` cannot
+    be imported.
     """
-    if not p["lyapunov_runs"] or p["damping"] > 0:
+    if not p["lyapunov_runs"] or p["damping"] > 0 or p.get("attachment", "well") != "well":
         return math.nan, math.nan
     try:
         from ..chaos import chaos
@@ -159,6 +191,8 @@ def ensemble(p: dict, seed: int) -> dict[str, Any]:
     standard errors (zeros without damping)."""
     from ..simulate import simulate
 
+    if p.get("attachment", "well") != "well":
+        return _impulse_ensemble(p, seed)
     sink, settings = sink_of(p), settings_of(p, seed)
     if p["damping"] > 0:
         from .inelastic import simulate_inelastic
@@ -195,6 +229,41 @@ def ensemble(p: dict, seed: int) -> dict[str, Any]:
         "zeta_eq_se": 0.0,
         "dissipated": 0.0,
         "dissipated_se": 0.0,
+    }
+
+
+def _impulse_ensemble(p: dict, seed: int) -> dict[str, Any]:
+    """:func:`ensemble` of a 1-D attachment: impulse responses (module docstring)."""
+    from scipy.integrate import trapezoid
+
+    from ..attachments import impulse_response
+
+    res = impulse_response(
+        attachment_of(p),
+        p["energy"],
+        damping=p["damping"],
+        periods=p["periods"],
+        runs=p["runs"],
+        seed=seed,
+        samples_per_period=SAMPLES,
+        tol=p["tol"],
+        box=p["box"],
+        energy_bound=p["energy_bound"],
+    )
+    work = res.dissipated[:, -1]
+    integral = trapezoid(res.container_energy, res.t, axis=1)
+    zeta = work / (2.0 * integral)
+    share = work / res.initial_energy
+    runs = zeta.size
+    return {
+        "energy": res.container_energy[:, ::SAMPLES],
+        "h0": res.initial_energy,
+        "max_relative_energy_error": res.max_audit_error,
+        "dt_used": getattr(res, "dt", math.nan),
+        "zeta_eq": float(zeta.mean()),
+        "zeta_eq_se": float(zeta.std(ddof=1) / math.sqrt(runs)),
+        "dissipated": float(share.mean()),
+        "dissipated_se": float(share.std(ddof=1) / math.sqrt(runs)),
     }
 
 

@@ -59,9 +59,9 @@ from ..dop853 import DEFAULT_RTOL
 from ..equilibrium import ergodicity as _ergodicity
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
-from ..model import MAX_PERIODS, SHAPES, RunSettings, Sink, Well, check_work
+from ..model import MAX_PERIODS, SHAPES, RunSettings, Sink, Well
 from ..simulate import ENERGY_BOUND, simulate
-from ..worklimit import check_settings, step_of
+from ..worklimit import check_settings, check_work, step_of
 
 REQUIRED = object()
 #: Rough cost of one container period of one particle (n = 10, single thread: 24 sections
@@ -455,6 +455,7 @@ KINDS = {
             "lyapunov_runs": Param(int, 10),
             "lyapunov_periods": Param(int, 100),
             "damping": Param(float, 0.0),
+            "attachment": Param(str, "well", ("well", "nes", "impact")),
             "replica": Param(int, 0),
         },
         _design_results(),
