@@ -28,7 +28,8 @@ relative to the container (the viscous damper of the 1-D absorbers; 0: conservat
 zeta_eq is the same equivalent ratio W(t) / (2 integral E_c dt) (trapezoid rule over
 ``SAMPLES`` samples per period), lambda_1 is left out (NaN), and the equipartition
 share is the 2-D sink's formula, for comparison (a particle held on a line has half the
-degrees of freedom).  They need particles = 1 and gamma = 1.
+degrees of freedom).  They need particles = 1 and gamma = 1, and their start box is
+``box`` times sqrt(2 E0) (:func:`~sinktheory.attachments.impulse_response`).
 
 Examples
 --------
