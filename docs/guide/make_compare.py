@@ -118,7 +118,7 @@ def table(c, seconds: float, machine: str) -> str:
         "",
         *[f"* {v}" for v in verdicts(c)],
         "",
-        f"Largest audit error |H + W - H0| / H0: {float(np.max(c.max_audit_error)):.1g}.  "
+        f"Largest audit error ``|H + W - H0| / H0``: {float(np.max(c.max_audit_error)):.1g}.  "
         f"Computed in {seconds:.0f} s on: {machine}.",
         "",
     ]
