@@ -29,7 +29,8 @@ zeta_eq is the same equivalent ratio W(t) / (2 integral E_c dt) (trapezoid rule 
 ``SAMPLES`` samples per period), lambda_1 is left out (NaN), and the equipartition
 share is the 2-D sink's formula, for comparison (a particle held on a line has half the
 degrees of freedom).  They need particles = 1 and gamma = 1, and their start box is
-``box`` times sqrt(2 E0) (:func:`~sinktheory.attachments.impulse_response`).
+``box`` times sqrt(2 E0) (:func:`~sinktheory.attachments.impulse_response`); dt_used is
+the response's ``dt`` where it reports one, else NaN.
 
 Examples
 --------
