@@ -51,7 +51,8 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"sinktheory {_version()}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for name, summary in commands.HELP.items():
-        p = sub.add_parser(name, help=summary, description=summary)
+        # argparse %-formats help strings (not descriptions): a literal % is doubled
+        p = sub.add_parser(name, help=summary.replace("%", "%%"), description=summary)
         if only is None or name == only:
             module = commands.load(name)
             module.add_arguments(p)
