@@ -137,3 +137,15 @@ def test_compare_help_imports_nothing_heavy(tmp_path):
     assert status == 0 and heavy == [], proc.stderr
     status, heavy, proc = probe(["compare", "--damping", "0.1", "--plot", "x.txt"], tmp_path)
     assert status == 2 and heavy == [], proc.stderr
+
+
+def test_cli_wavelet_figure_and_notes(capsys, tmp_path):
+    """--wavelet writes the maps over the backbones and names in the JSON what could not
+    be drawn: the vibro-impact NES has no smooth normal modes."""
+    png = tmp_path / "w.png"
+    argv = ["compare", "--attachments", "nes,impact", "--damping", "0.01", *TINY]
+    code, out, err = run_cli([*argv, "--wavelet", str(png), "--json"], capsys)
+    assert code == 0, err
+    notes = json.loads(out)["wavelet_notes"]
+    assert any(n.startswith("vibro-impact: ") and "no smooth normal modes" in n for n in notes)
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
