@@ -108,6 +108,31 @@ def positive_int(
     return i
 
 
+def stiffness(name: str, value: object) -> int | float:
+    """A wall stiffness n: an integer >= 1, or ``math.inf`` (also the text "inf") for the
+    rigid limit n -> oo.  The model's upper bound on a finite n is checked by the model.
+
+    Examples
+    --------
+    >>> stiffness("n", 10.0), stiffness("n", "inf"), stiffness("n", math.inf)
+    (10, inf, inf)
+    >>> stiffness("n", -math.inf)
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: n = -inf is not allowed: must be an integer >= 1 or \
+inf (the rigid limit)
+    """
+    allowed = "an integer >= 1 or inf (the rigid limit)"
+    if isinstance(value, str) and value.strip().lower() in ("inf", "+inf", "infinity"):
+        return math.inf
+    if not _is_bool(value) and isinstance(value, numbers.Real) and value == math.inf:
+        return math.inf
+    try:
+        return positive_int(name, value)
+    except ParameterError:
+        raise ParameterError(name, value, allowed) from None
+
+
 def _compact(i: int) -> float:
     try:
         return float(i)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import math
 import os
 import shutil
 import signal
@@ -103,14 +104,28 @@ def add_json(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object on stdout")
 
 
-def add_well_arguments(parser: argparse.ArgumentParser, *, beta: bool = True) -> None:
+def add_well_arguments(
+    parser: argparse.ArgumentParser, *, beta: bool = True, rigid: bool = False
+) -> None:
+    """The well options; ``rigid`` says the command also takes ``--n inf`` (the rigid
+    billiard, see :func:`rigid_limit`)."""
     from .._generated.shapes import NAMES as SHAPES  # the model's names, without numba
 
     g = parser.add_argument_group("well")
     g.add_argument("--alpha", type=number, required=True, help="alpha > 0")
     if beta:
         g.add_argument("--beta", type=number, required=True, help="beta < alpha (curvature/2)")
-    g.add_argument("--n", type=number, required=True, help="wall stiffness, integer >= 1")
+    g.add_argument(
+        "--n",
+        type=number,
+        required=True,
+        help="wall stiffness, integer >= 1"
+        + (
+            ", or inf: the rigid limit, an exact billiard (as 'sinktheory billiard')"
+            if rigid
+            else ""
+        ),
+    )
     g.add_argument("--gamma", type=number, default=1.0, help="well strength > 0 (default 1)")
     g.add_argument("--shape", default="flat", help=f"one of {', '.join(SHAPES)} (default flat)")
 
@@ -139,6 +154,33 @@ def add_sink_arguments(
     )
     g.add_argument("--seed", type=number, default=0, help="random seed, integer >= 0 (default 0)")
     return g
+
+
+def rigid_limit(args: argparse.Namespace, unsupported: dict[str, object] | None = None) -> bool:
+    """True when ``--n inf`` asks for the rigid limit n -> oo; then each option named in
+    ``unsupported`` (option -> its value) must be unset (None, False or 0), else it is
+    refused: the billiard engine has no use for it.
+
+    Examples
+    --------
+    >>> rigid_limit(argparse.Namespace(n=float("inf")), {"--dt": None})
+    True
+    >>> rigid_limit(argparse.Namespace(n=float("inf")), {"--dt": 0.1})
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: --dt = 0.1 is not allowed: must be left out with \
+--n inf (not available for the rigid billiard)
+    """
+    from ..validation import stiffness
+
+    if stiffness("n", args.n) != math.inf:
+        return False
+    for name, value in (unsupported or {}).items():
+        if value not in (None, False, 0):
+            raise ParameterError(
+                name, value, "left out with --n inf (not available for the rigid billiard)"
+            )
+    return True
 
 
 def well_from_args(args: argparse.Namespace):

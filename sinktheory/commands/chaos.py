@@ -22,6 +22,7 @@ from ._common import (
     add_well_arguments,
     number,
     png_path,
+    rigid_limit,
     well_from_args,
 )
 
@@ -30,7 +31,7 @@ HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser)
+    add_well_arguments(parser, rigid=True)
     add_sink_arguments(parser)
     c = parser.add_argument_group("indicators (lambda_1 is always computed)")
     c.add_argument(
@@ -86,9 +87,16 @@ def _fmt(mean, se) -> str:
 
 
 def run(args: argparse.Namespace) -> Output:
+    plot = png_path("--plot", args.plot)
+    unsupported = {
+        "--spectrum": args.spectrum, "--gali": args.gali, "--megno": args.megno,
+        "--transverse": args.transverse, "--tol": args.tol, "--dt": args.dt,
+        "--renorm": args.renorm, "--method": None if args.method == DEFAULT_SCHEME else args.method,
+    }  # fmt: skip
+    if rigid_limit(args, unsupported):
+        return _rigid(args, plot)
     from ..chaos import chaos
 
-    plot = png_path("--plot", args.plot)
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
     settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
     result = chaos(
@@ -159,6 +167,52 @@ def run(args: argparse.Namespace) -> Output:
                 title=rf"{w.shape}, $\alpha$={w.alpha:g}, $\beta$={w.beta:g}, n={w.n}, "
                 rf"k={sink.particles}, m={sink.mass:g}; {settings.runs} run(s)",
             )
+
+        writers[plot] = draw
+    data["period"] = 2 * math.pi
+    return Output(data, "\n".join(lines), writers)
+
+
+def _rigid(args: argparse.Namespace, plot) -> Output:
+    """--n inf: lambda_1 of the rigid billiard (moving container, two nearby trajectories),
+    the runs started as for a finite n; gamma plays no part."""
+    from ..billiard import billiard
+    from ..billiard.convergence import lambda_after
+    from ..sinkstats import ensemble_mean
+    from ..validation import positive
+
+    positive("gamma", args.gamma)
+    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    result = billiard(
+        args.shape, args.alpha, args.beta, particles=args.particles, mass=args.mass,
+        settings=settings, lyapunov=True,
+    )  # fmt: skip
+    lam = lambda_after(result, args.transient)
+    data = result.as_dict()
+    m, se = ensemble_mean(lam[:, None])
+    data |= {
+        "n": "inf", "rigid": True, "lambda1": lam.tolist(),
+        "transient_time": args.transient * 2 * math.pi,
+        "mean_lambda1": {"mean": float(m[0]), "stderr": float(se[0])},
+    }  # fmt: skip
+    t = result.table
+    lines = [
+        f"{args.shape} well alpha={args.alpha:g} beta={args.beta:g} n=inf: the rigid billiard "
+        f"(area {t.area:.6g}, perimeter {t.perimeter:.6g}); k={args.particles}, "
+        f"m={args.mass:g}; {settings.runs} run(s) x {settings.periods} period(s), "
+        f"{int(result.collisions.sum())} impacts; max relative energy error "
+        f"{result.max_relative_energy_error:.3g}",
+        f"exponent per unit time (x T = 2 pi for per period), {result.lyapunov_method}; mean "
+        "+- standard error" + (f"; from t = {args.transient:g} T on" if args.transient else ""),
+        f"lambda_1 = {_fmt(m[0], se[0])}",
+    ]
+    writers = {}
+    if plot is not None:
+
+        def draw(path):
+            from ..plot.billiard import billiard_figure
+
+            billiard_figure(result).savefig(path, dpi=120)
 
         writers[plot] = draw
     data["period"] = 2 * math.pi

@@ -1,0 +1,189 @@
+"""Soft walls against the rigid billiard: the chart and tables of the billiard guide.
+
+    python docs/guide/make_convergence.py [--quick] [--out DIR]
+
+Writes into DIR (default: this folder) ``convergence.png`` (lambda_1(beta) for n = 4, 10,
+20 and the rigid limit over the beta range of the paper's Fig. 3), ``convergence_n.png``
+(lambda_1, mean free time and time-averaged container energy against n for three wells)
+and ``convergence.inc`` (their tables, included by billiard.rst).  Fig. 3's set-up:
+flat well, alpha = 1/2, gamma = 1, one particle of mass 0.2, E0 = 0.5, particles at rest
+near the centre.  The machine's description is printed and written with the tables.
+The full run takes about five minutes on two cores (plus about 15 s of compilation per new
+n the first time); --quick takes seconds and writes nothing unless --out is given.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parents[1] / "benchmarks"))
+
+from machine import describe  # noqa: E402
+
+from sinktheory.billiard.convergence import NS, QUANTITIES, convergence, lyapunov_chart  # noqa: E402
+from sinktheory.chaos.maps import beta_grid, threshold  # noqa: E402
+from sinktheory.floquet import model_problem, scan  # noqa: E402
+from sinktheory.model import RunSettings  # noqa: E402
+from sinktheory.plot.convergence import convergence_figure, lyapunov_figure  # noqa: E402
+
+ALPHA, RANGE, CHART_NS = 0.5, (-0.7, 0.45), (4, 10, 20)
+#: The tail of the stiffnesses fitted on their own (past the peak of the focusing wells).
+TAIL = 50
+#: The wells of the convergence table: dispersing, focusing with a stable bouncing orbit
+#: in the fixed rigid table (|beta| < 1/2 for alpha = 1/2), focusing beyond it.
+WELLS = (0.3, -0.2, -0.6)
+FULL = {"points": 24, "chart": (12, 200), "table": (32, 200), "ns": NS}
+QUICK = {"points": 5, "chart": (2, 6), "table": (2, 4), "ns": (4, 10)}
+
+
+def _pm(mean: float, se: float) -> str:
+    return f"{mean:.3f} +- {se:.3f}"
+
+
+def _verdict(mean: float, se: float, periods: int) -> str:
+    """C (chaotic) when mean - 2 s.e. exceeds 3 ln t / t, as the chaos maps decide."""
+    return "C" if mean - 2 * se > threshold(periods) else "R"
+
+
+def _rate(r: dict) -> str:
+    """p +- its standard error and the n it was fitted over, or why there is none."""
+    used = ", ".join(map(str, r["fit_ns"]))
+    if not np.isfinite(r["p"]):
+        return f"-- (beyond two s.e.: n = {used or 'none'})"
+    se = f" +- {r['p_stderr']:.2f}" if np.isfinite(r["p_stderr"]) else ""
+    return f"{r['p']:.2f}{se} (n = {used})"
+
+
+def _table(title: str, header: list[str], rows: list[list[str]]) -> list[str]:
+    out = [f".. list-table:: {title}", "   :header-rows: 1", ""]
+    for row in [header, *rows]:
+        out += [f"   * - {row[0]}"] + [f"     - {c}" for c in row[1:]]
+    return out + [""]
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="tiny ensembles (seconds)")
+    ap.add_argument("--out", help="directory for the PNGs and the .inc (default: this folder)")
+    args = ap.parse_args()
+    f = QUICK if args.quick else FULL
+    out = Path(args.out) if args.out else (None if args.quick else HERE)
+    machine = describe()
+    print(machine, flush=True)
+
+    start = time.perf_counter()
+    runs, periods = f["chart"]
+    transient = periods // 10
+    betas = beta_grid([RANGE], f["points"])
+    settings = RunSettings(runs=runs, periods=periods)
+    chart = lyapunov_chart(ALPHA, betas, ns=CHART_NS, settings=settings, transient=transient)
+    stable = scan(model_problem(ALPHA, 10), *RANGE, 400).stable_intervals
+    chart_time = time.perf_counter() - start
+    print(f"chart: {chart_time:.0f} s", flush=True)
+    chart_rows = []
+    for j, b in enumerate(betas):
+        cells = [f"{b:+.3f}"]
+        for i in range(len(CHART_NS)):
+            m, se = chart.lambda1[i, j], chart.lambda1_se[i, j]
+            cells.append(f"{_pm(m, se)} {_verdict(m, se, periods)}")
+        m, se = chart.rigid_lambda1[j], chart.rigid_lambda1_se[j]
+        cells.append(f"{_pm(m, se)} {_verdict(m, se, periods)}")
+        chart_rows.append(cells)
+        print("  ".join(cells), flush=True)
+    pooled_rows = []
+    for lo, hi, what in ((0.1, RANGE[1], "dispersing"), (RANGE[0], -0.1, "focusing")):
+        r = chart.pooled_rate(lo, hi)
+        m = chart.lambda1[:, (betas >= lo) & (betas <= hi)].mean(axis=1)
+        pooled_rows.append(
+            [f"{what}, {r['betas'][2]} betas in [{r['betas'][0]:+.2f}, {r['betas'][1]:+.2f}]"]
+            + [f"{v:.3f}" for v in m]
+            + [f"{r['limit']:.3f} +- {r['limit_stderr']:.3f}", _rate(r)]
+        )
+        print(*pooled_rows[-1], flush=True)
+
+    t_runs, t_periods = f["table"]
+    conv_rows, rate_rows, results = [], [], []
+    for beta in WELLS:
+        t0 = time.perf_counter()
+        c = convergence("flat", ALPHA, beta, ns=f["ns"], transient=t_periods // 10,
+                        settings=RunSettings(runs=t_runs, periods=t_periods))  # fmt: skip
+        results.append(c)
+        print(f"beta = {beta:+g}: {time.perf_counter() - t0:.0f} s", flush=True)
+        for q in QUANTITIES:
+            m, se, rm, rse = c.summary(q)
+            row = [f"{beta:+g}", q.replace("_", " ")] + [
+                _pm(a, b) for a, b in zip(m, se, strict=True)
+            ]
+            conv_rows.append(row + [_pm(rm, rse)])
+            fit, tail = _rate(c.rate(q)), _rate(c.rate(q, n_min=TAIL))
+            rate_rows.append([f"{beta:+g}", q.replace("_", " "), fit, tail])
+            print("  ".join(conv_rows[-1]), "| p:", fit, "| tail:", tail, flush=True)
+    total = time.perf_counter() - start
+    print(f"total: {total:.0f} s", flush=True)
+    if out is None:
+        return
+
+    out.mkdir(parents=True, exist_ok=True)
+    fig = lyapunov_figure(chart)
+    ax = fig.axes[0]
+    for a, b in stable:
+        ax.axvspan(a, b, color="tab:green", alpha=0.08, lw=0)
+    ax.text(0.01, 0.97, "green: Floquet-stable y = 0 at n = 10", transform=ax.transAxes,
+            fontsize=7, va="top")  # fmt: skip
+    fig.savefig(out / "convergence.png", dpi=90)
+    conv = convergence_figure(results[0], title=(
+        rf"flat, $\alpha$ = 0.5, $\beta$ = {WELLS[0]:g}, k = 1, m = 0.2: "
+        f"{t_runs} runs x {t_periods} T per point"))  # fmt: skip
+    conv.savefig(out / "convergence_n.png", dpi=80)
+    lines = [
+        f"Measured {time.strftime('%Y-%m-%d')} by ``python docs/guide/make_convergence.py`` "
+        f"({total / 60:.0f} min):",
+        "",
+        f"``{machine}``",
+        "",
+        f"Chart: {runs} runs x {periods} periods per point, lambda_1 after a transient of "
+        f"{transient} T; C: chaotic (mean - 2 s.e. > 3 ln t / t = {threshold(periods):.3f}), "
+        "R: regular.  Floquet-stable y = 0 at n = 10: "
+        + (", ".join(f"({a:.3f}, {b:.3f})" for a, b in stable) or "none")
+        + ".",
+        "",
+    ]
+    lines += _table(
+        "lambda_1 per unit time (mean +- standard error)",
+        ["beta"] + [f"n = {n}" for n in CHART_NS] + ["rigid"],
+        chart_rows,
+    )
+    lines += [
+        f"Convergence in n: {t_runs} runs x {t_periods} periods per point (lambda_1 after "
+        f"{t_periods // 10} T), the same seeded starts at every n.",
+        "",
+    ]
+    lines += _table(
+        "soft walls against the rigid limit (mean +- standard error)",
+        ["beta", "quantity"] + [f"n = {n}" for n in f["ns"]] + ["rigid"],
+        conv_rows,
+    )
+    lines += _table(
+        "observed rate: abs(q(n) - q(oo)) ~ C n^-p, fitted over the n whose difference exceeds "
+        "two standard errors",
+        ["beta", "quantity", "p (fit range)", f"p from n >= {TAIL}"],
+        rate_rows,
+    )
+    lines += _table(
+        "lambda_1 of the chart averaged over betas, and the rate of the averages",
+        ["betas"] + [f"n = {n}" for n in CHART_NS] + ["rigid", "p (fit range)"],
+        pooled_rows,
+    )
+    (out / "convergence.inc").write_text("\n".join(lines))
+    print(f"wrote {out / 'convergence.png'}, {out / 'convergence_n.png'}, "
+          f"{out / 'convergence.inc'}")  # fmt: skip
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,494 @@
+"""Soft walls against their rigid limit: lambda_1, mean free time and container energy as
+functions of the wall stiffness n, with the observed rate of convergence.
+
+For one well (shape, alpha, beta), k particles of total mass m and container energy E0,
+each stiffness n of the soft-wall sink and the rigid billiard n = oo (moving container,
+same table, mass ratio and start: :func:`sinktheory.billiard.billiard`) run the same
+seeded ensemble (positions of :func:`sinktheory.simulate.random_positions`, particles at
+rest, container at X = sqrt(2 E0) at rest).  Three figures per run:
+
+* ``lambda1``: the largest Lyapunov exponent per unit time after ``transient`` periods
+  (soft: the tangent map of :func:`sinktheory.chaos.chaos`; rigid: two nearby
+  trajectories of the billiard engine);
+* ``mean_free_time``: k t / (wall hits of all particles) over the whole run.  Rigid: the
+  engine's impacts (a corner counts once per wall).  Soft: a hit of particle j on wall i
+  is a strict local maximum in time, sampled at every integrator step, of the wall term
+  w_i = gamma/(2n) |r_i|^(2n) (r_i the shape's wall ratios,
+  :func:`sinktheory.symbolic.wall_ratios`; V is their sum) that exceeds
+  :data:`HIT_FRACTION` of the particle's energy in the container frame,
+  mu |v - (Xdot, 0)|^2 / 2 + V.  The threshold drops the shallow maxima of w_i that a
+  particle far from a wall passes through (for n = 100 they need |r_i| > 0.98); it
+  misses the hits whose normal kinetic energy is below that fraction, about
+  HIT_FRACTION / 2 of them for incidence distributed as cos(angle);
+* ``energy_average``: the time average of the container energy E(jT), j = 0..P, and
+  ``energy_curve`` its ensemble mean at each jT.
+
+Each with a standard error over the runs.  :meth:`Convergence.rate` fits
+|q(n) - q(oo)| ~ C n^(-p) over the stiffnesses whose difference from the rigid value
+exceeds two standard errors (:func:`power_rate`).  :func:`lyapunov_chart` gives
+lambda_1(beta) for several n and the rigid limit (the chart of
+:mod:`sinktheory.plot.convergence`).  :func:`measure` is the API of ``--n inf``: one
+stiffness, finite or ``math.inf``.
+
+Examples
+--------
+>>> import math
+>>> from sinktheory.model import RunSettings
+>>> c = convergence("flat", 0.5, 0.3, ns=(4, 10), settings=RunSettings(runs=2, periods=4))
+>>> c.lambda1.shape, c.rigid_lambda1.shape
+((2, 2), (2,))
+>>> sorted(c.rate("mean_free_time"))
+['C', 'fit_ns', 'limit', 'limit_stderr', 'p', 'p_stderr']
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, replace
+from typing import Any, ClassVar
+
+import numpy as np
+import sympy as sp
+
+from .. import symbolic as S
+from .. import validation as val
+from ..errors import ParameterError
+from ..model import RunSettings, Sink, Well
+from ..results import Result
+from ..sinkstats import ensemble_mean
+from .run import PERIOD, BilliardResult, billiard
+
+#: Stiffnesses measured by default.
+NS = (4, 10, 20, 50, 100)
+#: A maximum of a wall term counts as a hit when it exceeds this fraction of the
+#: particle's energy in the container frame (module docstring).
+HIT_FRACTION = 1e-3
+#: Trajectory samples (runs x steps) held at once while counting hits.
+CHUNK_SAMPLES = 2_000_000
+#: The figures compared, in the order of the tables.
+QUANTITIES = ("lambda1", "mean_free_time", "energy_average")
+
+
+@functools.cache
+def _ratio_functions(shape: str):
+    """numpy functions r_i(x, y, alpha, beta) of the shape's wall ratios."""
+    return tuple(sp.lambdify((S.x, S.y, S.alpha, S.beta), r, "numpy") for r in S.wall_ratios(shape))
+
+
+def wall_ratios(well: Well, x, y) -> np.ndarray:
+    """|r_i(x, y)| of the well's wall ratios, stacked on a last axis."""
+    x, y = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float))
+    funcs = _ratio_functions(well.shape)
+    return np.stack(
+        [np.abs(np.broadcast_to(f(x, y, well.alpha, well.beta), x.shape)) for f in funcs], -1
+    )
+
+
+def wall_terms(well: Well, x, y) -> np.ndarray:
+    """The wall terms gamma/(2n) |r_i(x, y)|^(2n) of the well, stacked on a last axis
+    (their sum is the potential V).
+
+    Examples
+    --------
+    >>> w = Well(0.5, 0.3, 4)
+    >>> t = wall_terms(w, np.array([0.1]), np.array([0.5]))
+    >>> bool(np.isclose(t.sum(axis=-1)[0], w.potential(0.1, 0.5)))
+    True
+    """
+    return well.gamma / (2 * well.n) * wall_ratios(well, x, y) ** (2 * well.n)
+
+
+def count_hits(sink: Sink, samples: np.ndarray, before: np.ndarray | None = None) -> np.ndarray:
+    """Wall hits (module docstring) in consecutive states ``samples`` (R, S, 2 + 4k), columns
+    as :class:`sinktheory.simulate.SimulationState`, per run and wall: (R, walls).
+
+    ``before`` (R, 2 + 4k) is the state one step before ``samples[:, 0]`` (None at the
+    start of a run); the last sample is not judged (it lacks its successor), so chunks
+    that share their boundary sample are counted without gaps or repeats.  The maxima of
+    a wall term are those of its |r_i| (a monotone function of it); the energy test is
+    made at the maxima only.
+    """
+    k = sink.particles
+    series = samples if before is None else np.concatenate([before[:, None], samples], axis=1)
+    X = series[..., 0:1]
+    ratios = wall_ratios(sink.well, series[..., 2 : 2 + k] - X, series[..., 2 + k : 2 + 2 * k])
+    mid = ratios[:, 1:-1]
+    run, step, j, wall = np.nonzero((mid > ratios[:, :-2]) & (mid >= ratios[:, 2:]))
+    at = series[run, step + 1]  # (H, 2 + 4k): the states at the maxima
+    h = np.arange(len(run))
+    x = at[h, 2 + j] - at[:, 0]
+    y = at[h, 2 + k + j]
+    vx = at[h, 2 + 2 * k + j] - at[:, 1]
+    vy = at[h, 2 + 3 * k + j]
+    terms = wall_terms(sink.well, x, y)  # (H, walls)
+    energy = 0.5 * sink.mu * (vx**2 + vy**2) + terms.sum(axis=-1)
+    hit = terms[h, wall] > HIT_FRACTION * energy
+    counts = np.zeros((series.shape[0], ratios.shape[-1]), dtype=np.int64)
+    np.add.at(counts, (run[hit], wall[hit]), 1)
+    return counts
+
+
+@dataclass(frozen=True)
+class Measurement(Result):
+    """One stiffness: per-run lambda_1, mean free time, time-averaged container energy,
+    and the container energy E(jT) of each run (module docstring)."""
+
+    DIMS: ClassVar = {
+        "lambda1": ("run",),
+        "mean_free_time": ("run",),
+        "energy_average": ("run",),
+        "container_energy": ("run", "time"),
+    }
+    COORDS: ClassVar = {"times": "time"}
+
+    n: float
+    times: np.ndarray
+    lambda1: np.ndarray | None
+    mean_free_time: np.ndarray
+    energy_average: np.ndarray
+    container_energy: np.ndarray
+    parameters: dict
+
+    def items(self) -> dict[str, Any]:
+        out = super().items()
+        out["n"] = "inf" if self.n == math.inf else self.n
+        for name in QUANTITIES:
+            values = getattr(self, name)
+            if values is not None:
+                m, se = ensemble_mean(values[:, None])
+                out[f"mean_{name}"] = {"mean": float(m[0]), "stderr": float(se[0])}
+        return out
+
+
+def _soft(sink, settings, lyapunov, transient, tol) -> Measurement:
+    from ..chaos import chaos
+    from ..chaos.sink import start_energy
+    from ..simulate import ENERGY_BOUND, simulate
+    from ..stepsize import DEFAULT_TOL, resolve_step
+
+    periods, runs = settings.periods, settings.runs
+    # the step simulate would choose for tol, fixed for every chunk
+    method, dt, steps, _ = resolve_step(sink, start_energy(sink, settings), tol=tol)
+    bound = max(ENERGY_BOUND, 100.0 * (tol or DEFAULT_TOL))
+    chunk = max(1, min(periods, CHUNK_SAMPLES // (steps * runs)))
+    hits = np.zeros(runs, dtype=np.int64)
+    energy, state, before, done = [], None, None, 0
+    while done < periods:
+        part = min(chunk, periods - done)
+        res = simulate(
+            sink, replace(settings, periods=part), method=method, dt=dt, energy_bound=bound,
+            record=("container", "trajectory", "final"), stride=1, initial_state=state,
+            progress=False,
+        )  # fmt: skip
+        hits += count_hits(sink, res.trajectory, before).sum(axis=1)
+        energy.append(res.container_energy[:, (1 if state else 0) :])
+        before, state = res.trajectory[:, -2], res.final_state
+        done += part
+    cont = np.concatenate(energy, axis=1)
+    mft = sink.particles * periods * PERIOD / np.maximum(hits, 1)
+    mft[hits == 0] = np.inf
+    lam = None
+    if lyapunov:
+        lam = chaos(sink, settings, tol=tol, transient=transient, progress=False).lambda1
+    return Measurement(sink.well.n, PERIOD * np.arange(periods + 1), lam, mft,
+                       cont.mean(axis=1), cont, {"dt": dt, "method": method})  # fmt: skip
+
+
+def lambda_after(result: BilliardResult, transient: int) -> np.ndarray:
+    """(R,) lambda_1 of a billiard ensemble from t = transient T on: the growth of its
+    accumulated logs over the rest of the run."""
+    transient = val.positive_int("transient", transient, minimum=0,
+                                 maximum=len(result.times) - 2)  # fmt: skip
+    if result.logs is None:
+        raise ParameterError("result", "a run without lambda_1", "a run with lyapunov=True")
+    span = result.duration - result.times[transient]
+    return (result.logs[:, -1] - result.logs[:, transient]) / span
+
+
+def _rigid(shape, alpha, beta, particles, mass, settings, lyapunov, transient) -> Measurement:
+    r = billiard(shape, alpha, beta, particles=particles, mass=mass, settings=settings,
+                 lyapunov=lyapunov)  # fmt: skip
+    lam = lambda_after(r, transient) if lyapunov else None
+    cont = r.container_energy
+    return Measurement(math.inf, r.times, lam, r.mean_free_time, cont.mean(axis=1), cont,
+                       {"method": r.lyapunov_method})  # fmt: skip
+
+
+def measure(
+    shape: str,
+    alpha: float,
+    beta: float,
+    n,
+    *,
+    particles: int = 1,
+    mass: float = 0.2,
+    gamma: float = 1.0,
+    settings: RunSettings | None = None,
+    lyapunov: bool = True,
+    transient: int = 0,
+    tol: float | None = None,
+) -> Measurement:
+    """lambda_1, mean free time and container energy of one stiffness n (an integer, or
+    ``math.inf`` for the rigid billiard; gamma plays no part there).
+
+    Parameters
+    ----------
+    shape, alpha, beta, n, gamma : the well (:class:`sinktheory.model.Well`)
+    particles, mass : k particles of total mass m
+    settings : energy E0, runs, periods, seed, box (:class:`RunSettings`)
+    lyapunov : also lambda_1 (the soft wall integrates a second time, with tangents)
+    transient : periods left out of lambda_1, fewer than ``periods``
+    tol : relative energy error the soft wall's step is chosen for (default 1e-8)
+
+    Examples
+    --------
+    >>> m = measure("flat", 0.5, 0.3, math.inf, settings=RunSettings(runs=2, periods=3))
+    >>> m.n, m.container_energy.shape
+    (inf, (2, 4))
+    """
+    settings = settings or RunSettings()
+    n = val.stiffness("n", n)
+    transient = val.positive_int("transient", transient, minimum=0,
+                                 maximum=max(0, settings.periods - 1))  # fmt: skip
+    lyapunov = val.flag("lyapunov", lyapunov)
+    if n == math.inf:
+        val.positive("gamma", gamma)
+        return _rigid(shape, alpha, beta, particles, mass, settings, lyapunov, transient)
+    sink = Sink(Well(alpha, beta, n, gamma=gamma, shape=shape), particles=particles, mass=mass)
+    return _soft(sink, settings, lyapunov, transient, tol)
+
+
+def power_rate(ns, means, ses, limit: float, limit_se: float, n_min: float = 1) -> dict[str, Any]:
+    """Fit |q(n) - q(oo)| ~ C n^(-p) by weighted least squares in log-log.
+
+    Only stiffnesses n >= ``n_min`` (the tail, where the approach is monotone) whose
+    difference d exceeds two standard errors
+    s = sqrt(se(n)^2 + se(oo)^2) enter (the others are within noise of the limit); each
+    log|d| has the weight (d / s)^2.  Returns p, its standard error (from the weights; nan
+    with two points, which fit exactly), C, the stiffnesses used and the limit.
+
+    Examples
+    --------
+    >>> r = power_rate([10, 20, 40], [1.1, 1.05, 1.025], [1e-3] * 3, 1.0, 0.0)
+    >>> round(r["p"], 9), r["fit_ns"]
+    (1.0, [10, 20, 40])
+    >>> math.isnan(power_rate([10, 20], [1.0, 1.0], [0.1, 0.1], 1.0, 0.1)["p"])
+    True
+    """
+    ns = np.asarray(ns, float)
+    d = np.abs(np.asarray(means, float) - limit)
+    s = np.sqrt(np.asarray(ses, float) ** 2 + limit_se**2)
+    use = np.isfinite(d) & (d > 2 * s) & (ns >= n_min)
+    out: dict[str, Any] = {"limit": limit, "limit_stderr": limit_se,
+                           "fit_ns": [int(n) for n in ns[use]]}  # fmt: skip
+    if use.sum() < 2:
+        return out | {"p": math.nan, "p_stderr": math.nan, "C": math.nan}
+    A = np.column_stack([np.ones(use.sum()), -np.log(ns[use])])
+    w = np.where(s[use] > 0, (d[use] / np.where(s[use] > 0, s[use], 1)) ** 2, 1e12)
+    cov = np.linalg.inv(A.T @ (A * w[:, None]))
+    coef = cov @ (A.T @ (w * np.log(d[use])))
+    p_se = math.sqrt(cov[1, 1]) if use.sum() > 2 else math.nan
+    return out | {"p": float(coef[1]), "p_stderr": p_se, "C": float(math.exp(coef[0]))}
+
+
+@dataclass(frozen=True)
+class Convergence(Result):
+    """The soft-wall figures for each n beside the rigid ones (module docstring).
+
+    Attributes
+    ----------
+    ns : (N,) soft stiffnesses
+    times : (P + 1,) t = j T
+    lambda1, mean_free_time, energy_average : (N, R) per run
+    energy_curve : (N, P + 1) ensemble mean of E(jT)
+    rigid_lambda1, rigid_mean_free_time, rigid_energy_average : (R,)
+    rigid_energy_curve : (P + 1,)
+    parameters : the well, the ensemble, transient, tol
+    """
+
+    DIMS: ClassVar = {
+        "lambda1": ("n", "run"),
+        "mean_free_time": ("n", "run"),
+        "energy_average": ("n", "run"),
+        "energy_curve": ("n", "time"),
+        "rigid_lambda1": ("run",),
+        "rigid_mean_free_time": ("run",),
+        "rigid_energy_average": ("run",),
+        "rigid_energy_curve": ("time",),
+    }
+    COORDS: ClassVar = {"ns": "n", "times": "time"}
+
+    ns: np.ndarray
+    times: np.ndarray
+    lambda1: np.ndarray
+    mean_free_time: np.ndarray
+    energy_average: np.ndarray
+    energy_curve: np.ndarray
+    rigid_lambda1: np.ndarray
+    rigid_mean_free_time: np.ndarray
+    rigid_energy_average: np.ndarray
+    rigid_energy_curve: np.ndarray
+    parameters: dict
+
+    def summary(self, quantity: str) -> tuple[np.ndarray, np.ndarray, float, float]:
+        """(means (N,), standard errors (N,), rigid mean, rigid standard error)."""
+        val.choice("quantity", quantity, QUANTITIES)
+        m, se = ensemble_mean(getattr(self, quantity).T)
+        rm, rse = ensemble_mean(getattr(self, f"rigid_{quantity}")[:, None])
+        return m, se, float(rm[0]), float(rse[0])
+
+    def rate(self, quantity: str, n_min: float = 1) -> dict[str, Any]:
+        """:func:`power_rate` of one of :data:`QUANTITIES` over n >= ``n_min``."""
+        return power_rate(self.ns, *self.summary(quantity), n_min=n_min)
+
+    def items(self) -> dict[str, Any]:
+        out = super().items()
+        for q in QUANTITIES:
+            m, se, rm, rse = self.summary(q)
+            out[f"mean_{q}"] = {"mean": m, "stderr": se, "rigid": rm, "rigid_stderr": rse}
+            out[f"rate_{q}"] = self.rate(q)
+        return out
+
+
+def convergence(
+    shape: str,
+    alpha: float,
+    beta: float,
+    *,
+    ns=NS,
+    particles: int = 1,
+    mass: float = 0.2,
+    gamma: float = 1.0,
+    settings: RunSettings | None = None,
+    transient: int = 0,
+    tol: float | None = None,
+) -> Convergence:
+    """:func:`measure` at every soft n of ``ns`` and at n = oo, gathered (module docstring).
+
+    Each finite n compiles its engine once (about 15 s the first time on a new machine).
+    """
+    settings = settings or RunSettings()
+    grid = val.real_array("ns", ns, "a sequence of integers >= 1")
+    if grid.ndim != 1 or grid.size == 0:
+        raise ParameterError("ns", ns, "a non-empty sequence of integers >= 1")
+    soft = sorted({val.stiffness("ns", n) for n in grid.tolist()} - {math.inf})
+    if not soft:
+        raise ParameterError("ns", ns, "at least one finite integer >= 1 (oo is always run)")
+    kw = dict(particles=particles, mass=mass, gamma=gamma, settings=settings, transient=transient)
+    rigid = measure(shape, alpha, beta, math.inf, **kw)
+    runs = [measure(shape, alpha, beta, n, tol=tol, **kw) for n in soft]
+    return Convergence(
+        np.array(soft),
+        rigid.times,
+        np.stack([m.lambda1 for m in runs]),
+        np.stack([m.mean_free_time for m in runs]),
+        np.stack([m.energy_average for m in runs]),
+        np.stack([m.container_energy.mean(axis=0) for m in runs]),
+        rigid.lambda1,
+        rigid.mean_free_time,
+        rigid.energy_average,
+        rigid.container_energy.mean(axis=0),
+        {"shape": shape, "alpha": alpha, "beta": beta, "gamma": gamma, "particles": particles,
+         "mass": mass, "energy": settings.energy, "runs": settings.runs,
+         "periods": settings.periods, "seed": settings.seed, "transient": transient,
+         "tol": tol, "hit_fraction": HIT_FRACTION},
+    )  # fmt: skip
+
+
+@dataclass(frozen=True)
+class LyapunovChart(Result):
+    """lambda_1(beta) for soft stiffnesses ``ns`` and the rigid limit: means and standard
+    errors over the runs (rows of ``lambda1`` follow ``ns``)."""
+
+    DIMS: ClassVar = {
+        "lambda1": ("n", "beta"),
+        "lambda1_se": ("n", "beta"),
+        "rigid_lambda1": ("beta",),
+        "rigid_lambda1_se": ("beta",),
+    }
+    COORDS: ClassVar = {"ns": "n", "betas": "beta"}
+
+    ns: np.ndarray
+    betas: np.ndarray
+    lambda1: np.ndarray
+    lambda1_se: np.ndarray
+    rigid_lambda1: np.ndarray
+    rigid_lambda1_se: np.ndarray
+    parameters: dict
+
+    def pooled_rate(self, lo: float = -math.inf, hi: float = math.inf) -> dict[str, Any]:
+        """:func:`power_rate` of lambda_1 averaged over the betas in [lo, hi]: the mean over
+        those betas for each n against the rigid mean (standard errors combined as for a
+        mean of independent estimates).  Pooling many betas resolves differences that
+        one beta's ensemble cannot, where they share a sign."""
+        pick = (self.betas >= lo) & (self.betas <= hi)
+        if not pick.any():
+            raise ParameterError("lo, hi", (lo, hi), "an interval holding at least one beta")
+        count = int(pick.sum())
+
+        def pooled(se):
+            return np.sqrt(np.sum(se[..., pick] ** 2, axis=-1)) / count
+
+        span = [float(self.betas[pick].min()), float(self.betas[pick].max()), count]
+        return power_rate(
+            self.ns, self.lambda1[:, pick].mean(axis=1), pooled(self.lambda1_se),
+            float(self.rigid_lambda1[pick].mean()), float(pooled(self.rigid_lambda1_se)),
+        ) | {"betas": span}  # fmt: skip
+
+
+def lyapunov_chart(
+    alpha: float,
+    betas,
+    *,
+    ns=(4, 10, 20),
+    shape: str = "flat",
+    particles: int = 1,
+    mass: float = 0.2,
+    settings: RunSettings | None = None,
+    transient: int = 0,
+) -> LyapunovChart:
+    """lambda_1 over ``betas`` for each soft n (all betas of one n as one ensemble,
+    :func:`sinktheory.chaos.chaos_batch`, at the smallest of their default steps) and for
+    the rigid billiard; every beta starts the same seeded runs.
+
+    Examples
+    --------
+    >>> c = lyapunov_chart(0.5, [-0.3, 0.3], ns=(4,), settings=RunSettings(runs=2, periods=3))
+    >>> c.lambda1.shape, c.rigid_lambda1.shape
+    ((1, 2), (2,))
+    """
+    from ..chaos import chaos_batch
+    from ..chaos.sink import start_energy
+    from ..stepsize import resolve_step
+
+    settings = settings or RunSettings()
+    grid = val.real_array("betas", betas, "a sequence of betas")
+    if grid.ndim != 1 or grid.size == 0:
+        raise ParameterError("betas", betas, "a non-empty sequence of betas")
+    soft = [val.stiffness("ns", n) for n in np.atleast_1d(ns).tolist()]
+    if math.inf in soft:
+        raise ParameterError("ns", ns, "finite integers >= 1 (the rigid row is always drawn)")
+    transient = val.positive_int("transient", transient, minimum=0,
+                                 maximum=max(0, settings.periods - 1))  # fmt: skip
+    lam = np.zeros((len(soft), grid.size))
+    lam_se = np.zeros_like(lam)
+    for i, n in enumerate(soft):
+        sinks = [Sink(Well(alpha, b, n, shape=shape), particles, mass) for b in grid]
+        dt = min(resolve_step(s, start_energy(s, settings))[1] for s in sinks)
+        results = chaos_batch(sinks, [settings] * len(sinks), dt=dt, progress=False)
+        for j, res in enumerate(results):
+            m, se = replace(res, transient=transient).mean("lambda1")
+            lam[i, j], lam_se[i, j] = float(m), float(se)
+    rigid = [
+        measure(shape, alpha, b, math.inf, particles=particles, mass=mass, settings=settings,
+                transient=transient).as_dict()["mean_lambda1"]
+        for b in grid
+    ]  # fmt: skip
+    return LyapunovChart(
+        np.array(soft), grid, lam, lam_se,
+        np.array([r["mean"] for r in rigid]), np.array([r["stderr"] for r in rigid]),
+        {"shape": shape, "alpha": alpha, "particles": particles, "mass": mass,
+         "energy": settings.energy, "runs": settings.runs, "periods": settings.periods,
+         "seed": settings.seed, "transient": transient},
+    )  # fmt: skip
