@@ -149,3 +149,10 @@ def test_cli_wavelet_figure_and_notes(capsys, tmp_path):
     notes = json.loads(out)["wavelet_notes"]
     assert any(n.startswith("vibro-impact: ") and "no smooth normal modes" in n for n in notes)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_top_level_help_lists_compare(tmp_path):
+    """The command's summary (with its '%') goes through argparse's help formatting."""
+    status, heavy, proc = probe(["--help"], tmp_path)
+    assert status == 0 and heavy == [], proc.stderr
+    assert "90 % times" in proc.stdout
