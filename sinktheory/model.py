@@ -53,7 +53,8 @@ MIN_MU = 1e-12
 MAX_RUNS = 10**7
 MAX_PERIODS = 10**9
 #: An optimistic cost of one particle step (measured 5e-7 s on 2 cores in 2026-11), used
-#: to refuse ensembles that could not finish within MAX_SECONDS (30 days).
+#: to refuse work that could not finish within MAX_SECONDS (30 days: a sweep's point) or
+#: sinktheory.worklimit.MAX_INTERACTIVE_SECONDS (a day: a computation that cannot resume).
 SECONDS_PER_PARTICLE_STEP = 1e-7
 MAX_SECONDS = 30 * 86400.0
 #: Largest wall stiffness accepted.  Kernels stay finite far beyond it; the limit keeps
@@ -488,24 +489,6 @@ class RunSettings:
             f"{self.runs} run(s) x {self.periods} period(s) of {sink.particles} particle(s)",
             f"<= {largest} with {'runs' if name == 'periods' else 'periods'} = "
             f"{getattr(self, 'runs' if name == 'periods' else 'periods')}",
-        )
-
-
-def check_work(settings: RunSettings, sink: Sink, steps_per_period: int) -> None:
-    """Raise ParameterError naming ``periods`` (or ``runs``) when the ensemble would take
-    longer than :data:`MAX_SECONDS` at an optimistic :data:`SECONDS_PER_PARTICLE_STEP`."""
-    steps = settings.runs * settings.periods * steps_per_period * sink.particles
-    seconds = steps * SECONDS_PER_PARTICLE_STEP
-    if seconds > MAX_SECONDS:
-        name = "periods" if settings.periods > settings.runs else "runs"
-        raise ParameterError(
-            name,
-            getattr(settings, name),
-            f"small enough that runs x periods x steps per period x particles <= "
-            f"{MAX_SECONDS / SECONDS_PER_PARTICLE_STEP:.3g}",
-            why=f"{settings.runs} run(s) x {settings.periods} period(s) x {steps_per_period} "
-            f"step(s) x {sink.particles} particle(s) would take at least {seconds:.3g} s "
-            f"(about {seconds / 86400:.3g} days)",
         )
 
 

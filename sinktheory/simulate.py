@@ -41,7 +41,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -52,7 +52,8 @@ from .layout import StateLayout, pack_params
 from .model import RunSettings, Sink
 from .results import Result
 from .sinkstats import ensemble_mean
-from .stepsize import DEFAULT_TOL, PERIOD, check_tol, choose, resolve_step
+from .stepsize import DEFAULT_TOL, PERIOD, check_tol, choose
+from .worklimit import check_work, step_of
 
 #: What :func:`simulate` can record.
 RECORDS = ("container", "particles", "trajectory", "final")
@@ -439,7 +440,12 @@ def simulate(
     runs, periods = values.shape[0], settings.periods
     if dt is None and tol is None and initial_state is not None:
         dt, method = initial_state.dt, method or initial_state.method
-    method, dt, steps, tol = resolve_step(sink, float(np.max(h0)), method=method, dt=dt, tol=tol)
+    # a well too stiff for any step names its parameter; work beyond the limit is refused
+    drawn = settings if initial is None and initial_state is None else None
+    method, dt, steps, tol = step_of(
+        sink, float(np.max(h0)), method=method, dt=dt, tol=tol, settings=drawn
+    )
+    check_work(replace(settings, runs=runs), sink, steps)
     scheme = get_scheme(method)
     if "trajectory" in record:
         stride = max(1, steps // 32) if stride is None else v.positive_int("stride", stride)

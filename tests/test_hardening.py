@@ -369,7 +369,7 @@ def test_bools_are_not_numbers():
 
 def test_model_limits_name_parameter_value_and_range():
     from sinktheory import RunSettings, Sink, Well
-    from sinktheory.model import check_work
+    from sinktheory.worklimit import check_work
 
     with pytest.raises(ParameterError, match=r"beta = 0.499999999999 .* <= 0.4999999"):
         Well(0.5, 0.499999999999, 4)

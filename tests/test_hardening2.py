@@ -44,6 +44,14 @@ CASES = [
     ([*NNM, "--points", "10000", "--ds", "1e-300"], "ds", "[1e-06, 10]"),
     ([*DESIGN, "--bootstrap", "1000000000"], "bootstrap", "[2, 100000]"),
     (["chaos", *WELL, "--particles", "1000", "--spectrum", "--quiet"], "spectrum", "4002"),
+    # 15.6 days estimated: under the sweeps' 30 days, over a one-shot computation's day
+    (["chaos", *WELL, "--particles", "200", "--runs", "25", "--spectrum"], "spectrum", "(1 day)"),
+    (
+        ["simulate", *WELL, "--runs", "10000", "--periods", "100000", "--particles", "20"],
+        "periods",
+        "resumable `sinktheory sweep`",
+    ),  # fmt: skip
+    (["simulate", *WELL, "--gamma", "1e308"], "gamma", "with gamma = 1 it can"),
     # item 4: values accepted that should not be
     ([*SWEEP_CHAOS, "--param", "megno=2", *OUT], "megno", "[0, 1]"),
     ([*SWEEP_CHAOS, "--param", "megno=-1", *OUT], "megno", "[0, 1]"),
@@ -66,7 +74,7 @@ def test_spectrum_cost_grows_with_the_square_of_the_dimension():
     from sinktheory.chaos.sink import check_tangent_work, tangent_runs
     from sinktheory.errors import ParameterError
     from sinktheory.model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
-    from sinktheory.worklimit import VECTOR_STEP
+    from sinktheory.worklimit import VECTOR_STEP, resumable
 
     assert tangent_runs(201, "full", 0, False) == [402]
     assert tangent_runs(201, "half", 4, True) == [201, 4, 1]
@@ -75,12 +83,40 @@ def test_spectrum_cost_grows_with_the_square_of_the_dimension():
     per_step = 100 * (1 + VECTOR_STEP * 402)
     limit = MAX_SECONDS / SECONDS_PER_PARTICLE_STEP
     periods = int(limit / (per_step * 1000 * 10)) + 1  # just over the limit at 1000 steps
-    check_tangent_work(sink, RunSettings(runs=10, periods=periods - 2), 1000, "full", 0, False)
-    with pytest.raises(ParameterError) as info:
-        check_tangent_work(sink, RunSettings(runs=10, periods=periods), 1000, "full", 0, False)
-    assert info.value.name == "spectrum"  # lambda_1 alone would fit
-    with pytest.raises(ParameterError) as info:
-        check_tangent_work(sink, RunSettings(runs=10, periods=periods * 1000), 1000, None, 0, 0)
+    with resumable():  # the 30-day limit
+        check_tangent_work(sink, RunSettings(runs=10, periods=periods - 2), 1000, "full", 0, 0)
+        with pytest.raises(ParameterError) as info:
+            check_tangent_work(sink, RunSettings(runs=10, periods=periods), 1000, "full", 0, 0)
+        assert info.value.name == "spectrum"  # lambda_1 alone would fit
+        with pytest.raises(ParameterError) as info:
+            check_tangent_work(sink, RunSettings(runs=10, periods=periods * 1000), 1000, None, 0, 0)
+        assert info.value.name == "periods"
+    with pytest.raises(ParameterError, match="cannot resume"):  # one shot: a day
+        check_tangent_work(sink, RunSettings(runs=10, periods=periods - 2), 1000, "full", 0, 0)
+
+
+def test_one_shot_work_limit_is_a_day_and_a_sweep_point_30_days():
+    """The same ensemble, estimated by hand at 11.6 days (100 runs x 1e5 periods x 1000
+    steps x 1000 particles at 1e-7 s): simulate() refuses it naming periods and pointing to
+    a sweep; a sweep point accepts it, and refuses ten times more (116 days)."""
+    import math
+
+    from sinktheory import RunSettings, Sink, Well
+    from sinktheory.errors import ParameterError
+    from sinktheory.model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
+    from sinktheory.simulate import simulate
+    from sinktheory.sweep.plan import Sweep
+    from sinktheory.worklimit import MAX_INTERACTIVE_SECONDS
+
+    dt = 2 * math.pi / 1000
+    seconds = 100 * 10**5 * 1000 * 1000 * SECONDS_PER_PARTICLE_STEP
+    assert MAX_INTERACTIVE_SECONDS == 86400 < seconds < MAX_SECONDS
+    with pytest.raises(ParameterError, match=r"cannot resume .*11.6 days.*sinktheory sweep"):
+        simulate(Sink(Well(0.5, 0.3, 4), 1000), RunSettings(runs=100, periods=10**5), dt=dt)
+    point = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 100, "periods": 10**5, "dt": dt}
+    Sweep.make("ensemble", {**point, "particles": 1000})
+    with pytest.raises(ParameterError, match=r"per point of a sweep .*116 days") as info:
+        Sweep.make("ensemble", {**point, "particles": 1000, "dt": dt / 10})
     assert info.value.name == "periods"
 
 

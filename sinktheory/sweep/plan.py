@@ -2,7 +2,8 @@
 
 :meth:`Sweep.make` validates everything before any work starts: parameter names and
 types, and every point of the grid with the model's own validators, so a bad value fails
-at once with a :class:`~sinktheory.errors.ParameterError` naming the parameter.
+at once with a :class:`~sinktheory.errors.ParameterError` naming the parameter.  A point's
+work is checked against the resumable limit (:func:`sinktheory.worklimit.resumable`).
 
 Examples
 --------
@@ -28,6 +29,7 @@ import xarray as xr
 from .. import __version__
 from .. import validation as v
 from ..errors import ParameterError
+from ..worklimit import resumable
 from .grid import Grid, fingerprint, point_seed
 from .kinds import Kind, get_kind
 
@@ -55,8 +57,9 @@ class Sweep:
             )
         seed = v.positive_int("seed", seed, minimum=0)
         grid = Grid.from_params(k.complete(params))
-        for index in range(grid.size):
-            k.check(grid.point(index))
+        with resumable():  # points are stored and resumed one by one: the 30-day limit
+            for index in range(grid.size):
+                k.check(grid.point(index))
         _check_memory(k, grid)
         spec, digest = fingerprint(k.name, grid, seed)
         return cls(k, grid, seed, spec, digest)

@@ -51,6 +51,7 @@ import xarray as xr
 from .. import validation as v
 from ..errors import NumericalError, ParameterError
 from ..progress import ProgressBar
+from ..worklimit import resumable
 from .kinds import KINDS, Kind
 from .plan import Sweep
 from .store import MemoryStore, SweepStore, _checked_path
@@ -335,7 +336,14 @@ def _run_dask(client, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
 
 def _checked(kind: str, task: list) -> list[dict[str, Any]]:
     """Compute the points of a task (together, if the kind can: see ``Kind.compute_many``);
-    a numerical failure names the point (the points are then computed one by one)."""
+    a numerical failure names the point (the points are then computed one by one).  The
+    work checks the point functions repeat are those of a resumable sweep, as in
+    :meth:`~sinktheory.sweep.plan.Sweep.make`."""
+    with resumable():
+        return _compute(kind, task)
+
+
+def _compute(kind: str, task: list) -> list[dict[str, Any]]:
     if KINDS[kind].compute_many is not None and len(task) > 1:
         try:
             return KINDS[kind].compute_many([(params, seed) for _, params, seed in task])
