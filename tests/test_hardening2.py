@@ -167,12 +167,16 @@ SLOW_DESIGN = ["design", "--beta", "-0.3:0.3:20", "--n", "4", "--no-estimate"]
         (SLOW_SWEEP, "SIGINT", True, 130),  # Ctrl-C: the whole process group
         (SLOW_SWEEP, "SIGTERM", False, 143),
         (SLOW_DESIGN, "SIGINT", False, 130),
+        (SLOW_SWEEP, "SIGTERM", None, 143),  # None: as soon as the store exists
     ],
-    ids=["sweep-int-main", "sweep-int-group", "sweep-term-main", "design-int-main"],
+    ids=["sweep-int-main", "sweep-int-group", "sweep-term-main", "design-int-main", "starting"],
 )
 def test_interrupt_ends_workers_and_exits_promptly(argv, signame, group, status, tmp_path):
-    """Two workers busy on long points; the signal ends driver and workers within a few
-    seconds, with one line naming --resume, and the store stays readable."""
+    """Two workers busy on long points (or, with group None, the pool still starting: a
+    worker forked but not yet recorded by the pool once escaped and printed a traceback);
+    the signal ends driver and workers within a few seconds, with exactly one line on
+    stderr naming --resume (a resource-tracker warning of the workers' semaphores once
+    followed it), and the store stays readable."""
     import os
     import signal
     import subprocess
@@ -191,7 +195,7 @@ def test_interrupt_ends_workers_and_exits_promptly(argv, signame, group, status,
         deadline = time.monotonic() + 120
         while time.monotonic() < deadline:  # two workers have computed for 1 s or more
             busy = [p for p in _descendants(proc.pid) if _cpu_ticks(p) >= 100]
-            if len(busy) >= 2:
+            if len(busy) >= 2 or (group is None and (tmp_path / "s.zarr").exists()):
                 break
             assert proc.poll() is None, proc.communicate()
             time.sleep(0.2)
@@ -211,7 +215,7 @@ def test_interrupt_ends_workers_and_exits_promptly(argv, signame, group, status,
     # 10 s: the driver terminates its workers at once (2 s grace before SIGKILL); a
     # driver waiting for the tasks in flight would take minutes
     assert took < 10, took
-    assert err.splitlines()[0].endswith(": interrupted; --resume continues"), err
+    assert err.splitlines() == [f"sinktheory {argv[0]}: interrupted; --resume continues"], err
     assert "Traceback" not in err and out == ""
     for _ in range(50):  # the resource tracker ends right after the driver
         if not any(_alive(p) for p in below):

@@ -187,14 +187,15 @@ def execute(
         tasks = _tasks(sweep, target.done())
         pending = sum(len(t) for t in tasks)
         bar = ProgressBar(pending, enabled=progress, label="sweep ", unit="point")
-        try:
-            for task, outputs in engine.run(sweep.kind, tasks):
-                indices = np.array([index for index, _, _ in task])
-                target.write(
-                    indices,
-                    {name: np.stack([o[name] for o in outputs]) for name in sweep.kind.results},
-                )
-                bar.update(len(task))
+        try:  # closing: a pool's run holds the signals until it ends (_HeldSignals)
+            with contextlib.closing(engine.run(sweep.kind, tasks)) as results:
+                for task, outputs in results:
+                    indices = np.array([index for index, _, _ in task])
+                    values = {
+                        name: np.stack([o[name] for o in outputs]) for name in sweep.kind.results
+                    }
+                    target.write(indices, values)
+                    bar.update(len(task))
         finally:
             bar.close()
             target.close()
@@ -314,13 +315,59 @@ def _run_here(kind: str, tasks: list) -> Iterator[tuple[list, list]]:
 
 
 def _run_pool(pool: ProcessPoolExecutor, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
-    with _main_file_hidden():  # the workers are started by these submits
-        futures = {pool.submit(_checked, kind, task): task for task in tasks}
-    remaining = set(futures)
-    while remaining:
-        finished, remaining = wait(remaining, return_when=FIRST_COMPLETED)
-        for future in finished:
-            yield futures[future], future.result()
+    with _HeldSignals() as signals:
+        with _main_file_hidden():  # the workers are started by these submits
+            futures = {pool.submit(_checked, kind, task): task for task in tasks}
+        remaining = set(futures)
+        while remaining:
+            finished, remaining = wait(remaining, timeout=0.2, return_when=FIRST_COMPLETED)
+            signals.release()  # an interrupt raises here, between the pool's calls
+            for future in finished:
+                yield futures[future], future.result()
+
+
+class _HeldSignals:
+    """SIGINT and SIGTERM recorded, not acted on, while a pool is driven, and delivered to
+    the handlers in place before (Ctrl-C's KeyboardInterrupt, the command's SIGTERM
+    handler) by :meth:`release`, at a point of the driver's choosing.
+
+    An exception raised by a signal inside the pool's own code could leave it half done:
+    a worker forked but not yet recorded (it escaped :func:`_end_workers` and printed a
+    traceback once the pool's semaphores were gone), or a lock of the pool or of a future
+    left held, on which ending the pool then waited for ever.  Outside the main thread
+    (where signal handlers cannot be set) nothing is held.
+    """
+
+    SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+    def __enter__(self) -> _HeldSignals:
+        self.held: list[int] = []
+        self.previous = {}
+        if threading.current_thread() is threading.main_thread():
+            self.previous = {s: signal.signal(s, self._hold) for s in self.SIGNALS}
+        return self
+
+    def _hold(self, signum, frame) -> None:
+        self.held.append(signum)
+
+    def release(self) -> None:
+        """If a signal was held: restore the handlers and deliver it (what its handler
+        raises is raised here)."""
+        if not self.held:
+            return
+        self._restore()
+        for signum in dict.fromkeys(self.held):
+            signal.raise_signal(signum)  # the handler runs before this returns
+
+    def _restore(self) -> None:
+        for signum, handler in self.previous.items():
+            signal.signal(signum, signal.SIG_DFL if handler is None else handler)
+        self.previous = {}
+
+    def __exit__(self, kind, error, traceback) -> None:
+        if kind is None:
+            self.release()
+        self._restore()
 
 
 def _run_dask(client, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
@@ -393,10 +440,14 @@ def _start_worker(driver: int) -> None:
     the whole process group, and the driver alone decides, ending its workers
     (:func:`_end_workers`); a worker interrupted on its own would only print a traceback.
     A watchdog thread ends the worker when the driver is gone (killed with kill -9, a
-    pool's workers would otherwise wait for work forever).
+    pool's workers would otherwise wait for work forever).  The worker starts no processes,
+    so its default start method is set to fork: the locks numba's thread pool and tqdm
+    create here are then anonymous, not named semaphores registered with the resource
+    tracker, which reported them as leaked on stderr when an interrupt ended the worker.
     """
     import numba
 
+    multiprocessing.set_start_method("fork", force=True)
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     numba.set_num_threads(1)
     threading.Thread(target=_watch, args=(driver,), daemon=True).start()
