@@ -42,6 +42,10 @@ SHAPES = _shapes.NAMES
 #: Largest 2 n E / gamma accepted: the wall ratios' powers s^(2n) = 2 n V / gamma of a
 #: particle of energy E stay far inside float64 range (1.8e308).
 MAX_SCALED_ENERGY = 1e300
+#: Largest reach c = (2 n E / gamma)^(1/(2n)) accepted, in units of the height |y| = 1 where
+#: the wall term y^(2n) reaches 1: the basin's bounds are searched on [0, c] to 1e-12,
+#: which float spacing cannot resolve much beyond it (Well.reach took minutes, c = 1e4).
+MAX_REACH = 1e3
 #: Smallest relative wall distance (alpha - beta) / max(alpha, |beta|): below it
 #: D(s) = alpha + beta (s^2 - 1) loses more than half its digits to cancellation.
 MIN_RELATIVE_WALL_DISTANCE = 1e-8
@@ -187,13 +191,22 @@ class Well:
         (0.5..., 1.189...)
         """
         e = v.positive("energy", energy)
-        if 2 * self.n * e / self.gamma > MAX_SCALED_ENERGY:
-            limit = MAX_SCALED_ENERGY * self.gamma / (2 * self.n)
+        # 2 n E / gamma = c^(2n): bounded by float range and by the reach c (log10 scale)
+        exponents = (math.log10(MAX_SCALED_ENERGY), 2 * self.n * math.log10(MAX_REACH))
+        if math.log10(2 * self.n) + math.log10(e) - math.log10(self.gamma) > min(exponents):
+            top = 10 ** min(exponents)
+            why = (
+                "above it the wall terms (x/D)^(2n) of the potential overflow float range"
+                if exponents[0] <= exponents[1]
+                else f"above it the reach c = (2 n E / gamma)^(1/(2n)) exceeds {MAX_REACH:g}, "
+                "far beyond the wall y^(2n) = 1, where the reach is not resolved"
+            )
             raise ParameterError(
                 "energy",
                 energy,
-                f"a finite number in (0, {limit:.6g}] (2 n E / gamma <= {MAX_SCALED_ENERGY:g})",
-                why="above it the wall terms (x/D)^(2n) of the potential overflow float range",
+                f"a finite number in (0, {top * self.gamma / (2 * self.n):.6g}] "
+                f"(2 n E / gamma <= {top:.6g})",
+                why=why,
             )
         k = self.kernels
         args = (self.alpha, self.beta, self.gamma, self.n)

@@ -285,11 +285,12 @@ def test_light_commands_import_no_plotting_or_arrays(args):
 
 # --------------------------------------------------------------------------- sizes
 SIZES = [
-    ([*SIM, "--energy", "1e308"], "energy", "1.25e+299"),
+    ([*SIM, "--energy", "1e308"], "energy", "(0, 1.25e+23]"),
     ([*SIM, "--mass", "1e-320"], "mass", ">= 1e-12"),
     ([*SIM, "--mass", "5e-12", "--particles", "10"], "mass", "1e-11"),
     (["sink", *WELL, "--mass", "1e-320"], "mass", ">= 1e-12"),
-    (["well", *WELL, "--energy", "1e308"], "energy", "overflow"),
+    (["well", *WELL, "--energy", "1e308"], "energy", "reach c"),
+    (["well", *WELL[:-1], "1000", "--energy", "1e308"], "energy", "overflow"),
     ([*SIM[:-5], "--periods", "2", "--initial", "1e308", "0", "--quiet"], "--initial", "walls"),
     ([*SIM[:-5], "--periods", "2", "--initial", "0.21", "0", "--quiet"], "--initial", "walls"),
     ([*SIM[:-5], "--periods", "2", "--initial", "0", "nan", "--quiet"], "--initial", "walls"),
@@ -389,6 +390,28 @@ def test_model_limits_name_parameter_value_and_range():
     with pytest.raises(ParameterError, match="days"):
         check_work(RunSettings(runs=100, periods=10**6), Sink(Well(0.5, 0.3, 4)), 10**6)
     RunSettings(runs=25, periods=1500).check(Sink(Well(0.5, 0.3, 4), particles=5))
+
+
+def test_reach_of_huge_energies_is_refused_and_exact_up_to_the_limit():
+    """Flat n = 1, beta > 0: the basin's x bound is max over u = y^2 of
+    (a + beta u) sqrt(c^2 - u), a = alpha - beta, at u = (2 beta c^2 - a) / (3 beta).
+    Up to the reach limit c = 1000 (E = 5e5) the golden-section search matches it; above,
+    where it searched for minutes (E = 1e8: c = 1e4), the energy is refused at once."""
+    import math
+
+    from sinktheory import Well
+    from sinktheory.model import MAX_REACH
+
+    alpha, beta = 0.5, 0.3
+    c, a = MAX_REACH, alpha - beta
+    u = (2 * beta * c**2 - a) / (3 * beta)
+    x_max, y_max = Well(alpha, beta, 1).reach(c**2 / 2)
+    assert x_max == pytest.approx((a + beta * u) * math.sqrt(c**2 - u), rel=1e-9)
+    assert y_max == pytest.approx(c, rel=1e-12)
+    for energy in (5.01e5, 1e8, 1e300):
+        with pytest.raises(ParameterError, match=r"energy = .*\(0, 500000\].*reach c"):
+            Well(alpha, beta, 1).reach(energy)
+    assert Well(alpha, beta, 1, gamma=1e300).reach(1e-300)[1] > 0  # no log of an underflow
 
 
 # --------------------------------------------------------------------------- numerics
