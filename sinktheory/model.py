@@ -465,18 +465,38 @@ class RunSettings:
         self.check_memory(sink)
 
     def check_box(self, well: Well) -> None:
-        """Raise ParameterError unless the start box (-box, box)^2 lies inside the walls:
-        at its corner (box, box) every wall ratio of the shape is below 1."""
+        """Raise ParameterError unless the start box (-box, box)^2 lies inside the walls.
+
+        Each wall ratio of a shape is a coordinate's modulus over a denominator
+        alpha + beta (s^2 - 1) of the other coordinate s (or over alpha - beta), so over the
+        box it is largest where the modulus is ``box`` and s is 0 or ``box``: the box lies
+        inside when the ratios at (box, box), (box, 0) and (0, box) are all below 1.  (The
+        corner alone is not enough: in the symmetric well with beta > 0 the corner of
+        box = 10 lies inside, the wall ratio is 50 at (10, 0).)  A box so large that its
+        ratios overflow float range is refused too.
+
+        Examples
+        --------
+        >>> RunSettings(box=10).check_box(Well(0.5, 0.3, 4, shape="symmetric"))
+        Traceback (most recent call last):
+        ...
+        sinktheory.errors.ParameterError: box = 10.0 is not allowed: must be < 0.2, inside the \
+walls of the well (the start box reaches wall ratio 50 >= 1 at (10, 0) (wall distance \
+alpha - beta = 0.2))
+        """
         b = self.box
-        ratio = well.wall_ratio(b, b)
+        try:
+            ratio, where = max((well.wall_ratio(*p), p) for p in ((b, b), (b, 0.0), (0.0, b)))
+        except OverflowError:
+            ratio, where = math.inf, (b, b)
         if not ratio < 1:
             wall = well.wall_distance
             raise ParameterError(
                 "box",
                 self.box,
                 f"< {min(wall, 1.0):.6g}, inside the walls of the well",
-                why=f"the start box reaches wall ratio {ratio:.3g} >= 1 at its corner "
-                f"(wall distance alpha - beta = {wall:.3g})",
+                why=f"the start box reaches wall ratio {ratio:.3g} >= 1 at "
+                f"({where[0]:g}, {where[1]:g}) (wall distance alpha - beta = {wall:.3g})",
             )
 
     def memory_bytes(self, sink: Sink, record: tuple[str, ...] = ("container",)) -> int:

@@ -80,14 +80,10 @@ _SUSPECTS = (("gamma", 1.0), ("mass", 0.2), ("energy", 0.5))
 
 
 def check_settings(settings: RunSettings, sink: Sink) -> None:
-    """:meth:`~sinktheory.model.RunSettings.check`, with a start box so far out that its
-    wall ratio overflows float range (``box = 1e308``) refused naming ``box`` too."""
-    try:
-        settings.check(sink)
-    except OverflowError:
-        raise ParameterError(
-            "box", settings.box, "a half-width whose start box lies inside the walls"
-        ) from None
+    """:meth:`~sinktheory.model.RunSettings.check`: start box (a box whose wall ratios
+    overflow float range, ``box = 1e308``, is refused naming ``box`` there too), energy
+    and memory, as the analyses check them before any work."""
+    settings.check(sink)
 
 
 def tangent_steps(particles: int, vectors: int) -> float:

@@ -414,6 +414,29 @@ def test_reach_of_huge_energies_is_refused_and_exact_up_to_the_limit():
     assert Well(alpha, beta, 1, gamma=1e300).reach(1e-300)[1] > 0  # no log of an underflow
 
 
+@pytest.mark.parametrize("shape", ["flat", "symmetric", "circular"])
+def test_start_box_checked_over_the_whole_box(shape):
+    """check_box against a brute-force maximum of the wall ratio over a 201 x 201 grid of
+    the box (edges included), for boxes on both sides of the limit and both signs of beta;
+    the symmetric well's box = 10 (corner inside, (10, 0) far outside) was accepted, and
+    boxes whose ratios overflow float range raised OverflowError."""
+    from sinktheory import RunSettings, Well
+
+    grid = np.linspace(-1.0, 1.0, 201)
+    for beta in (0.3, -0.3):
+        well = Well(0.5, beta, 4, shape=shape)
+        for box in (0.05, 0.15, 0.3, 0.45, 0.6, 2.0, 10.0):
+            brute = max(well.wall_ratio(box * x, box * y) for x in grid for y in grid)
+            if brute < 1:
+                RunSettings(box=box).check_box(well)
+            else:
+                with pytest.raises(ParameterError, match="box = "):
+                    RunSettings(box=box).check_box(well)
+        for box in (1e154, 1e200, 1e308):
+            with pytest.raises(ParameterError, match="box = "):
+                RunSettings(box=box).check_box(well)
+
+
 # --------------------------------------------------------------------------- numerics
 NUMERIC = [
     (
