@@ -85,13 +85,15 @@ def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float
     x_max, y_max = well.reach(energy)
     theta = np.linspace(0.0, 0.5 * math.pi, angles)[:, None]
     radius = np.linspace(0.0, math.hypot(x_max, y_max), 400)[None, :]
-    inside = well.potential(radius * np.cos(theta), radius * np.sin(theta)) <= energy
-    first_out = np.argmin(inside, axis=1)  # the basin is star-shaped enough: first exit
-    lo, hi = radius[0, first_out - 1], radius[0, first_out]
-    for _ in range(40):
-        mid = 0.5 * (lo + hi)
-        below = well.potential(mid * np.cos(theta[:, 0]), mid * np.sin(theta[:, 0])) <= energy
-        lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+    with np.errstate(over="ignore"):  # far out V overflows to inf: outside, as it should
+        inside = well.potential(radius * np.cos(theta), radius * np.sin(theta)) <= energy
+        first_out = np.argmin(inside, axis=1)  # the basin is star-shaped enough: first exit
+        lo, hi = radius[0, first_out - 1], radius[0, first_out]
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            x, y = mid * np.cos(theta[:, 0]), mid * np.sin(theta[:, 0])
+            below = well.potential(x, y) <= energy
+            lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
     hessian = well.kernels.hessian
     largest = 0.0
     for r, t in zip(hi, theta[:, 0], strict=True):

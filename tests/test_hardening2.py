@@ -420,3 +420,26 @@ def test_explore_warns_of_damage_and_repairs(tmp_path):
         run = explore(params, resume=True, repair=True, **kw)
     assert run.computed == run.repaired == 2
     np.testing.assert_array_equal(run.dataset.depth.values, first.dataset.depth.values)
+
+
+def test_stiff_or_huge_wells_warn_of_no_overflow(capsys):
+    """Item 7: the step's stiffness search evaluates V beyond the basin, where it overflows
+    to inf (outside, correctly); numpy's RuntimeWarning about it reached stderr for
+    simulate --n 200 and --alpha 1e308.  The frequency itself is checked against its
+    bounds: at least the container's 1, and finite."""
+    import math
+    import warnings
+
+    from _cli import run_cli
+
+    from sinktheory import Sink, Well
+    from sinktheory.stepsize import stiffness_frequency
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        for well in (Well(0.5, 0.3, 200), Well(1e308, 0.3, 4)):
+            omega = stiffness_frequency(Sink(well), 0.5)
+            assert 1.0 <= omega < math.inf
+        argv = ["simulate", "--alpha", "1e308", "--beta", "0.3", "--n", "4", "--runs", "2"]
+        code, out, err = run_cli([*argv, "--periods", "2", "--quiet"], capsys)
+    assert code == 0 and err == "", err
