@@ -186,7 +186,7 @@ def test_valid_arguments_run():
 
 def test_named_cases_of_the_issue():
     """The cases the issue lists, each refused naming its parameter."""
-    from sinktheory import RunSettings
+    from sinktheory import RunSettings, Sink, Well
     from sinktheory.chaos import chaos, indicators, random_vectors
     from sinktheory.chaos.maps import beta_grid, chaos_map
     from sinktheory.nnm.continuation import continue_orbits
@@ -209,6 +209,7 @@ def test_named_cases_of_the_issue():
         (lambda: chaos(_sink(), RunSettings(runs=1), initial=[[5, 5]], dt=0.05), "initial"),
         (lambda: chaos(_sink(), RunSettings(runs=1, box=1e308), dt=0.05), "box"),
         (lambda: simulate(_sink(), RunSettings(runs=1), initial=[[5, 5]]), "initial"),
+        (lambda: simulate(Sink(Well(0.5, 0.3, 4, gamma=1e308)), small), "gamma"),
         (lambda: shoot(_flow(), duffing[0], -1.0, steps=400), "T"),
         (lambda: shoot(_flow(), *duffing, steps=10**12), "steps"),
         (lambda: shoot(_flow(), *duffing, steps=64, energy=-1.0), "energy"),
