@@ -1,0 +1,317 @@
+"""Prototype: an adaptive, time-reversible step whose cost grows far more slowly with n.
+
+Exploratory (issue 22 item 5), not used by the package; flat well only.  The fixed-step
+engine resolves the wall contact, whose duration shrinks like 1/n, in every step, so its
+steps per period grow like n (1197 at n = 4, 37077 at n = 100 for Fig. 8's ensemble at
+tol 1e-8).  Here each run takes plain steps of the same symmetric splitting (blanes-moan6)
+in physical time, with its own step h = eps / rho chosen by an explicit, reversible
+controller in the spirit of Hairer & Soederlind (2005, SIAM J. Sci. Comput. 26, 1838):
+
+    rho_{n+1/2} - rho_{n-1/2} = dOmega/dt(y_n) (h_{n+1/2} + h_{n-1/2}) / 2,
+
+solved in closed form for rho_{n+1/2} (symmetric under reversal, since dOmega/dt is odd in
+the velocities); rho is set back to Omega at period ends.  The rate Omega(q, v) sums, per
+particle: the local frequency |grad V|^2 / (m V) of a power-law wall; the approach to each
+wall i of the shape, (v . grad phi_i)^2 / d(w_i)^2 with w_i the wall ratio (1 on the rigid
+wall), phi_i = w_i^p / p and d = 1/(2n) at the wall, b (1 - w) inside (a step covers a
+fraction of the distance still to go, then of the contact layer); and the crossing rate
+(C0 |v| / D(y))^2.  dOmega/dt needs the Hessian of V, which the engine prints for the
+tangent map.
+
+What was learnt (25 runs x 100 periods, 1 thread; rerun
+``python benchmarks/adaptive_prototype.py --n 4 20 100 --eps 0.15 0.1 --periods 100
+--p 3 --resync --compare``):
+
+* steps per period at eps = 0.15: 751 (n = 4), 2008 (n = 20), 4484 (n = 100), all with
+  |dH|/H0 <= 8e-10; the fixed step needs 1197, 6970 and 37077.  The count still grows
+  (about n^0.55): the approach costs ln(1 + 2n)/b steps, and a particle pressed against a
+  stiff wall by the container vibrates at a frequency ~ n that any soft-wall integrator
+  must resolve;
+* a step costs about 3.8x a fixed step here (hessian + energies every step, unfused
+  kernels called through function pointers), so the prototype is faster than the fixed
+  step only from n ~ 20 on (n = 100: 9.0 s against 20.3 s);
+* what failed on the way: a rate of the positions alone (Mikkola-Aarseth time-transformed
+  leapfrog) must assume a top speed and over-resolves particles resting at a wall (15x
+  the steps at n = 20); the total wall ratio (the 2n-norm of all walls) hides a second wall
+  approached while the first dominates (energy jumps of 1e-5); without the crossing term a
+  fast particle at the centre of a narrow well reaches the wall in one step (NaN at
+  n = 100).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import time
+
+import numba
+import numpy as np
+from machine import describe
+
+C0 = 1.0  # crossing-rate factor (prototype constant)
+
+
+def _setup(n: int, runs: int, seed: int, particles: int = 5):
+    from sinktheory import RunSettings, Sink, Well
+    from sinktheory.engine.cache import load
+    from sinktheory.simulate import (
+        engine_name,
+        engine_params,
+        random_positions,
+        split_values,
+        start_state,
+    )
+
+    sink = Sink(Well(0.5, 0.3, n), particles=particles, mass=0.2)
+    settings = RunSettings(runs=runs, periods=1, seed=seed)
+    values = start_state(sink, settings.energy, random_positions(settings, sink.particles))
+    q, v = split_values(values)
+    engine = load(engine_name(sink))
+    T = engine.table_of(engine_params(sink), q.shape[1])
+    return sink, engine, np.ascontiguousarray(q), np.ascontiguousarray(v), T
+
+
+# ----------------------------------------------------------------------------------------
+# Velocity-aware rate with the explicit reversible step-size controller of Hairer &
+# Soederlind (2005, SIAM J. Sci. Comput. 26, 1838): h = eps / rho, rho_{n+1/2} =
+# rho_{n-1/2} + eps G(y_n), G = dOmega/dt / Omega, the steps themselves plain symmetric
+# splitting steps (any scheme, RKN ones included) in physical time.
+
+
+@numba.njit(inline="always")
+def _approach(w, wx, wy, hxx, hxy, hyy, vx, vy, ax, ay, ell, b, pw):
+    """(v . grad phi)^2 / d(w)^2 and its time derivative for a wall ratio w with gradient
+    (wx, wy) and Hessian (hxx, hxy, hyy); phi = w^p / p, d = ell at the wall, b (1 - w) inside."""
+    wp2 = w ** (pw - 2.0)
+    wp1 = wp2 * w
+    gv = wx * vx + wy * vy
+    u = wp1 * gv
+    vHv = vx * (hxx * vx + hxy * vy) + vy * (hxy * vx + hyy * vy)
+    udot = wp1 * (wx * ax + wy * ay + vHv) + (pw - 1.0) * wp2 * gv * gv
+    z = b * (1.0 - w)
+    root = math.sqrt(z * z + 4.0 * ell * ell)
+    d = 0.5 * (z + root)
+    dd = -0.5 * b * (1.0 + z / root)
+    ddot = dd * gv
+    return u * u / (d * d), 2.0 * u * udot / (d * d) - 2.0 * u * u * ddot / (d * d * d)
+
+
+@numba.njit(error_model="numpy")
+def _rate_hs(hess, energies, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, G):
+    """Omega(q, v) and G = dOmega/dt / Omega per run; ``a`` must hold a(q)."""
+    D, R = q.shape
+    K = (D - 1) // 2
+    hess(q, h, T)
+    energies(q, zero, T, tot, sh, mem)
+    for r in range(R):
+        om[r] = 1.0
+        G[r] = 0.0
+    for j in range(K):
+        for r in range(R):
+            V = mem[j, r]
+            m = T[3, r]
+            gx = -m * a[1 + j, r]
+            gy = -m * a[1 + K + j, r]
+            hxx = h[1 + j, r]
+            hxy = h[1 + K + j, r]
+            hyy = h[1 + 2 * K + j, r]
+            vx = v[1 + j, r] - v[0, r]
+            vy = v[1 + K + j, r]
+            ax = a[1 + j, r] - a[0, r]
+            ay = a[1 + K + j, r]
+            gg = gx * gx + gy * gy
+            gv = gx * vx + gy * vy
+            Hvx = hxx * vx + hxy * vy
+            Hvy = hxy * vx + hyy * vy
+            gHv = gx * Hvx + gy * Hvy
+            # local frequency^2 of a power-law wall: |grad V|^2 / (m V)
+            A = 0.0
+            Adot = 0.0
+            if V > 1e-300:
+                A = gg / (m * V)
+                Adot = (2.0 * gHv * V - gg * gv) / (m * V * V)
+            # approach to each wall of the flat shape, |x| = D(y) and |y| = 1:
+            # (v . grad phi_i)^2 / d(w_i)^2 with phi_i = w_i^p / p
+            alpha = T[0, r]
+            beta = T[1, r]
+            x = q[1 + j, r] - q[0, r]
+            y = q[1 + K + j, r]
+            Dy = alpha + beta * (y * y - 1.0)
+            d1 = 2.0 * beta * y
+            sg = 1.0 if x >= 0.0 else -1.0
+            w1 = sg * x / Dy
+            B1, B1dot = _approach(
+                w1,
+                sg / Dy,
+                -sg * x * d1 / (Dy * Dy),
+                0.0,
+                -sg * d1 / (Dy * Dy),
+                sg * x * (2.0 * d1 * d1 / (Dy * Dy * Dy) - 2.0 * beta / (Dy * Dy)),
+                vx,
+                vy,
+                ax,
+                ay,
+                ell,
+                b,
+                pw,
+            )
+            sy = 1.0 if y >= 0.0 else -1.0
+            B2, B2dot = _approach(sy * y, 0.0, sy, 0.0, 0.0, 0.0, vx, vy, ax, ay, ell, b, pw)
+            # crossing: at most a fraction of the well's half-width D(y) per unit eps
+            vv = vx * vx + vy * vy
+            B0 = C0 * C0 * vv / (Dy * Dy)
+            B0dot = (
+                C0
+                * C0
+                * (2.0 * (vx * ax + vy * ay) / (Dy * Dy) - 2.0 * vv * d1 * vy / (Dy * Dy * Dy))
+            )
+            B = B0 + B1 + B2
+            Bdot = B0dot + B1dot + B2dot
+            om[r] += A + B
+            G[r] += Adot + Bdot
+    for r in range(R):
+        om[r] = math.sqrt(om[r])
+        G[r] = G[r] / (2.0 * om[r] * om[r])
+
+
+@numba.njit(error_model="numpy")
+def _plain_step(acc, q, v, T, a, A, Bk, hstep):
+    """One step of the splitting (kick first) with a step per run; a holds a(q) on entry
+    and on exit."""
+    D, R = q.shape
+    S = A.shape[0]
+    for i in range(S + 1):
+        if i > 0:
+            acc(q, a, T)
+        for d in range(D):
+            for r in range(R):
+                v[d, r] += Bk[i] * hstep[r] * a[d, r]
+        if i < S:
+            for d in range(D):
+                for r in range(R):
+                    q[d, r] += A[i] * hstep[r] * v[d, r]
+
+
+@numba.njit(error_model="numpy")
+def run_hs(acc, hess, energies, q, v, T, A, Bk, eps, ell, b, pw, periods, period, resync):
+    """Advance every run ``periods`` periods; returns (steps per run, |dH|/H0 per period,
+    rho / Omega at the end)."""
+    D, R = q.shape
+    K = (D - 1) // 2
+    a = np.empty((D, R))
+    h = np.empty((1 + 3 * K, R))
+    zero = np.zeros((D, R))
+    tot = np.empty(R)
+    sh = np.empty(R)
+    mem = np.empty((K, R))
+    om = np.empty(R)
+    G = np.empty(R)
+    rho = np.empty(R)
+    t = np.zeros(R)
+    hstep = np.empty(R)
+    steps = np.zeros(R, dtype=np.int64)
+    errors = np.empty((periods, R))
+    energies(q, v, T, tot, sh, mem)
+    H0 = tot.copy()
+    acc(q, a, T)
+    _rate_hs(hess, energies, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, G)
+    for r in range(R):
+        rho[r] = om[r]
+    for p in range(periods):
+        t_end = (p + 1) * period
+        while True:
+            active = 0
+            for r in range(R):
+                hr = eps / rho[r]
+                if t[r] < t_end:
+                    hstep[r] = min(hr, t_end - t[r])
+                    active += 1
+                    steps[r] += 1
+                else:
+                    hstep[r] = 0.0
+            if active == 0 or steps.max() > 200000 * (p + 1):
+                break
+            _plain_step(acc, q, v, T, a, A, Bk, hstep)
+            _rate_hs(hess, energies, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, G)
+            for r in range(R):
+                if hstep[r] > 0.0:
+                    t[r] = t[r] + hstep[r] if t[r] + hstep[r] < t_end else t_end
+                    # rho+ - rho- = dOmega/dt (h+ + h-) / 2 with h = eps / rho: symmetric
+                    c = 0.5 * eps * G[r] * om[r]
+                    sr = rho[r] + c / rho[r]
+                    disc = sr * sr + 4.0 * c
+                    rho[r] = 0.5 * (sr + math.sqrt(disc)) if disc > 0.0 else 0.0
+                    if rho[r] < 0.5 * om[r]:
+                        rho[r] = om[r]
+        ratio = rho / om
+        if resync:
+            for r in range(R):
+                rho[r] = om[r]
+        energies(q, v, T, tot, sh, mem)
+        for r in range(R):
+            errors[p, r] = abs(tot[r] - H0[r]) / H0[r]
+    return steps, errors, ratio
+
+
+def main(argv=None) -> None:
+    from sinktheory.integrators import get_scheme
+
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--n", type=int, nargs="+", default=[4, 10, 20, 50, 100])
+    p.add_argument("--eps", type=float, nargs="+", default=[0.2])
+    p.add_argument("--b", type=float, default=1.0)
+    p.add_argument("--p", type=float, default=4.0)
+    p.add_argument("--scheme", default="blanes-moan6")
+    p.add_argument("--resync", action="store_true")
+    p.add_argument("--compare", action="store_true")
+    p.add_argument("--runs", type=int, default=25)
+    p.add_argument("--periods", type=int, default=50)
+    args = p.parse_args(argv)
+    print(describe(), flush=True)
+    A, Bk = (np.asarray(x, dtype=float) for x in get_scheme(args.scheme).arrays())
+    for n in args.n:
+        for eps in args.eps:
+            sink, engine, q, v, T = _setup(n, args.runs, 0)
+            t0 = time.perf_counter()
+            steps, err, ratio = run_hs(
+                engine.accelerations,
+                engine.hessian,
+                engine.energies,
+                q,
+                v,
+                T,
+                A,
+                Bk,
+                eps,
+                1.0 / (2 * n),
+                args.b,
+                args.p,
+                args.periods,
+                2 * math.pi,
+                args.resync,
+            )
+            wall = time.perf_counter() - t0
+            ref = ""
+            if args.compare:
+                from sinktheory import RunSettings
+                from sinktheory.simulate import simulate
+
+                t1 = time.perf_counter()
+                res = simulate(
+                    sink, RunSettings(runs=args.runs, periods=args.periods, seed=0), tol=1e-8
+                )
+                ref = (
+                    f"| fixed step {res.steps_per_period}"
+                    f"/period: {time.perf_counter() - t1:.2f} s, "
+                    f"|dH|/H0 {res.max_relative_energy_error:.1e}"
+                )
+            print(
+                f"HS n={n:4d} eps={eps:.3g} steps/period={steps.mean() / args.periods:8.1f} "
+                f"(max run {steps.max() / args.periods:8.1f})  max |dH|/H0={err.max():.2e}  "
+                f"wall {wall:.2f} s  rho/Omega {ratio.min():.3g}..{ratio.max():.3g} {ref}",
+                flush=True,
+            )
+
+
+if __name__ == "__main__":
+    main()
