@@ -200,7 +200,8 @@ class HillProblem:
                 v.finite("lam", value)
             else:
                 self._well(float(value))
-            lam = float(self.lam(np.array([value]))[0])
+            with np.errstate(over="ignore"):  # an overflow is inf, refused just below
+                lam = float(self.lam(np.array([value]))[0])
             if abs(lam) * self.amplitude**2 > MAX_LAMBDA:
                 raise ParameterError(
                     self.parameter,

@@ -5,6 +5,7 @@ parameter, no traceback, and leave the working directory as it was.
 """
 
 import os
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -27,7 +28,11 @@ def refused(argv, capsys, tmp_path, monkeypatch, name: str) -> str:
     """Run ARGV in ``tmp_path``; assert a clean refusal naming ``name``; return stderr."""
     monkeypatch.chdir(tmp_path)
     before = snapshot(tmp_path)
-    code, out, err = run_cli(argv, capsys)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        code, out, err = run_cli(argv, capsys)
+    # a warning would reach the user's terminal before the one-line message
+    assert not [w for w in caught if issubclass(w.category, RuntimeWarning)], caught[0].message
     assert code == 2, (code, err)
     assert out == ""
     lines = err.strip().splitlines()
