@@ -13,8 +13,11 @@ over the same energies: the frequency-energy plot the ridge is drawn on
 energy falls is energy held in that mode; a ridge that leaves every branch is energy
 transferred elsewhere -- for the 2-D sink, out of the invariant plane.
 
-The vibro-impact attachment has no smooth normal modes in :mod:`sinktheory.nnm`; its
-backbone is empty.
+For the 1-D NES the backbone is its in-phase 1:1 family
+(:mod:`sinktheory.nnm.backbone`); the figure marks where that family changes from
+particle- to container-localised (:func:`sinktheory.nnm.backbone.localisation_energy`),
+the energy near which the NES's transfer threshold lies.  The vibro-impact attachment
+has no smooth normal modes in :mod:`sinktheory.nnm`; its backbone is empty.
 """
 
 from __future__ import annotations
@@ -138,7 +141,13 @@ def backbone(att, lo: float, hi: float, *, points: int = BACKBONE_POINTS) -> tup
     (:func:`sinktheory.nnm.continuation.continue_both`) until it leaves [lo, hi] or has
     ``points`` points a side; a mode that never converges is left out and named in
     ``notes``.  Empty for the vibro-impact attachment.
+
+    For the 1-D NES (n >= 2) the container mode is replaced by the in-phase 1:1 backbone
+    (:func:`sinktheory.nnm.backbone.inphase_pieces`): the free particle's zero
+    frequency at low energy keeps the container mode's guess off that family, which the
+    impulse excites and along which the dashpot walks the energy down.
     """
+    from ..nnm.backbone import inphase_pieces
     from ..nnm.continuation import continue_both
     from ..nnm.shooting import ShootingError
 
@@ -149,8 +158,15 @@ def backbone(att, lo: float, hi: float, *, points: int = BACKBONE_POINTS) -> tup
     if att.kind == "impact":
         return [], ["the vibro-impact attachment has no smooth normal modes"]
     branches, notes = [], []
+    modes = ("container", "particle")
+    if att.kind == "nes" and att.n >= 2:
+        pieces, why = inphase_pieces(att.sink, lo, hi, points=points)
+        branches += pieces
+        notes += why
+        modes = ("particle",)
     tries = np.geomspace(lo, hi, START_TRIES + 2)[: START_TRIES + 1]
-    for mode, starts in (("container", tries), ("particle", [math.sqrt(lo * hi), *tries])):
+    starts_of = {"container": tries, "particle": [math.sqrt(lo * hi), *tries]}
+    for mode, starts in ((mode, starts_of[mode]) for mode in modes):
         error = None
         for start in starts:
             try:

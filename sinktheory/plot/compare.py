@@ -153,6 +153,7 @@ def plot_transfer(maps, backbones=(), *, title: str | None = None):
         fig.colorbar(mesh, ax=top, label="|W| / sqrt(scale)")
         if backbones[j]:
             draw_frequency_energy(bottom, backbones[j])
+            _mark_localisation(bottom, backbones[j])
         ok = np.isfinite(w.ridge)
         points = bottom.scatter(m.energy_left[ok], w.ridge[ok], c=periods[ok], s=2,
                                 cmap="plasma", zorder=3)  # fmt: skip
@@ -168,3 +169,19 @@ def plot_transfer(maps, backbones=(), *, title: str | None = None):
     if title:
         fig.suptitle(title, fontsize=10)
     return fig
+
+
+def _mark_localisation(ax, branches) -> None:
+    """A vertical line where an in-phase 1:1 backbone changes from particle- to
+    container-localised (:func:`sinktheory.nnm.backbone.localisation_energy`): the
+    NES's transfer threshold lies near it."""
+    from ..nnm.backbone import localisation_energy
+
+    for b in branches:
+        if b.meta.get("mode") != "in-phase":
+            continue
+        e = localisation_energy(b)
+        if np.isfinite(e):
+            ax.axvline(e, color="0.3", ls="--", lw=1,
+                       label=f"in-phase mode half in the container: E = {e:.2g}")  # fmt: skip
+            return
