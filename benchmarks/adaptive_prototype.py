@@ -18,18 +18,20 @@ fraction of the distance still to go, then of the contact layer); and the crossi
 (C0 |v| / D(y))^2.  dOmega/dt needs the Hessian of V, which the engine prints for the
 tangent map.
 
-What was learnt (25 runs x 100 periods, 1 thread; rerun
-``python benchmarks/adaptive_prototype.py --n 4 20 100 --eps 0.15 0.1 --periods 100
---p 3 --resync --compare``):
+What was learnt (25 runs x 40 periods, one thread; the table and chart in
+docs/guide/billiard.rst, "Cost against the wall stiffness", come from
+``python benchmarks/adaptive_prototype.py --n 4 10 20 50 100 --eps 0.25 0.15 --periods 40
+--chart docs/guide/adaptive_cost.png``):
 
-* steps per period at eps = 0.15: 751 (n = 4), 2008 (n = 20), 4484 (n = 100), all with
-  |dH|/H0 <= 8e-10; the fixed step needs 1197, 6970 and 37077.  The count still grows
-  (about n^0.55): the approach costs ln(1 + 2n)/b steps, and a particle pressed against a
-  stiff wall by the container vibrates at a frequency ~ n that any soft-wall integrator
-  must resolve;
-* a step costs about 3.8x a fixed step here (hessian + energies every step, unfused
-  kernels called through function pointers), so the prototype is faster than the fixed
-  step only from n ~ 20 on (n = 100: 9.0 s against 20.3 s);
+* steps per period at eps = 0.25: 384 (n = 4), 997 (n = 20), 2153 (n = 100), with
+  |dH|/H0 <= 2.5e-8 (eps = 0.15: <= 1.5e-9); the fixed step needs 1197, 6970 and 37077.
+  The count still grows (about n^0.55): the approach costs ln(1 + 2n)/b steps, and a
+  particle pressed against a stiff wall by the container vibrates at a frequency ~ n that
+  any soft-wall integrator must resolve;
+* a step costs about 3x a fixed one here (hessian + energies every step, unfused kernels
+  called through function pointers), so it is faster than the fixed step from n ~ 10 on
+  and 10x faster at n = 100 (1.44 against 14.5 ms per run and period); cost(n = 100) /
+  cost(n = 4) is about 10 for the prototype, against the issue's target of 2;
 * what failed on the way: a rate of the positions alone (Mikkola-Aarseth time-transformed
   leapfrog) must assume a top speed and over-resolves particles resting at a wall (15x
   the steps at n = 20); the total wall ratio (the 2n-norm of all walls) hides a second wall
@@ -253,64 +255,104 @@ def run_hs(acc, hess, energies, q, v, T, A, Bk, eps, ell, b, pw, periods, period
     return steps, errors, ratio
 
 
+def _adaptive(n, eps, args, A, Bk, periods):
+    """(seconds, steps per period, max |dH|/H0, rho/Omega range) of the prototype."""
+    sink, engine, q, v, T = _setup(n, args.runs, 0)
+    t0 = time.perf_counter()
+    steps, err, ratio = run_hs(
+        engine.accelerations, engine.hessian, engine.energies, q, v, T, A, Bk, eps,
+        1.0 / (2 * n), args.b, args.p, periods, 2 * math.pi, True,
+    )  # fmt: skip
+    return time.perf_counter() - t0, steps.mean() / periods, err.max(), ratio
+
+
+def _fixed(n, args, periods):
+    """(seconds, steps per period, max |dH|/H0) of the package's fixed step at tol 1e-8."""
+    from sinktheory import RunSettings, Sink, Well
+    from sinktheory.simulate import simulate
+
+    sink = Sink(Well(0.5, 0.3, n), particles=5, mass=0.2)
+    t0 = time.perf_counter()
+    res = simulate(sink, RunSettings(runs=args.runs, periods=periods, seed=0), tol=1e-8)
+    return time.perf_counter() - t0, res.steps_per_period, res.max_relative_energy_error
+
+
+def _rigid(args, periods):
+    """Seconds of the rigid billiard engine (moving container) from the same starts."""
+    from sinktheory import RunSettings
+    from sinktheory.billiard.convergence import measure
+
+    t0 = time.perf_counter()
+    measure("flat", 0.5, 0.3, math.inf, particles=5, mass=0.2, lyapunov=False,
+            settings=RunSettings(runs=args.runs, periods=periods, seed=0))  # fmt: skip
+    return time.perf_counter() - t0
+
+
 def main(argv=None) -> None:
     from sinktheory.integrators import get_scheme
 
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--n", type=int, nargs="+", default=[4, 10, 20, 50, 100])
-    p.add_argument("--eps", type=float, nargs="+", default=[0.2])
+    p.add_argument("--eps", type=float, nargs="+", default=[0.15])
     p.add_argument("--b", type=float, default=1.0)
-    p.add_argument("--p", type=float, default=4.0)
+    p.add_argument("--p", type=float, default=3.0)
     p.add_argument("--scheme", default="blanes-moan6")
-    p.add_argument("--resync", action="store_true")
-    p.add_argument("--compare", action="store_true")
+    p.add_argument("--compare", action="store_true", help="also time the fixed step")
+    p.add_argument("--chart", help="PNG of seconds per run-period against n (implies --compare)")
     p.add_argument("--runs", type=int, default=25)
     p.add_argument("--periods", type=int, default=50)
     args = p.parse_args(argv)
+    numba.set_num_threads(1)
     print(describe(), flush=True)
     A, Bk = (np.asarray(x, dtype=float) for x in get_scheme(args.scheme).arrays())
+    compare = args.compare or bool(args.chart)
+    work = args.runs * args.periods
+    rows = []
     for n in args.n:
+        _adaptive(n, args.eps[0], args, A, Bk, 1)  # compile and warm up
+        if compare:
+            _fixed(n, args, 1)
+            fixed = _fixed(n, args, args.periods)
+            print(f"fixed    n={n:4d} steps/period={fixed[1]:8d}  max |dH|/H0={fixed[2]:.1e}  "
+                  f"{1e3 * fixed[0] / work:.3f} ms per run-period", flush=True)  # fmt: skip
         for eps in args.eps:
-            sink, engine, q, v, T = _setup(n, args.runs, 0)
-            t0 = time.perf_counter()
-            steps, err, ratio = run_hs(
-                engine.accelerations,
-                engine.hessian,
-                engine.energies,
-                q,
-                v,
-                T,
-                A,
-                Bk,
-                eps,
-                1.0 / (2 * n),
-                args.b,
-                args.p,
-                args.periods,
-                2 * math.pi,
-                args.resync,
-            )
-            wall = time.perf_counter() - t0
-            ref = ""
-            if args.compare:
-                from sinktheory import RunSettings
-                from sinktheory.simulate import simulate
-
-                t1 = time.perf_counter()
-                res = simulate(
-                    sink, RunSettings(runs=args.runs, periods=args.periods, seed=0), tol=1e-8
-                )
-                ref = (
-                    f"| fixed step {res.steps_per_period}"
-                    f"/period: {time.perf_counter() - t1:.2f} s, "
-                    f"|dH|/H0 {res.max_relative_energy_error:.1e}"
-                )
+            wall, steps, err, ratio = _adaptive(n, eps, args, A, Bk, args.periods)
             print(
-                f"HS n={n:4d} eps={eps:.3g} steps/period={steps.mean() / args.periods:8.1f} "
-                f"(max run {steps.max() / args.periods:8.1f})  max |dH|/H0={err.max():.2e}  "
-                f"wall {wall:.2f} s  rho/Omega {ratio.min():.3g}..{ratio.max():.3g} {ref}",
+                f"adaptive n={n:4d} eps={eps:.3g} steps/period={steps:8.1f}  max |dH|/H0={err:.1e}"
+                f"  {1e3 * wall / work:.3f} ms per run-period  rho/Omega "
+                f"{ratio.min():.3g}..{ratio.max():.3g}",
                 flush=True,
             )
+            if compare:
+                rows.append((n, eps, fixed[0] / work, wall / work, fixed[2], err))
+    if args.chart:
+        _rigid(args, 1)
+        rigid = _rigid(args, args.periods) / work
+        print(f"rigid billiard engine: {1e3 * rigid:.3f} ms per run-period", flush=True)
+        _chart(args.chart, rows, rigid)
+
+
+def _chart(path, rows, rigid) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.5, 4.2), layout="constrained")
+    ns = sorted({r[0] for r in rows})
+    fixed = [next(r[2] for r in rows if r[0] == n) for n in ns]
+    ax.loglog(ns, 1e3 * np.array(fixed), "o-", label="fixed step (tol 1e-8)")
+    for eps in sorted({r[1] for r in rows}):
+        sel = [r for r in rows if r[1] == eps]
+        ax.loglog([r[0] for r in sel], [1e3 * r[3] for r in sel], "s-",
+                  label=f"adaptive prototype, eps {eps:g}")  # fmt: skip
+    ax.axhline(1e3 * rigid, color="k", ls="--", label="rigid billiard (n = inf)")
+    ax.set_xlabel("wall exponent n")
+    ax.set_ylabel("ms per run and period (1 thread)")
+    ax.set_title("Fig. 8 ensemble (flat, k = 5): cost against wall stiffness", fontsize=10)
+    ax.legend(fontsize=8)
+    fig.savefig(path, dpi=110)
+    print(f"chart: {path}")
 
 
 if __name__ == "__main__":
