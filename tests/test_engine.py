@@ -66,6 +66,28 @@ def test_kernels_match_the_separable_hamiltonian(shape, n):
     assert shared[0] == pytest.approx(0.5 * v[0, 0] ** 2 + 0.5 * float(STATE[0]) ** 2, rel=1e-15)
 
 
+@pytest.mark.parametrize("system", ["sink_flat_n4", "sink_symmetric_n3", "henon_heiles"])
+def test_single_run_kernel_is_bitwise_the_block_kernel(system):
+    """accelerations_one (one run, vectorised across the particles, the container's
+    reaction summed afterwards) gives each run the bits the block kernel gives it, signed
+    zeros included, for any number of particles and per-run parameters."""
+    mod = load(system)
+    rng = np.random.default_rng(7)
+    for k in (0, 1, 5, 13) if mod.MEMBER_COORDS else (0,):
+        D, R = mod.SHARED + mod.MEMBER_COORDS * k, 6
+        q = rng.uniform(-0.6, 0.6, size=(D, R))
+        q[:, 0] = 0.0  # every force term is a signed zero here
+        q[:, 1] = -0.0
+        params = rng.uniform(0.2, 0.4, size=(mod.NPARAMS, R))
+        P = mod.table_of(params, R)
+        block = mod.block_accelerations(q, P)
+        for r in range(R):
+            a = np.empty((D, 1))
+            mod.accelerations_one(q[:, r : r + 1].copy(), a, P[:, r : r + 1].copy(),
+                                  np.empty((mod.SHARED, k)))  # fmt: skip
+            assert a[:, 0].tobytes() == block[:, r].tobytes(), (k, r)
+
+
 def _fig8_like(runs, k=2):
     sink = Sink(Well(0.5, 0.3, 4), particles=k, mass=0.2)
     values = start_state(sink, 0.5, random_positions(RunSettings(runs=runs, seed=4), k))

@@ -13,9 +13,12 @@ parameters).  A *segment* is ``steps`` steps of size ``dt`` (one container perio
 sink); the energy audit, the renormalisation of deviation vectors and all per-segment
 records happen at segment ends.  Runs are processed in blocks (their size and the threads
 are chosen by :mod:`sinktheory.engine.blocks`); a block is copied into contiguous local
-arrays, advanced, and copied back.  The arithmetic of a run does not depend on which block or thread
-it is in (no reductions across runs, no fast-math reassociation), so the numbers are
-bitwise the same for any block size and thread count.
+arrays, advanced, and copied back.  A block of a single run has nothing to vectorise across
+runs, so its accelerations come from ``accelerations_one``, which vectorises across the
+members (particles) of the run instead and sums their pull on the shared coordinates in
+the block kernel's order.  The arithmetic of a run does not depend on which block or
+thread it is in (no reductions across runs, no fast-math reassociation), so the numbers
+are bitwise the same for any block size and thread count.
 """
 
 # ruff: noqa: F821
@@ -138,11 +141,18 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
     K = members_of(D)
     members = np.empty((K, B))
     work = np.empty(B)
+    # a block of one run takes accelerations_one, vectorised across the members (the same
+    # numbers; w is its work space).  The branch is written out at both calls: behind a
+    # helper function, the copy numba caches ran the single run 2x slower (measured).
+    w = np.empty((SHARED, K))
     # flat views: the kick and the drift treat every entry alike, and one long loop
     # vectorises better than D short ones over a small block
     q_, v_, a_ = q.reshape(D * B), v.reshape(D * B), a.reshape(D * B)
     dq_, dv_ = dq.reshape(D * M * B), dv.reshape(D * M * B)
-    accelerations(q, a, P)
+    if B == 1:
+        accelerations_one(q, a, P, w)
+    else:
+        accelerations(q, a, P)
     if M > 0:
         hessian(q, h, P)
     for seg in range(seg0, seg1):
@@ -158,7 +168,10 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
                     tangent_kick(h, dq, dv, ck, P)
                     for e in range(D * M * B):
                         dq_[e] += cd * dv_[e]
-                accelerations(q, a, P)
+                if B == 1:
+                    accelerations_one(q, a, P, w)
+                else:
+                    accelerations(q, a, P)
                 if M > 0:
                     hessian(q, h, P)
             ck = bh[s] * dt

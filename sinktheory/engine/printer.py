@@ -1,11 +1,15 @@
 """Print the compiled engine of one :class:`~sinktheory.engine.systems.SeparableSystem`.
 
-The module it writes has four system kernels, each working on a block of B runs laid out
+The module it writes has five system kernels, each working on a block of B runs laid out
 structure-of-arrays (q[i, b]: coordinate i of run b, runs contiguous), so the loops over
 runs vectorise:
 
 ``accelerations(q, a, P)``
     a = -M^-1 grad U(q).
+``accelerations_one(q, a, P, w)``
+    the same for a block of one run, vectorised across its members (w: work space); the
+    members' pull on the shared coordinates is summed after that loop in the block
+    kernel's order, so the numbers are bitwise those of ``accelerations``.
 ``hessian(q, h, P)``
     the local Hessian entries of every term (what the tangent map needs).
 ``tangent_kick(h, dq, dv, c, P)``
@@ -86,8 +90,8 @@ def _coords_of(system: SeparableSystem, member: bool) -> tuple[sp.Symbol, ...]:
     return system.shared + (system.member if member else ())
 
 
-def _load(system: SeparableSystem, member: bool, array: str = "q") -> list[str]:
-    return [f"{c.name} = {array}[{_index(system, c)}, b]" for c in _coords_of(system, member)]
+def _load(system: SeparableSystem, member: bool, array: str = "q", run: str = "b") -> list[str]:
+    return [f"{c.name} = {array}[{_index(system, c)}, {run}]" for c in _coords_of(system, member)]
 
 
 def _jacobian(term: Term, coords) -> list[list[sp.Expr]]:
@@ -133,11 +137,15 @@ def _params(system: SeparableSystem) -> list[str]:
     ]
 
 
+def _used(loads: list[str], text: str) -> list[str]:
+    """The lines ``name = ...`` of ``loads`` whose name occurs in ``text``."""
+    return [s for s in loads if re.search(rf"\b{s.split(' = ')[0]}\b", text)]
+
+
 def _loop(body: list[str], member: bool, runs_var: str = "B", params=()) -> list[str]:
     """``for b`` (and ``for j`` over members) around ``body``, with the run's parameter
     loads ``params`` first."""
-    text = "\n".join(body)
-    params = [p for p in params if re.search(rf"\b{p.split(' = ')[0]}\b", text)]
+    params = _used(params, "\n".join(body))
     inner = [f"for b in range({runs_var}):", *("    " + s for s in [*params, *body])]
     if member:
         return ["for j in range(K):", *("    " + s for s in inner)]
@@ -155,23 +163,68 @@ def _function(name: str, args: str, doc: str, body: list[str]) -> str:
     return f"\n\n{deco}\ndef {name}({args}):\n{text}\n"
 
 
-def _accelerations(system: SeparableSystem, im) -> str:
+def _forces(system: SeparableSystem, term: Term, member: bool, im):
+    """(coordinates, CSE lines, accelerations) of one term: -M^-1 grad W per coordinate."""
+    coords = _coords_of(system, member)
+    jac = _jacobian(term, coords)
+    outs = []
+    for c_i, c in enumerate(coords):
+        force = -sum(jac[l_i][c_i] * term.gradient[l_i] for l_i in range(len(term.local)))
+        outs.append(im[c] * force)
+    assign, values = _cse(outs, "t")
+    return coords, assign, values
+
+
+def _accelerations(system: SeparableSystem, im) -> list[str]:
     body = ["D = q.shape[0]", "B = q.shape[1]", "K = members_of(D)"]
     body += ["for i in range(D):", "    for b in range(B):", "        a[i, b] = 0.0"]
     for term, member in _terms(system):
-        coords = _coords_of(system, member)
-        jac = _jacobian(term, coords)
-        outs = []
-        for c_i, c in enumerate(coords):
-            force = -sum(jac[l_i][c_i] * term.gradient[l_i] for l_i in range(len(term.local)))
-            outs.append(im[c] * force)
-        assign, values = _cse(outs, "t")
+        coords, assign, values = _forces(system, term, member, im)
         inner = _load(system, member) + _local_lines(term) + assign
         for c, val in zip(coords, values, strict=True):
             if val != "0":
                 inner.append(f"a[{_index(system, c)}, b] += {val}")
         body += _loop(inner, member, params=_params(system))
     return body
+
+
+def _accelerations_one(system: SeparableSystem, im) -> list[str]:
+    """The body of ``accelerations_one``: the kernel of :func:`_accelerations` for a single
+    run, with the members in the innermost loop so that it vectorises across them.
+
+    Each member's pull on a shared coordinate goes to the work row w[i, :] inside that loop
+    and is summed afterwards, member by member in the block kernel's order (from 0.0, then
+    the shared terms, then the members of each term), so both kernels give the same bits.
+    A member coordinate's first contribution is written as 0.0 + value, as in the block
+    kernel, whose sums start from a zeroed array (which keeps the sign of a zero the same);
+    zeroing the array here instead made LLVM call memset at every evaluation."""
+    body = ["D = q.shape[0]", "K = members_of(D)"]
+    acc = {c: f"acc_{c.name}" for c in system.shared}
+    body += [f"{acc[c]} = 0.0" for c in system.shared]
+    written = set()
+    for term, member in _terms(system):
+        coords, assign, values = _forces(system, term, member, im)
+        inner = _load(system, member, run="0") + _local_lines(term) + assign
+        sums = []
+        for c, val in zip(coords, values, strict=True):
+            if val == "0":
+                continue
+            if c not in acc:
+                op = "+=" if c in written else "= 0.0 +"
+                inner.append(f"a[{_index(system, c)}, 0] {op} {val}")
+                written.add(c)
+            elif member:
+                i = system.shared.index(c)
+                inner.append(f"w[{i}, j] = {val}")
+                sums += ["for j in range(K):", f"    {acc[c]} += w[{i}, j]"]
+            else:
+                inner.append(f"{acc[c]} += {val}")
+        body += ["for j in range(K):", *("    " + s for s in inner), *sums] if member else inner
+    body += [f"a[{i}, 0] = {acc[c]}" for i, c in enumerate(system.shared)]
+    idle = [f"    a[{_index(system, c)}, 0] = 0.0" for c in system.member if c not in written]
+    body += ["for j in range(K):", *idle] if idle else []
+    params = [s.replace(", b]", ", 0]") for s in _params(system)]
+    return _used(params, "\n".join(body)) + body
 
 
 def _hessian_rows(system: SeparableSystem):
@@ -308,6 +361,13 @@ def render(system: SeparableSystem, banner: str) -> str:
             "q, a, P",
             "a = -M^-1 grad U(q) for a block q[coordinate, run].",
             im_lines + _accelerations(system, im),
+        ),
+        _function(
+            "accelerations_one",
+            "q, a, P, w",
+            "accelerations of a single run q[coordinate, 0], bitwise those of the block "
+            "kernel; w (SHARED, K) is work space.",
+            im_lines + _accelerations_one(system, im),
         ),
         _function(
             "hessian",
