@@ -169,6 +169,8 @@ class ImpulseResponse(Result):
         Impacts of each run (``"impact"`` only).
     integrator : str
         What integrated it (scheme and step, or the exact vibro-impact flow).
+    dt : float
+        The engine's step (NaN for ``"impact"``: its flow is exact, with no step).
     """
 
     t: np.ndarray
@@ -184,6 +186,7 @@ class ImpulseResponse(Result):
     transverse: np.ndarray | None = None
     impacts: np.ndarray | None = None
     integrator: str = ""
+    dt: float = math.nan
 
     DIMS = {
         "container_x": ("run", "time"),
@@ -334,7 +337,7 @@ def impulse_response(
     x, xd = res.container_x, res.container_v
     return ImpulseResponse(res.sample_times, x, xd, 0.5 * (x * x + xd * xd),
                            res.sample_dissipated, res.initial_energy, res.max_audit_error,
-                           transverse=res.transverse,
+                           transverse=res.transverse, dt=float(res.dt),
                            integrator=f"{res.method}, dt = {res.dt:.6g}, with the exact "
                            "dashpot flow (Strang)", **common)  # fmt: skip
 

@@ -52,6 +52,7 @@ GRID = {
     "energy": "energy",
     "damping": "damping",
     "attachment": "attachment",
+    "damping_kind": "damping_kind",
 }
 #: option -> setting of the design kind (one value each)
 SETTINGS = (
@@ -95,14 +96,23 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--damping",
         default="0",
-        help="contact damping c0 >= 0 of inelastic wall contact (default 0: conservative)",
+        help="damping >= 0 (default 0: conservative); for the well by --damping-kind, for "
+        "nes and impact always their dashpot",
+    )
+    g.add_argument(
+        "--damping-kind",
+        default="contact",
+        help="what --damping is for the 2-D well: contact (inelastic wall contact, c0 per "
+        "particle; default) or viscous (the 1-D attachments' dashpot on the relative "
+        "velocity, c shared by the k particles: equal damping with nes and impact); "
+        "comma-separated; the result's dashpot column says which acted",
     )
     g.add_argument(
         "--attachment",
         default="well",
         help="well (the 2-D sink), nes (1-D, on y = 0), impact (vibro-impact), "
         "comma-separated (default well; nes and impact: impulsive start, --damping is "
-        "their dashpot)",
+        "their dashpot whatever --damping-kind)",
     )
     r = parser.add_argument_group("ensemble and measures (one value each)")
     r.add_argument("--runs", type=number, default=25, help="runs per design (default 25)")
@@ -275,4 +285,5 @@ def _row(r: dict, dims: list[str]) -> dict:
         "lambda1_se": f(r["lambda1_se"]),
         "zeta_eq": f(r["zeta_eq"]),
         "zeta_eq_se": f(r["zeta_eq_se"]),
+        "damper": "dashpot" if r.get("dashpot") == 1.0 else "contact",
     }

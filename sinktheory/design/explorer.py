@@ -41,6 +41,7 @@ DESIGN_PARAMS = (
     "energy",
     "damping",
     "attachment",
+    "damping_kind",
 )
 
 

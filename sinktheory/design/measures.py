@@ -15,7 +15,8 @@ spring 1, period T = 2 pi), energies relative to the container's initial energy 
   and gives NaN, as does a level never reached;
 * **long-time share**: the time average of E after ``transient`` periods, mean over runs
   +- standard error (:func:`sinktheory.sinkstats.sink_measures`), against the
-  equipartition prediction E/(1 + k(1 + 1/n)) with a verdict (:data:`VERDICTS`);
+  equipartition prediction E/(1 + k(1 + 1/n)) with a verdict (:data:`VERDICTS`); for a
+  1-D attachment E/(1 + k(1 + 1/n)/2) (:func:`line_equipartition`);
 * **run-to-run spread**: the standard deviation of the runs' long-time averages;
 * **recurrence risk**: the longest excursion of <E> back above the level (1 - a_risk) E0
   after it first fell below it (periods; 0 if it never came back, NaN if it never fell
@@ -99,7 +100,7 @@ class DesignMeasures(Result):
     long_time_mean, long_time_se : float
         Long-time container energy (after ``transient`` periods).
     equipartition : float
-        E_total / (1 + k (1 + 1/n)).
+        E_total / (1 + k (1 + 1/n)) (1-D attachments: :func:`line_equipartition`).
     equipartition_z : float
         (long_time_mean - equipartition) / long_time_se (inf when the s.e. is 0).
     verdict : int
@@ -273,6 +274,31 @@ def _rqa(series: np.ndarray, eps: float) -> dict:
     return {name: float(getattr(r, name)) for name in RQA_MEASURES}
 
 
+#: Attachments whose particles move on a line (one degree of freedom each).
+LINE_ATTACHMENTS = ("nes", "impact")
+
+
+def line_equipartition(total_energy: float, particles: int, n: float) -> float:
+    """E / (1 + k (1 + 1/n) / 2): the container's equipartition share when each of the
+    k particles moves on a line (the 1-D attachments).
+
+    The argument of :mod:`sinktheory.sinkstats` with one coordinate per particle: the
+    container holds Theta, each particle Theta/2 of kinetic energy and, in a potential
+    homogeneous of degree 2n in x, Theta/(2n) of potential energy; rigid walls
+    (n = inf, the vibro-impact NES) hold none.
+
+    Examples
+    --------
+    >>> line_equipartition(1.0, 1, 2), line_equipartition(1.0, 1, math.inf)
+    (0.5714285714285714, 0.6666666666666666)
+    """
+    e = v.positive("total_energy", total_energy)
+    k = v.positive_int("particles", particles)
+    if n != math.inf:
+        n = v.positive("n", n)
+    return e / (1 + k * (1 + 1 / n) / 2)
+
+
 def design_measures(
     energy_runs,
     *,
@@ -288,6 +314,7 @@ def design_measures(
     bootstrap: int = 50,
     seed: int = 0,
     window: int | None = None,
+    attachment: str = "well",
 ) -> DesignMeasures:
     """The design measures of an ensemble (see the module docstring).
 
@@ -316,6 +343,9 @@ def design_measures(
     window : int in 0..P, optional
         Periods <E> must stay below a level after crossing it for the settling time
         (default :func:`default_window` of P; 0 gives the plain first passage).
+    attachment : {"well", "nes", "impact"}
+        The equipartition share of the 2-D sink (``"well"``) or of particles on a line
+        (:func:`line_equipartition`; ``"impact"``: rigid walls, n = inf).
 
     Returns
     -------
@@ -360,8 +390,12 @@ def design_measures(
     reach = np.isfinite(b_pass).mean(axis=0)
 
     # long-time share and its verdict
+    share = s.equipartition
+    if v.choice("attachment", attachment, ("well", *LINE_ATTACHMENTS)) != "well":
+        share = line_equipartition(total_energy, particles,
+                                   math.inf if attachment == "impact" else n)  # fmt: skip
     se = s.long_time_stderr
-    diff = s.long_time_mean - s.equipartition
+    diff = s.long_time_mean - share
     z = diff / se if se > 0 else (0.0 if diff == 0 else math.copysign(math.inf, diff))
     verdict = 0 if abs(z) <= sigmas else (1 if z > 0 else -1)
 
@@ -388,7 +422,7 @@ def design_measures(
         passage_reach=reach,
         long_time_mean=s.long_time_mean,
         long_time_se=se,
-        equipartition=s.equipartition,
+        equipartition=share,
         equipartition_z=float(z),
         verdict=verdict,
         depth=1.0 - s.long_time_mean / e0,

@@ -17,6 +17,15 @@ indicators are of the conservative model); the equipartition share still compare
 the initial total energy, so its verdict is expected to be "below".  With c0 = 0,
 zeta_eq and the dissipated share are exactly 0.
 
+What ``damping`` means is set by ``damping_kind`` and reported in the result
+``dashpot`` (1 or 0): for the 2-D well ``"contact"`` (the default, above: c0 per
+particle, at the wall only) or ``"viscous"``, the 1-D attachments' dashpot on the
+particles' velocity relative to the container everywhere in the well, c = ``damping``
+shared by the k particles (c/k each, as :func:`sinktheory.attachments.impulse_response`
+does for the well), so that a well and an NES at the same ``damping`` have equal
+dashpots.  The 1-D attachments always use the dashpot (``damping_kind`` does not change
+them).
+
 The ``attachment`` dimension (default ``"well"``: everything above, unchanged) also runs
 the 1-D absorbers of :mod:`sinktheory.attachments` at the point's mass: ``"nes"`` (one
 particle on the line y = 0 of the point's well, force ~ x^(2n-1); n = 2 is the cubic
@@ -27,10 +36,11 @@ start states, with ``damping`` the dashpot coefficient c on the particle's veloc
 relative to the container (the viscous damper of the 1-D absorbers; 0: conservative).
 zeta_eq is the same equivalent ratio W(t) / (2 integral E_c dt) (trapezoid rule over
 ``SAMPLES`` samples per period), lambda_1 is left out (NaN), and the equipartition
-share is the 2-D sink's formula, for comparison (a particle held on a line has half the
-degrees of freedom).  They need particles = 1 and gamma = 1, and their start box is
-``box`` times sqrt(2 E0) (:func:`~sinktheory.attachments.impulse_response`); dt_used is
-the response's ``dt`` where it reports one, else NaN.
+share is that of a particle on a line, E/(1 + k(1 + 1/n)/2), with n = oo for the
+vibro-impact NES (:func:`sinktheory.design.measures.line_equipartition`).  They need
+particles = 1 and gamma = 1, and their start box is ``box`` times sqrt(2 E0)
+(:func:`~sinktheory.attachments.impulse_response`); dt_used is the response's ``dt``
+(NaN for the vibro-impact NES, whose flow is exact).
 
 Examples
 --------
@@ -65,6 +75,7 @@ from .measures import RQA_MEASURES, design_measures, horizons_of
 
 #: Results of a point that come from its ensemble (besides the container energy).
 ENSEMBLE_RESULTS = (
+    "dashpot",
     "max_relative_energy_error",
     "dt_used",
     "zeta_eq",
@@ -147,6 +158,7 @@ def check(p: dict) -> None:
             energy=p["energy"], runs=p["lyapunov_runs"], periods=p["lyapunov_periods"]
         ).check(sink)
     v.nonnegative("damping", p["damping"])
+    v.choice("damping_kind", p.get("damping_kind", "contact"), ("contact", "viscous"))
     if p["runs"] < 2:
         raise ParameterError("runs", p["runs"], "at least 2 (standard errors need two runs)")
     lyapunov = p["lyapunov_runs"] * p["lyapunov_periods"] * tangent_steps(p["particles"], 1)
@@ -196,17 +208,20 @@ def ensemble(p: dict, seed: int) -> dict[str, Any]:
     if p.get("attachment", "well") != "well":
         return _impulse_ensemble(p, seed)
     sink, settings = sink_of(p), settings_of(p, seed)
+    kind = p.get("damping_kind", "contact")
+    dashpot = float(kind == "viscous")
     if p["damping"] > 0:
         from .inelastic import simulate_inelastic
 
-        res = simulate_inelastic(
-            sink, settings, damping=p["damping"], tol=p["tol"], energy_bound=p["energy_bound"]
-        )
+        c = p["damping"] / p["particles"] if dashpot else p["damping"]
+        res = simulate_inelastic(sink, settings, damping=c, damping_kind=kind, tol=p["tol"],
+                                 energy_bound=p["energy_bound"])  # fmt: skip
         zeta, zeta_se = res.equivalent_damping()
         share = res.dissipated[:, -1] / res.initial_energy
         return {
             "energy": res.container_energy,
             "h0": res.initial_energy,
+            "dashpot": dashpot,
             "max_relative_energy_error": res.max_audit_error,
             "dt_used": res.dt,
             "zeta_eq": zeta,
@@ -225,6 +240,7 @@ def ensemble(p: dict, seed: int) -> dict[str, Any]:
     return {
         "energy": res.container_energy,
         "h0": res.initial_energy,
+        "dashpot": dashpot,
         "max_relative_energy_error": res.max_relative_energy_error,
         "dt_used": res.dt,
         "zeta_eq": 0.0,
@@ -260,8 +276,9 @@ def _impulse_ensemble(p: dict, seed: int) -> dict[str, Any]:
     return {
         "energy": res.container_energy[:, ::SAMPLES],
         "h0": res.initial_energy,
+        "dashpot": 1.0,
         "max_relative_energy_error": res.max_audit_error,
-        "dt_used": getattr(res, "dt", math.nan),
+        "dt_used": res.dt,
         "zeta_eq": float(zeta.mean()),
         "zeta_eq_se": float(zeta.std(ddof=1) / math.sqrt(runs)),
         "dissipated": float(share.mean()),
@@ -288,6 +305,7 @@ def compute(p: dict, seed: int) -> dict[str, Any]:
         rqa_eps=p["rqa_eps"],
         bootstrap=p["bootstrap"],
         seed=seed,
+        attachment=p.get("attachment", "well"),
     )
     lam, lam_se = lyapunov(p, seed)
     mean, stderr = ensemble_mean(e)

@@ -85,7 +85,18 @@ def design_table(ds) -> list[dict]:
     dims = [d for d in ds.done.dims]
     fixed = {
         k: ds.attrs[k]
-        for k in ("shape", "alpha", "beta", "n", "particles", "mass", "energy", "damping")
+        for k in (
+            "shape",
+            "alpha",
+            "beta",
+            "n",
+            "particles",
+            "mass",
+            "energy",
+            "damping",
+            "attachment",
+            "damping_kind",
+        )
         if k in ds.attrs
     }
     rows = []
@@ -116,7 +127,7 @@ def design_table(ds) -> list[dict]:
             "max_relative_energy_error",
         ):
             row[name] = float(point[name])
-        for name in ("zeta_eq", "zeta_eq_se", "dissipated", "dissipated_se"):
+        for name in ("zeta_eq", "zeta_eq_se", "dissipated", "dissipated_se", "dashpot"):
             # stores written before the contact damping was a parameter: conservative
             row[name] = float(point[name]) if name in point else 0.0
         row.setdefault("damping", 0.0)

@@ -82,7 +82,7 @@ def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
             "lambda_1",
             "DET",
         ]
-        + (["zeta_eq", "dissipated / H0"] if damped else [])
+        + (["damper", "zeta_eq", "dissipated / H0"] if damped else [])
     )
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in ranked[:top]:
@@ -101,6 +101,7 @@ def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
         ]
         if damped:
             cells += [
+                "dashpot" if r.get("dashpot") == 1.0 else "contact",
                 fmt(r["zeta_eq"], r["zeta_eq_se"], 4),
                 fmt(r["dissipated"], r["dissipated_se"]),
             ]
@@ -208,7 +209,9 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
             "force -c0 s v_rel on each particle's velocity relative to the container, s = "
             "2n V/gamma (about 1 at the wall), integrated by a Strang splitting with exactly "
             "solved dissipative pair flows; the energy error shown is that of the audit "
-            "H + W = H0 (W the dissipated work);",
+            "H + W = H0 (W the dissipated work); damper 'dashpot': the same force with "
+            "s = 1 everywhere in the well, c shared by the particles (the 1-D attachments "
+            "always, the well with --damping-kind viscous);",
             "- zeta_eq: equivalent damping ratio of the container, W / (2 omega integral of "
             "E_c dt) over the run (the linear dashpot on the container that would dissipate "
             "the same work), mean ± s.e. over runs; dissipated / H0: the share of the total "

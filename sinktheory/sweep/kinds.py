@@ -343,7 +343,7 @@ def _design_coords(p: dict) -> dict[str, np.ndarray]:
 def _design_results() -> dict[str, Result]:
     scalar = {
         "long_time_mean": "long-time container energy (mean of the runs' time averages)",
-        "equipartition": "equipartition share E_total / (1 + k (1 + 1/n))",
+        "equipartition": "equipartition share E_total / (1 + k (1 + 1/n)) (1-D: k/2)",
         "equipartition_z": "(long_time_mean - equipartition) / long_time_se",
         "verdict": "0 equipartition, +1 above it (drain incomplete), -1 below (within sigmas)",
         "depth": "long-time fraction of E0 absorbed, 1 - long_time_mean / E0",
@@ -375,7 +375,8 @@ def _design_results() -> dict[str, Result]:
     out["stderr"] = Result(("period",), "float64", "standard error of <E>(jT)")
     out["zeta_eq"] = Result((), "float64", "equivalent damping ratio of the container")
     out["zeta_eq_se"] = Result((), "float64", "standard error of zeta_eq")
-    out["dissipated"] = Result((), "float64", "share of H0 dissipated in wall contact")
+    out["dissipated"] = Result((), "float64", "share of H0 dissipated (contact or dashpot)")
+    out["dashpot"] = Result((), "float64", "1: damping by a dashpot, 0: inelastic wall contact")
     out["dissipated_se"] = Result((), "float64", "standard error of dissipated")
     return out
 
@@ -456,6 +457,7 @@ KINDS = {
             "lyapunov_periods": Param(int, 100),
             "damping": Param(float, 0.0),
             "attachment": Param(str, "well", ("well", "nes", "impact")),
+            "damping_kind": Param(str, "contact", ("contact", "viscous")),
             "replica": Param(int, 0),
         },
         _design_results(),
