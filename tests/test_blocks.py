@@ -67,13 +67,18 @@ def test_cost_table_is_measured_once_then_read_from_disk(tmp_path, monkeypatch):
     monkeypatch.setattr(blocks, "_memory", {})  # a new process
     second = blocks.block_costs(None, path, 5, state)
     assert fake.calls == 1 and first == second
-    # a damaged or incomplete table is measured again, never trusted
-    for damage in ["{not json", json.dumps({"costs": {"16": 1e-8}}),
-                   json.dumps({"costs": {str(b): -1.0 for b in blocks.SIZES}})]:  # fmt: skip
+    # a damaged or incomplete table, or one measured by another calibration, is measured
+    # again, never trusted
+    version = blocks.CALIBRATION
+    for damage in ["{not json", json.dumps({"costs": {"16": 1e-8}, "calibration": version}),
+                   json.dumps({"costs": {str(b): -1.0 for b in blocks.SIZES},
+                               "calibration": version}),
+                   json.dumps({"costs": {str(b): 2.0 for b in blocks.SIZES},
+                               "calibration": version - 1})]:  # fmt: skip
         path.write_text(damage)
         monkeypatch.setattr(blocks, "_memory", {})
         assert blocks.block_costs(None, path, 5, state) == first
-    assert fake.calls == 4
+    assert fake.calls == 5
 
 
 def test_measured_table_covers_every_size_with_positive_costs():

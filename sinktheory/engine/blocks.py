@@ -61,6 +61,10 @@ SIZES = (1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 28, 32, 40, 48, 56, 64)
 THREAD_GAIN = 1.15
 #: Runs and steps of each calibration measurement (about 0.2-2 ms each).
 _CALIBRATION_WORK = 8192
+#: Version of :func:`measure`; a cached table measured by another version is measured again
+#: (2: one Verlet step per step; version 1 ran a two-stage scheme that read one kick weight
+#: past its array).
+CALIBRATION = 2
 
 
 @dataclass(frozen=True)
@@ -172,13 +176,16 @@ def block_costs(module, path, members: int, state) -> dict[int, float]:
         return _memory[key]
     try:
         with open(path) as f:
-            costs = {int(b): float(c) for b, c in json.load(f)["costs"].items()}
+            data = json.load(f)
+        costs = {int(b): float(c) for b, c in data["costs"].items()}
+        if data.get("calibration") != CALIBRATION:
+            costs = {}
     except (OSError, ValueError, KeyError, TypeError, AttributeError):
         costs = {}
     if set(costs) != set(SIZES) or not all(c > 0 for c in costs.values()):
         costs = measure(module, *state)
-        _write(path, {"members": members, "sizes": "seconds per run and leapfrog step",
-                      "costs": costs})  # fmt: skip
+        _write(path, {"members": members, "calibration": CALIBRATION,
+                      "sizes": "seconds per run and Verlet step", "costs": costs})  # fmt: skip
     _memory[key] = costs
     return costs
 
@@ -199,14 +206,15 @@ def measure(module, q, v, table) -> dict[int, float]:
     """Time the compiled engine on one thread for every block size of :data:`SIZES`.
 
     Each size runs a block of copies of the one-run state (q, v, table: columns of one run)
-    with the second-order leapfrog for s and 2s steps; the difference removes the fixed cost
-    of a call, and the best of three repeats is kept (the least disturbed by other
-    processes).  Returns seconds per run and step.
+    with the Verlet (leapfrog) scheme for s and 2s steps; the difference removes the fixed
+    cost of a call, and the best of three repeats is kept (the least disturbed by other
+    processes).  Returns seconds per run and step (one force evaluation a step).
     """
     import numba
 
-    a = np.array([0.0, 1.0])
-    b = np.array([0.5, 0.5])
+    from ..integrators import get_scheme
+
+    a, b = get_scheme("verlet").arrays()  # kick, drift, kick: one force evaluation a step
     threads = numba.get_num_threads()
     numba.set_num_threads(1)
     try:

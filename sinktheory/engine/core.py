@@ -313,7 +313,7 @@ class Ensemble:
         return {p: min(t) for p, t in self._seconds.items()}
 
     def block_costs(self) -> dict[int, float]:
-        """This machine's cost per run and leapfrog step of the engine for each block size
+        """This machine's cost per run and Verlet step of the engine for each block size
         (measured once, then read from the cache; :func:`blocks.block_costs`)."""
         D = self.q.shape[0]
         one = (self.q[:, :1], self.v[:, :1], self.table[:, :1])
