@@ -67,25 +67,35 @@ def test_kernels_match_the_separable_hamiltonian(shape, n):
 
 
 @pytest.mark.parametrize("system", ["sink_flat_n4", "sink_symmetric_n3", "henon_heiles"])
-def test_single_run_kernel_is_bitwise_the_block_kernel(system):
-    """accelerations_one (one run, vectorised across the particles, the container's
-    reaction summed afterwards) gives each run the bits the block kernel gives it, signed
-    zeros included, for any number of particles and per-run parameters."""
+def test_single_run_kernels_are_bitwise_the_block_kernels(system):
+    """The one-run kernels (vectorised across the particles, the container's share summed
+    afterwards) give each run the bits the block kernels give it, signed zeros included,
+    for any number of particles and per-run parameters."""
     mod = load(system)
     rng = np.random.default_rng(7)
     for k in (0, 1, 5, 13) if mod.MEMBER_COORDS else (0,):
-        D, R = mod.SHARED + mod.MEMBER_COORDS * k, 6
+        D, R, M = mod.SHARED + mod.MEMBER_COORDS * k, 6, 3
         q = rng.uniform(-0.6, 0.6, size=(D, R))
         q[:, 0] = 0.0  # every force term is a signed zero here
         q[:, 1] = -0.0
-        params = rng.uniform(0.2, 0.4, size=(mod.NPARAMS, R))
-        P = mod.table_of(params, R)
-        block = mod.block_accelerations(q, P)
+        P = mod.table_of(rng.uniform(0.2, 0.4, size=(mod.NPARAMS, R)), R)
+        dq, dv = rng.normal(size=(D, M, R)), rng.normal(size=(D, M, R))
+        a = mod.block_accelerations(q, P)
+        h = np.empty((mod.hessian_rows(D), R))
+        mod.hessian(q, h, P)
+        kicked = dv.copy()
+        mod.tangent_kick(h, dq, kicked, 0.3, P)
+        w = np.empty((mod.SHARED, k))
         for r in range(R):
-            a = np.empty((D, 1))
-            mod.accelerations_one(q[:, r : r + 1].copy(), a, P[:, r : r + 1].copy(),
-                                  np.empty((mod.SHARED, k)))  # fmt: skip
-            assert a[:, 0].tobytes() == block[:, r].tobytes(), (k, r)
+            col = slice(r, r + 1)
+            Pr = P[:, col].copy()
+            a1, h1, dv1 = np.empty((D, 1)), np.empty((h.shape[0], 1)), dv[:, :, col].copy()
+            mod.accelerations_one(q[:, col].copy(), a1, Pr, w)
+            mod.hessian_one(q[:, col].copy(), h1, Pr)
+            mod.tangent_kick_one(h1, dq[:, :, col].copy(), dv1, 0.3, Pr, w)
+            assert a1.tobytes() == a[:, col].copy().tobytes(), (k, r)
+            assert h1.tobytes() == h[:, col].copy().tobytes(), (k, r)
+            assert dv1.tobytes() == kicked[:, :, col].copy().tobytes(), (k, r)
 
 
 def _fig8_like(runs, k=2):

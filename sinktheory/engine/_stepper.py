@@ -14,11 +14,12 @@ sink); the energy audit, the renormalisation of deviation vectors and all per-se
 records happen at segment ends.  Runs are processed in blocks (their size and the threads
 are chosen by :mod:`sinktheory.engine.blocks`); a block is copied into contiguous local
 arrays, advanced, and copied back.  A block of a single run has nothing to vectorise across
-runs, so its accelerations come from ``accelerations_one``, which vectorises across the
-members (particles) of the run instead and sums their pull on the shared coordinates in
-the block kernel's order.  The arithmetic of a run does not depend on which block or
-thread it is in (no reductions across runs, no fast-math reassociation), so the numbers
-are bitwise the same for any block size and thread count.
+runs, so it takes the kernels ``accelerations_one``, ``hessian_one`` and
+``tangent_kick_one``, which vectorise across the members (particles) of the run instead and
+sum their pull on the shared coordinates in the block kernel's order.  The arithmetic of a
+run does not depend on which block or thread it is in (no reductions across runs, no
+fast-math reassociation), so the numbers are bitwise the same for any block size and
+thread count.
 """
 
 # ruff: noqa: F821
@@ -141,9 +142,9 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
     K = members_of(D)
     members = np.empty((K, B))
     work = np.empty(B)
-    # a block of one run takes accelerations_one, vectorised across the members (the same
-    # numbers; w is its work space).  The branch is written out at both calls: behind a
-    # helper function, the copy numba caches ran the single run 2x slower (measured).
+    # a block of one run takes the kernels *_one, vectorised across the members (the same
+    # numbers; w is their work space).  The branches are written out at every call: behind
+    # a helper function, the copy numba caches ran the single run 2x slower (measured).
     w = np.empty((SHARED, K))
     # flat views: the kick and the drift treat every entry alike, and one long loop
     # vectorises better than D short ones over a small block
@@ -154,7 +155,10 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
     else:
         accelerations(q, a, P)
     if M > 0:
-        hessian(q, h, P)
+        if B == 1:
+            hessian_one(q, h, P)
+        else:
+            hessian(q, h, P)
     for seg in range(seg0, seg1):
         for step in range(steps):
             for stage in range(s):
@@ -165,7 +169,10 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
                     v_[e] += ck * a_[e]
                     q_[e] += cd * v_[e]
                 if M > 0:
-                    tangent_kick(h, dq, dv, ck, P)
+                    if B == 1:
+                        tangent_kick_one(h, dq, dv, ck, P, w)
+                    else:
+                        tangent_kick(h, dq, dv, ck, P)
                     for e in range(D * M * B):
                         dq_[e] += cd * dv_[e]
                 if B == 1:
@@ -173,12 +180,18 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
                 else:
                     accelerations(q, a, P)
                 if M > 0:
-                    hessian(q, h, P)
+                    if B == 1:
+                        hessian_one(q, h, P)
+                    else:
+                        hessian(q, h, P)
             ck = bh[s] * dt
             for e in range(D * B):
                 v_[e] += ck * a_[e]
             if M > 0:
-                tangent_kick(h, dq, dv, ck, P)
+                if B == 1:
+                    tangent_kick_one(h, dq, dv, ck, P, w)
+                else:
+                    tangent_kick(h, dq, dv, ck, P)
             g = seg * steps + step + 1
             if mode != NO_TANGENT and renorm > 0 and g % renorm == 0 and step + 1 < steps:
                 _renormalise(dq, dv, logs, mode == ORTHONORMALISE)

@@ -1,15 +1,11 @@
 """Print the compiled engine of one :class:`~sinktheory.engine.systems.SeparableSystem`.
 
-The module it writes has five system kernels, each working on a block of B runs laid out
+The module it writes has four system kernels, each working on a block of B runs laid out
 structure-of-arrays (q[i, b]: coordinate i of run b, runs contiguous), so the loops over
 runs vectorise:
 
 ``accelerations(q, a, P)``
     a = -M^-1 grad U(q).
-``accelerations_one(q, a, P, w)``
-    the same for a block of one run, vectorised across its members (w: work space); the
-    members' pull on the shared coordinates is summed after that loop in the block
-    kernel's order, so the numbers are bitwise those of ``accelerations``.
 ``hessian(q, h, P)``
     the local Hessian entries of every term (what the tangent map needs).
 ``tangent_kick(h, dq, dv, c, P)``
@@ -18,6 +14,12 @@ runs vectorise:
     symplectic.
 ``energies(q, v, P, total, shared, members)``
     H per run, the shared part (container) and each member's part (particle).
+
+The first three have a twin for a block of a single run (``accelerations_one(q, a, P, w)``,
+``hessian_one``, ``tangent_kick_one(h, dq, dv, c, P, w)``) that loops over the members
+innermost, so it vectorises across them; the members' pull on a shared coordinate goes to
+the work rows w and is summed after that loop in the order of the block kernel's sums, so
+the numbers are bitwise the same.
 
 followed by the system-independent stepper of :mod:`sinktheory.engine._stepper`.  Integer
 powers are printed as products by repeated squaring with the exponent fixed in the text, so
@@ -142,6 +144,17 @@ def _used(loads: list[str], text: str) -> list[str]:
     return [s for s in loads if re.search(rf"\b{s.split(' = ')[0]}\b", text)]
 
 
+def _one_params(system: SeparableSystem) -> list[str]:
+    """The loads of :func:`_params` for a single run (column 0), put once at the top of a
+    one-run kernel."""
+    return [s.replace(", b]", ", 0]") for s in _params(system)]
+
+
+def _members(body: list[str], member: bool) -> list[str]:
+    """``for j`` over the members around ``body`` (a member term of a one-run kernel)."""
+    return ["for j in range(K):", *("    " + s for s in body)] if member else body
+
+
 def _loop(body: list[str], member: bool, runs_var: str = "B", params=()) -> list[str]:
     """``for b`` (and ``for j`` over members) around ``body``, with the run's parameter
     loads ``params`` first."""
@@ -219,12 +232,11 @@ def _accelerations_one(system: SeparableSystem, im) -> list[str]:
                 sums += ["for j in range(K):", f"    {acc[c]} += w[{i}, j]"]
             else:
                 inner.append(f"{acc[c]} += {val}")
-        body += ["for j in range(K):", *("    " + s for s in inner), *sums] if member else inner
+        body += _members(inner, member) + sums
     body += [f"a[{i}, 0] = {acc[c]}" for i, c in enumerate(system.shared)]
     idle = [f"    a[{_index(system, c)}, 0] = 0.0" for c in system.member if c not in written]
     body += ["for j in range(K):", *idle] if idle else []
-    params = [s.replace(", b]", ", 0]") for s in _params(system)]
-    return _used(params, "\n".join(body)) + body
+    return _used(_one_params(system), "\n".join(body)) + body
 
 
 def _hessian_rows(system: SeparableSystem):
@@ -248,20 +260,31 @@ def _h_index(system, member, first, e) -> str:
     return str(first + e)
 
 
-def _hessian(system: SeparableSystem) -> list[str]:
-    body = ["B = q.shape[1]", "K = members_of(q.shape[0])"]
+def _hessian(system: SeparableSystem, one: bool = False) -> list[str]:
+    """Body of ``hessian`` (or, ``one``, of ``hessian_one``: a single run, members in the
+    innermost loop)."""
+    run = "0" if one else "b"
+    body = (
+        ["K = members_of(q.shape[0])"] if one else ["B = q.shape[1]", "K = members_of(q.shape[0])"]
+    )
     for term, member, first in _hessian_rows(system)[0]:
         assign, values = _cse(list(term.hessian), "t")
-        inner = _load(system, member) + _local_lines(term) + assign
+        inner = _load(system, member, run=run) + _local_lines(term) + assign
         inner += [
-            f"h[{_h_index(system, member, first, e)}, b] = {val}" for e, val in enumerate(values)
+            f"h[{_h_index(system, member, first, e)}, {run}] = {val}"
+            for e, val in enumerate(values)
         ]
-        body += _loop(inner, member, params=_params(system))
-    return body
+        body += _members(inner, member) if one else _loop(inner, member, params=_params(system))
+    return _used(_one_params(system), "\n".join(body)) + body if one else body
 
 
-def _tangent_kick(system: SeparableSystem, im) -> list[str]:
-    body = ["M = dq.shape[1]", "B = dq.shape[2]", "K = members_of(dq.shape[0])"]
+def _tangent_kick(system: SeparableSystem, im, one: bool = False) -> list[str]:
+    """Body of ``tangent_kick`` (or, ``one``, of ``tangent_kick_one``: a single run, members
+    in the innermost loop, their pull on the shared coordinates stored in w and summed
+    after that loop in the order of the block kernel's sums)."""
+    run = "0" if one else "b"
+    body = ["M = dq.shape[1]", "K = members_of(dq.shape[0])"]
+    body += [] if one else ["B = dq.shape[2]"]
     body += ["for m in range(M):"]
     for term, member, first in _hessian_rows(system)[0]:
         coords = _coords_of(system, member)
@@ -281,14 +304,25 @@ def _tangent_kick(system: SeparableSystem, im) -> list[str]:
             for ci, c in enumerate(coords)
         ]
         assign, values = _cse(outs, "t")
-        inner = [f"h{x} = h[{_h_index(system, member, first, x)}, b]" for x in range(e)]
-        inner += [f"d_{c.name} = dq[{_index(system, c)}, m, b]" for c in coords]
+        inner = [f"h{x} = h[{_h_index(system, member, first, x)}, {run}]" for x in range(e)]
+        inner += [f"d_{c.name} = dq[{_index(system, c)}, m, {run}]" for c in coords]
         inner += assign
+        sums = []
         for c, val in zip(coords, values, strict=True):
-            if val != "0":
-                inner.append(f"dv[{_index(system, c)}, m, b] += {val}")
-        body += ["    " + s for s in _loop(inner, member, params=_params(system))]
-    return body
+            if val == "0":
+                continue
+            if one and member and c in system.shared:
+                i = system.shared.index(c)
+                inner.append(f"w[{i}, j] = {val}")
+                sums += ["for j in range(K):", f"    dv[{i}, m, 0] += w[{i}, j]"]
+            else:
+                inner.append(f"dv[{_index(system, c)}, m, {run}] += {val}")
+        if one:
+            lines = _members(inner, member) + sums
+        else:
+            lines = _loop(inner, member, params=_params(system))
+        body += ["    " + s for s in lines]
+    return _used(_one_params(system), "\n".join(body)) + body if one else body
 
 
 def _energies(system: SeparableSystem) -> list[str]:
@@ -380,6 +414,18 @@ def render(system: SeparableSystem, banner: str) -> str:
             "h, dq, dv, c, P",
             "dv[:, m] += -c M^-1 Hess U dq[:, m]: the derivative of the kick v += c a(q).",
             im_lines + _tangent_kick(system, im),
+        ),
+        _function(
+            "hessian_one",
+            "q, h, P",
+            "hessian of a single run, h[entry, 0].",
+            _hessian(system, one=True),
+        ),
+        _function(
+            "tangent_kick_one",
+            "h, dq, dv, c, P, w",
+            "tangent_kick of a single run, bitwise; w (SHARED, K) is work space.",
+            im_lines + _tangent_kick(system, im, one=True),
         ),
         _function(
             "energies",
