@@ -30,20 +30,6 @@ import numpy as np
 
 from .ranking import rank
 
-#: The design parameters a user sweeps (any other parameter of the kind may be given too).
-DESIGN_PARAMS = (
-    "shape",
-    "alpha",
-    "beta",
-    "n",
-    "particles",
-    "mass",
-    "energy",
-    "damping",
-    "attachment",
-    "damping_kind",
-)
-
 
 @dataclass(frozen=True)
 class DesignRun:
@@ -143,8 +129,9 @@ def explore(
     Parameters
     ----------
     params : dict
-        name -> value or list of values: the design parameters :data:`DESIGN_PARAMS` and
-        any setting of the ``design`` kind (runs, periods, horizons, tol, transient,
+        name -> value or list of values: the design parameters
+        :data:`~sinktheory.design.ranking.DESIGN_PARAMS` and any setting of the
+        ``design`` kind (runs, periods, horizons, tol, transient,
         sigmas, risk_level, rqa_eps, bootstrap, lyapunov_runs, lyapunov_periods, ...).
         beta and n are required.
     seed : int >= 0

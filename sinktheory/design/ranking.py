@@ -41,6 +41,20 @@ import math
 
 import numpy as np
 
+#: The design parameters a user sweeps (any other parameter of the kind may be given too).
+DESIGN_PARAMS = (
+    "shape",
+    "alpha",
+    "beta",
+    "n",
+    "particles",
+    "mass",
+    "energy",
+    "damping",
+    "attachment",
+    "damping_kind",
+)
+
 
 def pareto_layers(speed, depth, spread) -> np.ndarray:
     """Pareto layer (1 = front) of each design: minimise speed and spread, maximise depth.
@@ -83,22 +97,7 @@ def design_table(ds) -> list[dict]:
     """
     ds = ds.load()
     dims = [d for d in ds.done.dims]
-    fixed = {
-        k: ds.attrs[k]
-        for k in (
-            "shape",
-            "alpha",
-            "beta",
-            "n",
-            "particles",
-            "mass",
-            "energy",
-            "damping",
-            "attachment",
-            "damping_kind",
-        )
-        if k in ds.attrs
-    }
+    fixed = {k: ds.attrs[k] for k in DESIGN_PARAMS if k in ds.attrs}
     rows = []
     for index in np.ndindex(*ds.done.shape):
         where = dict(zip(dims, index, strict=True))

@@ -75,28 +75,26 @@ def draw_t90(ax, comparison) -> None:
     ax.grid(alpha=0.3, which="both")
 
 
-def plot_efficiency(comparison, *, title: str | None = None):
-    """The efficiency chart alone."""
+def _alone(draw, comparison, title):
+    """One chart of ``draw`` on its own figure."""
     from matplotlib.figure import Figure
 
     fig = Figure(figsize=(7, 4.6), layout="constrained")
     ax = fig.add_subplot()
-    draw_efficiency(ax, comparison)
+    draw(ax, comparison)
     ax.legend(fontsize=8)
     ax.set_title(title or _title(comparison), fontsize=10)
     return fig
+
+
+def plot_efficiency(comparison, *, title: str | None = None):
+    """The efficiency chart alone."""
+    return _alone(draw_efficiency, comparison, title)
 
 
 def plot_t90(comparison, *, title: str | None = None):
     """The 90 % time chart alone."""
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(7, 4.6), layout="constrained")
-    ax = fig.add_subplot()
-    draw_t90(ax, comparison)
-    ax.legend(fontsize=8)
-    ax.set_title(title or _title(comparison), fontsize=10)
-    return fig
+    return _alone(draw_t90, comparison, title)
 
 
 def plot_comparison(comparison, *, title: str | None = None):
