@@ -66,7 +66,9 @@ def test_kernels_match_the_separable_hamiltonian(shape, n):
     assert shared[0] == pytest.approx(0.5 * v[0, 0] ** 2 + 0.5 * float(STATE[0]) ** 2, rel=1e-15)
 
 
-@pytest.mark.parametrize("system", ["sink_flat_n4", "sink_symmetric_n3", "henon_heiles"])
+@pytest.mark.parametrize(
+    "system", ["sink_flat_n4", "sink_symmetric_n3", "sink_circular_n4", "henon_heiles"]
+)
 def test_single_run_kernels_are_bitwise_the_block_kernels(system):
     """The one-run kernels (vectorised across the particles, the container's share summed
     afterwards) give each run the bits the block kernels give it, signed zeros included,
@@ -96,6 +98,19 @@ def test_single_run_kernels_are_bitwise_the_block_kernels(system):
             assert a1.tobytes() == a[:, col].copy().tobytes(), (k, r)
             assert h1.tobytes() == h[:, col].copy().tobytes(), (k, r)
             assert dv1.tobytes() == kicked[:, :, col].copy().tobytes(), (k, r)
+
+
+def test_symbol_names_the_kernels_use_are_refused():
+    """A system symbol named like a kernel's own variable (the circular well's atom w once
+    met the work array w) is refused when the engine is printed, not miscompiled."""
+    from sinktheory.engine.printer import render
+    from sinktheory.engine.systems import SeparableSystem, Term
+
+    pull, x = sp.symbols("pull x", real=True)
+    term = Term.plain((pull, x), (pull, x), pull**2 * x**2)
+    system = SeparableSystem("clash", (pull, x), (sp.Integer(1),) * 2, shared_terms=(term,))
+    with pytest.raises(ValueError, match=r"\['pull'\]"):
+        render(system, "")
 
 
 def _fig8_like(runs, k=2):

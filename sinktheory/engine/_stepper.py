@@ -143,15 +143,15 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
     members = np.empty((K, B))
     work = np.empty(B)
     # a block of one run takes the kernels *_one, vectorised across the members (the same
-    # numbers; w is their work space).  The branches are written out at every call: behind
+    # numbers; pull is their work space).  The branches are written out at every call: behind
     # a helper function, the copy numba caches ran the single run 2x slower (measured).
-    w = np.empty((SHARED, K))
+    pull = np.empty((SHARED, K))
     # flat views: the kick and the drift treat every entry alike, and one long loop
     # vectorises better than D short ones over a small block
     q_, v_, a_ = q.reshape(D * B), v.reshape(D * B), a.reshape(D * B)
     dq_, dv_ = dq.reshape(D * M * B), dv.reshape(D * M * B)
     if B == 1:
-        accelerations_one(q, a, P, w)
+        accelerations_one(q, a, P, pull)
     else:
         accelerations(q, a, P)
     if M > 0:
@@ -170,13 +170,13 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
                     q_[e] += cd * v_[e]
                 if M > 0:
                     if B == 1:
-                        tangent_kick_one(h, dq, dv, ck, P, w)
+                        tangent_kick_one(h, dq, dv, ck, P, pull)
                     else:
                         tangent_kick(h, dq, dv, ck, P)
                     for e in range(D * M * B):
                         dq_[e] += cd * dv_[e]
                 if B == 1:
-                    accelerations_one(q, a, P, w)
+                    accelerations_one(q, a, P, pull)
                 else:
                     accelerations(q, a, P)
                 if M > 0:
@@ -189,7 +189,7 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
                 v_[e] += ck * a_[e]
             if M > 0:
                 if B == 1:
-                    tangent_kick_one(h, dq, dv, ck, P, w)
+                    tangent_kick_one(h, dq, dv, ck, P, pull)
                 else:
                     tangent_kick(h, dq, dv, ck, P)
             g = seg * steps + step + 1

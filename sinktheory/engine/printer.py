@@ -15,11 +15,11 @@ runs vectorise:
 ``energies(q, v, P, total, shared, members)``
     H per run, the shared part (container) and each member's part (particle).
 
-The first three have a twin for a block of a single run (``accelerations_one(q, a, P, w)``,
-``hessian_one``, ``tangent_kick_one(h, dq, dv, c, P, w)``) that loops over the members
+The first three have a twin for a block of a single run (``accelerations_one(q, a, P, pull)``,
+``hessian_one``, ``tangent_kick_one(h, dq, dv, c, P, pull)``) that loops over the members
 innermost, so it vectorises across them; the members' pull on a shared coordinate goes to
-the work rows w and is summed after that loop in the order of the block kernel's sums, so
-the numbers are bitwise the same.
+the work rows ``pull`` and is summed after that loop in the order of the block kernel's
+sums, so the numbers are bitwise the same.
 
 followed by the system-independent stepper of :mod:`sinktheory.engine._stepper`.  Integer
 powers are printed as products by repeated squaring with the exponent fixed in the text, so
@@ -205,7 +205,7 @@ def _accelerations_one(system: SeparableSystem, im) -> list[str]:
     """The body of ``accelerations_one``: the kernel of :func:`_accelerations` for a single
     run, with the members in the innermost loop so that it vectorises across them.
 
-    Each member's pull on a shared coordinate goes to the work row w[i, :] inside that loop
+    Each member's pull on a shared coordinate goes to the work row pull[i, :] inside that loop
     and is summed afterwards, member by member in the block kernel's order (from 0.0, then
     the shared terms, then the members of each term), so both kernels give the same bits.
     A member coordinate's first contribution is written as 0.0 + value, as in the block
@@ -228,8 +228,8 @@ def _accelerations_one(system: SeparableSystem, im) -> list[str]:
                 written.add(c)
             elif member:
                 i = system.shared.index(c)
-                inner.append(f"w[{i}, j] = {val}")
-                sums += ["for j in range(K):", f"    {acc[c]} += w[{i}, j]"]
+                inner.append(f"pull[{i}, j] = {val}")
+                sums += ["for j in range(K):", f"    {acc[c]} += pull[{i}, j]"]
             else:
                 inner.append(f"{acc[c]} += {val}")
         body += _members(inner, member) + sums
@@ -280,7 +280,7 @@ def _hessian(system: SeparableSystem, one: bool = False) -> list[str]:
 
 def _tangent_kick(system: SeparableSystem, im, one: bool = False) -> list[str]:
     """Body of ``tangent_kick`` (or, ``one``, of ``tangent_kick_one``: a single run, members
-    in the innermost loop, their pull on the shared coordinates stored in w and summed
+    in the innermost loop, their pull on the shared coordinates stored in ``pull`` and summed
     after that loop in the order of the block kernel's sums)."""
     run = "0" if one else "b"
     body = ["M = dq.shape[1]", "K = members_of(dq.shape[0])"]
@@ -313,8 +313,8 @@ def _tangent_kick(system: SeparableSystem, im, one: bool = False) -> list[str]:
                 continue
             if one and member and c in system.shared:
                 i = system.shared.index(c)
-                inner.append(f"w[{i}, j] = {val}")
-                sums += ["for j in range(K):", f"    dv[{i}, m, 0] += w[{i}, j]"]
+                inner.append(f"pull[{i}, j] = {val}")
+                sums += ["for j in range(K):", f"    dv[{i}, m, 0] += pull[{i}, j]"]
             else:
                 inner.append(f"dv[{_index(system, c)}, m, {run}] += {val}")
         if one:
@@ -349,8 +349,23 @@ def _energies(system: SeparableSystem) -> list[str]:
     return body
 
 
+#: Names the kernels use for their arguments and loop variables: no coordinate, parameter
+#: or atom of a system may take one (the circular well's atom w met the work array w once).
+RESERVED = frozenset("q v a h P c dq dv pull total shared members D B K M i j b m".split())
+
+
+def _check_names(system: SeparableSystem) -> None:
+    names = {s.name for s in (*system.shared, *system.member, *system.params)}
+    for term, _ in _terms(system):
+        names |= {s.name for s in term.local} | {a.name for a, _ in term.atoms}
+    clash = sorted(names & RESERVED)
+    if clash:
+        raise ValueError(f"system {system.name!r}: symbol names {clash} are the kernels' own")
+
+
 def render(system: SeparableSystem, banner: str) -> str:
     """Source text of the engine module of ``system``."""
+    _check_names(system)
     im, im_lines = _inverse_masses(system)
     _, shared_rows, member_rows = _hessian_rows(system)
     C = len(system.member)
@@ -398,9 +413,9 @@ def render(system: SeparableSystem, banner: str) -> str:
         ),
         _function(
             "accelerations_one",
-            "q, a, P, w",
+            "q, a, P, pull",
             "accelerations of a single run q[coordinate, 0], bitwise those of the block "
-            "kernel; w (SHARED, K) is work space.",
+            "kernel; pull (SHARED, K) is work space.",
             im_lines + _accelerations_one(system, im),
         ),
         _function(
@@ -423,8 +438,8 @@ def render(system: SeparableSystem, banner: str) -> str:
         ),
         _function(
             "tangent_kick_one",
-            "h, dq, dv, c, P, w",
-            "tangent_kick of a single run, bitwise; w (SHARED, K) is work space.",
+            "h, dq, dv, c, P, pull",
+            "tangent_kick of a single run, bitwise; pull (SHARED, K) is work space.",
             im_lines + _tangent_kick(system, im, one=True),
         ),
         _function(
