@@ -126,3 +126,27 @@ def test_chooser_keeps_the_faster_plan_and_looks_again_now_and_then():
     assert chooser.next() is one
     # a later run of the same ensemble starts from what it learnt
     assert _Chooser([two, one], seconds).next() is one
+
+
+def test_chooser_does_not_try_a_plan_predicted_slower_than_what_runs():
+    """Two runs on two threads at their predicted speed: the one-thread plan, predicted twice
+    as slow, is never run (it cost a short ensemble 2 of its 5 periods); once the running
+    plan slows down past that prediction (a busy core), it is tried and taken."""
+    from sinktheory.engine.core import _Chooser
+
+    two = blocks.BlockPlan(2, 1, 2, 2, 30e-9)
+    one = blocks.BlockPlan(2, 1, 2, 1, 60e-9)
+    evaluations = 1197 * 11  # force evaluations per segment (blanes-moan6, Fig. 8's step)
+    speed = {two: 0.4e-3, one: 0.75e-3}  # seconds per segment, as measured
+    chooser, picked = _Chooser([two, one], {}, evaluations), []
+    for i in range(40):
+        plan = chooser.next()
+        picked.append(plan)
+        chooser.record(plan, speed[plan], i > 0)
+    assert all(p is two for p in picked)
+    speed[two] = 3e-3  # the second core got busy
+    for _ in range(6):
+        plan = chooser.next()
+        picked.append(plan)
+        chooser.record(plan, speed[plan], True)
+    assert picked[-1] is one

@@ -243,7 +243,9 @@ class Ensemble:
         )  # fmt: skip
         fails = (np.zeros(Rp, dtype=np.int64), np.zeros(Rp), np.zeros(Rp))  # segment, H, worst
         chunk = max(1, math.ceil(S / 100))
-        chooser = _Chooser(plans, self._seconds)
+        # the cost table is per run and Verlet step (one force evaluation); a step of the
+        # scheme evaluates the forces once per stage
+        chooser = _Chooser(plans, self._seconds, steps * len(fixed[0][0]))
         bar = ProgressBar(S, enabled=progress is not False, label=label, unit=unit)
         seg_base = self.segments_done
         try:
@@ -358,31 +360,50 @@ def _pad(a: np.ndarray, runs: int) -> np.ndarray:
 
 class _Chooser:
     """Which plan each chunk of segments runs with.  One plan: always it.  Several (see
-    :func:`blocks.candidates`): until each has been timed :data:`TRIES` times (the first
-    chunk of an ensemble only warms up: it may include compilation), the one timed least;
-    then the one whose best of its last TRIES timings is fastest per segment (a best-of is
-    robust to the pauses of a shared machine), with every 16th chunk re-timing one of the
-    others in turn, so that a core that becomes busy (or free) is noticed.  ``seconds``
+    :func:`blocks.candidates`): the first chunk of an ensemble only warms up (it may include
+    compilation) and runs the predicted plan; then each plan *worth timing* is timed
+    :data:`TRIES` times, the least timed first, and the one whose best of its last TRIES
+    timings is fastest per segment carries on (a best-of is robust to the pauses of a shared
+    machine), with every 16th chunk re-timing one of the others in turn, so that a core
+    that becomes busy (or free) is noticed.  A plan is worth timing when it is the
+    predicted one, has been timed, or its predicted time per segment (``predicted`` per
+    Verlet step times ``evaluations`` per segment) is below the fastest time seen: the
+    one-thread table never overrates a plan much (threads do not beat it), so a plan
+    predicted slower than what runs already is not tried (a short ensemble of a few runs
+    spent 2 of its 5 periods on a one-thread plan predicted twice as slow).  ``seconds``
     (plan -> recent seconds per segment) is the ensemble's, kept across its runs.  The
     numbers do not depend on the choice."""
 
     REFRESH = 16
     TRIES = 2
 
-    def __init__(self, plans, seconds: dict):
+    def __init__(self, plans, seconds: dict, evaluations: float = 1.0):
         self.plans = plans
         self.seconds = seconds
+        self.evaluations = evaluations
         self.count = 0
+
+    def _worth_timing(self) -> list:
+        seen = [min(self.seconds[p]) for p in self.plans if self.seconds.get(p)]
+        fastest = min(seen, default=math.inf)
+        return [
+            p
+            for p in self.plans
+            if p == self.plans[0]
+            or self.seconds.get(p)
+            or not p.predicted * self.evaluations >= fastest
+        ]
 
     def next(self) -> blocks.BlockPlan:
         i, self.count = self.count, self.count + 1
         if len(self.plans) == 1 or not self.seconds:
             return self.plans[0]
-        timed = {p: len(self.seconds.get(p, ())) for p in self.plans}
+        plans = self._worth_timing()
+        timed = {p: len(self.seconds.get(p, ())) for p in plans}
         if min(timed.values()) < self.TRIES:
-            return min(self.plans, key=timed.__getitem__)
-        best = min(self.plans, key=lambda p: min(self.seconds[p]))
-        others = [p for p in self.plans if p != best]
+            return min(plans, key=timed.__getitem__)
+        best = min(plans, key=lambda p: min(self.seconds[p]))
+        others = [p for p in plans if p != best]
         if others and i % self.REFRESH == self.REFRESH - 1:
             return others[(i // self.REFRESH) % len(others)]
         return best
