@@ -22,7 +22,8 @@ right everywhere, so the policy is:
    measured on one thread, and two threads that share a core's vector units or caches do
    not run twice as fast, so the chosen plan, the best one-thread plan and the plans
    predicted nearly as fast are each timed on a few chunks of the run, and the fastest
-   carries on (re-timed now and then).
+   carries on (re-timed now and then); a plan predicted slower than the fastest time seen
+   is not tried (no plan runs faster than the one-thread table predicts).
 
 Results do not depend on the plan: a run's arithmetic is the same in every block and
 thread, and inert copies never touch real runs (``tests/test_engine.py`` checks the numbers
