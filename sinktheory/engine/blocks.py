@@ -23,7 +23,7 @@ right everywhere, so the policy is:
    not run twice as fast, so the chosen plan, the best one-thread plan and the plans
    predicted nearly as fast are each timed on a few chunks of the run, and the fastest
    carries on (re-timed now and then); a plan predicted slower than the fastest time seen
-   is not tried (no plan runs faster than the one-thread table predicts).
+   is not tried (a second thread never beats the one-thread table's prediction).
 
 Results do not depend on the plan: a run's arithmetic is the same in every block and
 thread, and inert copies never touch real runs (``tests/test_engine.py`` checks the numbers
