@@ -188,55 +188,56 @@ def _forces(system: SeparableSystem, term: Term, member: bool, im):
     return coords, assign, values
 
 
-def _accelerations(system: SeparableSystem, im) -> list[str]:
-    body = ["D = q.shape[0]", "B = q.shape[1]", "K = members_of(D)"]
-    body += ["for i in range(D):", "    for b in range(B):", "        a[i, b] = 0.0"]
-    for term, member in _terms(system):
-        coords, assign, values = _forces(system, term, member, im)
-        inner = _load(system, member) + _local_lines(term) + assign
+def _accelerations(system: SeparableSystem, im, one: bool = False) -> list[str]:
+    """Body of ``accelerations`` (or, ``one``, of ``accelerations_one``: a single run,
+    members in the innermost loop so that it vectorises across them).
+
+    A coordinate's first contribution is written as 0.0 + value, the bits of adding it to
+    a zero (signed zeros included) without zeroing the array first: LLVM turned that loop
+    into a call to memset at every evaluation (8-10 % of a block's time, half a single
+    run's).  Only coordinates that no term acts on, and shared ones first reached inside a
+    loop over members, are zeroed.  In the one-run kernel a shared coordinate sums in a
+    local from 0.0, and each member's pull on it goes to the work row pull[i, :] inside
+    the member loop and is added after it, member by member: the block kernel's order, so
+    both kernels give the same bits."""
+    run = "0" if one else "b"
+    forces = [(term, member, *_forces(system, term, member, im)) for term, member in _terms(system)]
+    first = {}  # coordinate -> its first contribution comes from a member term
+    for _, member, coords, _, values in forces:
         for c, val in zip(coords, values, strict=True):
             if val != "0":
-                inner.append(f"a[{_index(system, c)}, b] += {val}")
-        body += _loop(inner, member, params=_params(system))
-    return body
-
-
-def _accelerations_one(system: SeparableSystem, im) -> list[str]:
-    """The body of ``accelerations_one``: the kernel of :func:`_accelerations` for a single
-    run, with the members in the innermost loop so that it vectorises across them.
-
-    Each member's pull on a shared coordinate goes to the work row pull[i, :] inside that loop
-    and is summed afterwards, member by member in the block kernel's order (from 0.0, then
-    the shared terms, then the members of each term), so both kernels give the same bits.
-    A member coordinate's first contribution is written as 0.0 + value, as in the block
-    kernel, whose sums start from a zeroed array (which keeps the sign of a zero the same);
-    zeroing the array here instead made LLVM call memset at every evaluation."""
-    body = ["D = q.shape[0]", "K = members_of(D)"]
-    acc = {c: f"acc_{c.name}" for c in system.shared}
-    body += [f"{acc[c]} = 0.0" for c in system.shared]
-    written = set()
-    for term, member in _terms(system):
-        coords, assign, values = _forces(system, term, member, im)
-        inner = _load(system, member, run="0") + _local_lines(term) + assign
+                first.setdefault(c, member)
+    acc = {c: f"acc_{c.name}" for c in system.shared} if one else {}
+    zero = [c for c in system.shared if not one and first.get(c, True)]
+    zero += [c for c in system.member if c not in first]
+    body = ["D = q.shape[0]", "K = members_of(D)"] + ([] if one else ["B = q.shape[1]"])
+    body += [f"{a} = 0.0" for a in acc.values()]
+    for c in zero:
+        line = f"a[{_index(system, c)}, {run}] = 0.0"
+        body += _members([line], c in system.member) if one else _loop([line], c in system.member)
+    written = set(zero)
+    for term, member, coords, assign, values in forces:
+        inner = _load(system, member, run=run) + _local_lines(term) + assign
         sums = []
         for c, val in zip(coords, values, strict=True):
             if val == "0":
                 continue
-            if c not in acc:
-                op = "+=" if c in written else "= 0.0 +"
-                inner.append(f"a[{_index(system, c)}, 0] {op} {val}")
-                written.add(c)
-            elif member:
+            if c in acc and member:
                 i = system.shared.index(c)
                 inner.append(f"pull[{i}, j] = {val}")
                 sums += ["for j in range(K):", f"    {acc[c]} += pull[{i}, j]"]
-            else:
+            elif c in acc:
                 inner.append(f"{acc[c]} += {val}")
-        body += _members(inner, member) + sums
-    body += [f"a[{i}, 0] = {acc[c]}" for i, c in enumerate(system.shared)]
-    idle = [f"    a[{_index(system, c)}, 0] = 0.0" for c in system.member if c not in written]
-    body += ["for j in range(K):", *idle] if idle else []
-    return _used(_one_params(system), "\n".join(body)) + body
+            else:
+                op = "+=" if c in written else "= 0.0 +"
+                inner.append(f"a[{_index(system, c)}, {run}] {op} {val}")
+                written.add(c)
+        if one:
+            body += _members(inner, member) + sums
+        else:
+            body += _loop(inner, member, params=_params(system))
+    body += [f"a[{system.shared.index(c)}, 0] = {a}" for c, a in acc.items()]
+    return _used(_one_params(system), "\n".join(body)) + body if one else body
 
 
 def _hessian_rows(system: SeparableSystem):
@@ -416,7 +417,7 @@ def render(system: SeparableSystem, banner: str) -> str:
             "q, a, P, pull",
             "accelerations of a single run q[coordinate, 0], bitwise those of the block "
             "kernel; pull (SHARED, K) is work space.",
-            im_lines + _accelerations_one(system, im),
+            im_lines + _accelerations(system, im, one=True),
         ),
         _function(
             "hessian",
