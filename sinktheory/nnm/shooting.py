@@ -243,6 +243,8 @@ class ShootingProblem:
             except np.linalg.LinAlgError:
                 y = np.linalg.lstsq(A, b, rcond=None)[0]
             big = float(np.max(np.abs(y)))
+            if not math.isfinite(big):
+                raise ShootingError(f"singular Newton matrix at Newton iteration {it}")
             if big > MAX_STEP:  # damped far from the solution (scaled units)
                 y = y * (MAX_STEP / big)
             du = y * (usc[:-1] if extra is None else usc)
