@@ -8,6 +8,7 @@ import pytest
 from _cli import run_cli
 from scipy.integrate import solve_ivp
 
+from sinktheory._generated import oscillator as osc
 from sinktheory.billiard import billiard
 from sinktheory.billiard.convergence import (
     convergence,
@@ -24,14 +25,14 @@ from sinktheory.validation import stiffness
 
 def _oscillator_samples(n, alpha, mu, energy, periods, per_period):
     """States (1, S, 6) of one particle on y = 0 in a container at rest (beta = 0), started
-    at x = 0 moving right, integrated by DOP853 at rtol 1e-12; and its exact period
-    T = 4 A sqrt(mu / (2 E)) B(1/(2n), 1/2) / (2n), A = alpha (2 n E)^(1/(2n)) (gamma 1)."""
-    amp = alpha * (2 * n * energy) ** (1 / (2 * n))
-    beta_fn = math.gamma(1 / (2 * n)) * math.gamma(0.5) / math.gamma(1 / (2 * n) + 0.5)
-    period = 4 * amp * math.sqrt(mu / (2 * energy)) * beta_fn / (2 * n)
+    at x = 0 moving right, integrated by DOP853 at rtol 1e-12; and its exact period.  With
+    u = x / alpha and s = t / (alpha sqrt(mu)) (gamma 1) the motion is the generated
+    oscillator u'' = -u^(2n-1) of amplitude (2 n E)^(1/(2n)) (paper eq. T)."""
+    scale = alpha * math.sqrt(mu)
+    period = scale * osc.period(n, osc.amplitude_of_energy(n, energy))
 
     def rhs(t, z):
-        return [z[1], -((z[0] / alpha) ** (2 * n - 1)) / alpha / mu]
+        return [z[1], osc.oscillator_acceleration(z[0] / alpha, n) * alpha / scale**2]
 
     t = np.linspace(0, periods * period, int(periods * per_period) + 1)
     sol = solve_ivp(rhs, (0, t[-1]), [0.0, math.sqrt(2 * energy / mu)], method="DOP853",
