@@ -30,11 +30,10 @@ from dataclasses import asdict, dataclass
 import numpy as np
 
 from .. import validation as v
+from ..attachments import KINDS, Attachment
 from ..errors import ParameterError
 from ..results import Result
 
-#: The attachment kinds, in the order the comparison lists them.
-KINDS = ("nes", "impact", "well")
 #: The share of the initial energy whose dissipation time is reported.
 FRACTION = 0.9
 #: Most initial energies of one comparison.
@@ -64,8 +63,6 @@ def attachments_of(
 
     Raises ParameterError for an unknown kind, an empty list or repeated entries.
     """
-    from ..attachments import Attachment
-
     kinds = _names("attachments", kinds, KINDS)
     shapes = _names("shape", shapes, None)
     counts = [v.positive_int("particles", k) for k in _listed("particles", particles)]
