@@ -22,7 +22,7 @@ from ._common import Output, add_json, number, png_path
 
 NAME = "compare"
 HELP = HELPS[NAME]
-KINDS = ("nes", "impact", "well")  # sinktheory.compare.efficiency.KINDS (kept light here)
+KINDS = ("nes", "impact", "well")  # sinktheory.attachments.KINDS (kept light here)
 
 
 def _words(text: str) -> list[str]:
@@ -124,7 +124,6 @@ def run(args: argparse.Namespace) -> Output:
         w_energy = float(energies[-1]) if given is None else v.positive("wavelet-energy", given)
     elif args.wavelet_energy is not None:
         raise ParameterError("wavelet-energy", args.wavelet_energy, "given with --wavelet only")
-    tol = None if args.tol is None else args.tol
     result = compare(
         atts,
         energies,
@@ -133,7 +132,7 @@ def run(args: argparse.Namespace) -> Output:
         runs=args.runs,
         seed=args.seed,
         samples_per_period=args.samples,
-        tol=tol,
+        tol=args.tol,
         progress=not args.quiet,
     )
     data = result.as_dict()
