@@ -261,6 +261,7 @@ def _n(x: float | None, digits: int = 3, missing: str = "n/a") -> str:
 def _row(r: dict, dims: list[str]) -> dict:
     """A ranked design as JSON-ready plain values (NaN and inf as null)."""
     from ..design.measures import VERDICTS
+    from ..design.report import damper
 
     def f(x):
         return x if isinstance(x, float) and math.isfinite(x) else None
@@ -285,5 +286,5 @@ def _row(r: dict, dims: list[str]) -> dict:
         "lambda1_se": f(r["lambda1_se"]),
         "zeta_eq": f(r["zeta_eq"]),
         "zeta_eq_se": f(r["zeta_eq_se"]),
-        "damper": "dashpot" if r.get("dashpot") == 1.0 else "contact",
+        "damper": damper(r),
     }

@@ -63,6 +63,18 @@ def is_damped(ranked: list) -> bool:
     return any(float(r["damping"]) > 0 for r in ranked)
 
 
+def damper(r: dict) -> str:
+    """Which damper acted at a ranked design: ``"dashpot"`` (the result's dashpot is 1)
+    or ``"contact"`` (inelastic wall contact, also when the result has no dashpot).
+
+    Examples
+    --------
+    >>> damper({"dashpot": 1.0}), damper({"dashpot": 0.0}), damper({})
+    ('dashpot', 'contact', 'contact')
+    """
+    return "dashpot" if r.get("dashpot") == 1.0 else "contact"
+
+
 def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
     """The markdown table of the ``top`` ranked designs (with zeta_eq and the dissipated
     share of H0 when any design has inelastic contact)."""
@@ -101,7 +113,7 @@ def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
         ]
         if damped:
             cells += [
-                "dashpot" if r.get("dashpot") == 1.0 else "contact",
+                damper(r),
                 fmt(r["zeta_eq"], r["zeta_eq_se"], 4),
                 fmt(r["dissipated"], r["dissipated_se"]),
             ]
