@@ -189,6 +189,21 @@ def flight(z0, x0, s, lam, P, Pinv, c):
 
 
 @numba.njit(cache=True)
+def _energy(X, V, w, mu):
+    """H = (X^2 + Xdot^2)/2 + mu udot^2 / 2 with udot = w + Xdot."""
+    ud = w + V
+    return 0.5 * (X * X + V * V) + 0.5 * mu * ud * ud
+
+
+@numba.njit(cache=True)
+def advancement_bound(X, V, w, mu, c):
+    """M = sqrt(2 H)(1 + kappa (1 + mu^-1/2)), the bound on |x''| along the flight
+    starting from (X, Xdot, w) that :func:`next_hit` takes (module docstring)."""
+    kappa = c * (1.0 + mu) / mu
+    return math.sqrt(2.0 * _energy(X, V, w, mu)) * (1.0 + kappa * (1.0 + 1.0 / math.sqrt(mu)))
+
+
+@numba.njit(cache=True)
 def next_hit(z0, x0, limit, lam, P, Pinv, c, mu, D, eps, M):
     """(s, side, status): the first impact within ``limit`` of the flight from (z0, x0)
     (side +1 at x = D, -1 at x = -D, 0 none: s = limit), by conservative advancement
@@ -226,7 +241,6 @@ def _run(state, mu, c, D, lam, P, Pinv, stride_t, samples, per_period, bound, re
     intervals of length stride_t, recording (X, Xdot, H, W) at each sample end into rec
     (4, R, samples + 1) (index 0 already filled).  Returns (status, run, sample, impacts)."""
     R = state.shape[0]
-    kappa = c * (1.0 + mu) / mu
     eps = HIT_TOL * D
     z = np.empty(3)
     vel = np.zeros(2)
@@ -240,9 +254,7 @@ def _run(state, mu, c, D, lam, P, Pinv, stride_t, samples, per_period, bound, re
             left = stride_t
             while True:
                 z[0], z[1], z[2] = X, V, w
-                ud = w + V
-                H = 0.5 * (X * X + V * V) + 0.5 * mu * ud * ud
-                M = math.sqrt(2.0 * H) * (1.0 + kappa * (1.0 + 1.0 / math.sqrt(mu)))
+                M = advancement_bound(X, V, w, mu, c)
                 s, side, status = next_hit(z, x, left, lam, P, Pinv, c, mu, D, eps, M)
                 if status != _OK:
                     return _STUCK, r, i, impacts
@@ -259,8 +271,7 @@ def _run(state, mu, c, D, lam, P, Pinv, stride_t, samples, per_period, bound, re
                 V = cont[1]
                 w = vel[0] - V
                 impacts[r] += 1
-            ud = w + V
-            H = 0.5 * (X * X + V * V) + 0.5 * mu * ud * ud
+            H = _energy(X, V, w, mu)
             rec[0, r, i] = X
             rec[1, r, i] = V
             rec[2, r, i] = H
@@ -367,4 +378,11 @@ def simulate_vibroimpact(
     )
 
 
-__all__ = ["VibroImpactResult", "flight", "modes", "next_hit", "simulate_vibroimpact"]
+__all__ = [
+    "VibroImpactResult",
+    "advancement_bound",
+    "flight",
+    "modes",
+    "next_hit",
+    "simulate_vibroimpact",
+]

@@ -23,7 +23,13 @@ from sinktheory.nnm.backbone import (
     inphase_backbone,
     localisation_energy,
 )
-from sinktheory.vibroimpact import flight, modes, next_hit, simulate_vibroimpact
+from sinktheory.vibroimpact import (
+    advancement_bound,
+    flight,
+    modes,
+    next_hit,
+    simulate_vibroimpact,
+)
 
 T = 2 * math.pi
 
@@ -151,14 +157,14 @@ def test_cubic_nes_has_an_energy_threshold():
     2005).  The backbone's frequency there is 0.76, well below the container's linear
     band [1/sqrt(1 + m), 1] = [0.913, 1], which the family approaches only as E -> oo."""
     mu, c, P = 0.2, 0.001, 20
-    e_star = _averaged_threshold(mu, 1 / 0.2**4)
+    att = Attachment("nes", n=2, mass=mu)
+    e_star = _averaged_threshold(mu, att.well.gamma / att.clearance**4)
     assert 3e-5 < e_star < 5e-5
-    bone = inphase_backbone(Attachment("nes", n=2, mass=mu).sink, 1e-5, 1e-3, steps=100, ds=0.6)
+    bone = inphase_backbone(att.sink, 1e-5, 1e-3, steps=100, ds=0.6)
     e_loc = localisation_energy(bone)
     assert 0.8 < e_star / e_loc < 0.95
     assert 0.74 < np.interp(math.log(e_star), np.log(bone.energy), bone.frequency) < 0.78
     floor = 1 - math.exp(-c * P * T)
-    att = Attachment("nes", n=2, mass=mu)
     below, above = (impulse_response(att, e, damping=c, periods=P, runs=2, tol=1e-6)
                     .fraction_dissipated() for e in (e_star / 2.5, e_star * 1.5))  # fmt: skip
     low = impulse_response(att, e_star / 100, damping=c, periods=P, runs=2, tol=1e-6)
@@ -258,9 +264,7 @@ def test_impact_times_against_a_brute_force_search():
         z, x = np.array(z0, float), x0
         hits = 0
         for _ in range(8):
-            X, V, w, _, _ = z[0], z[1], z[2], None, None
-            H = 0.5 * (X * X + V * V) + 0.5 * mu * (w + V) ** 2
-            M = math.sqrt(2 * H) * (1 + c * (1 + mu) / mu * (1 + 1 / math.sqrt(mu)))
+            M = advancement_bound(*z, mu, c)
             s, side, status = next_hit(z, x, 5.0, lam, P, Pinv, c, mu, D, 1e-12 * D, M)
             sb, side_b = _brute_first_hit(z, x, 5.0, lam, P, Pinv, c, D)
             assert status == 0 and side == side_b
