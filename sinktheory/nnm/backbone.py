@@ -90,7 +90,8 @@ def harmonic_balance(sink: Sink, omega: float) -> tuple[float, float, float]:
     r = (1 - omega**2) / (m * omega**2)
     A = (m * omega**2 * r / (kappa * c * (r - 1) ** p)) ** (1 / (p - 1))
     B = r * A
-    return A, B, 0.5 * A**2 + kappa * (B - A) ** (2 * n) / (2 * n)
+    well = sink.particles * float(sink.well.potential(B - A, 0.0))  # k V(x, 0)
+    return A, B, 0.5 * A**2 + well
 
 
 def harmonic_balance_frequency(sink: Sink, energy: float) -> float:
