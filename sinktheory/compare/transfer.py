@@ -166,9 +166,9 @@ def backbone(att, lo: float, hi: float, *, points: int = BACKBONE_POINTS) -> tup
         modes = ("particle",)
     tries = np.geomspace(lo, hi, START_TRIES + 2)[: START_TRIES + 1]
     starts_of = {"container": tries, "particle": [math.sqrt(lo * hi), *tries]}
-    for mode, starts in ((mode, starts_of[mode]) for mode in modes):
+    for mode in modes:
         error = None
-        for start in starts:
+        for start in starts_of[mode]:
             try:
                 b = continue_both(
                     att.sink,
