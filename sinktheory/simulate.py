@@ -61,6 +61,18 @@ RECORDS = ("container", "particles", "trajectory", "final")
 ENERGY_BOUND = 1e-6
 
 
+def default_energy_bound(tol: float | None) -> float:
+    """The ``energy_bound`` of :func:`simulate` when none is given: :data:`ENERGY_BOUND`,
+    or 100 tol when that is larger (tol None: the default tolerance).
+
+    Examples
+    --------
+    >>> default_energy_bound(None), default_energy_bound(1e-5)
+    (1e-06, 0.001)
+    """
+    return max(ENERGY_BOUND, 100.0 * (tol or DEFAULT_TOL))
+
+
 # --------------------------------------------------------------------------- public API
 @dataclass(frozen=True)
 class SimulationState(Result):
@@ -434,7 +446,7 @@ def simulate(
     if tol is not None:
         tol = check_tol(tol)
     if energy_bound is None:
-        energy_bound = max(ENERGY_BOUND, 100.0 * (tol or DEFAULT_TOL))
+        energy_bound = default_energy_bound(tol)
     bound = v.positive("energy_bound", energy_bound)
     values, t0, h0 = _initial_values(sink, settings, initial, initial_state)
     runs, periods = values.shape[0], settings.periods

@@ -164,13 +164,13 @@ class Measurement(Result):
 def _soft(sink, settings, lyapunov, transient, tol) -> Measurement:
     from ..chaos import chaos
     from ..chaos.sink import start_energy
-    from ..simulate import ENERGY_BOUND, simulate
-    from ..stepsize import DEFAULT_TOL, resolve_step
+    from ..simulate import default_energy_bound, simulate
+    from ..stepsize import resolve_step
 
     periods, runs = settings.periods, settings.runs
     # the step simulate would choose for tol, fixed for every chunk
     method, dt, steps, _ = resolve_step(sink, start_energy(sink, settings), tol=tol)
-    bound = max(ENERGY_BOUND, 100.0 * (tol or DEFAULT_TOL))
+    bound = default_energy_bound(tol)
     chunk = max(1, min(periods, CHUNK_SAMPLES // (steps * runs)))
     hits = np.zeros(runs, dtype=np.int64)
     energy, state, before, done = [], None, None, 0
