@@ -1,10 +1,11 @@
 """Prototype: an adaptive, time-reversible step whose cost grows far more slowly with n.
 
-Exploratory (issue 22 item 5), not used by the package; flat well only.  The fixed-step
-engine resolves the wall contact, whose duration shrinks like 1/n, in every step, so its
-steps per period grow like n (1197 at n = 4, 37077 at n = 100 for Fig. 8's ensemble at
-tol 1e-8).  Here each run takes plain steps of the same symmetric splitting (blanes-moan6)
-in physical time, with its own step h = eps / rho chosen by an explicit, reversible
+Exploratory (issue 22 item 5), not used by the package; any registered shape
+(``--shape``). The fixed-step engine resolves the wall contact, whose duration shrinks
+like 1/n, in every step, so its steps per period grow like n (1197 at n = 4, 37077 at n =
+100 for Fig. 8's ensemble at tol 1e-8). Here each run takes plain steps of the same
+symmetric splitting (blanes-moan6) in physical time, with its own step h = eps / rho
+chosen by an explicit, reversible
 controller in the spirit of Hairer & Soederlind (2005, SIAM J. Sci. Comput. 26, 1838):
 
     rho_{n+1/2} - rho_{n-1/2} = dOmega/dt(y_n) (h_{n+1/2} + h_{n-1/2}) / 2,
@@ -15,22 +16,23 @@ particle: the local frequency |grad V|^2 / (m V) of a power-law wall; the approa
 wall i of the shape, (v . grad phi_i)^2 / d(w_i)^2 with w_i the wall ratio (1 on the rigid
 wall), phi_i = w_i^p / p and d = 1/(2n) at the wall, b (1 - w) inside (a step covers a
 fraction of the distance still to go, then of the contact layer); and the crossing rate
-(C0 |v| / D(y))^2.  dOmega/dt needs the Hessian of V, which the engine prints for the
-tangent map.
+C0^2 |v|^2 sum_i |grad r_i|^2.  The wall ratios r_i and their derivatives are derived from
+the shape registry (:func:`wall_kernel`); dOmega/dt needs the Hessian of V, which the
+engine prints for the tangent map.
 
 What was learnt (25 runs x 40 periods, one thread; the table and chart in
 docs/guide/billiard.rst, "Cost against the wall stiffness", come from
 ``python benchmarks/adaptive_prototype.py --n 4 10 20 50 100 --eps 0.25 0.15 --periods 40
 --chart docs/guide/adaptive_cost.png``):
 
-* steps per period at eps = 0.25: 384 (n = 4), 997 (n = 20), 2153 (n = 100), with
-  |dH|/H0 <= 2.5e-8 (eps = 0.15: <= 1.5e-9); the fixed step needs 1197, 6970 and 37077.
+* steps per period at eps = 0.25: 384 (n = 4), 972 (n = 20), 2228 (n = 100), with
+  |dH|/H0 <= 1.9e-8 (eps = 0.15: <= 8.7e-10); the fixed step needs 1197, 6970 and 37077.
   The count still grows (about n^0.55): the approach costs ln(1 + 2n)/b steps, and a
   particle pressed against a stiff wall by the container vibrates at a frequency ~ n that
   any soft-wall integrator must resolve;
 * a step costs about 3x a fixed one here (hessian + energies every step, unfused kernels
   called through function pointers), so it is faster than the fixed step from n ~ 10 on
-  and 10x faster at n = 100 (1.44 against 14.5 ms per run and period); cost(n = 100) /
+  and 6x faster at n = 100 (1.34 against 8.0 ms per run and period); cost(n = 100) /
   cost(n = 4) is about 10 for the prototype, against the issue's target of 2;
 * what failed on the way: a rate of the positions alone (Mikkola-Aarseth time-transformed
   leapfrog) must assume a top speed and over-resolves particles resting at a wall (15x
@@ -43,6 +45,7 @@ docs/guide/billiard.rst, "Cost against the wall stiffness", come from
 from __future__ import annotations
 
 import argparse
+import functools
 import math
 import time
 
@@ -53,7 +56,7 @@ from machine import describe
 C0 = 1.0  # crossing-rate factor (prototype constant)
 
 
-def _setup(n: int, runs: int, seed: int, particles: int = 5):
+def _setup(n: int, runs: int, seed: int, particles: int = 5, shape: str = "flat"):
     from sinktheory import RunSettings, Sink, Well
     from sinktheory.engine.cache import load
     from sinktheory.simulate import (
@@ -64,7 +67,7 @@ def _setup(n: int, runs: int, seed: int, particles: int = 5):
         start_state,
     )
 
-    sink = Sink(Well(0.5, 0.3, n), particles=particles, mass=0.2)
+    sink = Sink(Well(0.5, 0.3, n, shape=shape), particles=particles, mass=0.2)
     settings = RunSettings(runs=runs, periods=1, seed=seed)
     values = start_state(sink, settings.energy, random_positions(settings, sink.particles))
     q, v = split_values(values)
@@ -78,6 +81,25 @@ def _setup(n: int, runs: int, seed: int, particles: int = 5):
 # Soederlind (2005, SIAM J. Sci. Comput. 26, 1838): h = eps / rho, rho_{n+1/2} =
 # rho_{n-1/2} + eps G(y_n), G = dOmega/dt / Omega, the steps themselves plain symmetric
 # splitting steps (any scheme, RKN ones included) in physical time.
+
+
+@functools.cache
+def wall_kernel(shape: str):
+    """Compiled (x, y, alpha, beta) -> (r_i, dr_i/dx, dr_i/dy, d2r_i/dx2, d2r_i/dxdy,
+    d2r_i/dy2 for each wall ratio r_i of the shape), derived from the symbolic model."""
+    import sympy as sp
+
+    from sinktheory import symbolic as S
+
+    x, y = S.x, S.y
+    values = []
+    for r in S.wall_ratios(shape):
+        rx, ry = sp.diff(r, x), sp.diff(r, y)
+        values += [r, rx, ry, sp.diff(rx, x), sp.diff(rx, y), sp.diff(ry, y)]
+    body = ", ".join(f"float({sp.pycode(e)})" for e in values)  # one type for the tuple
+    namespace = {"math": math}
+    exec(f"def walls(x, y, alpha, beta):\n    return ({body},)", namespace)
+    return numba.njit(namespace["walls"])
 
 
 @numba.njit(inline="always")
@@ -99,7 +121,7 @@ def _approach(w, wx, wy, hxx, hxy, hyy, vx, vy, ax, ay, ell, b, pw):
 
 
 @numba.njit(error_model="numpy")
-def _rate_hs(hess, energies, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, G):
+def _rate_hs(hess, energies, walls, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, G):
     """Omega(q, v) and G = dOmega/dt / Omega per run; ``a`` must hold a(q)."""
     D, R = q.shape
     K = (D - 1) // 2
@@ -132,43 +154,24 @@ def _rate_hs(hess, energies, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, 
             if V > 1e-300:
                 A = gg / (m * V)
                 Adot = (2.0 * gHv * V - gg * gv) / (m * V * V)
-            # approach to each wall of the flat shape, |x| = D(y) and |y| = 1:
-            # (v . grad phi_i)^2 / d(w_i)^2 with phi_i = w_i^p / p
-            alpha = T[0, r]
-            beta = T[1, r]
-            x = q[1 + j, r] - q[0, r]
-            y = q[1 + K + j, r]
-            Dy = alpha + beta * (y * y - 1.0)
-            d1 = 2.0 * beta * y
-            sg = 1.0 if x >= 0.0 else -1.0
-            w1 = sg * x / Dy
-            B1, B1dot = _approach(
-                w1,
-                sg / Dy,
-                -sg * x * d1 / (Dy * Dy),
-                0.0,
-                -sg * d1 / (Dy * Dy),
-                sg * x * (2.0 * d1 * d1 / (Dy * Dy * Dy) - 2.0 * beta / (Dy * Dy)),
-                vx,
-                vy,
-                ax,
-                ay,
-                ell,
-                b,
-                pw,
-            )
-            sy = 1.0 if y >= 0.0 else -1.0
-            B2, B2dot = _approach(sy * y, 0.0, sy, 0.0, 0.0, 0.0, vx, vy, ax, ay, ell, b, pw)
-            # crossing: at most a fraction of the well's half-width D(y) per unit eps
+            # approach to each wall i of the shape, (v . grad phi_i)^2 / d(w_i)^2 with
+            # w_i = |r_i| and phi_i = w_i^p / p, and the crossing of the well,
+            # C0^2 |v|^2 sum_i |grad r_i|^2 (a step covers a fraction of the well's width)
+            f = walls(q[1 + j, r] - q[0, r], q[1 + K + j, r], T[0, r], T[1, r])
             vv = vx * vx + vy * vy
-            B0 = C0 * C0 * vv / (Dy * Dy)
-            B0dot = (
-                C0
-                * C0
-                * (2.0 * (vx * ax + vy * ay) / (Dy * Dy) - 2.0 * vv * d1 * vy / (Dy * Dy * Dy))
-            )
-            B = B0 + B1 + B2
-            Bdot = B0dot + B1dot + B2dot
+            B = 0.0
+            Bdot = 0.0
+            for i in range(len(f) // 6):
+                k6 = 6 * i
+                ri, rx, ry = f[k6], f[k6 + 1], f[k6 + 2]
+                rxx, rxy, ryy = f[k6 + 3], f[k6 + 4], f[k6 + 5]
+                sg = 1.0 if ri >= 0.0 else -1.0
+                Bi, Bidot = _approach(sg * ri, sg * rx, sg * ry, sg * rxx, sg * rxy, sg * ryy,
+                                      vx, vy, ax, ay, ell, b, pw)  # fmt: skip
+                gr = rx * rx + ry * ry
+                grdot = 2.0 * (rx * (rxx * vx + rxy * vy) + ry * (rxy * vx + ryy * vy))
+                B += Bi + C0 * C0 * vv * gr
+                Bdot += Bidot + C0 * C0 * (2.0 * (vx * ax + vy * ay) * gr + vv * grdot)
             om[r] += A + B
             G[r] += Adot + Bdot
     for r in range(R):
@@ -195,7 +198,7 @@ def _plain_step(acc, q, v, T, a, A, Bk, hstep):
 
 
 @numba.njit(error_model="numpy")
-def run_hs(acc, hess, energies, q, v, T, A, Bk, eps, ell, b, pw, periods, period, resync):
+def run_hs(acc, hess, energies, walls, q, v, T, A, Bk, eps, ell, b, pw, periods, period, resync):
     """Advance every run ``periods`` periods; returns (steps per run, |dH|/H0 per period,
     rho / Omega at the end)."""
     D, R = q.shape
@@ -216,7 +219,7 @@ def run_hs(acc, hess, energies, q, v, T, A, Bk, eps, ell, b, pw, periods, period
     energies(q, v, T, tot, sh, mem)
     H0 = tot.copy()
     acc(q, a, T)
-    _rate_hs(hess, energies, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, G)
+    _rate_hs(hess, energies, walls, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, G)
     for r in range(R):
         rho[r] = om[r]
     for p in range(periods):
@@ -234,7 +237,7 @@ def run_hs(acc, hess, energies, q, v, T, A, Bk, eps, ell, b, pw, periods, period
             if active == 0 or steps.max() > 200000 * (p + 1):
                 break
             _plain_step(acc, q, v, T, a, A, Bk, hstep)
-            _rate_hs(hess, energies, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, G)
+            _rate_hs(hess, energies, walls, q, v, zero, T, a, h, tot, sh, mem, ell, b, pw, om, G)
             for r in range(R):
                 if hstep[r] > 0.0:
                     t[r] = t[r] + hstep[r] if t[r] + hstep[r] < t_end else t_end
@@ -257,10 +260,11 @@ def run_hs(acc, hess, energies, q, v, T, A, Bk, eps, ell, b, pw, periods, period
 
 def _adaptive(n, eps, args, A, Bk, periods):
     """(seconds, steps per period, max |dH|/H0, rho/Omega range) of the prototype."""
-    sink, engine, q, v, T = _setup(n, args.runs, 0)
+    sink, engine, q, v, T = _setup(n, args.runs, 0, shape=args.shape)
     t0 = time.perf_counter()
     steps, err, ratio = run_hs(
-        engine.accelerations, engine.hessian, engine.energies, q, v, T, A, Bk, eps,
+        engine.accelerations, engine.hessian, engine.energies, wall_kernel(sink.well.shape),
+        q, v, T, A, Bk, eps,
         1.0 / (2 * n), args.b, args.p, periods, 2 * math.pi, True,
     )  # fmt: skip
     return time.perf_counter() - t0, steps.mean() / periods, err.max(), ratio
@@ -271,7 +275,7 @@ def _fixed(n, args, periods):
     from sinktheory import RunSettings, Sink, Well
     from sinktheory.simulate import simulate
 
-    sink = Sink(Well(0.5, 0.3, n), particles=5, mass=0.2)
+    sink = Sink(Well(0.5, 0.3, n, shape=args.shape), particles=5, mass=0.2)
     t0 = time.perf_counter()
     res = simulate(sink, RunSettings(runs=args.runs, periods=periods, seed=0), tol=1e-8)
     return time.perf_counter() - t0, res.steps_per_period, res.max_relative_energy_error
@@ -283,7 +287,7 @@ def _rigid(args, periods):
     from sinktheory.billiard.convergence import measure
 
     t0 = time.perf_counter()
-    measure("flat", 0.5, 0.3, math.inf, particles=5, mass=0.2, lyapunov=False,
+    measure(args.shape, 0.5, 0.3, math.inf, particles=5, mass=0.2, lyapunov=False,
             settings=RunSettings(runs=args.runs, periods=periods, seed=0))  # fmt: skip
     return time.perf_counter() - t0
 
@@ -294,6 +298,7 @@ def main(argv=None) -> None:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--n", type=int, nargs="+", default=[4, 10, 20, 50, 100])
     p.add_argument("--eps", type=float, nargs="+", default=[0.15])
+    p.add_argument("--shape", default="flat", help="well shape (default flat: Fig. 8)")
     p.add_argument("--b", type=float, default=1.0)
     p.add_argument("--p", type=float, default=3.0)
     p.add_argument("--scheme", default="blanes-moan6")
