@@ -79,13 +79,6 @@ _RESUMABLE: ContextVar[bool] = ContextVar("sinktheory_resumable_work", default=F
 _SUSPECTS = (("gamma", 1.0), ("mass", 0.2), ("energy", 0.5))
 
 
-def check_settings(settings: RunSettings, sink: Sink) -> None:
-    """:meth:`~sinktheory.model.RunSettings.check`: start box (a box whose wall ratios
-    overflow float range, ``box = 1e308``, is refused naming ``box`` there too), energy
-    and memory, as the analyses check them before any work."""
-    settings.check(sink)
-
-
 def tangent_steps(particles: int, vectors: int) -> float:
     """Particle steps of one integration step of one run with ``vectors`` deviation vectors.
 

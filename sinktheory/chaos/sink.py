@@ -45,7 +45,7 @@ from ..simulate import (
     total_energy,
 )
 from ..stepsize import resolve_step
-from ..worklimit import check_particle_steps, check_settings, step_of, tangent_steps
+from ..worklimit import check_particle_steps, step_of, tangent_steps
 from .general import (
     check_block,
     check_gali,
@@ -188,7 +188,7 @@ def chaos(
     options = _options(sink, spectrum, gali, megno, transverse, renorm, energy_bound, progress)
     block = check_block(block)
     if initial is None and isinstance(settings, RunSettings):
-        check_settings(settings, sink)  # a start box overflowing the wall ratio names box
+        settings.check(sink)  # a start box overflowing the wall ratio names box
     point = _Point.of(sink, settings, options["transverse"], initial)
     transient = val.positive_int("transient", transient, minimum=0,
                                  maximum=max(0, settings.periods - 1))  # fmt: skip

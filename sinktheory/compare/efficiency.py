@@ -190,12 +190,12 @@ def steps_per_period(att, energy: float, *, runs: int, periods: int, tol=None) -
     too stiff to integrate is refused naming its parameter); the vibro-impact flow is
     exact between impacts and is counted as one step per recorded sample."""
     from ..model import RunSettings
-    from ..worklimit import check_settings, step_of
+    from ..worklimit import step_of
 
     if att.kind == "impact":
         return 0
     settings = RunSettings(energy=energy, runs=runs, periods=periods)
-    check_settings(settings, att.sink)
+    settings.check(att.sink)
     return step_of(att.sink, settings.total_energy_bound(att.sink), tol=tol, settings=settings)[2]
 
 

@@ -70,7 +70,7 @@ from ..errors import ParameterError
 from ..model import MAX_PERIODS, RunSettings, Sink, Well
 from ..sinkstats import ensemble_mean
 from ..stepsize import check_tol
-from ..worklimit import check_particle_steps, check_settings, step_of, tangent_steps
+from ..worklimit import check_particle_steps, step_of, tangent_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of
 
 #: Results of a point that come from its ensemble (besides the container energy).
@@ -128,7 +128,7 @@ def check(p: dict) -> None:
     settings = settings_of(p, 0)
     if p.get("attachment", "well") != "well":
         attachment_of(p)
-    check_settings(settings, sink)
+    settings.check(sink)
     check_tol(p["tol"])
     _, _, steps, _ = step_of(
         sink, settings.total_energy_bound(sink), tol=p["tol"], settings=settings

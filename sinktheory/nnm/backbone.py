@@ -254,8 +254,8 @@ def inphase_pieces(
     at low energy, where the particle dominates), skipping those a piece already covers.
     A piece whose start is not within :data:`HB_AGREEMENT` of the one-harmonic
     frequency (a start that converged onto a tongue) is dropped, and starts that do not
-    converge are skipped; both are named in ``notes``.  Pieces are labelled ``"in-phase 1:1"`` and, after the first,
-    ``"in-phase 1:1 (piece j)"``.
+    converge are skipped; both are named in ``notes``.  Pieces are labelled
+    ``"in-phase 1:1"`` and, after the first, ``"in-phase 1:1 (piece j)"``.
     """
     from .shooting import ShootingError
 

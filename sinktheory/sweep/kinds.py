@@ -61,7 +61,7 @@ from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
 from ..model import MAX_PERIODS, SHAPES, RunSettings, Sink, Well
 from ..simulate import ENERGY_BOUND, simulate
-from ..worklimit import check_settings, check_work, step_of
+from ..worklimit import check_work, step_of
 
 REQUIRED = object()
 #: Rough cost of one container period of one particle (n = 10, single thread: 24 sections
@@ -240,7 +240,7 @@ def _bifurcation_check(p: dict) -> None:
     v.positive_int("count", p["count"], maximum=MAX_PERIODS)
     v.choice("quantity", p["quantity"], QUANTITIES)
     settings = RunSettings(energy=p["energy"], runs=1, periods=p["transient"] + p["count"])
-    check_settings(settings, sink)
+    settings.check(sink)
     # a well too stiff to integrate names the parameter responsible, and the section's
     # periods are checked against the work limit
     _, _, steps, _ = step_of(sink, p["energy"], settings=settings)
@@ -286,7 +286,7 @@ def _ensemble_check(p: dict) -> int:
     """Check an ensemble point; its steps per period (a well too stiff for any step
     names the parameter responsible, and the work is checked against the limit)."""
     sink, settings = _sink(p), _settings(p, 0)
-    check_settings(settings, sink)
+    settings.check(sink)
     get_scheme(p["method"])
     if p["dt"] is not None:
         v.time_step("dt", p["dt"])
