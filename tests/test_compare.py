@@ -39,6 +39,19 @@ def test_efficiency_is_the_mean_of_direct_impulse_responses():
     assert c.reached[1, 0] == 3
 
 
+def test_without_a_dashpot_nothing_is_dissipated():
+    """An independent anchor for the efficiency: with no damper the model is conservative
+    (the energy that leaves the container goes into the attachment, it is not dissipated),
+    so the fraction dissipated is 0 to the audit's tolerance, whatever the attachment moved
+    -- an efficiency counted from the container's loss instead would be far from 0."""
+    atts = [Attachment("nes", n=2), Attachment("impact"), Attachment("well", n=4)]
+    c = compare(atts, [0.05, 0.5], damping=0.0, periods=12, runs=2, seed=3, progress=False)
+    assert np.all(np.abs(c.efficiency) < 1e-8), c.efficiency
+    for att in atts:  # while the container did lend energy to the attachment (to 0.28-0.55)
+        r = impulse_response(att, 0.5, damping=0.0, periods=12, runs=2, seed=3)
+        assert r.container_energy.min(axis=1).max() < 0.9 * 0.5
+
+
 @pytest.mark.parametrize("omega0", [0.45, 0.9, 1.3, 2.6])
 def test_wavelet_ridge_recovers_a_pure_tone(omega0):
     """The ridge of cos(omega0 t + 0.4), 16 samples per period T = 2 pi, 40 periods, equals
