@@ -27,8 +27,26 @@ def test_plan_guarantees(runs, costs, threads):
     # never predicted slower than the best single-thread plan, by brute force over blocks
     single = min(-(-runs // b) * b * c for b, c in costs.items())
     assert p.predicted <= single * (1 + 1e-12)
-    if p.threads > 1:  # a second thread must pay its way
+    if p.threads > 1:  # a second thread must pay its way, each with an efficient block
         assert p.predicted * blocks.THREAD_GAIN <= single * (1 + 1e-12)
+        cheapest = min(costs.values())
+        assert costs[p.block] <= 2 * cheapest
+    for q in blocks.candidates(runs, costs, threads):  # nor is one tried on a narrow block
+        assert q.threads == 1 or costs[q.block] <= 2 * min(costs.values())
+
+
+def test_tiny_ensembles_stay_on_one_thread():
+    # blocks of 1 and 2 runs are far from the vector width (4 here): two runs as two
+    # one-run blocks on two threads would be predicted 1.4x faster, but each thread would
+    # hold a scalar block and wait for a second core that may be busy
+    costs = {1: 5.0e-8, 2: 4.0e-8, 4: 1.9e-8, 16: 1.0e-8}
+    assert blocks.efficient_width(costs) == 4
+    for runs in (1, 2, 3, 4):  # less than two efficient blocks
+        assert blocks.plan(runs, costs, 2).threads == 1
+        assert {p.threads for p in blocks.candidates(runs, costs, 2)} == {1}
+    for runs in (5, 8):  # two blocks of 4 (the last padded): one per core
+        p = blocks.plan(runs, costs, 2)
+        assert (p.block, p.threads) == (4, 2)
 
 
 def test_plan_pads_when_the_table_says_so():

@@ -1,10 +1,11 @@
 """How the engine cuts an ensemble into blocks and threads: measured, not assumed.
 
 The engine's loops run over the runs of a block, and what a block of B runs costs depends
-on how the compiler vectorised those loops on this machine: on a CPU with 512-bit vectors
-numba 0.68 runs blocks of 16, 24 or 32 runs about four times cheaper per run than blocks of
-8 or 13, and a block of 20 pays a scalar remainder of 4 runs.  No constant block size is
-right everywhere, so the policy is:
+on how the compiler vectorised those loops on this machine.  LLVM's main vector body takes
+16 runs at a time and an epilogue 4 (see :mod:`sinktheory.engine.cache`), so on a 2-core
+AVX2 machine a block of 4 runs costs 2.5x a block of 64 per run, a block of 1 about 7x,
+and a block of 13 pays a scalar remainder of one run; other CPUs differ.  No constant
+block size is right everywhere, so the policy is:
 
 1. **Measure** (:func:`block_costs`): the cost per run and step of the compiled engine for
    the block sizes :data:`SIZES`, timed on the engine itself (one thread, a synthetic state
@@ -15,9 +16,10 @@ right everywhere, so the policy is:
    :data:`SIZES` and the thread count t that minimise the predicted wall time
    ceil(ceil(R / b) / t) b c(b).  The last block is filled up to b with *inert copies* of
    the last run (their results are discarded), which is cheaper than a remainder loop
-   whenever the table says so; four runs, for example, may cost less as a padded block of
-   16 than as a block of 4.  A second thread is used only when the prediction gains at
-   least :data:`THREAD_GAIN` from it, so each thread gets at least one efficient block.
+   whenever the table says so.  A second thread is used only for blocks of at least the
+   :func:`efficient_width` (each thread gets an efficient block; an ensemble smaller than
+   two such blocks stays on one thread, so it never waits for a busy second core) and
+   only when the prediction gains at least :data:`THREAD_GAIN` from it.
 3. **Check while running** (:func:`candidates`, ``sinktheory.engine.core``): the table is
    measured on one thread, and two threads that share a core's vector units or caches do
    not run twice as fast, so the chosen plan, the best one-thread plan and the plans
@@ -89,23 +91,46 @@ class BlockPlan:
         return -(-self.padded // self.block)
 
 
+def efficient_width(costs: dict[int, float]) -> int:
+    """The efficient block width on this machine: the smallest block size whose cost per
+    run is within twice the cheapest of the table (the width the compiled loops vectorise
+    to; a block narrower than that runs partly as scalar code).
+
+    Examples
+    --------
+    >>> efficient_width({1: 5.0, 2: 4.0, 4: 1.9, 16: 1.0})
+    4
+    """
+    cheapest = min(costs.values())
+    return min(b for b, c in costs.items() if c <= 2 * cheapest)
+
+
+def _options(runs: int, costs: dict[int, float], threads: int) -> list[BlockPlan]:
+    """Every plan of :data:`SIZES` x threads, a second thread only for blocks of at least
+    the :func:`efficient_width` (so each thread gets an efficient block and tiny ensembles
+    never wait for a second, possibly busy, core)."""
+    runs, threads, width = int(runs), max(1, int(threads)), efficient_width(costs)
+    out = []
+    for b, c in sorted(costs.items()):
+        blocks = -(-runs // b)
+        top = min(threads, blocks) if b >= width else 1
+        out += [BlockPlan(runs, b, blocks * b, t, -(-blocks // t) * b * c)
+                for t in range(1, top + 1)]  # fmt: skip
+    return out
+
+
 def plan(runs: int, costs: dict[int, float], threads: int) -> BlockPlan:
     """The block size and thread count with the smallest predicted wall time.
 
-    ``costs`` maps block size to seconds per run and step (:func:`block_costs`); ties go to
-    fewer threads, then to fewer padded runs.
+    ``costs`` maps block size to seconds per run and step (:func:`block_costs`); a second
+    thread must gain :data:`THREAD_GAIN`; ties go to fewer threads, then to fewer padded
+    runs.
     """
-    runs, threads = int(runs), max(1, int(threads))
-    best = None
-    for b, c in sorted(costs.items()):
-        blocks = -(-runs // b)
-        for t in range(1, min(threads, blocks) + 1):
-            wall = -(-blocks // t) * b * c
-            score = wall * (THREAD_GAIN if t > 1 else 1.0)
-            key = (score, t, blocks * b)
-            if best is None or key < best[0]:
-                best = (key, BlockPlan(runs, b, blocks * b, t, wall))
-    return best[1]
+    return min(
+        _options(runs, costs, threads),
+        key=lambda p: (p.predicted * (THREAD_GAIN if p.threads > 1 else 1.0), p.threads,
+                       p.padded, p.block),
+    )  # fmt: skip
 
 
 def candidates(runs: int, costs: dict[int, float], threads: int, *, within: float = 1.1,
@@ -122,12 +147,8 @@ def candidates(runs: int, costs: dict[int, float], threads: int, *, within: floa
     [(24, 2), (32, 1), (16, 2)]
     """
     chosen = plan(runs, costs, threads)
-    options = []
-    for b, c in costs.items():
-        blocks = -(-int(runs) // b)
-        for t in range(1, min(max(1, int(threads)), blocks) + 1):
-            options.append(BlockPlan(int(runs), b, blocks * b, t, -(-blocks // t) * b * c))
-    options.sort(key=lambda p: (p.predicted, p.threads, p.padded))
+    options = sorted(_options(runs, costs, threads),
+                     key=lambda p: (p.predicted, p.threads, p.padded))  # fmt: skip
     single = min((p for p in options if p.threads == 1), key=lambda p: p.predicted)
     near = [p for p in options if p.predicted <= within * options[0].predicted]
     out = list(dict.fromkeys([chosen, single, *near]))
