@@ -84,6 +84,32 @@ def _axis_reach_factor(energy, gamma, n):
     return _geometry("axis_reach_factor")(energy, gamma, n)
 
 
+def _on_points(kernel, x, y, alpha, beta, gamma, n, out):
+    """out[i] = kernel(x[i], y[i], alpha, beta, gamma, n) (compiled by :func:`_points_loop`)."""
+    for i in range(x.shape[0]):
+        out[i] = kernel(x[i], y[i], alpha, beta, gamma, n)
+
+
+@functools.lru_cache(maxsize=1024)
+def _shape_reach(shape: str, c: float, alpha: float, beta: float, gamma: float, n: int):
+    """The shape's generated ``reach`` (a golden-section search in Python, about 1 ms),
+    remembered: every ``simulate`` call asks for the same few energies."""
+    return _shapes.bundle(shape).reach(c, alpha, beta, gamma, n)
+
+
+@functools.cache
+def _points_loop():
+    """:func:`_on_points` compiled by numba, the kernel a first-class function argument so
+    one machine code serves every shape (cached on disk)."""
+    import numba
+    from numba import types
+
+    f64, i64 = types.float64, types.int64
+    kernel = types.FunctionType(f64(f64, f64, f64, f64, f64, i64))
+    signature = types.void(kernel, f64[::1], f64[::1], f64, f64, f64, i64, f64[::1])
+    return numba.njit(signature, cache=True)(_on_points)
+
+
 @dataclass(frozen=True)
 class Well:
     """The soft-wall potential well V(x, y) (paper eqs. V definition / V definition2).
@@ -172,9 +198,18 @@ class Well:
         return _denominator(np.asarray(s, dtype=float), self.alpha, self.beta)
 
     def potential(self, x, y) -> np.ndarray:
-        """V(x, y) at arrays of points (relative to the container)."""
-        f = np.vectorize(self.kernels.potential, otypes=[float])
-        return f(x, y, self.alpha, self.beta, self.gamma, self.n)
+        """V(x, y) at arrays of points (relative to the container), broadcast together.
+
+        The shape's compiled kernel in a compiled loop over the points (calling it once per
+        point from Python cost 20 ms of every ``simulate`` call in the step search)."""
+        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        out = np.empty(x.size)
+        _points_loop()(
+            self.kernels.potential, np.ascontiguousarray(x).ravel(),
+            np.ascontiguousarray(y).ravel(), float(self.alpha), float(self.beta),
+            float(self.gamma), int(self.n), out,
+        )  # fmt: skip
+        return out.reshape(x.shape)
 
     # --- what a particle of energy E can reach -----------------------------------------
     def reach(self, energy: float) -> tuple[float, float]:
@@ -220,7 +255,7 @@ class Well:
                     why="above it a particle escapes through it",
                 )
         c = float(_axis_reach_factor(e, self.gamma, self.n))
-        x_max, y_max = k.reach(c, *args)
+        x_max, y_max = _shape_reach(self.shape, c, *args)
         for corner in ((x_max, y_max), (x_max, 0.0), (0.0, y_max)):
             if not k.smallest_denominator(*corner, self.alpha, self.beta) > 0:
                 self._refuse_denominator(e, corner)

@@ -30,6 +30,7 @@ Examples
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -63,8 +64,11 @@ DEFAULT_TOL = 1e-8
 TOL_RANGE = (1e-12, 1e-4)
 
 
+@functools.lru_cache(maxsize=1024)
 def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float:
-    """Fastest oscillation frequency the total ``energy`` allows (an upper estimate).
+    """Fastest oscillation frequency the total ``energy`` allows (an upper estimate;
+    remembered per sink and energy, since every ``simulate`` call asks and the search
+    costs about 10 ms).
 
     No particle can hold more potential energy than the total, so it stays in the basin
     V <= energy.  The deepest penetration of the wall is on the basin's boundary: along

@@ -150,3 +150,17 @@ def test_sink_mu_and_energy_bound():
     bound = settings.total_energy_bound(sink)
     # V(0.01, 0.01) = (1/8) [(0.01/0.2)^8 + 0.01^8]: independent hand evaluation
     assert bound == pytest.approx(0.5 + 5 * ((0.01 / 0.2) ** 8 + 0.01**8) / 8, rel=1e-14)
+
+
+@pytest.mark.parametrize("shape", ["flat", "symmetric", "circular"])
+def test_potential_on_arrays_is_the_kernel_at_each_point(shape):
+    # the compiled loop over points against the shape's kernel called point by point
+    w = Well(0.5, 0.1, 3, shape=shape)
+    x = np.linspace(-0.45, 0.45, 7)[None, :]
+    y = np.linspace(-0.35, 0.35, 4)[:, None]
+    got = w.potential(x, y)
+    assert got.shape == (4, 7)
+    for (i, j), value in np.ndenumerate(got):
+        expected = w.kernels.potential(x[0, j], y[i, 0], w.alpha, w.beta, w.gamma, w.n)
+        assert value == expected
+    assert np.shape(w.potential(0.1, 0.2)) == ()
