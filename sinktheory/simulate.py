@@ -302,6 +302,17 @@ def first_order_rhs(sink: Sink):
     return f
 
 
+def run_parameters(sink: Sink, settings: RunSettings, runs: int) -> dict:
+    """What a simulation ran, as its result's ``parameters``: the well, k, m, E0, runs,
+    periods, seed, box."""
+    w = sink.well
+    return {
+        "shape": w.shape, "alpha": w.alpha, "beta": w.beta, "n": w.n, "gamma": w.gamma,
+        "particles": sink.particles, "mass": sink.mass, "energy": settings.energy,
+        "runs": runs, "periods": settings.periods, "seed": settings.seed, "box": settings.box,
+    }  # fmt: skip
+
+
 def _check_record(record: Sequence[str]) -> tuple[str, ...]:
     if isinstance(record, str):
         record = (record,)
@@ -378,6 +389,7 @@ def simulate(
     initial_state: SimulationState | None = None,
     energy_bound: float | None = None,
     progress: bool | None = None,
+    eps: float | None = None,
 ) -> SimulationResult:
     """Integrate an ensemble of the full container + particles system.
 
@@ -390,6 +402,8 @@ def simulate(
     method : str, optional
         Scheme name from :data:`sinktheory.integrators.SCHEMES`.  Default: the cheapest
         scheme for ``tol`` (with ``dt``: :data:`~sinktheory.integrators.DEFAULT_SCHEME`).
+        ``"adaptive"``: each run takes its own steps (:func:`sinktheory.adaptive.
+        simulate_adaptive`; cheaper than a fixed step for stiff walls, n >~ 10).
     dt : float > 0, optional
         Step, overriding ``tol``.  Always shortened to T / ceil(T / dt) so a period is a
         whole number of steps (the result reports the step used).
@@ -412,6 +426,9 @@ def simulate(
         (default: the larger of 1e-6 and 100 tol).
     progress : bool, optional
         Progress bar on stderr (only on a terminal, after 2 s); default on.
+    eps : float in (0, 0.5], optional
+        The adaptive method's step factor (default 0.25; dt, tol and stride do not apply
+        to it).
 
     Returns
     -------
@@ -439,6 +456,19 @@ def simulate(
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     if not isinstance(settings, RunSettings):
         raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
+    continues = isinstance(initial_state, SimulationState) and initial_state.method == "adaptive"
+    if method == "adaptive" or (method is None and dt is None and tol is None and continues):
+        for name, value in (("dt", dt), ("tol", tol), ("stride", stride)):
+            if value is not None:
+                raise ParameterError(name, value, "None with method 'adaptive' (eps sets it)")
+        from .adaptive import DEFAULT_EPS, simulate_adaptive
+
+        eps = DEFAULT_EPS if eps is None else eps
+        return simulate_adaptive(sink, settings, eps=eps, record=record,
+                                 initial=initial, initial_state=initial_state,
+                                 energy_bound=energy_bound, progress=progress)  # fmt: skip
+    if eps is not None:
+        raise ParameterError("eps", eps, "None unless method is 'adaptive'")
     if method is not None:
         method = get_scheme(method).name
     record = _check_record(record)
@@ -515,18 +545,5 @@ def simulate(
         + (f" (for tol {tol:g})" if tol is not None else "")
         + f": max relative energy error {worst:.3g} <= {bound:.3g}",
         tol=tol,
-        parameters={
-            "shape": sink.well.shape,
-            "alpha": sink.well.alpha,
-            "beta": sink.well.beta,
-            "n": sink.well.n,
-            "gamma": sink.well.gamma,
-            "particles": sink.particles,
-            "mass": sink.mass,
-            "energy": settings.energy,
-            "runs": runs,
-            "periods": periods,
-            "seed": settings.seed,
-            "box": settings.box,
-        },
+        parameters=run_parameters(sink, settings, runs),
     )

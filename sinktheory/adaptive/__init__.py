@@ -1,0 +1,392 @@
+"""An adaptive, time-reversible step for stiff walls (large n): opt-in, ``method="adaptive"``.
+
+The fixed step of :func:`sinktheory.simulate.simulate` must resolve every wall contact,
+whose duration shrinks like 1/n, in every step, so its steps per period grow like n.
+Here each run takes steps of the same symmetric splitting (blanes-moan6 by default) with
+its own step h = eps / rho, where rho follows a rate Omega(q, v) through an explicit,
+time-reversible controller in the spirit of Hairer & Soederlind (2005, SIAM J. Sci.
+Comput. 26, 1838)::
+
+    rho_{n+1/2} - rho_{n-1/2} = dOmega/dt(y_n) (h_{n+1/2} + h_{n-1/2}) / 2,
+
+solved in closed form for rho_{n+1/2}.  Omega sums, per particle, the local frequency
+(grad V)^2 / (m V) of the power-law wall, the approach to each wall ratio r_i of the shape,
+(v . grad phi_i)^2 / d(w_i)^2 with w_i = abs(r_i), phi_i = w_i^3 / 3 and d = 1/(2n) at the wall
+or (1 - w_i) inside (a step covers a fraction of the distance still to go), and the crossing
+of the well, v^2 (grad r_i)^2; plus 1 for the container's spring.  The wall ratios and V
+are derived from the shape registry (:func:`sinktheory.symbolic.wall_ratios`), so every
+registered shape works; dOmega/dt takes the Hessian the engine prints for the tangent map.
+
+Each period starts the controller afresh at rho = Omega and cuts its last step to end on
+the period, so a period is a function of the state at its start alone: runs can be
+continued from a final state exactly, and a run's numbers do not depend on the other runs
+or on the thread count (bitwise; tested).  The step sequence between period ends is
+time-reversible (:func:`controller_steps`); the cut at the period end is not.  The energy
+is audited at every period end as in ``simulate``.
+
+Accuracy is set by eps directly (no tolerance rule: the relation is not a clean power).
+Measured largest abs(dH)/H0 on Fig. 8's ensemble (flat well, alpha 0.5, beta 0.3, 5
+particles, m 0.2), n = 4, 8 runs x 4 periods, two seeds: eps 0.4: 1.2e-5; 0.3: 2e-7;
+0.25: 1.4e-8; 0.2: 1.7e-9; 0.15: 1.4e-11; 0.1: 4.5e-13; 0.05: 3e-14 (round-off).  Halving
+eps divides the error by 1e3-1e4 between 0.3 and 0.1, far more than the scheme's order
+(2^6 = 64) would: the largest error comes from the few steps that under-resolve a wall
+contact, and they become rare quickly.  Over n = 4..100 and 40 periods see
+docs/guide/billiard.rst.  These are measurements, not bounds; the audit checks every run.
+Cost: see docs/guide/billiard.rst ("Cost
+against the wall stiffness"): fewer steps than the fixed step from n ~ 10 on, but a step
+costs more, and the steps still grow with n (a particle pressed against a stiff wall
+vibrates at a frequency ~ n, which any soft-wall integrator has to follow).
+
+Examples
+--------
+>>> from sinktheory import RunSettings, Sink, Well
+>>> sink = Sink(Well(alpha=0.5, beta=0.3, n=4), particles=2, mass=0.2)
+>>> res = simulate_adaptive(sink, RunSettings(runs=2, periods=2, seed=1), eps=0.2)
+>>> res.container_energy.shape, res.method
+((2, 3), 'adaptive')
+>>> bool(res.max_relative_energy_error < 1e-8)
+True
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import importlib.util
+import math
+import os
+import sys
+import tempfile
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from .. import validation as v
+from ..errors import EnergyDriftError, NonFiniteStateError, NumericalError, ParameterError
+from ..integrators import DEFAULT_SCHEME, get_scheme
+from ..model import RunSettings, Sink
+from ..progress import ProgressBar
+from ..stepsize import PERIOD
+
+#: eps when none is given: |dH|/H0 <= 2e-8 on Fig. 8's ensemble for n = 4..100.
+DEFAULT_EPS = 0.25
+#: Largest eps accepted (beyond it the wall approach is covered in too few steps).
+MAX_EPS = 0.5
+#: What the adaptive method records (no trajectory: its steps are not on a grid).
+RECORDS = ("container", "particles", "final")
+#: Steps a run may take in one period before it is stopped (StepControlError).
+MAX_STEPS = 1_000_000
+#: Runs advanced together (lockstep, each with its own step) in one block.
+BLOCK = 16
+#: The controller's constants: the inner distance factor b of d = b (1 - w) and the
+#: crossing factor c0 (the prototype's choices; phi = w^3 / 3 is written into the kernel).
+_B, _C0 = 1.0, 1.0
+
+
+class StepControlError(NumericalError):
+    """A run of the adaptive step needed more than :data:`MAX_STEPS` steps in a period."""
+
+
+_TEMPLATE = Path(__file__).with_name("_template.py")
+_MARK = "# --- template starts\n"
+
+
+def check_eps(eps: object) -> float:
+    """eps as a float in (0, MAX_EPS], else ParameterError.
+
+    Examples
+    --------
+    >>> check_eps(0.2)
+    0.2
+    >>> check_eps(2)
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: eps = 2 is not allowed: must be a number in (0, 0.5]
+    """
+    value = v.finite("eps", eps) if not isinstance(eps, bool) else None
+    if value is None or not 0.0 < value <= MAX_EPS:
+        raise ParameterError("eps", eps, f"a number in (0, {MAX_EPS:g}]")
+    return value
+
+
+# ------------------------------------------------------------------ generated kernels
+def _walls_source(shape: str, n: int) -> str:
+    """Source of ``walls(x, y, alpha, beta, gamma)`` -> (V, then r, r_x, r_y, r_xx, r_xy,
+    r_yy of each wall ratio r of the shape), straight-line code after common
+    subexpression elimination."""
+    import sympy as sp
+
+    from .. import symbolic as S
+
+    x, y = S.x, S.y
+    exprs = [S.potential(shape).subs(S.n, n)]
+    for r in S.wall_ratios(shape):
+        rx, ry = sp.diff(r, x), sp.diff(r, y)
+        exprs += [r, rx, ry, sp.diff(rx, x), sp.diff(rx, y), sp.diff(ry, y)]
+    allowed = {x, y, S.alpha, S.beta, S.gamma}
+    extra = set().union(*(e.free_symbols for e in exprs)) - allowed
+    if extra:
+        raise ValueError(f"shape {shape!r}: wall ratios use {extra}, beyond x, y, alpha, beta")
+    pairs, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("c_"))
+    body = [f"    {s} = {sp.pycode(e)}" for s, e in pairs]
+    values = ", ".join(f"float({sp.pycode(e)})" for e in reduced)
+    return (
+        '@numba.njit(cache=True, error_model="numpy")\n'
+        "def walls(x, y, alpha, beta, gamma):\n"
+        '    """V and the wall ratios with their first and second derivatives."""\n'
+        + "\n".join(body)
+        + f"\n    return ({values},)\n"
+    )
+
+
+@functools.cache
+def kernels(shape: str, n: int):
+    """The compiled adaptive module of a sink engine (shape, exponent 2n): generated and
+    written beside the engine modules on first use, cached by numba afterwards."""
+    from ..engine.cache import cache_dir, load, sink_name
+
+    name = sink_name(shape, n)
+    engine = load(name)
+    head = (
+        f'"""Adaptive stepper of {name} (generated by sinktheory.adaptive)."""\n'
+        "import math\n\nimport numba\nimport numpy as np\n\n"
+        "from sinktheory.engine.cache import load\n\n"
+        f"_engine = load({name!r})\n"
+        "accelerations = _engine.accelerations\nhessian = _engine.hessian\n"
+        "energies = _engine.energies\nmembers_of = _engine.members_of\n"
+        "hessian_rows = _engine.hessian_rows\nSHARED_HESSIAN = _engine.SHARED_HESSIAN\n\n\n"
+    )
+    text = head + _walls_source(shape, n) + "\n\n" + _TEMPLATE.read_text().split(_MARK)[1]
+    # the engine's file name carries its own digest: a new engine makes a new module
+    digest = hashlib.sha256((Path(engine.__file__).name + text).encode()).hexdigest()[:12]
+    folder = cache_dir()
+    path = folder / f"adaptive_{name}_{digest}.py"
+    if not path.exists():
+        folder.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".adaptive-{name}-", suffix=".py")
+        with os.fdopen(fd, "w") as f:
+            f.write(text)
+        os.replace(tmp, path)
+    modname = f"sinktheory_{path.stem}"
+    spec = importlib.util.spec_from_file_location(modname, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[modname] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def _scheme_arrays(scheme: str) -> tuple[np.ndarray, np.ndarray]:
+    A, Bk = get_scheme(scheme).arrays()
+    return np.ascontiguousarray(A, dtype=float), np.ascontiguousarray(Bk, dtype=float)
+
+
+def _control(eps: float, n: int) -> tuple[float, float, float, float]:
+    """The controller's constants (eps, wall layer 1/(2n), b, c0) as the kernels take them."""
+    return (eps, 1.0 / (2 * n), _B, _C0)
+
+
+def _engine_state(sink: Sink, values: np.ndarray):
+    """(module, q, v, parameter table) of state rows (R, 2 + 4k)."""
+    from ..simulate import engine_params, split_values
+
+    module = kernels(sink.well.shape, sink.well.n)
+    q, vel = (np.ascontiguousarray(a) for a in split_values(np.asarray(values, dtype=float)))
+    return module, q, vel, module._engine.table_of(engine_params(sink), q.shape[1])
+
+
+def controller_steps(
+    sink: Sink,
+    values: np.ndarray,
+    count: int,
+    *,
+    eps: float = DEFAULT_EPS,
+    rho: np.ndarray | None = None,
+    scheme: str = DEFAULT_SCHEME,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``count`` steps of the controller and the splitting from state rows ``values``
+    (R, 2 + 4k), without the period cut: (values, the rates rho the last step used, the
+    rates for the next step, each run's controller resets).  ``rho`` None starts from
+    Omega (as a period does).
+
+    The sequence is time-reversible: flipping the velocities of the result and taking
+    ``count`` steps from the rates the last step used returns to the start (up to
+    round-off amplified by the dynamics), unless the controller was reset on the way
+    (rho fell below Omega / 2, when Omega changes by a large factor within a step: a few
+    times in ten periods of a run of Fig. 8's ensemble at eps 0.25; ``simulate_adaptive``
+    reports the count in its message).
+
+    Examples
+    --------
+    >>> from sinktheory import Sink, Well
+    >>> from sinktheory.layout import StateLayout
+    >>> from sinktheory.simulate import start_state
+    >>> sink = Sink(Well(0.5, 0.3, 4), particles=1, mass=0.2)
+    >>> y0 = start_state(sink, 0.5, np.array([[[0.003, -0.004]]]))
+    >>> flip = StateLayout(1).v
+    >>> y1, used, _, resets = controller_steps(sink, y0, 200, eps=0.2, rho=[20.0])
+    >>> y1[:, flip] *= -1
+    >>> back, _, _, resets_back = controller_steps(sink, y1, 200, eps=0.2, rho=used)
+    >>> back[:, flip] *= -1
+    >>> bool(np.abs(back - y0).max() < 1e-12), resets, resets_back
+    (True, array([0]), array([0]))
+    """
+    from ..simulate import join_values
+
+    eps = check_eps(eps)
+    count = v.positive_int("count", count)
+    module, q, vel, table = _engine_state(sink, values)
+    A, Bk = _scheme_arrays(scheme)
+    ctl = _control(eps, sink.well.n)
+    if rho is None:
+        rho = module.rate_of(q, vel, table, ctl)
+    rho = np.array(rho, dtype=float)
+    resets = np.zeros(q.shape[1], dtype=np.int64)
+    used = module.steps(q, vel, table, A, Bk, ctl, rho, count, resets)
+    return join_values(q, vel), used, rho, resets
+
+
+def simulate_adaptive(
+    sink: Sink,
+    settings: RunSettings | None = None,
+    *,
+    eps: float = DEFAULT_EPS,
+    scheme: str = DEFAULT_SCHEME,
+    record: Sequence[str] = ("container",),
+    initial: np.ndarray | None = None,
+    initial_state=None,
+    energy_bound: float | None = None,
+    progress: bool | None = None,
+):
+    """:func:`sinktheory.simulate.simulate` with the adaptive step (``method="adaptive"``
+    there calls this).
+
+    Parameters as in ``simulate``, and:
+
+    eps : float in (0, 0.5]
+        Step factor, h = eps / rho (default :data:`DEFAULT_EPS` = 0.25; the energy error
+        it gives is measured in the module docstring).
+    scheme : str
+        Splitting scheme of each step (default blanes-moan6).
+    record : subset of {"container", "particles", "final"}
+        No trajectory (the steps are not on a grid).
+
+    Returns a :class:`~sinktheory.simulate.SimulationResult` with method "adaptive",
+    steps_per_period the mean over runs and periods, dt = T / that mean.
+
+    Raises ParameterError for bad input, EnergyDriftError / NonFiniteStateError naming
+    the run and the time as ``simulate`` does, and StepControlError when a run needs more
+    than :data:`MAX_STEPS` steps in a period.
+
+    Examples
+    --------
+    >>> from sinktheory import RunSettings, Sink, Well
+    >>> sink = Sink(Well(alpha=0.5, beta=0.3, n=4), particles=1, mass=0.2)
+    >>> res = simulate_adaptive(sink, RunSettings(runs=1, periods=1), initial=[(0.0, 0.01)],
+    ...                         record=("container", "final"), eps=0.15)
+    >>> res.final_state.method, res.message.split(":")[0]
+    ('adaptive', '1 run(s) x 1 period(s), adaptive blanes-moan6, eps = 0.15')
+    """
+    from ..simulate import (
+        SimulationResult,
+        SimulationState,
+        _check_record,
+        _initial_values,
+        default_energy_bound,
+        join_values,
+        run_parameters,
+    )
+
+    settings = RunSettings() if settings is None else settings
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    if not isinstance(settings, RunSettings):
+        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
+    eps = check_eps(eps)
+    scheme = get_scheme(scheme).name
+    record = _check_record(record)
+    if "trajectory" in record:
+        raise ParameterError("record", "trajectory", f"a subset of {RECORDS} (adaptive step)")
+    settings.check_memory(sink, record)
+    bound = v.positive(
+        "energy_bound", default_energy_bound(None) if energy_bound is None else energy_bound
+    )
+    values, t0, h0 = _initial_values(sink, settings, initial, initial_state)
+    runs, periods = values.shape[0], settings.periods
+    module, q, vel, table = _engine_state(sink, values)
+    K = sink.particles
+    shared = np.zeros((runs, periods + 1 if "container" in record else 0))
+    members = np.zeros((runs, periods + 1 if "particles" in record else 0, K))
+    total0, shared0, members0 = module._engine.block_energies(q, vel, table)
+    if shared.size:
+        shared[:, 0] = shared0
+    if members.size:
+        members[:, 0] = members0.T
+    taken = np.zeros(runs, dtype=np.int64)
+    resets = np.zeros(runs, dtype=np.int64)
+    status = np.zeros(runs, dtype=np.int64)
+    fail_period, fail_energy, worst = np.zeros(runs, dtype=np.int64), np.zeros(runs), np.zeros(runs)
+    audit = (np.ascontiguousarray(h0, dtype=float), bound, status, fail_period, fail_energy, worst)
+    fixed = (*_scheme_arrays(scheme), _control(eps, sink.well.n), PERIOD, MAX_STEPS)
+    chunk = max(1, math.ceil(periods / 100))
+    bar = ProgressBar(periods, enabled=progress is not False, label="adaptive ", unit="period")
+    try:
+        for start in range(0, periods, chunk):
+            stop = min(periods, start + chunk)
+            module.advance(q, vel, table, fixed, start, stop, BLOCK, audit,
+                           (shared, members, taken, resets))  # fmt: skip
+            _raise_on_failure(status, fail_period, fail_energy, h0, t0, bound)
+            bar.update(stop - start)
+    finally:
+        bar.close()
+    values = join_values(q, vel)
+    mean_steps = taken.sum() / (runs * periods) if periods else 0.0
+    dt = PERIOD / mean_steps if mean_steps else PERIOD
+    worst_all = float(worst.max()) if runs else 0.0
+    return SimulationResult(
+        times=t0 + PERIOD * np.arange(periods + 1),
+        container_energy=shared if "container" in record else None,
+        particle_energy=members if "particles" in record else None,
+        trajectory=None,
+        trajectory_times=None,
+        final_state=SimulationState(values, t0 + periods * PERIOD, h0, dt, "adaptive")
+        if "final" in record
+        else None,
+        initial_energy=h0,
+        run_errors=worst,
+        max_relative_energy_error=worst_all,
+        method="adaptive",
+        dt=dt,
+        steps_per_period=round(mean_steps),
+        message=f"{runs} run(s) x {periods} period(s), adaptive {scheme}, eps = {eps:.3g}"
+        + f": {mean_steps:.0f} steps per period on average "
+        f"({resets.sum() / runs / max(periods, 1):.3g} controller resets), max relative "
+        "energy error "
+        f"{worst_all:.3g} <= {bound:.3g}",
+        parameters=run_parameters(sink, settings, runs),
+    )
+
+
+def _raise_on_failure(status, fail_period, fail_energy, h0, t0, bound) -> None:
+    """Raise for the earliest failure (period, then run), whatever the threads."""
+    failed = np.flatnonzero(status)
+    if failed.size == 0:
+        return
+    r = int(failed[np.lexsort((failed, fail_period[failed]))[0]])
+    p = int(fail_period[r])
+    where = f"run {r} at t = {t0 + p * PERIOD:.6g} (period {p}, adaptive step)"
+    H, H0 = float(fail_energy[r]), float(h0[r])
+    if status[r] == 3:  # STALLED
+        raise StepControlError(
+            f"{where}: more than {MAX_STEPS} steps in one period (H = {H!r}, H0 = {H0!r}); "
+            "the rate Omega grew without bound"
+        )
+    if status[r] == 2:  # NONFINITE
+        raise NonFiniteStateError(
+            f"{where}: the state became non-finite (total energy {H!r}, started at {H0!r}); "
+            "use a smaller eps"
+        )
+    raise EnergyDriftError(
+        f"{where}: relative total-energy error {abs(H - H0) / (abs(H0) or 1.0):.3g} > bound "
+        f"{bound:.3g} (H = {H!r}, H0 = {H0!r}); use a smaller eps or tolerance"
+    )
