@@ -52,11 +52,7 @@ from __future__ import annotations
 
 import functools
 import hashlib
-import importlib.util
 import math
-import os
-import sys
-import tempfile
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -144,7 +140,7 @@ def _walls_source(shape: str, n: int) -> str:
 def kernels(shape: str, n: int):
     """The compiled adaptive module of a sink engine (shape, exponent 2n): generated and
     written beside the engine modules on first use, cached by numba afterwards."""
-    from ..engine.cache import cache_dir, load, sink_name
+    from ..engine.cache import cache_dir, import_generated, load, sink_name
 
     name = sink_name(shape, n)
     engine = load(name)
@@ -160,20 +156,8 @@ def kernels(shape: str, n: int):
     text = head + _walls_source(shape, n) + "\n\n" + _TEMPLATE.read_text().split(_MARK)[1]
     # the engine's file name carries its own digest: a new engine makes a new module
     digest = hashlib.sha256((Path(engine.__file__).name + text).encode()).hexdigest()[:12]
-    folder = cache_dir()
-    path = folder / f"adaptive_{name}_{digest}.py"
-    if not path.exists():
-        folder.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".adaptive-{name}-", suffix=".py")
-        with os.fdopen(fd, "w") as f:
-            f.write(text)
-        os.replace(tmp, path)
-    modname = f"sinktheory_{path.stem}"
-    spec = importlib.util.spec_from_file_location(modname, path)
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[modname] = module
-    spec.loader.exec_module(module)
-    return module
+    path = cache_dir() / f"adaptive_{name}_{digest}.py"
+    return import_generated(path, lambda: text, f"sinktheory_{path.stem}")
 
 
 def _scheme_arrays(scheme: str) -> tuple[np.ndarray, np.ndarray]:

@@ -110,21 +110,29 @@ def load(name: str):
     """The compiled engine module of system ``name`` (generated on first use)."""
     if name in _loaded:
         return _loaded[name]
-    folder = cache_dir()
-    path = folder / f"{name}_{_digest()}.py"
-    if not path.exists():
+
+    def text() -> str:
         from .printer import render
 
-        text = render(_system(name), _BANNER)
-        folder.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{name}-", suffix=".py")
+        return render(_system(name), _BANNER)
+
+    path = cache_dir() / f"{name}_{_digest()}.py"
+    _loaded[name] = import_generated(path, text, f"sinktheory_engine_{path.stem}")
+    return _loaded[name]
+
+
+def import_generated(path: Path, text, module_name: str):
+    """Import the generated module at ``path`` as ``module_name``, first writing it from
+    ``text()`` if it is not there (atomically: a temporary file, then a rename, so
+    concurrent processes can share the cache; numba caches its machine code beside it)."""
+    if not path.exists():
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.stem}-", suffix=".py")
         with os.fdopen(fd, "w") as f:
-            f.write(text)
+            f.write(text())
         os.replace(tmp, path)
-    modname = f"sinktheory_engine_{path.stem}"
-    spec = importlib.util.spec_from_file_location(modname, path)
+    spec = importlib.util.spec_from_file_location(module_name, path)
     module = importlib.util.module_from_spec(spec)
-    sys.modules[modname] = module
+    sys.modules[module_name] = module
     spec.loader.exec_module(module)
-    _loaded[name] = module
     return module
