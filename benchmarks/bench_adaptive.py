@@ -30,27 +30,16 @@ from __future__ import annotations
 import argparse
 import math
 import re
-import time
 
 import numba
 import numpy as np
-from machine import describe
+from machine import best_of, describe
 
 
 def _sink(n: int, shape: str):
     from sinktheory import Sink, Well
 
     return Sink(Well(0.5, 0.3, n, shape=shape), particles=5, mass=0.2)
-
-
-def _best(run, repeat: int):
-    """(best seconds, last result) of ``repeat`` calls of ``run``."""
-    best, out = math.inf, None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = run()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
 
 
 def _adaptive(n, eps, args, periods, repeat=1):
@@ -60,7 +49,7 @@ def _adaptive(n, eps, args, periods, repeat=1):
     from sinktheory.stepsize import PERIOD
 
     settings = RunSettings(runs=args.runs, periods=periods, seed=0)
-    seconds, res = _best(
+    seconds, res = best_of(
         lambda: simulate(
             _sink(n, args.shape),
             settings,
@@ -81,7 +70,7 @@ def _fixed(n, args, periods, repeat=1):
     from sinktheory.simulate import simulate
 
     settings = RunSettings(runs=args.runs, periods=periods, seed=0)
-    seconds, res = _best(
+    seconds, res = best_of(
         lambda: simulate(_sink(n, args.shape), settings, tol=1e-8, progress=False), repeat
     )
     return seconds, res.steps_per_period, res.max_relative_energy_error
@@ -93,7 +82,7 @@ def _rigid(args, periods, repeat=1):
     from sinktheory.billiard.convergence import measure
 
     settings = RunSettings(runs=args.runs, periods=periods, seed=0)
-    return _best(
+    return best_of(
         lambda: measure(
             args.shape, 0.5, 0.3, math.inf, particles=5, mass=0.2, lyapunov=False, settings=settings
         ),  # fmt: skip

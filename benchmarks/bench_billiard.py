@@ -139,6 +139,9 @@ def soft_against_rigid() -> None:
 
 
 def main() -> None:
+    from machine import describe  # benchmarks/ is on sys.path when run as a script
+
+    print(describe())
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--quick", action="store_true", help="fewer runs (a minute)")
     p.add_argument("--soft", action="store_true", help="also soft-wall ensembles (minutes)")

@@ -127,6 +127,9 @@ def part2(periods: int, repeat: int, png: str | None) -> None:
 
 
 def main(argv=None) -> int:
+    from machine import describe  # benchmarks/ is on sys.path when run as a script
+
+    print(describe())
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true", help="a tenth of the periods")
     parser.add_argument("--repeat", type=int, default=2, help="best of this many (default 2)")

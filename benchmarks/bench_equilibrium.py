@@ -231,6 +231,9 @@ def ergodicity_maps(path: str, scale: float, seed: int) -> None:
 
 
 def main() -> None:
+    from machine import describe  # benchmarks/ is on sys.path when run as a script
+
+    print(describe())
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--png", default=None)

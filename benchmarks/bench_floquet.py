@@ -53,6 +53,9 @@ def rel_err(got, ref):
 
 
 def main(png: str) -> None:
+    from machine import describe  # benchmarks/ is on sys.path when run as a script
+
+    print(describe())
     print(f"Floquet chart benchmark: alpha = {ALPHA}, n = {N}, {COUNT} beta values in [-1, 0.499]")
     t0 = time.perf_counter()
     refs = np.array([mp_phi(N, FLAT.hill_lambda(ALPHA, b)) for b in SAMPLE])

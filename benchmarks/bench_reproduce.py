@@ -37,6 +37,9 @@ def run(figures: list[int], quick: bool) -> dict[int, float]:
 
 
 def main() -> None:
+    from machine import describe  # benchmarks/ is on sys.path when run as a script
+
+    print(describe())
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--figure", type=int, nargs="+", default=[], metavar="N")
     parser.add_argument("--fidelity", choices=("quick", "paper", "both"), default="both")

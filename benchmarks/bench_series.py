@@ -18,7 +18,7 @@ Usage: python benchmarks/bench_series.py [OUT.png]   (default ./bench_series.png
 from __future__ import annotations
 
 import sys
-import time
+from pathlib import Path
 
 import numpy as np
 from matplotlib.figure import Figure
@@ -27,19 +27,13 @@ from scipy.integrate import solve_ivp
 from sinktheory.oscillator import exact_solution, exact_solution_mp, period, triangle_wave
 from sinktheory.series import error_table, triangle_series
 
+sys.path.insert(0, str(Path(__file__).parent))
+from machine import best_of, describe  # noqa: E402
+
 N_VALUES = (2, 3, 5, 10, 20, 50)
 ORDERS = range(1, 7)
 POINTS = 2001
 MP_POINTS = 40
-
-
-def best_time(fn, repeats: int = 3) -> tuple[float, object]:
-    best, out = np.inf, None
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
 
 
 def measure(n: int) -> tuple[list[dict], float]:
@@ -47,9 +41,9 @@ def measure(n: int) -> tuple[list[dict], float]:
     ts = np.linspace(0.0, t_n, POINTS)
     rows = []
 
-    dt, ref = best_time(lambda: exact_solution(ts, n, 1.0, start="zero"))
+    dt, ref = best_of(lambda: exact_solution(ts, n, 1.0, start="zero"))
     sub = ts[:: POINTS // MP_POINTS][:MP_POINTS]
-    dt_mp, x_mp = best_time(
+    dt_mp, x_mp = best_of(
         lambda: [exact_solution_mp(float(t), n, 1.0, start="zero", dps=30) for t in sub], 1
     )
     x_50 = [exact_solution_mp(float(t), n, 1.0, start="zero", dps=50) for t in sub]
@@ -58,11 +52,11 @@ def measure(n: int) -> tuple[list[dict], float]:
     rows.append({"path": "exact float", "error": float_err, "time": dt})
     rows.append({"path": "exact mp30", "error": mp_err, "time": dt_mp * POINTS / len(sub)})
 
-    build, series = best_time(lambda: triangle_series(n, max(ORDERS)))
+    build, series = best_of(lambda: triangle_series(n, max(ORDERS)))
     table = error_table(n, max(ORDERS), samples=POINTS)
     tau = triangle_wave(ts / t_n)
     for i in ORDERS:
-        dt_i, u = best_time(lambda i=i: series.shape(tau, i))
+        dt_i, u = best_of(lambda i=i: series.shape(tau, i))
         rows.append(
             {
                 "path": f"series i={i}",
@@ -80,7 +74,7 @@ def measure(n: int) -> tuple[list[dict], float]:
         # large n: trial steps of the step-size controller can overflow x^(2n-1); they are
         # rejected by the controller, so the warnings are silenced (the result is checked).
         with np.errstate(over="ignore", invalid="ignore"):
-            dt_ode, sol = best_time(
+            dt_ode, sol = best_of(
                 lambda tol=tol: solve_ivp(
                     rhs, (0.0, t_n), y0, "DOP853", t_eval=ts, rtol=tol, atol=tol
                 )
@@ -100,6 +94,7 @@ def measure(n: int) -> tuple[list[dict], float]:
 def main(argv: list[str]) -> None:
     out = argv[1] if len(argv) > 1 else "bench_series.png"
     results = {}
+    print(describe())
     print(f"x'' + x^(2n-1) = 0, A0 = 1, one period, N = {POINTS} points; time = best of 3")
     print(f"{'n':>3} {'path':<20} {'max error/A0':>13} {'time [ms]':>10} {'T_i/T_n - 1':>12}")
     for n in N_VALUES:

@@ -119,6 +119,9 @@ def heavy_modules(args: list[str], env: dict) -> str:
 
 
 def main() -> None:
+    from machine import describe  # benchmarks/ is on sys.path when run as a script
+
+    print(describe())
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=REPEAT)
     repeat = parser.parse_args().repeat

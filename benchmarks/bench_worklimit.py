@@ -27,6 +27,9 @@ def timed(f, *args, **kwargs) -> float:
 
 
 def main() -> None:
+    from machine import describe  # benchmarks/ is on sys.path when run as a script
+
+    print(describe())
     numba.set_num_threads(1)
     print(
         f"{platform.processor() or platform.machine()}, {os.cpu_count()} cores, "

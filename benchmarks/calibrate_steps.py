@@ -117,6 +117,9 @@ def tail(scheme: str, products: list[float], seeds: int) -> None:
 
 
 def main() -> None:
+    from machine import describe  # benchmarks/ is on sys.path when run as a script
+
+    print(describe())
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("periods", nargs="?", type=int, default=300)
     parser.add_argument("--tail", help="comma-separated h*omega products (tail mode)")

@@ -7,8 +7,10 @@ scripts run from this folder), or ``python benchmarks/machine.py``.
 
 from __future__ import annotations
 
+import math
 import os
 import platform
+import time
 
 
 def _cpu_model() -> str:
@@ -51,3 +53,14 @@ def describe() -> str:
 
 if __name__ == "__main__":
     print(describe())
+
+
+def best_of(fn, repeats: int = 3) -> tuple[float, object]:
+    """(fewest seconds, last result) of ``repeats`` calls of ``fn``: the best of several
+    is the timing least disturbed by other work on a shared machine."""
+    best, out = math.inf, None
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return best, out
