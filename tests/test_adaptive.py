@@ -146,3 +146,16 @@ def test_cli(tmp_path, capsys):
         npz = tmp_path / "x.npz"
         code, out, err = run_cli(common + bad + ["--out", str(npz)], capsys)
         assert code == 2 and err.count("\n") == 1 and not npz.exists()
+
+
+def test_work_beyond_the_limit_is_refused_before_any_step():
+    # by hand: 25 runs x 2e7 periods x (1197 fixed steps x 0.64 = 767) x 5 particles is
+    # ~2e12 particle-steps, over the one-day limit at 1e-7 s each; refused at once, with
+    # the estimate in the message
+    import time
+
+    sink = Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2)
+    t0 = time.perf_counter()
+    with pytest.raises(ParameterError, match=r"periods = 20000000 .* x 767 step"):
+        simulate(sink, RunSettings(runs=25, periods=2 * 10**7), method="adaptive", record=("final",))
+    assert time.perf_counter() - t0 < 5
