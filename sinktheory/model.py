@@ -90,6 +90,15 @@ def _on_points(kernel, x, y, alpha, beta, gamma, n, out):
         out[i] = kernel(x[i], y[i], alpha, beta, gamma, n)
 
 
+def _box_ratio(well: Well, b: float) -> tuple[float, tuple[float, float]]:
+    """The largest wall ratio over the start box [-b, b]^2 and where it is (see
+    :meth:`RunSettings.check_box`); inf where the ratios overflow."""
+    try:
+        return max((well.wall_ratio(*p), p) for p in ((b, b), (b, 0.0), (0.0, b)))
+    except OverflowError:
+        return math.inf, (b, b)
+
+
 @functools.lru_cache(maxsize=1024)
 def _shape_reach(shape: str, c: float, alpha: float, beta: float, gamma: float, n: int):
     """The shape's generated ``reach`` (a golden-section search in Python, about 1 ms),
@@ -519,17 +528,18 @@ class RunSettings:
 walls of the well (the start box reaches wall ratio 50 >= 1 at (10, 0) (wall distance \
 alpha - beta = 0.2))
         """
-        b = self.box
-        try:
-            ratio, where = max((well.wall_ratio(*p), p) for p in ((b, b), (b, 0.0), (0.0, b)))
-        except OverflowError:
-            ratio, where = math.inf, (b, b)
+        ratio, where = _box_ratio(well, self.box)
         if not ratio < 1:
             wall = well.wall_distance
+            # the largest box inside: the box's ratio grows with its size, so bisect on it
+            lo, hi = 0.0, min(wall, 1.0)
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if _box_ratio(well, mid)[0] < 1 else (lo, mid)
             raise ParameterError(
                 "box",
                 self.box,
-                f"< {min(wall, 1.0):.6g}, inside the walls of the well",
+                f"< {hi:.6g}, inside the walls of the well",
                 why=f"the start box reaches wall ratio {ratio:.3g} >= 1 at "
                 f"({where[0]:g}, {where[1]:g}) (wall distance alpha - beta = {wall:.3g})",
             )

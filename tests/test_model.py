@@ -164,3 +164,20 @@ def test_potential_on_arrays_is_the_kernel_at_each_point(shape):
         expected = w.kernels.potential(x[0, j], y[i, 0], w.alpha, w.beta, w.gamma, w.n)
         assert value == expected
     assert np.shape(w.potential(0.1, 0.2)) == ()
+
+
+@pytest.mark.parametrize(
+    "shape, beta, bound",
+    [
+        ("circular", 0.1, 0.4 / math.sqrt(2)),  # the corner (b, b) on the circle r = alpha - beta
+        # flat, beta < 0: the corner on the wall, b = D(b) = alpha + beta (b^2 - 1)
+        ("flat", -0.3, (-1 + math.sqrt(1 + 4 * 0.3 * 0.8)) / (2 * 0.3)),
+        ("flat", 0.3, 0.2),  # the wall at y = 0: b = alpha - beta
+    ],
+)
+def test_box_refusal_names_the_largest_box_inside(shape, beta, bound):
+    with pytest.raises(ParameterError) as info:
+        RunSettings(box=0.99).check_box(Well(0.5, beta, 4, shape=shape))
+    stated = float(str(info.value).split("must be < ")[1].split(",")[0])
+    assert stated == pytest.approx(bound, rel=1e-5)
+    RunSettings(box=0.999 * bound).check_box(Well(0.5, beta, 4, shape=shape))  # just inside
