@@ -112,10 +112,10 @@ from ..simulate import (
     start_state,
 )
 from ..stepsize import DEFAULT_TOL, PERIOD, check_tol, resolve_step
+from .measures import DAMPING_KINDS
 
 _RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
 #: The weights of the damping force (module docstring).
-DAMPING_KINDS = ("contact", "viscous")
 
 
 @dataclass(frozen=True)

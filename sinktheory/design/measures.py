@@ -276,6 +276,11 @@ def _rqa(series: np.ndarray, eps: float) -> dict:
 
 #: Attachments whose particles move on a line (one degree of freedom each).
 LINE_ATTACHMENTS = ("nes", "impact")
+#: Every attachment the design explorer compares: the 2-D well and the 1-D absorbers.
+ATTACHMENTS = ("well", *LINE_ATTACHMENTS)
+#: How the particles lose energy: a contact weight, or a dashpot to the container
+#: (:mod:`sinktheory.design.inelastic`).
+DAMPING_KINDS = ("contact", "viscous")
 
 
 def line_equipartition(total_energy: float, particles: int, n: float) -> float:
@@ -391,7 +396,7 @@ def design_measures(
 
     # long-time share and its verdict
     share = s.equipartition
-    if v.choice("attachment", attachment, ("well", *LINE_ATTACHMENTS)) != "well":
+    if v.choice("attachment", attachment, ATTACHMENTS) != "well":
         share = line_equipartition(total_energy, particles,
                                    math.inf if attachment == "impact" else n)  # fmt: skip
     se = s.long_time_stderr

@@ -71,7 +71,7 @@ from ..model import MAX_PERIODS, RunSettings, Sink, Well
 from ..sinkstats import ensemble_mean
 from ..stepsize import check_tol
 from ..worklimit import check_particle_steps, step_of, tangent_steps
-from .measures import RQA_MEASURES, design_measures, horizons_of
+from .measures import DAMPING_KINDS, RQA_MEASURES, design_measures, horizons_of
 
 #: Results of a point that come from its ensemble (besides the container energy).
 ENSEMBLE_RESULTS = (
@@ -158,7 +158,7 @@ def check(p: dict) -> None:
             energy=p["energy"], runs=p["lyapunov_runs"], periods=p["lyapunov_periods"]
         ).check(sink)
     v.nonnegative("damping", p["damping"])
-    v.choice("damping_kind", p.get("damping_kind", "contact"), ("contact", "viscous"))
+    v.choice("damping_kind", p.get("damping_kind", "contact"), DAMPING_KINDS)
     if p["runs"] < 2:
         raise ParameterError("runs", p["runs"], "at least 2 (standard errors need two runs)")
     lyapunov = p["lyapunov_runs"] * p["lyapunov_periods"] * tangent_steps(p["particles"], 1)

@@ -55,6 +55,7 @@ import numpy as np
 
 from .. import validation as v
 from ..bifurcation import QUANTITIES
+from ..design.measures import ATTACHMENTS, DAMPING_KINDS
 from ..dop853 import DEFAULT_RTOL
 from ..equilibrium import ergodicity as _ergodicity
 from ..errors import ParameterError
@@ -456,8 +457,8 @@ KINDS = {
             "lyapunov_runs": Param(int, 10),
             "lyapunov_periods": Param(int, 100),
             "damping": Param(float, 0.0),
-            "attachment": Param(str, "well", ("well", "nes", "impact")),
-            "damping_kind": Param(str, "contact", ("contact", "viscous")),
+            "attachment": Param(str, "well", ATTACHMENTS),
+            "damping_kind": Param(str, "contact", DAMPING_KINDS),
             "replica": Param(int, 0),
         },
         _design_results(),
