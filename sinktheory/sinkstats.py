@@ -16,11 +16,19 @@ theorem x V_x + y V_y = 2n V gives <V> = Theta/n per particle.  With E the total
     <E_c> = E / (1 + k (1 + 1/n)),
 
 exact for beta = 0 if the motion is ergodic on the energy shell, and an estimate for
-beta != 0 (V is then not homogeneous).  :func:`equipartition_container_energy` returns it.
+beta != 0 (V is then not homogeneous).  A particle that moves on a line (d = 1
+coordinate, the 1-D absorbers) holds half of that: Theta/2 of kinetic and Theta/(2n) of
+potential energy, so in general
+
+    <E_c> = E / (1 + k (d/2) (1 + 1/n)),
+
+and rigid walls (n = inf) hold no potential energy.
+:func:`equipartition_container_energy` returns it.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -96,18 +104,29 @@ def first_fall_below(mean_energy, fractions, e0: float) -> dict[float, int | Non
     return out
 
 
-def equipartition_container_energy(total_energy: float, particles: int, n: int) -> float:
-    """E / (1 + k (1 + 1/n)): the container's long-time share (see the module docstring).
+def equipartition_container_energy(
+    total_energy: float, particles: int, n: float, dimension: int = 2
+) -> float:
+    """E / (1 + k (d/2) (1 + 1/n)): the container's long-time share (see the module
+    docstring) for k particles of d = ``dimension`` coordinates (2: the well; 1: a particle
+    on a line) in walls of exponent 2n (a positive integer, or math.inf for rigid walls).
 
     Examples
     --------
     >>> round(equipartition_container_energy(0.5, 5, 6), 6)
     0.073171
+    >>> equipartition_container_energy(1.0, 1, 2, 1), equipartition_container_energy(
+    ...     1.0, 1, math.inf, 1)
+    (0.5714285714285714, 0.6666666666666666)
     """
     e = v.positive("total_energy", total_energy)
     k = v.positive_int("particles", particles)
-    n = v.positive_int("n", n)
-    return e / (1 + k * (1 + 1 / n))
+    if dimension not in (1, 2) or isinstance(dimension, bool):
+        raise ParameterError("dimension", dimension, "1 (a particle on a line) or 2 (the well)")
+    d = int(dimension)
+    if n != math.inf:
+        n = v.positive_int("n", n)
+    return e / (1 + k * d / 2 * (1 + 1 / n))
 
 
 @dataclass(frozen=True)

@@ -157,5 +157,6 @@ def test_work_beyond_the_limit_is_refused_before_any_step():
     sink = Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2)
     t0 = time.perf_counter()
     with pytest.raises(ParameterError, match=r"periods = 20000000 .* x 767 step"):
-        simulate(sink, RunSettings(runs=25, periods=2 * 10**7), method="adaptive", record=("final",))
+        settings = RunSettings(runs=25, periods=2 * 10**7)
+        simulate(sink, settings, method="adaptive", record=("final",))
     assert time.perf_counter() - t0 < 5

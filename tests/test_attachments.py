@@ -1,7 +1,8 @@
 """The 1-D attachments and the 2-D sink with a dashpot (issue 23): each check against an
 independent solution -- the matrix exponential of the damped linear 2-DOF system, the
 averaged (1:1 resonance) flow of the cubic NES and its NNM backbone, the transverse
-exponent of the tangent map, solve_ivp and a brute-force impact search for the exact vibro-impact flow.
+exponent of the tangent map, solve_ivp and a brute-force impact search for the exact
+vibro-impact flow.
 
 Workloads are small (a few runs x tens of periods).
 """
@@ -53,8 +54,10 @@ def test_linear_attachment_is_the_damped_two_dof_system():
     A = np.block([[np.zeros((2, 2)), np.eye(2)], [-Minv @ K, -Minv @ C]])
     errors = []
     for dt in (0.01, 0.005):
-        res = simulate_inelastic(att.sink, settings, damping=c, damping_kind="viscous", dt=dt,
-                                 method="blanes-moan6", start=rows, samples_per_period=16)  # fmt: skip
+        res = simulate_inelastic(
+            att.sink, settings, damping=c, damping_kind="viscous", dt=dt,
+            method="blanes-moan6", start=rows, samples_per_period=16,
+        )  # fmt: skip
         worst = 0.0
         for r in range(2):
             z = np.array([expm(A * t) @ rows[r, [0, 2, 1, 4]] for t in res.sample_times])

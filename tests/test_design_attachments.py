@@ -8,9 +8,9 @@ from _cli import run_cli
 
 from sinktheory.attachments import Attachment, impulse_response
 from sinktheory.design.explorer import explore
-from sinktheory.design.measures import line_equipartition
 from sinktheory.design.point import SAMPLES
 from sinktheory.errors import ParameterError
+from sinktheory.sinkstats import equipartition_container_energy
 from sinktheory.sweep.grid import point_seed
 
 BASE = {"beta": 0.3, "n": 2, "runs": 3, "periods": 12, "horizons": "6+12",
@@ -115,7 +115,7 @@ def test_line_equipartition_against_the_shell_average(n):
     r = math.sqrt(2.04 * E)
     mean, se = _shell_share(E, mu, potential, (r, reach, r * math.sqrt(mu)))
     assert se < 0.002
-    assert abs(mean - line_equipartition(1.0, 1, n)) < 4 * se
+    assert abs(mean - equipartition_container_energy(1.0, 1, n, dimension=1)) < 4 * se
 
 
 def test_1d_points_use_the_line_equipartition_and_report_their_step():

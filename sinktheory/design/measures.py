@@ -16,7 +16,8 @@ spring 1, period T = 2 pi), energies relative to the container's initial energy 
 * **long-time share**: the time average of E after ``transient`` periods, mean over runs
   +- standard error (:func:`sinktheory.sinkstats.sink_measures`), against the
   equipartition prediction E/(1 + k(1 + 1/n)) with a verdict (:data:`VERDICTS`); for a
-  1-D attachment E/(1 + k(1 + 1/n)/2) (:func:`line_equipartition`);
+  1-D attachment E/(1 + k(1 + 1/n)/2)
+  (:func:`~sinktheory.sinkstats.equipartition_container_energy` with d = 1);
 * **run-to-run spread**: the standard deviation of the runs' long-time averages;
 * **recurrence risk**: the longest excursion of <E> back above the level (1 - a_risk) E0
   after it first fell below it (periods; 0 if it never came back, NaN if it never fell
@@ -55,7 +56,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 from ..results import Result
-from ..sinkstats import ensemble_mean, sink_measures
+from ..sinkstats import ensemble_mean, equipartition_container_energy, sink_measures
 
 #: Fractions of E0 absorbed whose settling times are measured.
 ABSORBED_LEVELS = (0.5, 0.8)
@@ -100,7 +101,8 @@ class DesignMeasures(Result):
     long_time_mean, long_time_se : float
         Long-time container energy (after ``transient`` periods).
     equipartition : float
-        E_total / (1 + k (1 + 1/n)) (1-D attachments: :func:`line_equipartition`).
+        E_total / (1 + k (1 + 1/n)) (1-D attachments:
+        :func:`~sinktheory.sinkstats.equipartition_container_energy` with d = 1).
     equipartition_z : float
         (long_time_mean - equipartition) / long_time_se (inf when the s.e. is 0).
     verdict : int
@@ -283,27 +285,6 @@ ATTACHMENTS = ("well", *LINE_ATTACHMENTS)
 DAMPING_KINDS = ("contact", "viscous")
 
 
-def line_equipartition(total_energy: float, particles: int, n: float) -> float:
-    """E / (1 + k (1 + 1/n) / 2): the container's equipartition share when each of the
-    k particles moves on a line (the 1-D attachments).
-
-    The argument of :mod:`sinktheory.sinkstats` with one coordinate per particle: the
-    container holds Theta, each particle Theta/2 of kinetic energy and, in a potential
-    homogeneous of degree 2n in x, Theta/(2n) of potential energy; rigid walls
-    (n = inf, the vibro-impact NES) hold none.
-
-    Examples
-    --------
-    >>> line_equipartition(1.0, 1, 2), line_equipartition(1.0, 1, math.inf)
-    (0.5714285714285714, 0.6666666666666666)
-    """
-    e = v.positive("total_energy", total_energy)
-    k = v.positive_int("particles", particles)
-    if n != math.inf:
-        n = v.positive("n", n)
-    return e / (1 + k * (1 + 1 / n) / 2)
-
-
 def design_measures(
     energy_runs,
     *,
@@ -350,7 +331,8 @@ def design_measures(
         (default :func:`default_window` of P; 0 gives the plain first passage).
     attachment : {"well", "nes", "impact"}
         The equipartition share of the 2-D sink (``"well"``) or of particles on a line
-        (:func:`line_equipartition`; ``"impact"``: rigid walls, n = inf).
+        (:func:`~sinktheory.sinkstats.equipartition_container_energy` with d = 1;
+        ``"impact"``: rigid walls, n = inf).
 
     Returns
     -------
@@ -397,8 +379,8 @@ def design_measures(
     # long-time share and its verdict
     share = s.equipartition
     if v.choice("attachment", attachment, ATTACHMENTS) != "well":
-        share = line_equipartition(total_energy, particles,
-                                   math.inf if attachment == "impact" else n)  # fmt: skip
+        rigid = math.inf if attachment == "impact" else n
+        share = equipartition_container_energy(total_energy, particles, rigid, dimension=1)
     se = s.long_time_stderr
     diff = s.long_time_mean - share
     z = diff / se if se > 0 else (0.0 if diff == 0 else math.copysign(math.inf, diff))

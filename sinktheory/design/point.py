@@ -37,8 +37,8 @@ relative to the container (the viscous damper of the 1-D absorbers; 0: conservat
 zeta_eq is the same equivalent ratio W(t) / (2 integral E_c dt) (trapezoid rule over
 ``SAMPLES`` samples per period), lambda_1 is left out (NaN), and the equipartition
 share is that of a particle on a line, E/(1 + k(1 + 1/n)/2), with n = oo for the
-vibro-impact NES (:func:`sinktheory.design.measures.line_equipartition`).  They need
-particles = 1 and gamma = 1, and their start box is ``box`` times sqrt(2 E0)
+vibro-impact NES (:func:`sinktheory.sinkstats.equipartition_container_energy` with
+d = 1).  They need particles = 1 and gamma = 1, and their start box is ``box`` times sqrt(2 E0)
 (:func:`~sinktheory.attachments.impulse_response`); dt_used is the response's ``dt``
 (NaN for the vibro-impact NES, whose flow is exact).
 
