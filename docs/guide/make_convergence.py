@@ -27,7 +27,7 @@ sys.path.insert(0, str(HERE.parents[1] / "benchmarks"))
 from machine import describe  # noqa: E402
 
 from sinktheory.billiard.convergence import NS, QUANTITIES, convergence, lyapunov_chart  # noqa: E402
-from sinktheory.chaos.maps import beta_grid, threshold  # noqa: E402
+from sinktheory.chaos.maps import beta_grid, chaotic, threshold  # noqa: E402
 from sinktheory.floquet import model_problem, scan  # noqa: E402
 from sinktheory.model import RunSettings  # noqa: E402
 from sinktheory.plot.convergence import convergence_figure, lyapunov_figure  # noqa: E402
@@ -47,8 +47,8 @@ def _pm(mean: float, se: float) -> str:
 
 
 def _verdict(mean: float, se: float, periods: int) -> str:
-    """C (chaotic) when mean - 2 s.e. exceeds 3 ln t / t, as the chaos maps decide."""
-    return "C" if mean - 2 * se > threshold(periods) else "R"
+    """C (chaotic) or R, as the chaos maps decide (:func:`sinktheory.chaos.maps.chaotic`)."""
+    return "C" if chaotic(mean, se, periods) else "R"
 
 
 def _rate(r: dict) -> str:

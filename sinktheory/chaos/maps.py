@@ -123,13 +123,19 @@ def threshold(periods: int) -> float:
     return THRESHOLD_FACTOR * math.log(t) / t
 
 
+def chaotic(mean, se, periods: int):
+    """True where an exponent is chaotic: its mean less two standard errors above
+    :func:`threshold` (arrays or numbers)."""
+    return np.asarray(mean) - 2 * np.asarray(se) > threshold(periods)
+
+
 def verdicts(ds) -> dict:
     """Chaotic / regular per beta from lambda_1 and from the transverse exponent."""
-    thr = threshold(int(ds.attrs["periods"]))
-    lam, se = ds.lambda1.values, ds.lambda1_se.values
-    out = {"threshold": thr, "chaotic": lam - 2 * se > thr}
+    periods = int(ds.attrs["periods"])
+    out = {"threshold": threshold(periods),
+           "chaotic": chaotic(ds.lambda1.values, ds.lambda1_se.values, periods)}  # fmt: skip
     if "transverse" in ds and np.isfinite(ds.transverse.values).all():
-        out["transverse_chaotic"] = ds.transverse.values - 2 * ds.transverse_se.values > thr
+        out["transverse_chaotic"] = chaotic(ds.transverse.values, ds.transverse_se.values, periods)
     return out
 
 
