@@ -35,7 +35,8 @@ docs/guide/billiard.rst.  These are measurements, not bounds; the audit checks e
 Cost: see docs/guide/billiard.rst ("Cost
 against the wall stiffness"): fewer steps than the fixed step from n ~ 10 on, but a step
 costs more, and the steps still grow with n (a particle pressed against a stiff wall
-vibrates at a frequency ~ n, which any soft-wall integrator has to follow).
+vibrates at a frequency ~ sqrt(n), which any soft-wall integrator has to follow: see
+docs/guide/billiard.rst).
 
 Examples
 --------
