@@ -41,6 +41,7 @@ from .simulate import (
     total_energy,
 )
 from .stepsize import ladder_step
+from .worklimit import check_particle_steps
 
 QUANTITIES = ("y", "energy")
 #: Start of the particle relative to the container (Fig. 4 of the paper).
@@ -124,6 +125,28 @@ def section_step(sink: Sink, energy: float = 0.5) -> tuple[float, int]:
     return ladder_step(default_step(sink, bound)[0])
 
 
+def _check_work(sinks, steps: int, transient: int, count: int) -> None:
+    """Refuse sections whose estimated work exceeds the limit of one computation
+    (:func:`sinktheory.worklimit.check_particle_steps`) or whose record of states (6
+    numbers per run and period, with the inert runs a block plan may add: at most
+    min(63, 3 R)) exceeds the memory limit, naming ``count``."""
+    periods = transient + count
+    rows = 48.0 * (len(sinks) + min(63, 3 * len(sinks)))  # bytes per recorded period
+    v.fits_memory(
+        "count",
+        count,
+        rows * (periods + 1),
+        f"{len(sinks)} well(s) x {periods + 1} recorded period(s)",
+        f"<= {max(1, int(v.memory_limit() // rows) - 1 - transient)} with transient = {transient}",
+    )
+    check_particle_steps(
+        "count",
+        count,
+        float(len(sinks)) * periods * steps,
+        f"{len(sinks)} well(s) x {periods} period(s) x {steps} step(s) x 1 particle",
+    )
+
+
 def step_groups(sinks, energy: float = 0.5) -> dict[tuple, list[int]]:
     """Indices of ``sinks`` grouped by engine and :func:`section_step` (what
     :func:`sections` can run together)."""
@@ -170,6 +193,7 @@ def sections(
             "sinks", "wells of different engines or steps", "one shape and n, one section_step"
         )
     dt, steps = section_step(sinks[0], energy)
+    _check_work(sinks, steps, transient, count)
     values = [start_state(k, energy, np.array([[START]])) for k in sinks]
     for k, z in zip(sinks, values, strict=True):
         k.well.check_energy(float(total_energy(k, z)[0]))
@@ -218,7 +242,10 @@ def bifurcation(
     for s in sinks:  # refuse bad input before any long computation
         RunSettings(energy=energy, runs=1, periods=1).check(s)
     rows = np.empty((len(sinks), count))
-    for members in step_groups(sinks, energy).values():
+    groups = step_groups(sinks, energy)
+    for (_, (_, steps)), members in groups.items():  # every group refused before any runs
+        _check_work([sinks[i] for i in members], steps, transient, count)
+    for members in groups.values():
         rows[members] = sections([sinks[i] for i in members], transient=transient,
                                  count=count, quantity=quantity, energy=energy)  # fmt: skip
     w = sinks[0].well

@@ -47,3 +47,22 @@ def test_diagram_is_deterministic_and_energy_section_works():
 def test_bad_input(call, name):
     with pytest.raises(ParameterError, match=f"^{name} = "):
         call()
+
+
+def test_section_refuses_work_and_memory_beyond_the_limits_at_once(monkeypatch):
+    import time
+
+    from sinktheory import validation
+
+    stiff = Sink(Well(0.5, 0.3, 100), 1, 0.2)  # about 17,900 steps per period
+    t0 = time.perf_counter()
+    # by hand: 1e8 periods x 6 numbers x 8 bytes x (1 run + 3 padding) = 19 GB of record
+    with pytest.raises(ParameterError, match=r"count = 100000000 .*memory"):
+        section(stiff, transient=10, count=10**8)
+    # with memory to spare, 1e8 periods x 17,900 steps = 1.8e12 particle steps > 1 day
+    monkeypatch.setattr(validation, "memory_limit", lambda: 10**15)
+    with pytest.raises(ParameterError, match=r"count = 100000000 .*particle steps"):
+        section(stiff, transient=10, count=10**8)
+    with pytest.raises(ParameterError, match=r"count = 100000000"):
+        bifurcation([0.3, 0.31], alpha=0.5, n=100, count=10**8)
+    assert time.perf_counter() - t0 < 5
