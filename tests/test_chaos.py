@@ -225,6 +225,15 @@ def test_lambda1_agrees_with_two_trajectories():
     np.testing.assert_allclose(res.lambda1, two, rtol=1e-3)
 
 
+@pytest.mark.parametrize("d0", [1e-300, 1e-15, 0.01])
+def test_two_orbit_separation_outside_its_range_is_refused(d0):
+    # 1e-300 vanished after one step (log 0 = -inf reached the caller as an exponent)
+    q, v = _sink_state(FLAT1, runs=1, seed=2)
+    with pytest.raises(ParameterError, match=r"d0 = .* in \["):
+        two_orbit_exponent(engine_name(FLAT1), q, v, engine_params(FLAT1), dt=DT,
+                           steps=STEPS, segments=1, d0=d0)  # fmt: skip
+
+
 def test_integrable_case_decays_like_log_t_over_t():
     """beta = 0 separates the well (x and y independent) and a particle of mass 1e-6 barely
     moves the container: the orbit is regular, deviations grow linearly (shear of the

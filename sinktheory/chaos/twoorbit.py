@@ -21,10 +21,14 @@ from __future__ import annotations
 import numpy as np
 
 from .. import validation as val
-from ..errors import ParameterError
+from ..errors import NumericalError, ParameterError
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from .general import check_params, check_run
 from .vectors import random_vectors
+
+#: Allowed initial separations d0: from 1e-13 times the state's largest entry (above that
+#: the shadow's difference carries at least ~1000 ulps) up to 1e-3 (still linear).
+D0_RANGE = (1e-13, 1e-3)
 
 
 def two_orbit_exponent(
@@ -48,7 +52,8 @@ def two_orbit_exponent(
     system, q, v, params, dt, steps, segments
         As for :func:`~sinktheory.chaos.general.indicators`.
     d0 : float
-        Separation kept between the orbits (renormalised at every segment end).
+        Separation kept between the orbits (renormalised at every segment end), in
+        :data:`D0_RANGE` (the lower end times the state's largest entry).
     direction : (dq, dv) arrays (D, 1, R), optional
         Initial separation directions; default: the first vector of
         :func:`~sinktheory.chaos.vectors.random_vectors` (the one ``indicators`` uses for
@@ -57,6 +62,13 @@ def two_orbit_exponent(
     system, q, v, dt, steps, segments = check_run(system, q, v, dt, steps, segments)
     params = check_params(system, params)
     d0 = val.positive("d0", d0)
+    scale = max(1.0, float(np.max(np.abs(np.concatenate([q, v]))))) if q.size else 1.0
+    if not D0_RANGE[0] * scale <= d0 <= D0_RANGE[1]:
+        raise ParameterError(
+            "d0", d0, f"in [{D0_RANGE[0] * scale:.3g}, {D0_RANGE[1]:g}]",
+            why="a smaller separation drowns in the state's round-off (or vanishes), a "
+            "larger one leaves the linear regime",
+        )  # fmt: skip
     D, R = q.shape
     if direction is None:
         dq, dv = random_vectors(D, 1, R, seed)
@@ -79,6 +91,12 @@ def two_orbit_exponent(
         ens.run(scheme, dt=dt, steps=steps, segments=1, record=())
         diff = np.concatenate([ens.q[:, R:] - ens.q[:, :R], ens.v[:, R:] - ens.v[:, :R]])
         d = np.sqrt((diff**2).sum(0))
+        if not np.all(d > 0) or not np.all(np.isfinite(d)):
+            r = int(np.flatnonzero(~((d > 0) & np.isfinite(d)))[0])
+            raise NumericalError(
+                f"run {r}, segment {s + 1}: the shadow orbit's distance became {d[r]!r}; "
+                "no exponent can be measured (try another d0 or a shorter segment)"
+            )
         logs[:, s + 1] = logs[:, s] + np.log(d / d0)
         shadow = np.concatenate([ens.q[:, :R], ens.v[:, :R]]) + (d0 / d) * diff
         ens.q[:, R:] = shadow[:D]

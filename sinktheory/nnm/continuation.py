@@ -346,7 +346,8 @@ def _value(problem: ShootingProblem, lam: float) -> float:
 def _normal(problem: ShootingProblem, u: np.ndarray, t: np.ndarray) -> np.ndarray:
     """The arclength hyperplane's normal in plain unknowns: t / scales^2 (scaled metric)."""
     usc, _ = problem.scales(u)
-    return t / usc**2
+    with np.errstate(over="ignore"):  # a scale beyond 1e154: that component's weight is 0
+        return t / usc**2
 
 
 def _corrector(problem: ShootingProblem, u: np.ndarray, t: np.ndarray, ds: float, max_iter=12):
