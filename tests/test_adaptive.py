@@ -21,12 +21,13 @@ def _fig8(n: int, particles: int = 5) -> Sink:
     return Sink(Well(0.5, 0.3, n), particles=particles, mass=0.2)
 
 
-@pytest.mark.parametrize("n, tolerance", [(4, 1e-9), (20, 1e-7)])
+@pytest.mark.parametrize("n, tolerance", [(4, 1e-9), (10, 1e-8)])
 def test_container_energy_agrees_with_the_fixed_step(n, tolerance):
     # reference: the fixed-step simulator at tol 1e-12 (another step sequence entirely);
     # eps 0.05 gives |dH|/H0 ~ 1e-13; over 3 periods the chaotic growth leaves the
-    # difference of the two below 2e-11 (n = 4) and 6e-10 (n = 20) as measured, so the
-    # tolerances have a margin of 50-100
+    # difference of the two below 2e-11 (n = 4) and 8.5e-11 (n = 10) as measured, so the
+    # tolerances have a margin of 50-100 (n = 10: an engine the suite compiles anyway;
+    # n = 20 agreed to 6e-10 but cost CI 30 s of compilation)
     sink, settings = _fig8(n), RunSettings(runs=4, periods=3, seed=3)
     fixed = simulate(sink, settings, tol=1e-12, progress=False)
     adaptive = simulate(sink, settings, method="adaptive", eps=0.05, progress=False)
