@@ -3,7 +3,7 @@
 The engine's loops run over the runs of a block, and what a block of B runs costs depends
 on how the compiler vectorised those loops on this machine.  LLVM's main vector body takes
 16 runs at a time and an epilogue 4 (see :mod:`sinktheory.engine.cache`), so on a 2-core
-AVX2 machine a block of 4 runs costs 2.5x a block of 64 per run, a block of 1 about 7x,
+AVX2 machine a block of 4 runs costs about 2x a block of 64 per run, a block of 1 about 7x,
 and a block of 13 pays a scalar remainder of one run; other CPUs differ.  No constant
 block size is right everywhere, so the policy is:
 
