@@ -64,6 +64,46 @@ def test_fixed_block_keeps_the_callers_choice():
     assert (p.block, p.padded, p.threads, p.blocks) == (3, 11, 4, 4)
 
 
+STEP_GROUPS = st.lists(st.tuples(st.integers(1, 40), st.integers(50, 2000)), min_size=1,
+                       max_size=6, unique_by=lambda g: g[1])  # fmt: skip
+
+
+@settings(max_examples=150, deadline=None)
+@given(groups=STEP_GROUPS, costs=COSTS, threads=st.integers(1, 4), pad=st.booleans())
+def test_layout_of_step_groups(groups, costs, threads, pad):
+    """Runs with their own steps: every run in exactly one column of a block of its own step
+    count, inert copies only in a group's last block (copies of a run of that group, record
+    rows past the runs), thread parts that cover the blocks in order, and a predicted time
+    that is the slowest part's work (checked against the blocks' own sums)."""
+    rng = np.random.default_rng(len(groups))
+    steps = rng.permutation(np.concatenate([np.full(n, s) for n, s in groups]))
+    R = steps.size
+    shape = blocks.groups_of(steps)
+    plan = blocks.plan(shape, costs, threads) if pad else blocks.fixed(shape, 4, threads)
+    columns, (parts, bounds, rows, dts, nsteps) = blocks.layout(plan, steps, 2 * np.pi / steps)
+    real = rows < R
+    assert sorted(columns[real]) == list(range(R)) and np.array_equal(columns[real], rows[real])
+    assert sorted(rows[~real]) == list(range(R, columns.size)) and columns.size == plan.padded
+    for i in range(bounds.size - 1):
+        block = slice(bounds[i], bounds[i + 1])
+        assert np.all(steps[columns[block]] == nsteps[i]) and 0 < bounds[i + 1] - bounds[i]
+        assert bounds[i + 1] - bounds[i] <= plan.block and dts[i] == 2 * np.pi / nsteps[i]
+        if not real[block].all():  # inert copies: padding of a group's last block only
+            assert pad and (i + 1 == bounds.size - 1 or nsteps[i + 1] != nsteps[i])
+    assert parts[0] == 0 and parts[-1] == bounds.size - 1 and np.all(np.diff(parts) >= 0)
+    assert parts.size - 1 == plan.threads <= threads
+    if pad:
+        cost = plan.block * costs[plan.block] / nsteps.max()
+        work = [cost * nsteps[parts[j] : parts[j + 1]].sum() for j in range(plan.threads)]
+        assert plan.predicted == pytest.approx(max(work), rel=1e-12)
+
+
+def test_step_groups_balance_the_threads():
+    """Two step groups on two threads: the cheap blocks are not all given to one thread."""
+    p = blocks.fixed(((8, 0.25), (8, 1.0)), 4, 2)  # blocks of relative work .25 .25 1 1
+    assert p.parts() == [0, 3, 4]  # 1.5 against 1, not 0.5 against 2
+
+
 class _Counting:
     """Stands in for measure(): counts calls, returns a fixed table."""
 

@@ -16,6 +16,7 @@ from sinktheory import RunSettings, Sink, Well
 from sinktheory import symbolic as S
 from sinktheory.engine.cache import load, sink_name
 from sinktheory.engine.core import Ensemble
+from sinktheory.errors import ParameterError
 from sinktheory.integrators import get_scheme
 from sinktheory.simulate import engine_params, random_positions, split_values, start_state
 
@@ -251,3 +252,58 @@ def test_take_continues_the_chosen_runs_bitwise():
     for name in ("q", "v", "dq", "dv", "logs"):
         assert np.array_equal(getattr(part, name), getattr(whole, name)[..., kept]), name
     assert np.array_equal(rec.logs[:, -1, 0], whole.logs[0, kept])
+
+
+def _mixed_steps_run(q, v, params, steps, *, block=None, threads=None, dq=None, dv=None):
+    """State, records and audit of 3 periods with ``steps`` (R,) steps per period."""
+    saved = numba.get_num_threads()
+    numba.set_num_threads(threads or saved)
+    try:
+        ens = Ensemble(sink_name("flat", 4), q, v, params, dq=dq, dv=dv,
+                       tangent="none" if dq is None else "normalise")  # fmt: skip
+        steps = np.asarray(steps)
+        rec = ens.run(get_scheme("blanes-moan6"), dt=2 * np.pi / steps, steps=steps, segments=3,
+                      record=("shared", "members") + (("logs",) if dq is not None else ()),
+                      megno=dq is not None, block=block)  # fmt: skip
+    finally:
+        numba.set_num_threads(saved)
+    return ens, rec
+
+
+@pytest.mark.parametrize("block, threads", [(None, None), (1, 1), (2, 2), (4, 2), (64, 1)])
+def test_runs_with_their_own_steps_equal_each_step_group_alone(block, threads):
+    """Runs taking 300, 400 or 520 steps per period in one ensemble (any block size,
+    padding and threads) are bitwise the runs of each step count in an ensemble of their
+    own, state, records, deviation vectors, MEGNO and audit; the time is the common
+    segment time."""
+    sink, q, v = _fig8_like(9)
+    D = q.shape[0]
+    rng = np.random.default_rng(5)
+    dq, dv = rng.normal(size=(D, 1, 9)), rng.normal(size=(D, 1, 9))
+    steps = np.array([400, 300, 520, 400, 300, 400, 520, 400, 400])
+    params = engine_params(sink)
+    mixed, rec = _mixed_steps_run(q, v, params, steps, block=block, threads=threads, dq=dq, dv=dv)
+    assert mixed.time == pytest.approx(3 * 2 * np.pi, rel=1e-14)
+    for s in np.unique(steps):
+        runs = np.flatnonzero(steps == s)
+        alone, arec = _mixed_steps_run(q[:, runs], v[:, runs], params, np.full(runs.size, s),
+                                       dq=dq[..., runs], dv=dv[..., runs])  # fmt: skip
+        for name in ("q", "v", "dq", "dv", "logs", "meg"):
+            assert np.array_equal(getattr(mixed, name)[..., runs], getattr(alone, name)), name
+        for name in ("shared", "members", "logs", "megno", "worst"):
+            assert np.array_equal(getattr(rec, name)[runs], getattr(arec, name)), name
+
+
+def test_steps_per_run_are_checked():
+    sink, q, v = _fig8_like(3)
+    ens = Ensemble(sink_name("flat", 4), q, v, engine_params(sink))
+    scheme = get_scheme("verlet")
+    with pytest.raises(ParameterError, match="dt, steps"):  # unequal segments
+        ens.run(scheme, dt=np.array([0.01, 0.01, 0.02]), steps=np.array([10, 10, 10]), segments=1)
+    steps = np.array([10, 20, 10])
+    with pytest.raises(ParameterError, match="stride, renorm"):  # strides count steps
+        ens.run(scheme, dt=1.0 / steps, steps=steps, segments=1, stride=5,
+                record=("trajectory",))  # fmt: skip
+    with pytest.raises(ParameterError, match="steps"):
+        ens.run(scheme, dt=0.1, steps=np.array([10, 0, 10]), segments=1)
+    assert ens.time == 0.0 and ens.segments_done == 0  # nothing ran

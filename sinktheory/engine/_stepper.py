@@ -13,8 +13,10 @@ parameters).  A *segment* is ``steps`` steps of size ``dt`` (one container perio
 sink); the energy audit, the renormalisation of deviation vectors and all per-segment
 records happen at segment ends.  Runs are processed in blocks (their size and the threads
 are chosen by :mod:`sinktheory.engine.blocks`); a block is copied into contiguous local
-arrays, advanced, and copied back.  A block of a single run has nothing to vectorise across
-runs, so it takes the kernels ``accelerations_one``, ``hessian_one`` and
+arrays, advanced, and copied back.  Each block has its own step and steps per segment
+(runs of one ensemble may need different steps for the same segment, e.g. a chaos map
+over beta), so the runs of a block share their step count.  A block of a single run has
+nothing to vectorise across runs, so it takes the kernels ``accelerations_one``, ``hessian_one`` and
 ``tangent_kick_one``, which vectorise across the members (particles) of the run instead and
 sum their pull on the shared coordinates in the block kernel's order.  The arithmetic of a
 run does not depend on which block or thread it is in (no reductions across runs, no
@@ -118,11 +120,12 @@ def _gali(dq, dv, k, out):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audit, rec):
+def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, audit, rec):
     """Advance one block of runs over segments [seg0, seg1); see the module docstring.
 
     scheme = (a, b, dt, steps): drift and kick weights of the splitting method, step,
-    steps per segment.  tangent = (mode, renorm, gali_k, megno, t0), t0 the time at which
+    steps per segment.  rows[b]: the row of the block's run b in the audit and record
+    arrays.  tangent = (mode, renorm, gali_k, megno, t0), t0 the time at which
     the deviation vectors started (for MEGNO).  audit = (h0, bound,
     status, fail_segment, fail_energy, worst).  rec = (shared, members, trajectory, stride,
     logs, gali, megno), per-segment records indexed [run, segment] (empty when unused).
@@ -202,7 +205,7 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
                     meg[1, b] = work[b]
             if stride > 0 and g % stride == 0:
                 for b in range(B):
-                    row = traj[r0 + b, g // stride]
+                    row = traj[rows[b], g // stride]
                     for i in range(SHARED):
                         row[i] = q[i, b]
                         row[SHARED + i] = v[i, b]
@@ -214,7 +217,7 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
         energies(q, v, P, total, shared, members)
         failed = False
         for b in range(B):
-            r = r0 + b
+            r = rows[b]
             H = total[b]
             scale = abs(h0[r]) if h0[r] != 0.0 else 1.0
             if not math.isfinite(H):
@@ -230,59 +233,69 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, r0, tangent, logs, meg, audi
                 failed = True
         if rec_shared.shape[1] > 0:
             for b in range(B):
-                rec_shared[r0 + b, seg + 1] = shared[b]
+                rec_shared[rows[b], seg + 1] = shared[b]
         if rec_members.shape[1] > 0:
             for b in range(B):
                 for j in range(K):
-                    rec_members[r0 + b, seg + 1, j] = members[j, b]
+                    rec_members[rows[b], seg + 1, j] = members[j, b]
         if rec_logs.shape[1] > 0:
             for b in range(B):
                 for m in range(M):
-                    rec_logs[r0 + b, seg + 1, m] = logs[m, b]
+                    rec_logs[rows[b], seg + 1, m] = logs[m, b]
         if gali_k > 0:
             _gali(dq, dv, gali_k, work)
             for b in range(B):
-                rec_gali[r0 + b, seg + 1] = work[b]
+                rec_gali[rows[b], seg + 1] = work[b]
         if megno:
             t = t0 + (seg + 1) * steps * dt
             for b in range(B):
-                rec_megno[r0 + b, seg + 1] = 2.0 * meg[1, b] - 2.0 * meg[0, b] / t
+                rec_megno[rows[b], seg + 1] = 2.0 * meg[1, b] - 2.0 * meg[0, b] / t
         if failed:
             return seg + 1
     return seg1
 
 
 @numba.njit(cache=True, parallel=True, error_model="numpy")
-def advance(Q, V, DQ, DV, P, scheme, seg0, seg1, block, tangent, logs, meg, audit, rec):
+def advance(Q, V, DQ, DV, P, weights, seg0, seg1, layout, tangent, logs, meg, audit, rec):
     """Advance every run (columns of Q, V; P its parameter table, see
-    ``parameter_table``) over segments [seg0, seg1), blocks of ``block`` runs spread over
-    threads; blocks holding a stopped run are skipped."""
+    ``parameter_table``) over segments [seg0, seg1); blocks holding a stopped run are
+    skipped.
+
+    weights = (a, b): drift and kick weights of the splitting method.  layout = (parts,
+    bounds, rows, dt, steps): block i holds the columns bounds[i]:bounds[i + 1] and advances
+    with step dt[i], steps[i] steps per segment; thread part j takes the blocks
+    parts[j]:parts[j + 1] (:func:`sinktheory.engine.blocks.layout`); rows[c] is the row of
+    column c in the audit and record arrays.
+    """
+    ah, bh = weights
+    parts, bounds, rows, dts, nsteps = layout
     status = audit[2]
-    R = Q.shape[1]
-    nblocks = (R + block - 1) // block
-    for ib in numba.prange(nblocks):
-        r0 = ib * block
-        r1 = min(R, r0 + block)
-        skip = False
-        for r in range(r0, r1):
-            if status[r] != RUNNING:
-                skip = True
-        if skip:
-            continue
-        q = Q[:, r0:r1].copy()
-        v = V[:, r0:r1].copy()
-        dq = DQ[:, :, r0:r1].copy()
-        dv = DV[:, :, r0:r1].copy()
-        lg = logs[:, r0:r1].copy()
-        mg = meg[:, r0:r1].copy()
-        p = P[:, r0:r1].copy()
-        _run_block(q, v, dq, dv, p, scheme, seg0, seg1, r0, tangent, lg, mg, audit, rec)
-        Q[:, r0:r1] = q
-        V[:, r0:r1] = v
-        DQ[:, :, r0:r1] = dq
-        DV[:, :, r0:r1] = dv
-        logs[:, r0:r1] = lg
-        meg[:, r0:r1] = mg
+    for j in numba.prange(parts.shape[0] - 1):
+        for ib in range(parts[j], parts[j + 1]):
+            r0 = bounds[ib]
+            r1 = bounds[ib + 1]
+            skip = False
+            for c in range(r0, r1):
+                if status[rows[c]] != RUNNING:
+                    skip = True
+            if skip:
+                continue
+            q = Q[:, r0:r1].copy()
+            v = V[:, r0:r1].copy()
+            dq = DQ[:, :, r0:r1].copy()
+            dv = DV[:, :, r0:r1].copy()
+            lg = logs[:, r0:r1].copy()
+            mg = meg[:, r0:r1].copy()
+            p = P[:, r0:r1].copy()
+            scheme = (ah, bh, dts[ib], nsteps[ib])
+            _run_block(q, v, dq, dv, p, scheme, seg0, seg1, rows[r0:r1], tangent, lg, mg,
+                       audit, rec)  # fmt: skip
+            Q[:, r0:r1] = q
+            V[:, r0:r1] = v
+            DQ[:, :, r0:r1] = dq
+            DV[:, :, r0:r1] = dv
+            logs[:, r0:r1] = lg
+            meg[:, r0:r1] = mg
 
 
 def table_of(params, runs):

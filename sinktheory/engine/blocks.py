@@ -78,6 +78,10 @@ class BlockPlan:
     padded : runs advanced, ``blocks * block`` >= runs (the extra ones are inert copies)
     threads : threads used
     predicted : predicted seconds per step of the whole ensemble (from the cost table)
+    groups : the runs of each step group and its steps relative to the largest, when the
+        runs do not all take the same number of steps per segment (each group is cut into
+        blocks of its own, padded on its own); () for one group
+    pad : whether the last block of a group is filled up with inert copies
     """
 
     runs: int
@@ -85,10 +89,47 @@ class BlockPlan:
     padded: int
     threads: int
     predicted: float
+    groups: tuple[tuple[int, float], ...] = ()
+    pad: bool = True
 
     @property
     def blocks(self) -> int:
-        return -(-self.padded // self.block)
+        return sum(-(-count // self.block) for count, _ in self._groups)
+
+    @property
+    def _groups(self) -> tuple[tuple[int, float], ...]:
+        return self.groups or ((self.runs, 1.0),)
+
+    def work(self) -> list[float]:
+        """Each block's steps relative to the largest, in group order."""
+        return [w for count, w in self._groups for _ in range(-(-count // self.block))]
+
+    def parts(self) -> list[int]:
+        """Where the blocks (in group order) are cut into the threads' contiguous parts:
+        the cut points 0 = p_0 <= ... <= p_threads = blocks, balancing their steps."""
+        return _partition(self.work(), self.threads)
+
+
+def _partition(work: list[float], parts: int) -> list[int]:
+    """Cut points of ``work`` (in order) into at most ``parts`` contiguous parts of about
+    equal sums: each part takes blocks up to its share of what is left, the last one
+    only if that brings its sum closer to the share.
+
+    Examples
+    --------
+    >>> _partition([1.0] * 13, 2), _partition([1.0, 1.0, 4.0], 2)
+    ([0, 7, 13], [0, 2, 3])
+    """
+    cuts, i, left = [0], 0, float(sum(work))
+    for j in range(parts - 1, 0, -1):
+        share, got = left / (j + 1), 0.0
+        while i < len(work) and (got + work[i] <= share or
+                                 share - got >= got + work[i] - share):  # fmt: skip
+            got += work[i]
+            i += 1
+        left -= got
+        cuts.append(i)
+    return [*cuts, len(work)]
 
 
 def efficient_width(costs: dict[int, float]) -> int:
@@ -105,18 +146,40 @@ def efficient_width(costs: dict[int, float]) -> int:
     return min(b for b, c in costs.items() if c <= 2 * cheapest)
 
 
-def _options(runs: int, costs: dict[int, float], threads: int) -> list[BlockPlan]:
+def _options(runs, costs: dict[int, float], threads: int) -> list[BlockPlan]:
     """Every plan of :data:`SIZES` x threads, a second thread only for blocks of at least
     the :func:`efficient_width` (so each thread gets an efficient block and tiny ensembles
-    never wait for a second, possibly busy, core)."""
-    runs, threads, width = int(runs), max(1, int(threads)), efficient_width(costs)
+    never wait for a second, possibly busy, core).  ``runs`` is a number of runs or step
+    groups ((runs, relative steps), ...) (:func:`groups_of`)."""
+    groups = tuple((int(c), float(w)) for c, w in runs) if isinstance(runs, tuple) else ()
+    total = sum(c for c, _ in groups) if groups else int(runs)
+    threads, width = max(1, int(threads)), efficient_width(costs)
     out = []
     for b, c in sorted(costs.items()):
-        blocks = -(-runs // b)
+        blocks = BlockPlan(total, b, 0, 1, 0.0, groups).blocks
         top = min(threads, blocks) if b >= width else 1
-        out += [BlockPlan(runs, b, blocks * b, t, -(-blocks // t) * b * c)
-                for t in range(1, top + 1)]  # fmt: skip
+        for t in range(1, top + 1):
+            shape = BlockPlan(total, b, blocks * b, t, 0.0, groups)
+            work, cuts = shape.work(), shape.parts()
+            slowest = max(sum(work[i:j]) for i, j in zip(cuts, cuts[1:], strict=False))
+            out.append(BlockPlan(total, b, blocks * b, t, slowest * b * c, groups))
     return out
+
+
+def groups_of(steps) -> tuple[tuple[int, float], ...] | int:
+    """The step groups of runs taking ``steps`` (R,) steps per segment: the number of runs
+    itself when all take the same, else ((runs, steps / largest), ...) in increasing
+    steps (the ``runs`` of :func:`plan` and :func:`candidates`).
+
+    Examples
+    --------
+    >>> groups_of([10, 10, 10]), groups_of([10, 20, 10])
+    (3, ((2, 0.5), (1, 1.0)))
+    """
+    values, counts = np.unique(np.asarray(steps, dtype=np.int64), return_counts=True)
+    if values.size == 1:
+        return int(counts[0])
+    return tuple((int(c), float(s / values[-1])) for s, c in zip(values, counts, strict=True))
 
 
 def plan(runs: int, costs: dict[int, float], threads: int) -> BlockPlan:
@@ -155,12 +218,56 @@ def candidates(runs: int, costs: dict[int, float], threads: int, *, within: floa
     return out[:limit]
 
 
-def fixed(runs: int, block: int, threads: int) -> BlockPlan:
+def fixed(runs, block: int, threads: int) -> BlockPlan:
     """A plan with a block size the caller chose: no padding, at most one thread per
-    block."""
+    block (``runs`` as for :func:`plan`)."""
     block = max(1, int(block))
-    blocks = -(-int(runs) // block)
-    return BlockPlan(int(runs), block, int(runs), max(1, min(int(threads), blocks)), math.nan)
+    groups = tuple((int(c), float(w)) for c, w in runs) if isinstance(runs, tuple) else ()
+    total = sum(c for c, _ in groups) if groups else int(runs)
+    shape = BlockPlan(total, block, total, 1, math.nan, groups, pad=False)
+    return BlockPlan(total, block, total, max(1, min(int(threads), shape.blocks)), math.nan,
+                     groups, pad=False)  # fmt: skip
+
+
+def layout(plan: BlockPlan, steps, dt) -> tuple[np.ndarray, tuple]:
+    """Where each run of ``plan`` goes: (columns, (parts, bounds, rows, dt, steps)).
+
+    ``steps``, ``dt`` (R,): each run's steps per segment and step.  The runs are laid out
+    group by group (increasing steps, run order within a group), each group cut into blocks
+    of ``plan.block`` runs and, when the plan pads, its last block filled with inert copies
+    of the group's last run.  ``columns`` (C,): the run in each column; the second item is
+    the compiled ``advance``'s layout: thread parts (cut points into the blocks), block
+    bounds (cut points into the columns), the record row of each column (a run's own index
+    for a real run, R, R + 1, ... for the inert copies), and each block's step and steps.
+
+    Examples
+    --------
+    >>> p = fixed(((2, 0.5), (1, 1.0)), 4, 1)
+    >>> columns, (parts, bounds, rows, dts, steps) = layout(p, [20, 10, 10], [0.1, 0.2, 0.2])
+    >>> columns.tolist(), bounds.tolist(), steps.tolist()
+    ([1, 2, 0], [0, 2, 3], [10, 20])
+    """
+    steps = np.asarray(steps, dtype=np.int64)
+    dt = np.asarray(dt, dtype=np.float64)
+    R, b = steps.size, plan.block
+    columns, rows, bounds, block_dt, block_steps = [], [], [0], [], []
+    inert = R
+    for s in np.unique(steps):
+        members = np.flatnonzero(steps == s)
+        for i in range(0, members.size, b):
+            chunk = members[i : i + b].tolist()
+            extra = b - len(chunk) if plan.pad else 0
+            columns += chunk + [chunk[-1]] * extra
+            rows += chunk + list(range(inert, inert + extra))
+            inert += extra
+            bounds.append(len(columns))
+            block_dt.append(dt[chunk[0]])
+            block_steps.append(s)
+    parts = np.asarray(plan.parts(), dtype=np.int64)
+    return np.asarray(columns, dtype=np.int64), (
+        parts, np.asarray(bounds, dtype=np.int64), np.asarray(rows, dtype=np.int64),
+        np.asarray(block_dt, dtype=np.float64), np.asarray(block_steps, dtype=np.int64),
+    )  # fmt: skip
 
 
 @functools.cache
@@ -243,7 +350,7 @@ def measure(module, q, v, table) -> dict[int, float]:
         out = {}
         for size in SIZES:
             steps = max(16, _CALIBRATION_WORK // size)
-            reps = [_time(module, q, v, table, size, (a, b, 1e-3, s)) for s in (steps, 2 * steps)]
+            reps = [_time(module, q, v, table, size, (a, b), s) for s in (steps, 2 * steps)]
             best = [min(r) for r in reps]
             out[size] = max(best[1] - best[0], 1e-12) / (steps * size)
         return out
@@ -251,12 +358,13 @@ def measure(module, q, v, table) -> dict[int, float]:
         numba.set_num_threads(threads)
 
 
-def _time(module, q, v, table, size, scheme) -> list[float]:
+def _time(module, q, v, table, size, weights, steps) -> list[float]:
     D = q.shape[0]
     Q = np.repeat(q, size, axis=1)
     V = np.repeat(v, size, axis=1)
     P = np.repeat(table, size, axis=1)
     empty3 = np.zeros((D, 0, size))
+    _, one_block = layout(fixed(size, size, 1), np.full(size, steps), np.full(size, 1e-3))
     times = []
     for _ in range(3):
         Qc, Vc = Q.copy(), V.copy()
@@ -266,7 +374,7 @@ def _time(module, q, v, table, size, scheme) -> list[float]:
         rec = (np.zeros((size, 0)), np.zeros((size, 0, 0)), np.zeros((size, 0, 2 * D)), 0,
                np.zeros((size, 0, 0)), np.zeros((size, 0)), np.zeros((size, 0)))  # fmt: skip
         t0 = time.perf_counter()
-        module.advance(Qc, Vc, empty3, empty3.copy(), P, scheme, 0, 1, size,
+        module.advance(Qc, Vc, empty3, empty3.copy(), P, weights, 0, 1, one_block,
                        (0, 0, 0, False, 0.0), np.zeros((0, size)), np.zeros((2, size)),
                        audit, rec)  # fmt: skip
         times.append(time.perf_counter() - t0)

@@ -187,6 +187,13 @@ class Ensemble:
     ) -> Records:
         """Advance ``segments`` segments of ``steps`` steps of size ``dt``.
 
+        ``dt`` and ``steps`` may also be given per run (arrays (R,)), when the runs need
+        different steps for the same segment (say, a chaos map over beta): ``dt * steps``
+        must then be the same segment time for every run, and ``stride`` and ``renorm``
+        (counted in steps) must be 0.  The runs are grouped by their steps; each group is
+        cut into blocks of its own, and a run's numbers are bitwise those it gets in an
+        ensemble of its group alone.
+
         ``record`` is a subset of {"shared", "members", "trajectory", "logs"}; ``stride``
         steps between trajectory samples; ``renorm`` steps between renormalisations of the
         deviation vectors inside a segment (0: only at segment ends); ``gali`` = k records
@@ -201,12 +208,17 @@ class Ensemble:
         S = int(segments)
         if gali > M or (megno and M == 0):
             raise ParameterError("gali", gali, f"at most the number of deviation vectors ({M})")
+        dt, steps, segment_time = _per_run_steps(dt, steps, R, stride, renorm)
+        groups = blocks.groups_of(steps)
         threads = numba.get_num_threads()
         if block is None:  # the plans _Chooser times against each other
-            plans = blocks.candidates(self.runs, self.block_costs(), threads)
+            plans = blocks.candidates(groups, self.block_costs(), threads)
         else:
-            plans = [blocks.fixed(R, block, threads)]
-        Rp = max(p.padded for p in plans)  # rows of the records (inert ones discarded)
+            plans = [blocks.fixed(groups, block, threads)]
+        layouts = {p: _Layout.of(p, steps, dt) for p in plans}
+        # rows of the audit and the records: the runs, then the inert copies (discarded)
+        Rp = max(p.padded for p in plans)
+        top = int(steps.max())
         rec = {
             "shared": np.zeros((Rp, S + 1 if "shared" in record else 0)),
             "members": np.zeros((Rp, S + 1 if "members" in record else 0, K)),
@@ -221,7 +233,7 @@ class Ensemble:
             rec["members"][:R, 0] = members.T
         if "logs" in record:
             rec["logs"][:R, 0] = self.logs.T
-        samples = S * steps // stride + 1 if stride > 0 and "trajectory" in record else 0
+        samples = S * top // stride + 1 if stride > 0 and "trajectory" in record else 0
         traj = np.zeros((Rp, samples, 2 * D))
         if samples:
             Sh = self.module.SHARED
@@ -234,7 +246,7 @@ class Ensemble:
         if megno:
             rec["megno"][:, 0] = 2.0  # the limit of Y(t) as t -> 0 (ln|delta| ~ linear)
         fixed = (
-            (*scheme.arrays(), float(dt), int(steps)),
+            scheme.arrays(),
             (TANGENT_MODES[self.tangent], int(renorm), int(gali), bool(megno),
              self.time - self.tangent_start),
             float(bound),
@@ -245,7 +257,7 @@ class Ensemble:
         chunk = max(1, math.ceil(S / 100))
         # the cost table is per run and Verlet step (one force evaluation); a step of the
         # scheme evaluates the forces once per stage
-        chooser = _Chooser(plans, self._seconds, steps * len(fixed[0][0]))
+        chooser = _Chooser(plans, self._seconds, top * len(fixed[0][0]))
         bar = ProgressBar(S, enabled=progress is not False, label=label, unit=unit)
         seg_base = self.segments_done
         try:
@@ -254,18 +266,18 @@ class Ensemble:
                 policy = chooser.next()
                 numba.set_num_threads(policy.threads)
                 t0 = time.perf_counter()
-                self._advance(policy, start, stop, fixed, fails)
+                self._advance(layouts[policy], start, stop, fixed, fails)
                 chooser.record(policy, (time.perf_counter() - t0) / (stop - start), self._warm)
                 self._warm = True
                 self._raise_on_failure(
-                    fails[0][:R], fails[1][:R], dt * steps, seg_base, bound, unit
+                    fails[0][:R], fails[1][:R], segment_time, seg_base, bound, unit
                 )
                 bar.update(stop - start)
         finally:
             numba.set_num_threads(threads)
             bar.close()
         self.segments_done += S
-        self.time += S * steps * dt
+        self.time += S * segment_time
         rec = {name: a[:R] for name, a in rec.items()}
         traj, worst = traj[:R], fails[2][:R]
         return Records(
@@ -278,27 +290,26 @@ class Ensemble:
             worst=worst,
         )
 
-    def _advance(self, policy, start, stop, fixed, fails) -> None:
-        """Segments [start, stop) of every run with ``policy``'s blocks and threads: the
-        runs' own arrays, or copies padded with inert runs that are written back."""
-        scheme, tangent, bound, rec = fixed
-        R, Rp = self.runs, policy.padded
-        own = (self.q, self.v, self.dq, self.dv, self.logs, self.meg)
-        state = [_pad(a, Rp) for a in own]
-        table, h0, status = (_pad(a, Rp) for a in (self.table, self.h0, self.status))
-        fail_segment, fail_energy, worst = (a[:Rp] for a in fails)
-        Q, V, DQ, DV, logs, meg = state
+    def _advance(self, layout: _Layout, start, stop, fixed, fails) -> None:
+        """Segments [start, stop) of every run laid out by ``layout`` (blocks, threads):
+        the runs' own arrays, or copies in the layout's columns that are written back."""
+        weights, tangent, bound, rec = fixed
+        own = (self.q, self.v, self.dq, self.dv, self.logs, self.meg, self.table)
+        state = [layout.gather(a) for a in own]
+        h0, status = (layout.by_row(a) for a in (self.h0, self.status))
+        rows = layout.rows
+        fail_segment, fail_energy, worst = (a[:rows] for a in fails)
+        Q, V, DQ, DV, logs, meg, table = state
         try:
             self.module.advance(
-                Q, V, DQ, DV, table, scheme, start, stop, policy.block, tangent, logs, meg,
+                Q, V, DQ, DV, table, weights, start, stop, layout.compiled, tangent, logs, meg,
                 (h0, bound, status, fail_segment, fail_energy, worst),
-                tuple(a[:Rp] if isinstance(a, np.ndarray) else a for a in rec),
+                tuple(a[:rows] if isinstance(a, np.ndarray) else a for a in rec),
             )  # fmt: skip
         finally:
-            for mine, advanced in zip(own, state, strict=True):
-                if advanced is not mine:
-                    mine[...] = advanced[..., :R]
-            self.status[:] = status[:R]
+            for mine, advanced in zip(own[:-1], state[:-1], strict=True):
+                layout.scatter(advanced, mine)
+            self.status[:] = status[: self.runs]
 
     def plan(self, threads: int | None = None) -> blocks.BlockPlan:
         """The plan the cost table predicts fastest for these runs (see
@@ -347,15 +358,61 @@ class Ensemble:
         )
 
 
-def _pad(a: np.ndarray, runs: int) -> np.ndarray:
-    """``a`` (runs last) with inert copies of its last run appended up to ``runs`` (``a``
-    itself when it has them all)."""
-    extra = runs - a.shape[-1]
-    if extra == 0:
-        return a
-    return np.ascontiguousarray(
-        np.concatenate([a, np.repeat(a[..., -1:], extra, axis=-1)], axis=-1)
-    )
+def _per_run_steps(dt, steps, runs: int, stride: int, renorm: int):
+    """(dt (R,), steps (R,), segment time) from one step or one per run; refuses steps per
+    run whose segments differ, or that vary together with a stride or renorm (in steps)."""
+    dt_r = np.broadcast_to(np.asarray(dt, dtype=float), (runs,))
+    steps_r = np.broadcast_to(np.asarray(steps), (runs,))
+    if steps_r.dtype.kind not in "iuf" or np.any(steps_r < 1) or np.any(steps_r % 1):
+        raise ParameterError("steps", steps, "a positive integer, or one per run")
+    segment = dt_r * steps_r
+    if not np.all(np.isfinite(segment)) or np.any(dt_r <= 0):
+        raise ParameterError("dt", dt, "a positive finite step, or one per run")
+    spread = float(np.ptp(segment) / segment[0])
+    if spread > 1e-12:
+        raise ParameterError("dt, steps", f"segments dt x steps differing by {spread:.2g}",
+                             "one segment time for every run (to 1e-12)")  # fmt: skip
+    if np.unique(steps_r).size > 1 and (stride or renorm):
+        raise ParameterError("stride, renorm", (stride, renorm),
+                             "0 when the runs take different steps (both count steps)")  # fmt: skip
+    return dt_r, steps_r.astype(np.int64), float(segment[0])
+
+
+@dataclass(frozen=True)
+class _Layout:
+    """A plan's columns (:func:`blocks.layout`) and how the ensemble's arrays (runs last)
+    map to and from them; ``columns`` is None when they are the runs themselves."""
+
+    columns: np.ndarray | None
+    compiled: tuple
+    runs: int
+    rows: int
+
+    @classmethod
+    def of(cls, plan: blocks.BlockPlan, steps, dt) -> _Layout:
+        columns, compiled = blocks.layout(plan, steps, dt)
+        R = steps.size
+        own = columns.size == R and bool(np.all(columns == np.arange(R)))
+        return cls(None if own else columns, compiled, R, columns.size)
+
+    def gather(self, a: np.ndarray) -> np.ndarray:
+        if self.columns is None:
+            return a
+        return np.ascontiguousarray(a[..., self.columns])
+
+    def by_row(self, a: np.ndarray) -> np.ndarray:
+        """``a`` (R,) per record row: the runs, then each inert copy's run."""
+        rows = self.compiled[2]
+        source = np.empty(self.rows, dtype=np.int64)
+        source[rows] = np.arange(self.rows) if self.columns is None else self.columns
+        return np.ascontiguousarray(a[source])
+
+    def scatter(self, advanced: np.ndarray, mine: np.ndarray) -> None:
+        """Write the real runs of ``advanced`` (columns) back into ``mine`` (runs)."""
+        if advanced is mine:
+            return
+        real = self.compiled[2] < self.runs
+        mine[..., self.columns[real]] = advanced[..., real]
 
 
 class _Chooser:
