@@ -32,6 +32,23 @@ def test_batch_equals_each_setup_alone():
             assert np.array_equal(getattr(res, name), getattr(alone, name)), name
 
 
+def test_batch_with_a_step_per_setup_equals_each_setup_alone():
+    """Set-ups needing different steps (here 0.01 and 0.013) still run as one ensemble,
+    each bitwise its own ``chaos`` run with its own step."""
+    sinks = [Sink(Well(0.5, b, 4), particles=2, mass=0.2) for b in (0.1, 0.3, -0.2)]
+    settings = [RunSettings(runs=r, periods=3, seed=s) for r, s in [(3, 1), (2, 2), (1, 7)]]
+    options = {"gali": 2, "megno": True, "transverse": True}
+    steps = [0.01, 0.013, 0.01]
+    together = chaos_batch(sinks, settings, dt=steps, **options)
+    for sink, s, dt, res in zip(sinks, settings, steps, together, strict=True):
+        alone = chaos(sink, s, dt=dt, **options)
+        assert res.parameters == alone.parameters
+        for name in FIELDS:
+            assert np.array_equal(getattr(res, name), getattr(alone, name)), name
+    with pytest.raises(ParameterError, match="dt"):
+        chaos_batch(sinks, settings, dt=[0.01, 0.02])
+
+
 def test_batch_refuses_mixed_engines():
     sinks = [Sink(Well(0.5, 0.1, 4), 1, 0.2), Sink(Well(0.5, 0.1, 2), 1, 0.2)]
     with pytest.raises(ParameterError, match="sinks"):
@@ -47,14 +64,21 @@ def test_ladder_step_is_never_larger_and_at_most_nine_percent_smaller():
         assert dt == pytest.approx(2 * math.pi / steps, rel=1e-15)
 
 
-def test_chaos_sweep_points_together_equal_points_alone():
+def test_chaos_sweep_points_together_equal_points_alone(monkeypatch):
+    import sinktheory.chaos
+
     kind = get_kind("chaos")
     base = {"alpha": 0.5, "n": 2, "runs": 2, "periods": 6, "transverse": 1}
     points = [(kind.complete(base | {"beta": b}), seed) for b, seed in
               [(-0.3, 11), (-0.295, 12), (0.1, 13), (0.102, 14)]]  # fmt: skip
+    calls = []
+    batch = sinktheory.chaos.chaos_batch
+    monkeypatch.setattr(sinktheory.chaos, "chaos_batch", lambda *a, **k: calls.append(1) or
+                        batch(*a, **k))  # fmt: skip
     together = kind.compute_many(points)
     steps = {float(o["dt_used"]) for o in together}
-    assert len(steps) < len(points)  # the ladder let neighbours share a step
+    assert 1 < len(steps) < len(points)  # the ladder let neighbours share a step
+    assert len(calls) == 1  # and every step ran in one ensemble
     for (p, seed), out in zip(points, together, strict=True):
         alone = kind.compute(p, seed)
         assert set(out) == set(alone)
@@ -85,8 +109,9 @@ def test_staged_exponents_stop_settled_betas_and_keep_the_rest_bitwise():
 
     sinks = [Sink(Well(0.5, b, 2), 1, 0.2) for b in (0.3, -0.3)]
     settings = [RunSettings(runs=4, periods=80, seed=s) for s in (1, 2)]
-    staged = staged_chaos(sinks, settings, dt=0.05, transverse=True, method="blanes-moan6")
-    full = chaos_batch(sinks, settings, dt=0.05, transverse=True)
+    steps = [0.05, 0.04]  # one step per beta: still one ensemble
+    staged = staged_chaos(sinks, settings, dt=steps, transverse=True, method="blanes-moan6")
+    full = chaos_batch(sinks, settings, dt=steps, transverse=True)
     assert looks(80) == [(20, 4.0), (40, 3.0)]
     chaotic, other = staged[0]["lambda1"], staged[1]["lambda1"]
     assert set(chaotic.periods) == {40} and set(other.periods) == {80}

@@ -93,7 +93,8 @@ def check_run(system, q, v, dt, steps, segments) -> tuple[str, np.ndarray, np.nd
                                                           int, int]:  # fmt: skip
     """(system, q, v, dt, steps, segments) of an engine run, each validated: a known engine
     system, finite start states q and v of one shape (D, R), dt > 0, and steps and
-    segments integers in [1, :data:`~sinktheory.validation.MAX_STEPS_PER_PERIOD`]."""
+    segments integers in [1, :data:`~sinktheory.validation.MAX_STEPS_PER_PERIOD`]; dt and
+    steps may be one per run (arrays (R,), checked entry by entry)."""
     system = val.engine_system("system", system)
     q = val.real_array("q", q)
     v = val.real_array("v", v)
@@ -102,8 +103,17 @@ def check_run(system, q, v, dt, steps, segments) -> tuple[str, np.ndarray, np.nd
                              "positions q and velocities v of one shape (D, R)")  # fmt: skip
     if not (np.isfinite(q).all() and np.isfinite(v).all()):
         raise ParameterError("q", "non-finite start states", "finite q and v")
-    dt = val.positive("dt", dt)
-    steps = val.positive_int("steps", steps, maximum=val.MAX_STEPS_PER_PERIOD)
+    if np.ndim(dt) or np.ndim(steps):
+        runs = q.shape[1]
+        if np.shape(dt) not in ((), (runs,)) or np.shape(steps) not in ((), (runs,)):
+            raise ParameterError("dt, steps", f"shapes {np.shape(dt)}, {np.shape(steps)}",
+                                 f"one value or one per run ({runs},)")  # fmt: skip
+        dt = np.array([val.positive("dt", x) for x in np.broadcast_to(dt, (runs,))])
+        steps = np.array([val.positive_int("steps", x, maximum=val.MAX_STEPS_PER_PERIOD)
+                          for x in np.broadcast_to(steps, (runs,))])  # fmt: skip
+    else:
+        dt = val.positive("dt", dt)
+        steps = val.positive_int("steps", steps, maximum=val.MAX_STEPS_PER_PERIOD)
     segments = val.positive_int("segments", segments, maximum=val.MAX_STEPS_PER_PERIOD)
     return system, q, v, dt, steps, segments
 
@@ -226,7 +236,8 @@ def indicators(
         The system's runtime parameters, shared or one column per run.
     dt, steps, segments : float, int, int
         Step, steps per segment (records and renormalisation at every segment end), and
-        number of segments.
+        number of segments; dt and steps may be one per run (arrays (R,)) with the same
+        segment time dt x steps (see :meth:`sinktheory.engine.core.Ensemble.run`).
     spectrum : bool or "full" or "half"
         Lyapunov spectrum by the QR method: all 2D exponents from 2D vectors (True or
         "full"), or the D largest from D vectors with the rest by the symplectic pairing
@@ -293,7 +304,7 @@ def indicators(
             raise ParameterError("vectors", f"arrays of shapes {dq.shape}, {dv.shape}", allowed)
         if not (np.isfinite(dq).all() and np.isfinite(dv).all()):
             raise ParameterError("vectors", "non-finite vectors", allowed)
-    times = dt * steps * np.arange(segments + 1)
+    times = float(np.ravel(dt * steps)[0]) * np.arange(segments + 1)
     worst = np.zeros(R)
     out: dict = {}
     need_normalise = gali > 0 or not spectrum
@@ -367,8 +378,8 @@ def indicators(
         "system": system,
         "params": np.asarray(params, float).tolist(),
         "method": scheme.name,
-        "dt": float(dt),
-        "steps_per_segment": int(steps),
+        "dt": dt.tolist() if np.ndim(dt) else float(dt),
+        "steps_per_segment": steps.tolist() if np.ndim(steps) else int(steps),
         "segments": int(segments),
         "renorm": int(renorm),
         "seed": int(seed),

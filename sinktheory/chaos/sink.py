@@ -44,7 +44,7 @@ from ..simulate import (
     start_state,
     total_energy,
 )
-from ..stepsize import resolve_step
+from ..stepsize import aligned_step
 from ..worklimit import check_particle_steps, step_of, tangent_steps
 from .general import (
     check_block,
@@ -198,7 +198,7 @@ def chaos(
     check_tangent_work(
         sink, settings, steps, options["spectrum"], options["gali"], options["transverse"]
     )
-    result = _together([point], scheme.name, dt, steps, block, options)[0]
+    result = _together([point], scheme.name, [dt], [steps], block, options)[0]
     return replace(result, transient=transient)
 
 
@@ -206,7 +206,7 @@ def chaos_batch(
     sinks,
     settings,
     *,
-    dt: float,
+    dt,
     spectrum: bool | str = False,
     gali: int = 0,
     megno: bool = False,
@@ -220,9 +220,11 @@ def chaos_batch(
     parameters: a chaos map's betas (or alphas, gammas, masses, seeds) vectorised together.
 
     ``sinks`` and ``settings`` are sequences of equal length; the set-ups must share the
-    engine (shape, n, particles) and the number of periods, and take the same step ``dt``
-    (required: the step :func:`chaos` would pick depends on the well).  Each result is
-    bitwise the result of ``chaos(sink, settings, dt=dt, ...)`` on its own (tested).
+    engine (shape, n, particles) and the number of periods.  ``dt`` (required: the step
+    :func:`chaos` would pick depends on the well) is one step for all, or one per set-up
+    (a chaos map's stiff and soft betas need different steps; the engine groups the runs by
+    their steps).  Each result is bitwise the result of ``chaos(sink, settings, dt=dt,
+    ...)`` on its own with its step (tested).
 
     Examples
     --------
@@ -246,13 +248,23 @@ def chaos_batch(
             "sinks", f"{len(engines)} engines or period counts", "one shape, n, k and periods"
         )
     scheme = get_scheme(method)
-    top = max(p.top for p in points)
-    _, dt, steps, _ = resolve_step(points[0].sink, top, method=scheme.name, dt=dt)
+    dts, steps = point_steps(points, dt)
     options = _options(sinks[0], spectrum, gali, megno, transverse, renorm, energy_bound, progress)
-    for p in points:
-        check_tangent_work(p.sink, p.settings, steps, options["spectrum"], options["gali"],
+    for p, n in zip(points, steps, strict=True):
+        check_tangent_work(p.sink, p.settings, n, options["spectrum"], options["gali"],
                            options["transverse"])  # fmt: skip
-    return _together(points, scheme.name, dt, steps, None, options)
+    return _together(points, scheme.name, dts, steps, None, options)
+
+
+def point_steps(points, dt) -> tuple[tuple[float, ...], tuple[int, ...]]:
+    """(steps, steps per period) of each set-up from ``dt``: one step for all or one per
+    set-up, each aligned to the period (:func:`~sinktheory.stepsize.aligned_step`)."""
+    given = [dt] * len(points) if np.ndim(dt) == 0 else list(np.ravel(dt))
+    if len(given) != len(points):
+        raise ParameterError("dt", f"{len(given)} steps",
+                             f"one step, or one per set-up ({len(points)})")  # fmt: skip
+    dts, steps = zip(*(aligned_step(d) for d in given), strict=True)
+    return dts, steps
 
 
 def start_energy(sink: Sink, settings: RunSettings, transverse: bool = False) -> float:
@@ -323,9 +335,10 @@ class _Point:
         }
 
 
-def _together(points: list[_Point], method, dt, steps, block, o) -> list[ChaosResult]:
+def _together(points: list[_Point], method, dts, steps, block, o) -> list[ChaosResult]:
     """One engine ensemble over every point's runs (each run with its point's parameters,
-    start state and seeded deviation vectors); the result split back per point."""
+    step ``dts[i]`` and ``steps[i]`` per period, start state and seeded deviation vectors);
+    the result split back per point."""
     D = points[0].q.shape[0]
     count = vector_count(D, o["spectrum"], o["gali"])
     transverse = None
@@ -343,8 +356,8 @@ def _together(points: list[_Point], method, dt, steps, block, o) -> list[ChaosRe
         _join(p.q for p in points),
         _join(p.v for p in points),
         params,
-        dt=dt,
-        steps=steps,
+        dt=_per_run(points, dts),
+        steps=_per_run(points, steps),
         segments=points[0].settings.periods,
         spectrum=o["spectrum"],
         gali=o["gali"],
@@ -360,12 +373,23 @@ def _together(points: list[_Point], method, dt, steps, block, o) -> list[ChaosRe
         reference_energy=np.concatenate([p.h0 for p in points]),
     )
     out, start = [], 0
-    for p in points:
+    for p, dt, n in zip(points, dts, steps, strict=True):
         runs = slice(start, start + p.settings.runs)
         start = runs.stop
-        info = dict(res.parameters, params=engine_params(p.sink).tolist(), seed=p.settings.seed)
+        info = dict(res.parameters, params=engine_params(p.sink).tolist(), seed=p.settings.seed,
+                    dt=float(dt), steps_per_segment=int(n))  # fmt: skip
         out.append(res.runs_of(runs, info | p.parameters()))
     return out
+
+
+def _per_run(points: list[_Point], values) -> np.ndarray:
+    """One value per point repeated over its runs (R,); a scalar when all are equal (so a
+    single step stays a single step)."""
+    if len(set(values)) == 1:
+        return values[0]
+    return np.concatenate(
+        [np.full(p.settings.runs, x) for p, x in zip(points, values, strict=True)]
+    )
 
 
 def _params(points: list[_Point]) -> np.ndarray:

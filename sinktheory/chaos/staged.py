@@ -39,7 +39,6 @@ import numpy as np
 
 from ..simulate import ENERGY_BOUND
 from ..sinkstats import ensemble_mean
-from ..stepsize import aligned_step
 from .maps import threshold
 
 if TYPE_CHECKING:
@@ -77,7 +76,7 @@ class StagedExponent:
     worst: np.ndarray
 
 
-def staged_chaos(sinks, settings, *, dt: float, transverse: bool, method: str,
+def staged_chaos(sinks, settings, *, dt, transverse: bool, method: str,
                  renorm: int = 0, energy_bound: float = ENERGY_BOUND,
                  transient: int = 0) -> list[dict]:  # fmt: skip
     """lambda_1 (and the transverse exponent) of several set-ups as in
@@ -86,16 +85,18 @@ def staged_chaos(sinks, settings, *, dt: float, transverse: bool, method: str,
 
     Returns one dict per set-up: ``lambda1`` and ``transverse`` (StagedExponent of its runs,
     ``transverse`` None unless asked for).  A set-up that never settles gets bitwise the
-    exponents of ``chaos_batch`` (and of ``chaos`` alone) with the same step.
+    exponents of ``chaos_batch`` (and of ``chaos`` alone) with the same step.  ``dt``: one
+    step, or one per set-up (as for ``chaos_batch``).
     """
     from ..integrators import get_scheme
     from ..simulate import engine_name
-    from .sink import _join, _params, _Point, _vectors, transverse_mask
+    from .sink import _join, _params, _per_run, _Point, _vectors, point_steps, transverse_mask
 
     points = [_Point.of(k, s, transverse, None) for k, s in zip(sinks, settings, strict=True)]
     system = engine_name(points[0].sink)
     scheme = get_scheme(method)
-    dt, steps = aligned_step(dt)
+    dts, steps = point_steps(points, dt)
+    dt, steps = _per_run(points, dts), _per_run(points, steps)
     periods = points[0].settings.periods
     groups = np.concatenate([np.full(p.settings.runs, i) for i, p in enumerate(points)])
     params = _params(points)
@@ -132,23 +133,26 @@ def _part(s: StagedExponent, runs) -> StagedExponent:
     return StagedExponent(s.exponent[runs], s.periods[runs], s.worst[runs])
 
 
-def staged_exponent(ensemble: Ensemble, groups, scheme, *, dt: float, steps: int,
+def staged_exponent(ensemble: Ensemble, groups, scheme, *, dt, steps,
                     periods: int, bound: float, renorm: int = 0,
                     transient: int = 0) -> StagedExponent:  # fmt: skip
     """Advance ``ensemble`` (deviation vector 0 normalised each period) for up to
     ``periods`` periods, stopping the runs of each group (``groups``: (R,) labels) at the
     first look where the group is settled chaotic (module docstring); the growth over the
-    first ``transient`` periods is left out of the exponents."""
+    first ``transient`` periods is left out of the exponents.  ``dt``, ``steps``: one step,
+    or one per run."""
     groups = np.asarray(groups)
     R = ensemble.runs
     exponent, used, worst = np.empty(R), np.full(R, periods), np.zeros(R)
     start = np.zeros(R)  # ln|delta| at the end of the transient
-    times = dt * steps * np.arange(periods + 1)  # as ChaosResult.times
+    dt, steps = np.broadcast_to(dt, (R,)), np.broadcast_to(steps, (R,))  # one per run
+    times = float(dt[0] * steps[0]) * np.arange(periods + 1)  # as ChaosResult.times
     active = np.arange(R)
     done = 0
     stages = [(transient, None)] if transient else []
     for at, z in [*stages, *looks(periods, transient), (periods, None)]:
-        rec = ensemble.run(scheme, dt=dt, steps=steps, segments=at - done, record=(),
+        rec = ensemble.run(scheme, dt=dt[active], steps=steps[active], segments=at - done,
+                           record=(),
                            renorm=renorm, bound=bound, unit="period")  # fmt: skip
         done = at
         worst[active] = np.maximum(worst[active], rec.worst)

@@ -501,7 +501,7 @@ def _chaos(p: dict, seed: int) -> dict[str, Any]:
 def _chaos_step(p: dict, seed: int) -> float:
     """The point's step: ``dt`` if given, else the step for the default tolerance taken
     down to the ladder of :func:`sinktheory.stepsize.ladder_step`, so that neighbouring
-    betas share a step and run as one ensemble."""
+    betas share a step count and fill the engine's blocks together."""
     from ..chaos.sink import start_energy
     from ..stepsize import ladder_step, resolve_step
 
@@ -513,22 +513,26 @@ def _chaos_step(p: dict, seed: int) -> float:
 
 
 def _chaos_many(points: list) -> list[dict[str, Any]]:
-    """The points of a task grouped by engine, periods and step, each group one ensemble
-    whose runs carry their own parameters (:func:`sinktheory.chaos.chaos_batch`, or with
-    ``stop_early`` :func:`sinktheory.chaos.staged.staged_chaos`)."""
+    """The points of a task grouped by engine, periods and analysis options, each group
+    one ensemble whose runs carry their own parameters and steps
+    (:func:`sinktheory.chaos.chaos_batch`, or with ``stop_early``
+    :func:`sinktheory.chaos.staged.staged_chaos`): a chaos map over beta is one ensemble.
+    Steps per run need ``renorm`` = 0 (it counts steps), so with renorm the step is part
+    of the group."""
     groups: dict[tuple, list[int]] = {}
     steps = [_chaos_step(p, seed) for p, seed in points]
     for i, (p, _) in enumerate(points):
         same = ("shape", "n", "particles", "periods", "method", "gali", "megno", "transverse",
                 "renorm", "energy_bound", "stop_early", "transient")  # fmt: skip
-        groups.setdefault((*(p[k] for k in same), steps[i]), []).append(i)
+        key = (*(p[k] for k in same), steps[i] if p["renorm"] else None)
+        groups.setdefault(key, []).append(i)
     out: list = [None] * len(points)
     for members in groups.values():
         first = points[members[0]][0]
         sinks = [_sink(points[i][0]) for i in members]
         settings = [_settings(points[i][0], points[i][1]) for i in members]
         options = {
-            "dt": steps[members[0]],
+            "dt": [steps[i] for i in members],
             "transverse": bool(first["transverse"]),
             "method": first["method"],
             "renorm": first["renorm"],
@@ -538,7 +542,7 @@ def _chaos_many(points: list) -> list[dict[str, Any]]:
             from ..chaos.staged import staged_chaos
 
             runs = staged_chaos(sinks, settings, transient=first["transient"], **options)
-            summaries = [_staged_summary(r, options["dt"]) for r in runs]
+            summaries = [_staged_summary(r, dt) for r, dt in zip(runs, options["dt"], strict=True)]
         else:
             from ..chaos import chaos_batch
 
