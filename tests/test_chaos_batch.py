@@ -33,17 +33,19 @@ def test_batch_equals_each_setup_alone():
 
 
 def test_batch_with_a_step_per_setup_equals_each_setup_alone():
-    """Set-ups needing different steps (here 0.01 and 0.013) still run as one ensemble,
-    each bitwise its own ``chaos`` run with its own step."""
+    """Set-ups needing different steps still run as one ensemble, each bitwise its own
+    ``chaos`` run with its own step, times and exponents included."""
     sinks = [Sink(Well(0.5, b, 4), particles=2, mass=0.2) for b in (0.1, 0.3, -0.2)]
     settings = [RunSettings(runs=r, periods=3, seed=s) for r, s in [(3, 1), (2, 2), (1, 7)]]
     options = {"gali": 2, "megno": True, "transverse": True}
-    steps = [0.01, 0.013, 0.01]
+    # 484 and 300 steps per period: (2 pi / 300) x 300 is not 2 pi in floating point, so
+    # each set-up needs its own times
+    steps = [2 * math.pi / 484, 2 * math.pi / 300, 2 * math.pi / 484]
     together = chaos_batch(sinks, settings, dt=steps, **options)
     for sink, s, dt, res in zip(sinks, settings, steps, together, strict=True):
         alone = chaos(sink, s, dt=dt, **options)
         assert res.parameters == alone.parameters
-        for name in FIELDS:
+        for name in (*FIELDS, "times", "lambda1", "transverse"):
             assert np.array_equal(getattr(res, name), getattr(alone, name)), name
     with pytest.raises(ParameterError, match="dt"):
         chaos_batch(sinks, settings, dt=[0.01, 0.02])

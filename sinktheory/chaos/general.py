@@ -237,7 +237,8 @@ def indicators(
     dt, steps, segments : float, int, int
         Step, steps per segment (records and renormalisation at every segment end), and
         number of segments; dt and steps may be one per run (arrays (R,)) with the same
-        segment time dt x steps (see :meth:`sinktheory.engine.core.Ensemble.run`).
+        segment time dt x steps (see :meth:`sinktheory.engine.core.Ensemble.run`); the
+        result's times are then run 0's (dt x steps rounds differently for each step).
     spectrum : bool or "full" or "half"
         Lyapunov spectrum by the QR method: all 2D exponents from 2D vectors (True or
         "full"), or the D largest from D vectors with the rest by the symplectic pairing

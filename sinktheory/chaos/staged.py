@@ -146,7 +146,7 @@ def staged_exponent(ensemble: Ensemble, groups, scheme, *, dt, steps,
     exponent, used, worst = np.empty(R), np.full(R, periods), np.zeros(R)
     start = np.zeros(R)  # ln|delta| at the end of the transient
     dt, steps = np.broadcast_to(dt, (R,)), np.broadcast_to(steps, (R,))  # one per run
-    times = float(dt[0] * steps[0]) * np.arange(periods + 1)  # as ChaosResult.times
+    segment = dt * steps  # each run's times are segment x k, as its ChaosResult.times
     active = np.arange(R)
     done = 0
     stages = [(transient, None)] if transient else []
@@ -159,7 +159,8 @@ def staged_exponent(ensemble: Ensemble, groups, scheme, *, dt, steps,
         if at == transient:
             start[active] = ensemble.logs[0]
             continue
-        exponent[active] = (ensemble.logs[0] - start[active]) / (times[at] - times[transient])
+        span = segment[active] * at - segment[active] * transient
+        exponent[active] = (ensemble.logs[0] - start[active]) / span
         if z is None:
             break
         stop = np.zeros(active.size, bool)

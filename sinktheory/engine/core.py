@@ -192,7 +192,8 @@ class Ensemble:
         must then be the same segment time for every run, and ``stride`` and ``renorm``
         (counted in steps) must be 0.  The runs are grouped by their steps; each group is
         cut into blocks of its own, and a run's numbers are bitwise those it gets in an
-        ensemble of its group alone.
+        ensemble of its group alone (MEGNO after a continued run only to the rounding of
+        the segment time, which the ensemble counts with run 0's dt x steps).
 
         ``record`` is a subset of {"shared", "members", "trajectory", "logs"}; ``stride``
         steps between trajectory samples; ``renorm`` steps between renormalisations of the
