@@ -80,7 +80,7 @@ def test_layout_of_step_groups(groups, costs, threads, pad):
     R = steps.size
     shape = blocks.groups_of(steps)
     plan = blocks.plan(shape, costs, threads) if pad else blocks.fixed(shape, 4, threads)
-    columns, (parts, bounds, rows, dts, nsteps) = blocks.layout(plan, steps, 2 * np.pi / steps)
+    columns, (parts, bounds, rows, dts, nsteps, _) = blocks.layout(plan, steps, 2 * np.pi / steps)
     real = rows < R
     assert sorted(columns[real]) == list(range(R)) and np.array_equal(columns[real], rows[real])
     assert sorted(rows[~real]) == list(range(R, columns.size)) and columns.size == plan.padded

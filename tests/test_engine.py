@@ -263,8 +263,9 @@ def _mixed_steps_run(q, v, params, steps, *, block=None, threads=None, dq=None, 
                        tangent="none" if dq is None else "normalise")  # fmt: skip
         steps = np.asarray(steps)
         rec = ens.run(get_scheme("blanes-moan6"), dt=2 * np.pi / steps, steps=steps, segments=3,
-                      record=("shared", "members") + (("logs",) if dq is not None else ()),
-                      megno=dq is not None, block=block)  # fmt: skip
+                      record=("shared", "members", "trajectory") + (("logs",) if dq is not None
+                                                                    else ()),
+                      stride=steps, megno=dq is not None, block=block)  # fmt: skip
     finally:
         numba.set_num_threads(saved)
     return ens, rec
@@ -274,8 +275,8 @@ def _mixed_steps_run(q, v, params, steps, *, block=None, threads=None, dq=None, 
 def test_runs_with_their_own_steps_equal_each_step_group_alone(block, threads):
     """Runs taking 300, 400 or 520 steps per period in one ensemble (any block size,
     padding and threads) are bitwise the runs of each step count in an ensemble of their
-    own, state, records, deviation vectors, MEGNO and audit; the time is the common
-    segment time."""
+    own, state, records (the trajectory sampled at period ends: stride = steps per run),
+    deviation vectors, MEGNO and audit; the time is the common segment time."""
     sink, q, v = _fig8_like(9)
     D = q.shape[0]
     rng = np.random.default_rng(5)
@@ -290,7 +291,7 @@ def test_runs_with_their_own_steps_equal_each_step_group_alone(block, threads):
                                        dq=dq[..., runs], dv=dv[..., runs])  # fmt: skip
         for name in ("q", "v", "dq", "dv", "logs", "meg"):
             assert np.array_equal(getattr(mixed, name)[..., runs], getattr(alone, name)), name
-        for name in ("shared", "members", "logs", "megno", "worst"):
+        for name in ("shared", "members", "trajectory", "logs", "megno", "worst"):
             assert np.array_equal(getattr(rec, name)[runs], getattr(arec, name)), name
 
 
@@ -301,9 +302,11 @@ def test_steps_per_run_are_checked():
     with pytest.raises(ParameterError, match="dt, steps"):  # unequal segments
         ens.run(scheme, dt=np.array([0.01, 0.01, 0.02]), steps=np.array([10, 10, 10]), segments=1)
     steps = np.array([10, 20, 10])
-    with pytest.raises(ParameterError, match="stride, renorm"):  # strides count steps
+    with pytest.raises(ParameterError, match="stride"):  # 3, 5 and 3 samples
         ens.run(scheme, dt=1.0 / steps, steps=steps, segments=1, stride=5,
                 record=("trajectory",))  # fmt: skip
+    with pytest.raises(ParameterError, match="renorm"):  # it counts steps
+        ens.run(scheme, dt=1.0 / steps, steps=steps, segments=1, renorm=5)
     with pytest.raises(ParameterError, match="steps"):
         ens.run(scheme, dt=0.1, steps=np.array([10, 0, 10]), segments=1)
     assert ens.time == 0.0 and ens.segments_done == 0  # nothing ran

@@ -262,13 +262,16 @@ def advance(Q, V, DQ, DV, P, weights, seg0, seg1, layout, tangent, logs, meg, au
     skipped.
 
     weights = (a, b): drift and kick weights of the splitting method.  layout = (parts,
-    bounds, rows, dt, steps): block i holds the columns bounds[i]:bounds[i + 1] and advances
-    with step dt[i], steps[i] steps per segment; thread part j takes the blocks
+    bounds, rows, dt, steps, stride): block i holds the columns bounds[i]:bounds[i + 1] and
+    advances with step dt[i], steps[i] steps per segment, a trajectory sample every
+    stride[i] steps; thread part j takes the blocks
     parts[j]:parts[j + 1] (:func:`sinktheory.engine.blocks.layout`); rows[c] is the row of
-    column c in the audit and record arrays.
+    column c in the audit and record arrays; rec = (shared, members, trajectory, logs,
+    gali, megno) as for ``_run_block`` without the stride.
     """
     ah, bh = weights
-    parts, bounds, rows, dts, nsteps = layout
+    parts, bounds, rows, dts, nsteps, strides = layout
+    rec_shared, rec_members, traj, rec_logs, rec_gali, rec_megno = rec
     status = audit[2]
     for j in numba.prange(parts.shape[0] - 1):
         for ib in range(parts[j], parts[j + 1]):
@@ -288,8 +291,9 @@ def advance(Q, V, DQ, DV, P, weights, seg0, seg1, layout, tangent, logs, meg, au
             mg = meg[:, r0:r1].copy()
             p = P[:, r0:r1].copy()
             scheme = (ah, bh, dts[ib], nsteps[ib])
+            records = (rec_shared, rec_members, traj, strides[ib], rec_logs, rec_gali, rec_megno)
             _run_block(q, v, dq, dv, p, scheme, seg0, seg1, rows[r0:r1], tangent, lg, mg,
-                       audit, rec)  # fmt: skip
+                       audit, records)  # fmt: skip
             Q[:, r0:r1] = q
             V[:, r0:r1] = v
             DQ[:, :, r0:r1] = dq

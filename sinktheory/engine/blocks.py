@@ -229,28 +229,30 @@ def fixed(runs, block: int, threads: int) -> BlockPlan:
                      groups, pad=False)  # fmt: skip
 
 
-def layout(plan: BlockPlan, steps, dt) -> tuple[np.ndarray, tuple]:
-    """Where each run of ``plan`` goes: (columns, (parts, bounds, rows, dt, steps)).
+def layout(plan: BlockPlan, steps, dt, stride=0) -> tuple[np.ndarray, tuple]:
+    """Where each run of ``plan`` goes: (columns, (parts, bounds, rows, dt, steps, stride)).
 
-    ``steps``, ``dt`` (R,): each run's steps per segment and step.  The runs are laid out
+    ``steps``, ``dt``, ``stride`` (R,): each run's steps per segment, step, and steps
+    between trajectory samples (0: none; runs of one step count share it).  The runs are laid out
     group by group (increasing steps, run order within a group), each group cut into blocks
     of ``plan.block`` runs and, when the plan pads, its last block filled with inert copies
     of the group's last run.  ``columns`` (C,): the run in each column; the second item is
     the compiled ``advance``'s layout: thread parts (cut points into the blocks), block
     bounds (cut points into the columns), the record row of each column (a run's own index
-    for a real run, R, R + 1, ... for the inert copies), and each block's step and steps.
+    for a real run, R, R + 1, ... for the inert copies), and each block's step, steps and stride.
 
     Examples
     --------
     >>> p = fixed(((2, 0.5), (1, 1.0)), 4, 1)
-    >>> columns, (parts, bounds, rows, dts, steps) = layout(p, [20, 10, 10], [0.1, 0.2, 0.2])
+    >>> columns, (parts, bounds, rows, dts, steps, _) = layout(p, [20, 10, 10], [0.1, 0.2, 0.2])
     >>> columns.tolist(), bounds.tolist(), steps.tolist()
     ([1, 2, 0], [0, 2, 3], [10, 20])
     """
     steps = np.asarray(steps, dtype=np.int64)
     dt = np.asarray(dt, dtype=np.float64)
+    stride = np.broadcast_to(np.asarray(stride, dtype=np.int64), steps.shape)
     R, b = steps.size, plan.block
-    columns, rows, bounds, block_dt, block_steps = [], [], [0], [], []
+    columns, rows, bounds, block_dt, block_steps, block_stride = [], [], [0], [], [], []
     inert = R
     for s in np.unique(steps):
         members = np.flatnonzero(steps == s)
@@ -263,10 +265,12 @@ def layout(plan: BlockPlan, steps, dt) -> tuple[np.ndarray, tuple]:
             bounds.append(len(columns))
             block_dt.append(dt[chunk[0]])
             block_steps.append(s)
+            block_stride.append(stride[chunk[0]])
     parts = np.asarray(plan.parts(), dtype=np.int64)
     return np.asarray(columns, dtype=np.int64), (
         parts, np.asarray(bounds, dtype=np.int64), np.asarray(rows, dtype=np.int64),
         np.asarray(block_dt, dtype=np.float64), np.asarray(block_steps, dtype=np.int64),
+        np.asarray(block_stride, dtype=np.int64),
     )  # fmt: skip
 
 
@@ -371,7 +375,7 @@ def _time(module, q, v, table, size, weights, steps) -> list[float]:
         status = np.zeros(size, dtype=np.int64)
         audit = (np.zeros(size), math.inf, status, np.zeros(size, dtype=np.int64),
                  np.zeros(size), np.zeros(size))  # fmt: skip
-        rec = (np.zeros((size, 0)), np.zeros((size, 0, 0)), np.zeros((size, 0, 2 * D)), 0,
+        rec = (np.zeros((size, 0)), np.zeros((size, 0, 0)), np.zeros((size, 0, 2 * D)),
                np.zeros((size, 0, 0)), np.zeros((size, 0)), np.zeros((size, 0)))  # fmt: skip
         t0 = time.perf_counter()
         module.advance(Qc, Vc, empty3, empty3.copy(), P, weights, 0, 1, one_block,

@@ -189,11 +189,13 @@ class Ensemble:
 
         ``dt`` and ``steps`` may also be given per run (arrays (R,)), when the runs need
         different steps for the same segment (say, a chaos map over beta): ``dt * steps``
-        must then be the same segment time for every run, and ``stride`` and ``renorm``
-        (counted in steps) must be 0.  The runs are grouped by their steps; each group is
-        cut into blocks of its own, and a run's numbers are bitwise those it gets in an
-        ensemble of its group alone (MEGNO after a continued run only to the rounding of
-        the segment time, which the ensemble counts with run 0's dt x steps).
+        must then be the same segment time for every run, ``renorm`` (counted in steps)
+        must be 0, and ``stride`` (in steps too) may be one per run, giving every run the
+        same number of samples (``stride = steps`` samples each segment end).  The runs
+        are grouped by their steps; each group is cut into blocks of its own, and a run's
+        numbers are bitwise those it gets in an ensemble of its group alone (MEGNO after a
+        continued run only to the rounding of the segment time, which the ensemble counts
+        with run 0's dt x steps).
 
         ``record`` is a subset of {"shared", "members", "trajectory", "logs"}; ``stride``
         steps between trajectory samples; ``renorm`` steps between renormalisations of the
@@ -209,17 +211,18 @@ class Ensemble:
         S = int(segments)
         if gali > M or (megno and M == 0):
             raise ParameterError("gali", gali, f"at most the number of deviation vectors ({M})")
-        dt, steps, segment_time = _per_run_steps(dt, steps, R, stride, renorm)
+        dt, steps, segment_time = _per_run_steps(dt, steps, R, renorm)
+        stride, samples = _strides(stride if "trajectory" in record else 0, steps, S)
         groups = blocks.groups_of(steps)
         threads = numba.get_num_threads()
         if block is None:  # the plans _Chooser times against each other
             plans = blocks.candidates(groups, self.block_costs(), threads)
         else:
             plans = [blocks.fixed(groups, block, threads)]
-        layouts = {p: _Layout.of(p, steps, dt) for p in plans}
+        layouts = {p: _Layout.of(p, steps, dt, stride) for p in plans}
         # rows of the audit and the records: the runs, then the inert copies (discarded)
         Rp = max(p.padded for p in plans)
-        top = int(steps.max())
+        top = int(steps.max())  # the slowest group's steps
         rec = {
             "shared": np.zeros((Rp, S + 1 if "shared" in record else 0)),
             "members": np.zeros((Rp, S + 1 if "members" in record else 0, K)),
@@ -234,14 +237,12 @@ class Ensemble:
             rec["members"][:R, 0] = members.T
         if "logs" in record:
             rec["logs"][:R, 0] = self.logs.T
-        samples = S * top // stride + 1 if stride > 0 and "trajectory" in record else 0
         traj = np.zeros((Rp, samples, 2 * D))
         if samples:
             Sh = self.module.SHARED
             traj[:R, 0] = np.concatenate(
                 [self.q[:Sh].T, self.v[:Sh].T, self.q[Sh:].T, self.v[Sh:].T], axis=1
             )
-        stride = stride if samples else 0
         if gali:
             rec["gali"][:, 0] = 1.0
         if megno:
@@ -251,8 +252,7 @@ class Ensemble:
             (TANGENT_MODES[self.tangent], int(renorm), int(gali), bool(megno),
              self.time - self.tangent_start),
             float(bound),
-            (rec["shared"], rec["members"], traj, int(stride), rec["logs"], rec["gali"],
-             rec["megno"]),
+            (rec["shared"], rec["members"], traj, rec["logs"], rec["gali"], rec["megno"]),
         )  # fmt: skip
         fails = (np.zeros(Rp, dtype=np.int64), np.zeros(Rp), np.zeros(Rp))  # segment, H, worst
         chunk = max(1, math.ceil(S / 100))
@@ -359,9 +359,9 @@ class Ensemble:
         )
 
 
-def _per_run_steps(dt, steps, runs: int, stride: int, renorm: int):
+def _per_run_steps(dt, steps, runs: int, renorm: int):
     """(dt (R,), steps (R,), segment time) from one step or one per run; refuses steps per
-    run whose segments differ, or that vary together with a stride or renorm (in steps)."""
+    run whose segments differ, or that vary together with renorm (in steps)."""
     dt_r = np.broadcast_to(np.asarray(dt, dtype=float), (runs,))
     steps_r = np.broadcast_to(np.asarray(steps), (runs,))
     if steps_r.dtype.kind not in "iuf" or np.any(steps_r < 1) or np.any(steps_r % 1):
@@ -373,10 +373,29 @@ def _per_run_steps(dt, steps, runs: int, stride: int, renorm: int):
     if spread > 1e-12:
         raise ParameterError("dt, steps", f"segments dt x steps differing by {spread:.2g}",
                              "one segment time for every run (to 1e-12)")  # fmt: skip
-    if np.unique(steps_r).size > 1 and (stride or renorm):
-        raise ParameterError("stride, renorm", (stride, renorm),
-                             "0 when the runs take different steps (both count steps)")  # fmt: skip
+    if np.unique(steps_r).size > 1 and renorm:
+        raise ParameterError("renorm", renorm,
+                             "0 when the runs take different steps (it counts steps)")  # fmt: skip
     return dt_r, steps_r.astype(np.int64), float(segment[0])
+
+
+def _strides(stride, steps: np.ndarray, segments: int) -> tuple[np.ndarray, int]:
+    """(stride (R,), samples) of the trajectory record: steps between samples, one for all
+    runs or one per run (0: no record); every run must give the same number of samples
+    S x steps // stride + 1."""
+    stride_r = np.broadcast_to(np.asarray(stride), steps.shape)
+    if stride_r.dtype.kind not in "iuf" or np.any(stride_r < 0) or np.any(stride_r % 1):
+        raise ParameterError("stride", stride, "a non-negative integer, or one per run")
+    stride_r = stride_r.astype(np.int64)
+    if not stride_r.any():
+        return np.zeros_like(steps), 0
+    if not stride_r.all():
+        raise ParameterError("stride", stride, "positive for every run, or 0 for all")
+    samples = segments * steps // stride_r + 1
+    if np.ptp(samples):
+        raise ParameterError("stride", stride, "strides giving every run the same number "
+                             "of samples (segments x steps // stride): stride = steps")  # fmt: skip
+    return stride_r, int(samples[0])
 
 
 @dataclass(frozen=True)
@@ -390,8 +409,8 @@ class _Layout:
     rows: int
 
     @classmethod
-    def of(cls, plan: blocks.BlockPlan, steps, dt) -> _Layout:
-        columns, compiled = blocks.layout(plan, steps, dt)
+    def of(cls, plan: blocks.BlockPlan, steps, dt, stride) -> _Layout:
+        columns, compiled = blocks.layout(plan, steps, dt, stride)
         R = steps.size
         own = columns.size == R and bool(np.all(columns == np.arange(R)))
         return cls(None if own else columns, compiled, R, columns.size)
