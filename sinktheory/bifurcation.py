@@ -125,13 +125,16 @@ def section_step(sink: Sink, energy: float = 0.5) -> tuple[float, int]:
     return ladder_step(default_step(sink, bound)[0])
 
 
-def _check_work(sinks, steps: int, transient: int, count: int) -> None:
-    """Refuse sections whose estimated work exceeds the limit of one computation
-    (:func:`sinktheory.worklimit.check_particle_steps`) or whose record of states (6
-    numbers per run and period, with the inert runs a block plan may add: at most
-    min(63, 3 R)) exceeds the memory limit, naming ``count``."""
+def _check_work(sinks, steps, transient: int, count: int) -> None:
+    """Refuse sections whose estimated work (``steps``: each well's steps per period)
+    exceeds the limit of one computation (:func:`sinktheory.worklimit.check_particle_steps`)
+    or whose record of states (6 numbers per run and period, with the inert runs a block
+    plan may add: at most min(63, 3 R) per step count) exceeds the memory limit, naming
+    ``count``."""
     periods = transient + count
-    rows = 48.0 * (len(sinks) + min(63, 3 * len(sinks)))  # bytes per recorded period
+    _, runs = np.unique(steps, return_counts=True)
+    inert = int(np.minimum(63, 3 * runs).sum())
+    rows = 48.0 * (len(sinks) + inert)  # bytes per recorded period
     v.fits_memory(
         "count",
         count,
@@ -142,18 +145,10 @@ def _check_work(sinks, steps: int, transient: int, count: int) -> None:
     check_particle_steps(
         "count",
         count,
-        float(len(sinks)) * periods * steps,
-        f"{len(sinks)} well(s) x {periods} period(s) x {steps} step(s) x 1 particle",
+        float(np.sum(steps)) * periods,
+        f"{len(sinks)} well(s) x {periods} period(s) x up to {int(np.max(steps))} step(s) "
+        "x 1 particle",
     )
-
-
-def step_groups(sinks, energy: float = 0.5) -> dict[tuple, list[int]]:
-    """Indices of ``sinks`` grouped by engine and :func:`section_step` (what
-    :func:`sections` can run together)."""
-    groups: dict[tuple, list[int]] = {}
-    for i, k in enumerate(sinks):
-        groups.setdefault((engine_name(k), section_step(k, energy)), []).append(i)
-    return groups
 
 
 def sections(
@@ -166,9 +161,9 @@ def sections(
 ) -> np.ndarray:
     """Sections (B, count) of single-particle runs in several wells at once.
 
-    The wells must share the engine (shape and n) and, through their stiffness, the step
-    (:func:`section_step`); the runs then advance as one ensemble whose runs carry their
-    own parameters, and each row is bitwise the section of its well alone.
+    The wells must share the engine (shape and n); the runs advance as one ensemble whose
+    runs carry their own parameters and steps (:func:`section_step`), and each row is
+    bitwise the section of its well alone.
 
     Examples
     --------
@@ -188,11 +183,9 @@ def sections(
     quantity = v.choice("quantity", quantity, QUANTITIES)
     if not sinks:
         raise ParameterError("sinks", "none", "at least one well")
-    if len(step_groups(sinks, energy)) > 1:
-        raise ParameterError(
-            "sinks", "wells of different engines or steps", "one shape and n, one section_step"
-        )
-    dt, steps = section_step(sinks[0], energy)
+    if len({engine_name(k) for k in sinks}) > 1:
+        raise ParameterError("sinks", "wells of different engines", "one shape and n")
+    dt, steps = (np.array(x) for x in zip(*(section_step(k, energy) for k in sinks), strict=True))
     _check_work(sinks, steps, transient, count)
     values = [start_state(k, energy, np.array([[START]])) for k in sinks]
     for k, z in zip(sinks, values, strict=True):
@@ -230,8 +223,8 @@ def bifurcation(
     count: int = 200,
     quantity: str = "y",
 ) -> BifurcationDiagram:
-    """Sections for each beta in ``betas`` (run one after another; see :mod:`sinktheory.sweep`
-    for parallel and resumable sweeps).
+    """Sections for each beta in ``betas`` (one ensemble; see :mod:`sinktheory.sweep` for
+    parallel and resumable sweeps).
 
     Raises ParameterError naming ``beta`` if a value gives an invalid well.
     """
@@ -241,13 +234,7 @@ def bifurcation(
     sinks = [Sink(Well(alpha, b, n, gamma=gamma, shape=shape), 1, mass) for b in betas]
     for s in sinks:  # refuse bad input before any long computation
         RunSettings(energy=energy, runs=1, periods=1).check(s)
-    rows = np.empty((len(sinks), count))
-    groups = step_groups(sinks, energy)
-    for (_, (_, steps)), members in groups.items():  # every group refused before any runs
-        _check_work([sinks[i] for i in members], steps, transient, count)
-    for members in groups.values():
-        rows[members] = sections([sinks[i] for i in members], transient=transient,
-                                 count=count, quantity=quantity, energy=energy)  # fmt: skip
+    rows = sections(sinks, transient=transient, count=count, quantity=quantity, energy=energy)
     w = sinks[0].well
     return BifurcationDiagram(
         betas,

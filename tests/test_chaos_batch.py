@@ -89,10 +89,11 @@ def test_chaos_sweep_points_together_equal_points_alone(monkeypatch):
 
 
 def test_sections_together_equal_sections_alone():
-    from sinktheory.bifurcation import section, sections, step_groups
+    from sinktheory.bifurcation import section, section_step, sections
 
-    wells = [Sink(Well(0.5, b, 2), 1, 0.2) for b in (0.1, 0.101, 0.102)]
-    assert len(step_groups(wells)) == 1  # neighbours on one rung of the step ladder
+    wells = [Sink(Well(0.5, b, 2), 1, 0.2) for b in (0.1, 0.101, 0.102, -0.6)]
+    steps = [section_step(w)[1] for w in wells]
+    assert steps[0] == steps[1] == steps[2] != steps[3]  # one ladder rung, and another
     for quantity in ("y", "energy"):
         rows = sections(wells, transient=3, count=4, quantity=quantity)
         for w, row in zip(wells, rows, strict=True):

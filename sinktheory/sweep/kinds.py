@@ -253,14 +253,15 @@ def _bifurcation(p: dict, seed: int) -> dict[str, Any]:
 
 
 def _bifurcation_many(points: list) -> list[dict[str, Any]]:
-    """Sections of a task's points, those sharing an engine, a step and the section's
-    settings as one ensemble (:func:`sinktheory.bifurcation.sections`)."""
-    from ..bifurcation import section_step, sections
+    """Sections of a task's points, those sharing an engine and the section's settings as
+    one ensemble whose runs carry their own parameters and steps
+    (:func:`sinktheory.bifurcation.sections`)."""
+    from ..bifurcation import sections
 
     groups: dict[tuple, list[int]] = {}
     for i, (p, _) in enumerate(points):
         key = (p["shape"], p["n"], p["transient"], p["count"], p["quantity"], p["energy"])
-        groups.setdefault((*key, section_step(_sink(p), p["energy"])), []).append(i)
+        groups.setdefault(key, []).append(i)
     out: list = [None] * len(points)
     for members in groups.values():
         first = points[members[0]][0]
