@@ -160,8 +160,11 @@ def _options(runs, costs: dict[int, float], threads: int) -> list[BlockPlan]:
         top = min(threads, blocks) if b >= width else 1
         for t in range(1, top + 1):
             shape = BlockPlan(total, b, blocks * b, t, 0.0, groups)
-            work, cuts = shape.work(), shape.parts()
-            slowest = max(sum(work[i:j]) for i, j in zip(cuts, cuts[1:], strict=False))
+            if groups:  # the slowest thread's blocks, weighted by their steps
+                work, cuts = shape.work(), shape.parts()
+                slowest = max(sum(work[i:j]) for i, j in zip(cuts, cuts[1:], strict=False))
+            else:  # equal blocks: what _partition gives, without building it
+                slowest = -(-blocks // t)
             out.append(BlockPlan(total, b, blocks * b, t, slowest * b * c, groups))
     return out
 
@@ -189,8 +192,12 @@ def plan(runs: int, costs: dict[int, float], threads: int) -> BlockPlan:
     thread must gain :data:`THREAD_GAIN`; ties go to fewer threads, then to fewer padded
     runs.
     """
+    return _best(_options(runs, costs, threads))
+
+
+def _best(options: list[BlockPlan]) -> BlockPlan:
     return min(
-        _options(runs, costs, threads),
+        options,
         key=lambda p: (p.predicted * (THREAD_GAIN if p.threads > 1 else 1.0), p.threads,
                        p.padded, p.block),
     )  # fmt: skip
@@ -209,9 +216,9 @@ def candidates(runs: int, costs: dict[int, float], threads: int, *, within: floa
     >>> [(p.block, p.threads) for p in candidates(25, costs, 2)]
     [(24, 2), (32, 1), (16, 2)]
     """
-    chosen = plan(runs, costs, threads)
-    options = sorted(_options(runs, costs, threads),
-                     key=lambda p: (p.predicted, p.threads, p.padded))  # fmt: skip
+    options = _options(runs, costs, threads)
+    chosen = _best(options)
+    options = sorted(options, key=lambda p: (p.predicted, p.threads, p.padded))
     single = min((p for p in options if p.threads == 1), key=lambda p: p.predicted)
     near = [p for p in options if p.predicted <= within * options[0].predicted]
     out = list(dict.fromkeys([chosen, single, *near]))

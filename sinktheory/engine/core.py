@@ -401,19 +401,23 @@ def _strides(stride, steps: np.ndarray, segments: int) -> tuple[np.ndarray, int]
 @dataclass(frozen=True)
 class _Layout:
     """A plan's columns (:func:`blocks.layout`) and how the ensemble's arrays (runs last)
-    map to and from them; ``columns`` is None when they are the runs themselves."""
+    map to and from them; ``columns`` is None when they are the runs themselves, and
+    ``source`` is the run behind each record row (the runs, then each inert copy's run)."""
 
     columns: np.ndarray | None
     compiled: tuple
     runs: int
     rows: int
+    source: np.ndarray
 
     @classmethod
     def of(cls, plan: blocks.BlockPlan, steps, dt, stride) -> _Layout:
         columns, compiled = blocks.layout(plan, steps, dt, stride)
-        R = steps.size
+        R, rows = steps.size, compiled[2]
         own = columns.size == R and bool(np.all(columns == np.arange(R)))
-        return cls(None if own else columns, compiled, R, columns.size)
+        source = np.empty(columns.size, dtype=np.int64)
+        source[rows] = columns
+        return cls(None if own else columns, compiled, R, columns.size, source)
 
     def gather(self, a: np.ndarray) -> np.ndarray:
         if self.columns is None:
@@ -421,11 +425,8 @@ class _Layout:
         return np.ascontiguousarray(a[..., self.columns])
 
     def by_row(self, a: np.ndarray) -> np.ndarray:
-        """``a`` (R,) per record row: the runs, then each inert copy's run."""
-        rows = self.compiled[2]
-        source = np.empty(self.rows, dtype=np.int64)
-        source[rows] = np.arange(self.rows) if self.columns is None else self.columns
-        return np.ascontiguousarray(a[source])
+        """``a`` (R,) per record row (a copy)."""
+        return a[self.source]
 
     def scatter(self, advanced: np.ndarray, mine: np.ndarray) -> None:
         """Write the real runs of ``advanced`` (columns) back into ``mine`` (runs)."""
