@@ -78,10 +78,10 @@ class BlockPlan:
     padded : runs advanced, ``blocks * block`` >= runs (the extra ones are inert copies)
     threads : threads used
     predicted : predicted seconds per step of the whole ensemble (from the cost table)
-    groups : the runs of each step group and its steps relative to the largest, when the
-        runs do not all take the same number of steps per segment (each group is cut into
-        blocks of its own, padded on its own); () for one group
     pad : whether the last block of a group is filled up with inert copies
+    groups : ((runs, steps relative to the largest), ...) of each step group when the runs
+    do not all take the same steps per segment (each group is cut into blocks and padded
+    on its own); () for one group
     """
 
     runs: int
