@@ -107,6 +107,8 @@ class BlockPlan:
     def parts(self) -> list[int]:
         """Where the blocks (in group order) are cut into the threads' contiguous parts:
         the cut points 0 = p_0 <= ... <= p_threads = blocks, balancing their steps."""
+        if self.threads == 1:
+            return [0, self.blocks]
         return _partition(self.work(), self.threads)
 
 
@@ -156,11 +158,11 @@ def _options(runs, costs: dict[int, float], threads: int) -> list[BlockPlan]:
     threads, width = max(1, int(threads)), efficient_width(costs)
     out = []
     for b, c in sorted(costs.items()):
-        blocks = BlockPlan(total, b, 0, 1, 0.0, groups).blocks
+        blocks = sum(-(-n // b) for n, _ in groups) if groups else -(-total // b)
         top = min(threads, blocks) if b >= width else 1
         for t in range(1, top + 1):
-            shape = BlockPlan(total, b, blocks * b, t, 0.0, groups)
             if groups:  # the slowest thread's blocks, weighted by their steps
+                shape = BlockPlan(total, b, blocks * b, t, 0.0, groups)
                 work, cuts = shape.work(), shape.parts()
                 slowest = max(sum(work[i:j]) for i, j in zip(cuts, cuts[1:], strict=False))
             else:  # equal blocks: what _partition gives, without building it
@@ -179,9 +181,10 @@ def groups_of(steps) -> tuple[tuple[int, float], ...] | int:
     >>> groups_of([10, 10, 10]), groups_of([10, 20, 10])
     (3, ((2, 0.5), (1, 1.0)))
     """
-    values, counts = np.unique(np.asarray(steps, dtype=np.int64), return_counts=True)
-    if values.size == 1:
-        return int(counts[0])
+    steps = np.asarray(steps, dtype=np.int64)
+    if steps.min() == steps.max():
+        return steps.size
+    values, counts = np.unique(steps, return_counts=True)
     return tuple((int(c), float(s / values[-1])) for s, c in zip(values, counts, strict=True))
 
 
@@ -259,6 +262,14 @@ def layout(plan: BlockPlan, steps, dt, stride=0) -> tuple[np.ndarray, tuple]:
     dt = np.asarray(dt, dtype=np.float64)
     stride = np.broadcast_to(np.asarray(stride, dtype=np.int64), steps.shape)
     R, b = steps.size, plan.block
+    if not plan.groups:  # one step count: the runs in order, then the inert copies
+        bounds = np.minimum(np.arange(plan.blocks + 1) * b, plan.padded)
+        n = bounds.size - 1
+        columns = np.minimum(np.arange(plan.padded), R - 1)
+        return columns, (
+            np.asarray(plan.parts(), dtype=np.int64), bounds, np.arange(plan.padded),
+            np.full(n, dt[0]), np.full(n, steps[0]), np.full(n, stride[0]),
+        )  # fmt: skip
     columns, rows, bounds, block_dt, block_steps, block_stride = [], [], [0], [], [], []
     inert = R
     for s in np.unique(steps):

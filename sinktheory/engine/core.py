@@ -362,6 +362,11 @@ class Ensemble:
 def _per_run_steps(dt, steps, runs: int, renorm: int):
     """(dt (R,), steps (R,), segment time) from one step or one per run; refuses steps per
     run whose segments differ, or that vary together with renorm (in steps)."""
+    if np.ndim(dt) == 0 and np.ndim(steps) == 0:  # one step for all (the common case)
+        if not (0 < float(dt) < math.inf) or int(steps) != steps or int(steps) < 1:
+            raise ParameterError("dt, steps", (dt, steps), "a positive finite step and a "
+                                 "positive integer number of steps")  # fmt: skip
+        return np.full(runs, float(dt)), np.full(runs, int(steps)), float(dt) * int(steps)
     dt_r = np.broadcast_to(np.asarray(dt, dtype=float), (runs,))
     steps_r = np.broadcast_to(np.asarray(steps), (runs,))
     if steps_r.dtype.kind not in "iuf" or np.any(steps_r < 1) or np.any(steps_r % 1):
@@ -383,6 +388,8 @@ def _strides(stride, steps: np.ndarray, segments: int) -> tuple[np.ndarray, int]
     """(stride (R,), samples) of the trajectory record: steps between samples, one for all
     runs or one per run (0: no record); every run must give the same number of samples
     S x steps // stride + 1."""
+    if np.ndim(stride) == 0 and stride == 0:  # no trajectory (the common case)
+        return np.zeros_like(steps), 0
     stride_r = np.broadcast_to(np.asarray(stride), steps.shape)
     if stride_r.dtype.kind not in "iuf" or np.any(stride_r < 0) or np.any(stride_r % 1):
         raise ParameterError("stride", stride, "a non-negative integer, or one per run")
