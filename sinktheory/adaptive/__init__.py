@@ -61,7 +61,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import validation as v
-from ..errors import EnergyDriftError, NonFiniteStateError, NumericalError, ParameterError
+from ..errors import NumericalError, ParameterError
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..model import RunSettings, Sink
 from ..progress import ProgressBar
@@ -374,10 +374,11 @@ def simulate_adaptive(
 
 def _raise_on_failure(status, fail_period, fail_energy, h0, t0, bound) -> None:
     """Raise for the earliest failure (period, then run), whatever the threads."""
-    failed = np.flatnonzero(status)
-    if failed.size == 0:
+    from ..engine.core import audit_error, earliest_failure
+
+    r = earliest_failure(status, fail_period)
+    if r is None:
         return
-    r = int(failed[np.lexsort((failed, fail_period[failed]))[0]])
     p = int(fail_period[r])
     where = f"run {r} at t = {t0 + p * PERIOD:.6g} (period {p}, adaptive step)"
     H, H0 = float(fail_energy[r]), float(h0[r])
@@ -386,12 +387,5 @@ def _raise_on_failure(status, fail_period, fail_energy, h0, t0, bound) -> None:
             f"{where}: more than {MAX_STEPS} steps in one period (H = {H!r}, H0 = {H0!r}); "
             "the rate Omega grew without bound"
         )
-    if status[r] == 2:  # NONFINITE
-        raise NonFiniteStateError(
-            f"{where}: the state became non-finite (total energy {H!r}, started at {H0!r}); "
-            "use a smaller eps"
-        )
-    raise EnergyDriftError(
-        f"{where}: relative total-energy error {abs(H - H0) / (abs(H0) or 1.0):.3g} > bound "
-        f"{bound:.3g} (H = {H!r}, H0 = {H0!r}); use a smaller eps or tolerance"
-    )
+    raise audit_error(where, status[r] == 2, H, H0, bound,  # 2: NONFINITE
+                      ("use a smaller eps", "use a smaller eps or tolerance"))  # fmt: skip

@@ -338,25 +338,36 @@ class Ensemble:
     def _raise_on_failure(self, fail_segment, fail_energy, segment_time, seg_base, bound, unit):
         """Raise for the earliest failure (segment, then run): the same whatever the
         block size or thread count (inert copies are not looked at)."""
-        failed = np.flatnonzero(self.status != _RUNNING)
-        if failed.size == 0:
+        r = earliest_failure(self.status, fail_segment)
+        if r is None:
             return
-        order = np.lexsort((failed, fail_segment[failed]))
-        r = int(failed[order[0]])
         seg = int(fail_segment[r])
         t = self.time + seg * segment_time
-        h0 = float(self.h0[r])
         where = f"run {r} at t = {t:.6g} ({unit} {seg_base + seg})"
-        if self.status[r] == _NONFINITE:
-            raise NonFiniteStateError(
-                f"{where}: the state became non-finite (total energy {float(fail_energy[r])!r}, "
-                f"started at {h0!r}); the step is too large for this stiffness"
-            )
-        err = abs(fail_energy[r] - h0) / (abs(h0) or 1.0)
-        raise EnergyDriftError(
-            f"{where}: relative total-energy error {err:.3g} > bound {bound:.3g} "
-            f"(H = {float(fail_energy[r])!r}, H0 = {h0!r}); use a smaller dt or tolerance"
-        )
+        raise audit_error(where, self.status[r] == _NONFINITE, float(fail_energy[r]),
+                          float(self.h0[r]), bound, ("the step is too large for this "
+                          "stiffness", "use a smaller dt or tolerance"))  # fmt: skip
+
+
+def earliest_failure(status: np.ndarray, fail_segment: np.ndarray) -> int | None:
+    """The run that failed first (earliest segment, then lowest run index) among runs
+    whose ``status`` is not 0, or None: the same whatever the blocks and threads."""
+    failed = np.flatnonzero(status)
+    if failed.size == 0:
+        return None
+    return int(failed[np.lexsort((failed, fail_segment[failed]))[0]])
+
+
+def audit_error(where: str, nonfinite: bool, H: float, H0: float, bound: float,
+                advice: tuple[str, str]) -> Exception:  # fmt: skip
+    """The error of a run that failed the energy audit at ``where``: a non-finite state,
+    or a relative total-energy error over ``bound``; ``advice`` = (what to say for each)."""
+    if nonfinite:
+        return NonFiniteStateError(f"{where}: the state became non-finite (total energy "
+                                   f"{H!r}, started at {H0!r}); {advice[0]}")  # fmt: skip
+    err = abs(H - H0) / (abs(H0) or 1.0)
+    return EnergyDriftError(f"{where}: relative total-energy error {err:.3g} > bound "
+                            f"{bound:.3g} (H = {H!r}, H0 = {H0!r}); {advice[1]}")  # fmt: skip
 
 
 def _per_run_steps(dt, steps, runs: int, renorm: int):
