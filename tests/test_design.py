@@ -277,8 +277,9 @@ def test_resume_after_interruption_gives_the_same_store(tmp_path, monkeypatch, c
 
 def test_resume_with_a_swept_shape(tmp_path):
     """The done-when command sweeps --shape flat,symmetric: a string coordinate, which the
-    store reads back as numpy's StringDType; resuming must accept it, not call it damaged."""
-    params = {"shape": ["flat", "symmetric"], "beta": 0.3, "n": 4, "runs": 2, "periods": 6,
+    store reads back as numpy's StringDType; resuming must accept it, not call it damaged.
+    (flat and circular here: at n = 4 both engines are compiled by the suite anyway.)"""
+    params = {"shape": ["flat", "circular"], "beta": 0.3, "n": 4, "runs": 2, "periods": 6,
               "horizons": "6", "lyapunov_runs": 0, "bootstrap": 4}  # fmt: skip
     store = tmp_path / "d.zarr"
     first = _explore(params, store=store)
