@@ -115,6 +115,8 @@ def check_run(system, q, v, dt, steps, segments) -> tuple[str, np.ndarray, np.nd
         dt = val.positive("dt", dt)
         steps = val.positive_int("steps", steps, maximum=val.MAX_STEPS_PER_PERIOD)
     segments = val.positive_int("segments", segments, maximum=val.MAX_STEPS_PER_PERIOD)
+    if not np.all(np.isfinite(dt * steps * segments)):
+        raise ParameterError("dt", dt, "a step whose run (dt x steps x segments) is finite")
     return system, q, v, dt, steps, segments
 
 

@@ -374,7 +374,7 @@ def _per_run_steps(dt, steps, runs: int, renorm: int):
     """(dt (R,), steps (R,), segment time) from one step or one per run; refuses steps per
     run whose segments differ, or that vary together with renorm (in steps)."""
     if np.ndim(dt) == 0 and np.ndim(steps) == 0:  # one step for all (the common case)
-        if not (0 < float(dt) < math.inf) or int(steps) != steps or int(steps) < 1:
+        if int(steps) != steps or int(steps) < 1 or not 0 < float(dt) * int(steps) < math.inf:
             raise ParameterError("dt, steps", (dt, steps), "a positive finite step and a "
                                  "positive integer number of steps")  # fmt: skip
         return np.full(runs, float(dt)), np.full(runs, int(steps)), float(dt) * int(steps)
