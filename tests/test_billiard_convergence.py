@@ -93,19 +93,21 @@ def test_rigid_measurement_is_the_billiard_api():
 
 
 def test_soft_mean_free_time_approaches_the_rigid_one():
-    # n = 50 against n = oo, the same 12 seeded starts, beta = 0.3 (chaotic).  Tolerance:
-    # 3 standard errors of the difference plus 5 % of the rigid value, the largest
-    # soft-rigid difference from n = 20 on in the guide's table (docs/guide/convergence.inc);
-    # with 12 runs x 25 periods that allows about 30 %: a loose check that catches a hit
-    # count off by a large factor; the exact check of the count is the oscillator's above
+    # n = 10 (an engine the suite compiles anyway; n = 50 cost 30 s of CI) against n = oo,
+    # the same 12 seeded starts, beta = 0.3 (chaotic).  Tolerance: 3 standard errors of
+    # the difference plus 8 % of the rigid value, the largest soft-rigid difference at
+    # n = 10 in the guide's table (docs/guide/convergence.inc: 7.7 %, the energy average at
+    # beta = 0.3; 5 % from n = 20 on); with 12 runs x 25 periods that allows about 30 %: a
+    # loose check that catches a hit count off by a large factor; the exact check of the
+    # count is the oscillator's above
     st = RunSettings(runs=12, periods=25, seed=3)
-    c = convergence("flat", 0.5, 0.3, ns=(4, 50), settings=st)
+    c = convergence("flat", 0.5, 0.3, ns=(4, 10), settings=st)
     m, se, rm, rse = c.summary("mean_free_time")
-    assert abs(m[1] - rm) <= 3 * math.hypot(se[1], rse) + 0.05 * rm
+    assert abs(m[1] - rm) <= 3 * math.hypot(se[1], rse) + 0.08 * rm
     assert 0.3 < rm < 1.5  # about pi A / P / speed: a hit count off by 2x would fail
     # the container energy ends on the same level within the same allowance
     m, se, rm, rse = c.summary("energy_average")
-    assert abs(m[1] - rm) <= 3 * math.hypot(se[1], rse) + 0.05 * rm
+    assert abs(m[1] - rm) <= 3 * math.hypot(se[1], rse) + 0.08 * rm
 
 
 def test_stiffness_values():
