@@ -159,7 +159,8 @@ def chaos_map(points: int, runs: int, periods: int) -> list[str]:
     for task, out in zip(tasks, alone, strict=True):
         rungs.setdefault(float(out["dt_used"]), []).append(task)
     t = time.perf_counter()
-    by_rung = [out for group in rungs.values() for out in kind.compute_many(group)]
+    by_rung = {id(task): out for group in rungs.values()
+               for task, out in zip(group, kind.compute_many(group), strict=True)}  # fmt: skip
     per_rung = time.perf_counter() - t
     print(f"  one ensemble per step rung ({len(rungs)} rungs), engine threads: {per_rung:7.1f} s",
           flush=True)  # fmt: skip
@@ -177,7 +178,7 @@ def chaos_map(points: int, runs: int, periods: int) -> list[str]:
     same = all(
         np.array_equal(a["lambda1_runs"], b["lambda1_runs"])
         and np.array_equal(a["lambda1_runs"], c["lambda1_runs"])
-        for a, b, c in zip(alone, sorted_like(by_rung, tasks, rungs), panel, strict=True)
+        for a, b, c in zip(alone, (by_rung[id(t)] for t in tasks), panel, strict=True)
     )
     print(f"  lambda_1 of every run bitwise the same in all three: {same}")
     return [
@@ -188,13 +189,6 @@ def chaos_map(points: int, runs: int, periods: int) -> list[str]:
         f"(per panel / per beta: {per_panel / per_beta:.2f}; per panel / per rung: "
         f"{per_panel / per_rung:.2f}; every run's lambda_1 bitwise the same: {same})"
     ]
-
-
-def sorted_like(outputs: list, tasks: list, rungs: dict) -> list:
-    """The per-rung outputs (rung by rung) back in the order of ``tasks``."""
-    order = [id(task) for group in rungs.values() for task in group]
-    where = {key: i for i, key in enumerate(order)}
-    return [outputs[where[id(task)]] for task in tasks]
 
 
 def _one(task):

@@ -183,3 +183,14 @@ def test_chaos_transient_is_the_growth_rate_from_its_end(capsys):
     out = json.loads(capsys.readouterr().out)
     assert out["lambda1"]["mean"] == pytest.approx(float(later.lambda1.mean()), rel=1e-12)
     assert out["transient_time"] == pytest.approx(10 * 2 * np.pi, rel=1e-12)
+
+
+def test_steps_per_run_only_where_the_runs_are_the_callers():
+    """indicators() takes a step per run; monodromy() and two_orbit_exponent() run copies
+    of the runs (displaced or shadow states), so they refuse one, naming dt."""
+    from sinktheory.chaos import monodromy, two_orbit_exponent
+
+    q, v = np.full((2, 2), 0.1), np.zeros((2, 2))
+    for f in (monodromy, two_orbit_exponent):
+        with pytest.raises(ParameterError, match="dt"):
+            f("henon_heiles", q, v, [], dt=np.array([0.1, 0.1]), steps=10, segments=1)

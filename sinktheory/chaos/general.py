@@ -89,12 +89,11 @@ def check_params(system: str, params, runs: int | None = None) -> np.ndarray:
     return p
 
 
-def check_run(system, q, v, dt, steps, segments) -> tuple[str, np.ndarray, np.ndarray, float,
-                                                          int, int]:  # fmt: skip
+def check_run(system, q, v, dt, steps, segments, *, per_run: bool = False) -> tuple:
     """(system, q, v, dt, steps, segments) of an engine run, each validated: a known engine
     system, finite start states q and v of one shape (D, R), dt > 0, and steps and
-    segments integers in [1, :data:`~sinktheory.validation.MAX_STEPS_PER_PERIOD`]; dt and
-    steps may be one per run (arrays (R,), checked entry by entry)."""
+    segments integers in [1, :data:`~sinktheory.validation.MAX_STEPS_PER_PERIOD`]; with
+    ``per_run``, dt and steps may be one per run (arrays (R,), checked entry by entry)."""
     system = val.engine_system("system", system)
     q = val.real_array("q", q)
     v = val.real_array("v", v)
@@ -103,7 +102,7 @@ def check_run(system, q, v, dt, steps, segments) -> tuple[str, np.ndarray, np.nd
                              "positions q and velocities v of one shape (D, R)")  # fmt: skip
     if not (np.isfinite(q).all() and np.isfinite(v).all()):
         raise ParameterError("q", "non-finite start states", "finite q and v")
-    if np.ndim(dt) or np.ndim(steps):
+    if per_run and (np.ndim(dt) or np.ndim(steps)):
         runs = q.shape[1]
         if np.shape(dt) not in ((), (runs,)) or np.shape(steps) not in ((), (runs,)):
             raise ParameterError("dt, steps", f"shapes {np.shape(dt)}, {np.shape(steps)}",
@@ -275,7 +274,7 @@ def indicators(
     -------
     ChaosResult
     """
-    system, q, v, dt, steps, segments = check_run(system, q, v, dt, steps, segments)
+    system, q, v, dt, steps, segments = check_run(system, q, v, dt, steps, segments, per_run=True)
     D, R = q.shape
     params = check_params(system, params, R)
     scheme = get_scheme(method)

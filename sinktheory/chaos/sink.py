@@ -257,7 +257,7 @@ def chaos_batch(
 
 
 def point_steps(points, dt) -> tuple[tuple[float, ...], tuple[int, ...]]:
-    """(steps, steps per period) of each set-up from ``dt``: one step for all or one per
+    """(step, steps per period) of each set-up from ``dt``: one step for all or one per
     set-up, each aligned to the period (:func:`~sinktheory.stepsize.aligned_step`)."""
     given = [dt] * len(points) if np.ndim(dt) == 0 else list(np.ravel(dt))
     if len(given) != len(points):

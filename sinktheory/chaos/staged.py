@@ -152,8 +152,7 @@ def staged_exponent(ensemble: Ensemble, groups, scheme, *, dt, steps,
     stages = [(transient, None)] if transient else []
     for at, z in [*stages, *looks(periods, transient), (periods, None)]:
         rec = ensemble.run(scheme, dt=dt[active], steps=steps[active], segments=at - done,
-                           record=(),
-                           renorm=renorm, bound=bound, unit="period")  # fmt: skip
+                           record=(), renorm=renorm, bound=bound, unit="period")  # fmt: skip
         done = at
         worst[active] = np.maximum(worst[active], rec.worst)
         if at == transient:

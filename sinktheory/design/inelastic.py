@@ -115,7 +115,6 @@ from ..stepsize import DEFAULT_TOL, PERIOD, check_tol, resolve_step
 from .measures import DAMPING_KINDS
 
 _RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
-#: The weights of the damping force (module docstring).
 
 
 @dataclass(frozen=True)

@@ -153,12 +153,11 @@ def _options(runs, costs: dict[int, float], threads: int) -> list[BlockPlan]:
     the :func:`efficient_width` (so each thread gets an efficient block and tiny ensembles
     never wait for a second, possibly busy, core).  ``runs`` is a number of runs or step
     groups ((runs, relative steps), ...) (:func:`groups_of`)."""
-    groups = tuple((int(c), float(w)) for c, w in runs) if isinstance(runs, tuple) else ()
-    total = sum(c for c, _ in groups) if groups else int(runs)
+    groups, total = _groups_and_total(runs)
     threads, width = max(1, int(threads)), efficient_width(costs)
     out = []
     for b, c in sorted(costs.items()):
-        blocks = sum(-(-n // b) for n, _ in groups) if groups else -(-total // b)
+        blocks = BlockPlan(total, b, 0, 1, 0.0, groups).blocks
         top = min(threads, blocks) if b >= width else 1
         for t in range(1, top + 1):
             if groups:  # the slowest thread's blocks, weighted by their steps
@@ -169,6 +168,14 @@ def _options(runs, costs: dict[int, float], threads: int) -> list[BlockPlan]:
                 slowest = -(-blocks // t)
             out.append(BlockPlan(total, b, blocks * b, t, slowest * b * c, groups))
     return out
+
+
+def _groups_and_total(runs) -> tuple[tuple[tuple[int, float], ...], int]:
+    """(step groups, number of runs) from a number of runs or step groups."""
+    if isinstance(runs, tuple):
+        groups = tuple((int(c), float(w)) for c, w in runs)
+        return groups, sum(c for c, _ in groups)
+    return (), int(runs)
 
 
 def groups_of(steps) -> tuple[tuple[int, float], ...] | int:
@@ -232,11 +239,10 @@ def fixed(runs, block: int, threads: int) -> BlockPlan:
     """A plan with a block size the caller chose: no padding, at most one thread per
     block (``runs`` as for :func:`plan`)."""
     block = max(1, int(block))
-    groups = tuple((int(c), float(w)) for c, w in runs) if isinstance(runs, tuple) else ()
-    total = sum(c for c, _ in groups) if groups else int(runs)
-    shape = BlockPlan(total, block, total, 1, math.nan, groups, pad=False)
-    return BlockPlan(total, block, total, max(1, min(int(threads), shape.blocks)), math.nan,
-                     groups, pad=False)  # fmt: skip
+    groups, total = _groups_and_total(runs)
+    blocks = BlockPlan(total, block, total, 1, math.nan, groups).blocks
+    return BlockPlan(total, block, total, max(1, min(int(threads), blocks)), math.nan, groups,
+                     pad=False)  # fmt: skip
 
 
 def layout(plan: BlockPlan, steps, dt, stride=0) -> tuple[np.ndarray, tuple]:
