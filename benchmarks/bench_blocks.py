@@ -48,14 +48,14 @@ from machine import describe  # noqa: E402
 from sinktheory import RunSettings, Sink, Well  # noqa: E402
 from sinktheory.engine.blocks import efficient_width  # noqa: E402
 from sinktheory.engine.core import Ensemble  # noqa: E402
-from sinktheory.integrators import get_scheme  # noqa: E402
-from sinktheory.simulate import (  # noqa: E402
+from sinktheory.ensemble import (  # noqa: E402
     engine_name,
     engine_params,
     random_positions,
     split_values,
     start_state,
 )
+from sinktheory.integrators import get_scheme  # noqa: E402
 from sinktheory.sweep.kinds import get_kind  # noqa: E402
 
 RUNS = (1, 2, 4, 8, 12, 13, 16, 20, 24, 25, 28, 32, 40, 48, 64, 96, 128, 256)

@@ -29,13 +29,8 @@ import numpy as np
 from sinktheory import RunSettings, Sink, Well
 from sinktheory.chaos import chaos, two_orbit_exponent
 from sinktheory.chaos.sink import start_positions
-from sinktheory.simulate import (
-    engine_name,
-    engine_params,
-    simulate,
-    split_values,
-    start_state,
-)
+from sinktheory.ensemble import engine_name, engine_params, split_values, start_state
+from sinktheory.simulate import simulate
 
 WELL = Well(0.5, 0.3, 4)
 

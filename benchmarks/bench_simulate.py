@@ -55,16 +55,10 @@ from sinktheory import RunSettings, Sink, Well  # noqa: E402
 from sinktheory import symbolic as S
 from sinktheory.engine.printer import _chain
 from sinktheory.engine.systems import sink_system
+from sinktheory.ensemble import random_positions, start_state, total_energy
 from sinktheory.errors import NumericalError
 from sinktheory.integrators import SCHEMES, get_scheme
-from sinktheory.simulate import (
-    PERIOD,
-    first_order_rhs,
-    random_positions,
-    simulate,
-    start_state,
-    total_energy,
-)
+from sinktheory.simulate import PERIOD, first_order_rhs, simulate
 from sinktheory.stepsize import choose
 
 TOLS = (1e-6, 1e-8, 1e-10)

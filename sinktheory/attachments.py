@@ -27,7 +27,7 @@ Impulsive start (the standard test of an absorber): the container at X = 0 with 
 sqrt(2 E), E = ``energy``, every particle at rest (absolute velocity 0: the impulse acts
 on the container alone, so H(0) = E up to the particles' tiny potential energy).  The
 particles start at seeded random positions of a start box, as
-:func:`sinktheory.simulate.random_positions` draws them for ``simulate`` (run r from the
+:func:`sinktheory.ensemble.random_positions` draws them for ``simulate`` (run r from the
 r-th child of the seed), in (-b, b)^2 with b = box sqrt(2 E): the box is relative to the
 container's amplitude sqrt(2 E), so the particles' start potential energy stays a
 negligible share of E at every energy (an absolute box of 0.01 holds about 1e-7 in the
@@ -58,11 +58,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import validation as v
+from .ensemble import random_positions
 from .errors import ParameterError
 from .layout import StateLayout
 from .model import SHAPES, RunSettings, Sink, Well
 from .results import Result
-from .simulate import random_positions
 
 #: The attachments (module docstring).
 KINDS = ("nes", "impact", "well")

@@ -25,21 +25,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import validation as v
+from .ensemble import (
+    ENERGY_BOUND,
+    engine_name,
+    engine_params,
+    split_values,
+    start_state,
+    total_energy,
+)
 from .errors import ParameterError
 from .integrators import DEFAULT_SCHEME, get_scheme
 from .layout import StateLayout
 from .model import RunSettings, Sink, Well
 from .results import Result
-from .simulate import (
-    ENERGY_BOUND,
-    default_step,
-    engine_name,
-    engine_params,
-    simulate,
-    split_values,
-    start_state,
-    total_energy,
-)
+from .simulate import default_step, simulate
 from .stepsize import ladder_step
 from .worklimit import check_particle_steps
 
@@ -249,3 +248,8 @@ def bifurcation(
         transient,
         count,
     )
+
+
+from ._verbs import make_callable as _make_callable  # noqa: E402 (module complete here)
+
+_make_callable(__name__, "bifurcation")

@@ -12,6 +12,19 @@ Two families, kept apart on purpose:
 
 from __future__ import annotations
 
+__all__ = [
+    "BracketError",
+    "EnergyDriftError",
+    "HillIntegrationError",
+    "NonFiniteStateError",
+    "NumericalError",
+    "ParameterError",
+    "PeriodOutOfRangeError",
+    "ShootingError",
+    "StepControlError",
+    "SweepPointError",
+]
+
 
 class ParameterError(ValueError):
     """An input outside the allowed range.
@@ -48,3 +61,25 @@ class EnergyDriftError(NumericalError):
 
 class BracketError(NumericalError):
     """A root finder could not bracket or converge to a root."""
+
+
+class StepControlError(NumericalError):
+    """A run of the adaptive step needed more than its step limit in one period
+    (:data:`sinktheory.adaptive.MAX_STEPS`)."""
+
+
+class ShootingError(NumericalError):
+    """Newton's method on the periodicity conditions of a periodic orbit did not converge."""
+
+
+class SweepPointError(NumericalError):
+    """A point of a sweep failed numerically; the message names the point."""
+
+
+class HillIntegrationError(NumericalError):
+    """The quarter-period integration of Hill's equation did not finish within its step
+    budget."""
+
+
+class PeriodOutOfRangeError(NumericalError):
+    """The period (or A0^(n-1)) is outside float64 range, so the float path cannot run."""

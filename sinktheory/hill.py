@@ -67,7 +67,7 @@ from ._generated import oscillator as _osc
 from ._generated._support import ipow
 from ._generated.oscillator import oscillator_acceleration
 from .dop853 import DEFAULT_RTOL
-from .errors import NonFiniteStateError, NumericalError, ParameterError
+from .errors import HillIntegrationError, NonFiniteStateError, ParameterError
 from .twins import python_kernel
 
 #: Solution pairs are divided by 2^RENORM_BITS when their size exceeds 2^RENORM_BITS.
@@ -131,10 +131,6 @@ for n = 4 (A0^6 and A0^2 must stay within float range)
             why=f"A0^{2 * int(n) - 2} and A0^2 must stay within float range",
         )
     return a
-
-
-class HillIntegrationError(NumericalError):
-    """The quarter-period integration did not finish within its step budget."""
 
 
 @dataclass(frozen=True)

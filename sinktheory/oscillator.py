@@ -76,7 +76,7 @@ import mpmath
 import numpy as np
 
 from . import validation as v
-from .errors import BracketError, NumericalError, ParameterError
+from .errors import BracketError, ParameterError, PeriodOutOfRangeError
 from .model import MAX_N
 from .results import Result
 
@@ -96,10 +96,6 @@ STARTS = ("turning", "zero")
 _PHASE_SHIFT = {"turning": 0.25, "zero": 0.0}
 #: Below this value of z^(2n), F(z) = z to double precision (relative error < 1e-17).
 _LINEAR_W = 1e-17
-
-
-class PeriodOutOfRangeError(NumericalError):
-    """The period (or A0^(n-1)) is outside float64 range, so the float path cannot run."""
 
 
 @dataclass(frozen=True)

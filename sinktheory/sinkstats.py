@@ -35,36 +35,7 @@ import numpy as np
 
 from . import validation as v
 from .errors import ParameterError
-
-
-def _runs(energy_runs) -> np.ndarray:
-    e = np.asarray(energy_runs, dtype=float)
-    if e.ndim == 1:
-        e = e[None, :]
-    if e.ndim != 2 or e.shape[1] < 1:
-        raise ParameterError("energy_runs", f"array of shape {e.shape}", "shape (runs, samples)")
-    if not np.all(np.isfinite(e)):
-        raise ParameterError("energy_runs", "an array with NaN or inf", "finite values")
-    return e
-
-
-def ensemble_mean(energy_runs) -> tuple[np.ndarray, np.ndarray]:
-    """Mean over runs and its standard error (sample std with ddof = 1, over sqrt(R)).
-
-    With a single run the standard error is undefined and returned as zeros; callers
-    that need to tell the difference check the number of runs.
-
-    Examples
-    --------
-    >>> m, se = ensemble_mean([[1.0, 2.0], [3.0, 6.0]])
-    >>> m.tolist(), se.tolist()
-    ([2.0, 4.0], [1.0, 2.0])
-    """
-    e = _runs(energy_runs)
-    mean = e.mean(axis=0)
-    if e.shape[0] == 1:
-        return mean, np.zeros_like(mean)
-    return mean, e.std(axis=0, ddof=1) / np.sqrt(e.shape[0])
+from .runstats import as_runs, ensemble_mean
 
 
 def running_mean(series, window: int) -> np.ndarray:
@@ -177,7 +148,7 @@ def sink_measures(
         Periods skipped before time averaging (default: the first half of the run).
     fractions : fractions f of E0 for the first-passage times.
     """
-    e = _runs(energy_runs)
+    e = as_runs(energy_runs)
     P = e.shape[1] - 1
     transient = (
         P // 2

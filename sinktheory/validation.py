@@ -157,41 +157,6 @@ def flag(name: str, value: object) -> bool:
     return bool(value)
 
 
-def engine_system(name: str, value: object) -> str:
-    """The name of an engine system: ``sink_<shape>_n<N>`` (a shape of the model, N in
-    [1, 1000]) or one of the engine's reference systems (``henon_heiles``, ``duffing2``).
-
-    Examples
-    --------
-    >>> engine_system("system", "sink_flat_n4")
-    'sink_flat_n4'
-    >>> engine_system("system", "sink_flat_n0")
-    Traceback (most recent call last):
-    ...
-    sinktheory.errors.ParameterError: system = 'sink_flat_n0' is not allowed: must be an \
-engine system (sink_<shape>_n<N>, henon_heiles, duffing2) (n = 0 is not allowed: must be \
-an integer in [1, 1000])
-    """
-    from .engine.cache import load
-    from .model import MAX_N, SHAPES
-
-    allowed = "an engine system (sink_<shape>_n<N>, henon_heiles, duffing2)"
-    if not isinstance(value, str):
-        raise ParameterError(name, value, allowed)
-    parts = value.split("_")
-    try:
-        if parts[0] == "sink" and len(parts) == 3 and parts[2][:1] == "n":
-            choice("shape", parts[1], SHAPES)
-            digits = parts[2][1:]
-            positive_int("n", int(digits) if digits.isdigit() else digits, maximum=MAX_N)
-        load(value)
-    except ParameterError as e:
-        raise ParameterError(name, value, allowed, why=str(e)) from None
-    except KeyError:
-        raise ParameterError(name, value, allowed) from None
-    return value
-
-
 def choice(name: str, value: object, options: tuple[str, ...]) -> str:
     """One of a fixed set of names."""
     if not isinstance(value, str) or value not in options:

@@ -67,9 +67,9 @@ import numpy as np
 
 from . import validation as v
 from .billiard.kernels import impact
+from .ensemble import ENERGY_BOUND
 from .errors import EnergyDriftError, NonFiniteStateError, NumericalError, ParameterError
 from .results import Result
-from .simulate import ENERGY_BOUND
 from .stepsize import PERIOD
 
 #: Conservative-advancement steps allowed in one flight before giving up.

@@ -12,9 +12,10 @@ from _cli import run_cli
 
 from sinktheory import ParameterError, RunSettings, Sink, Well
 from sinktheory.adaptive import controller_steps, simulate_adaptive
+from sinktheory.ensemble import random_positions
 from sinktheory.errors import EnergyDriftError
 from sinktheory.layout import StateLayout
-from sinktheory.simulate import random_positions, simulate
+from sinktheory.simulate import simulate
 
 
 def _fig8(n: int, particles: int = 5) -> Sink:

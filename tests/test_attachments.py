@@ -184,7 +184,7 @@ def test_leaving_the_line_follows_the_transverse_exponent():
     within 15 % where lambda_t > 0, and no departure where lambda_t ~ 0."""
     from sinktheory.chaos.general import indicators
     from sinktheory.chaos.sink import transverse_mask
-    from sinktheory.simulate import engine_name, engine_params, split_values
+    from sinktheory.ensemble import engine_name, engine_params, split_values
     from sinktheory.stepsize import resolve_step
 
     E, P = 0.05, 24

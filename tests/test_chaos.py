@@ -24,15 +24,15 @@ from sinktheory.chaos import (
     two_orbit_exponent,
 )
 from sinktheory.chaos.sink import transverse_mask
-from sinktheory.errors import ParameterError
-from sinktheory.floquet import model_hill
-from sinktheory.simulate import (
+from sinktheory.ensemble import (
     engine_name,
     engine_params,
     random_positions,
     split_values,
     start_state,
 )
+from sinktheory.errors import ParameterError
+from sinktheory.floquet import model_hill
 
 T = 2 * math.pi
 STEPS = 800  # steps per container period in these tests (energy error ~1e-12 here)
@@ -345,7 +345,7 @@ def test_chaos_map_verdicts_and_agreement():
     """The verdict rule on a synthetic map: chaotic iff mean - 2 s.e. > 3 ln t / t."""
     import xarray as xr
 
-    from sinktheory.chaos.maps import agreement, threshold
+    from sinktheory.chaos.verdicts import agreement, threshold
 
     thr = threshold(100)
     assert thr == pytest.approx(3 * math.log(200 * math.pi) / (200 * math.pi))

@@ -106,8 +106,8 @@ def test_sections_together_equal_sections_alone():
 def test_staged_exponents_stop_settled_betas_and_keep_the_rest_bitwise():
     """A settled beta's runs stop at a look with the exponent an unstopped run has at that
     time; an unsettled one runs to the end with chaos_batch's numbers, bit for bit."""
-    from sinktheory.chaos.maps import threshold
     from sinktheory.chaos.staged import looks, staged_chaos
+    from sinktheory.chaos.verdicts import threshold
     from sinktheory.sinkstats import ensemble_mean
 
     sinks = [Sink(Well(0.5, b, 2), 1, 0.2) for b in (0.3, -0.3)]

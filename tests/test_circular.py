@@ -21,11 +21,12 @@ from _cli import run_cli as run
 
 from sinktheory import symbolic as S
 from sinktheory._generated.shapes import bundle
+from sinktheory.ensemble import random_positions
 from sinktheory.errors import ParameterError
 from sinktheory.floquet import model_hill, model_problem
 from sinktheory.hill import monodromy_solve_ivp
 from sinktheory.model import SHAPES, RunSettings, Sink, Well
-from sinktheory.simulate import random_positions, simulate
+from sinktheory.simulate import simulate
 from sinktheory.sweep import run_sweep
 
 CIRCULAR = bundle("circular")
@@ -109,7 +110,7 @@ def test_engine_forces_against_the_radial_formula():
     the coupled equations written out here with the radial formula: X'' = -X + sum V_x,
     u_j'' = -V_x / mu, y_j'' = -V_y / mu with mu = m / k (relative 1e-12)."""
     from sinktheory.engine.cache import load
-    from sinktheory.simulate import engine_name, engine_params
+    from sinktheory.ensemble import engine_name, engine_params
 
     alpha, beta, k, m = 0.5, 0.1, 2, 0.2
     sink = Sink(Well(alpha, beta, 4, shape="circular"), particles=k, mass=m)

@@ -105,7 +105,8 @@ def _damped_reference(sink, settings, damping, periods):
     integral of E_c appended: an independent integrator of the same model."""
     from scipy.integrate import solve_ivp
 
-    from sinktheory.simulate import first_order_rhs, random_positions, start_state
+    from sinktheory.ensemble import random_positions, start_state
+    from sinktheory.simulate import first_order_rhs
 
     k, mu, w = sink.particles, sink.mu, sink.well
     f = first_order_rhs(sink)
@@ -156,7 +157,7 @@ def test_dissipative_stage_removes_exactly_the_work_it_counts():
     """One D stage, two particles sharing the container: the engine's energy falls by
     exactly the work W counted (positions frozen); momentum in x is kept."""
     from sinktheory.engine.cache import load
-    from sinktheory.simulate import engine_name, engine_params
+    from sinktheory.ensemble import engine_name, engine_params
 
     engine = load(engine_name(SINK2))
     params = engine.table_of(engine_params(SINK2), 6)

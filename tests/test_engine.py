@@ -16,9 +16,9 @@ from sinktheory import RunSettings, Sink, Well
 from sinktheory import symbolic as S
 from sinktheory.engine.cache import load, sink_name
 from sinktheory.engine.core import Ensemble
+from sinktheory.ensemble import engine_params, random_positions, split_values, start_state
 from sinktheory.errors import ParameterError
 from sinktheory.integrators import get_scheme
-from sinktheory.simulate import engine_params, random_positions, split_values, start_state
 
 RTOL = 1e-12
 STATE = [sp.Rational(3, 10), sp.Rational(4, 10), sp.Rational(1, 10)]

@@ -69,13 +69,13 @@ def entries():
     from sinktheory import RunSettings
     from sinktheory.chaos import chaos, indicators, monodromy, random_vectors
     from sinktheory.chaos import two_orbit_exponent as two_orbit
-    from sinktheory.chaos.maps import beta_grid
     from sinktheory.nnm.agreement import reach_energy
     from sinktheory.nnm.continuation import continue_both, continue_orbits
     from sinktheory.nnm.modes import mode_guess, sink_flow
     from sinktheory.nnm.shooting import shoot
     from sinktheory.nnm.stability import floquet
     from sinktheory.nnm.system import FlowSystem
+    from sinktheory.sweep.chaosmap import beta_grid
 
     small = RunSettings(runs=2, periods=2, seed=1)
     engine = {"q": HH_Q, "v": HH_V, "params": [], "dt": 0.05, "steps": 4, "segments": 2}
@@ -188,13 +188,13 @@ def test_named_cases_of_the_issue():
     """The cases the issue lists, each refused naming its parameter."""
     from sinktheory import RunSettings, Sink, Well
     from sinktheory.chaos import chaos, indicators, random_vectors
-    from sinktheory.chaos.maps import beta_grid, chaos_map
     from sinktheory.nnm.continuation import continue_orbits
     from sinktheory.nnm.modes import mode_guess
     from sinktheory.nnm.shooting import shoot
     from sinktheory.nnm.stability import floquet
     from sinktheory.nnm.system import FlowSystem
     from sinktheory.simulate import simulate
+    from sinktheory.sweep.chaosmap import beta_grid, chaos_map
 
     small = RunSettings(runs=2, periods=2)
     duffing = (np.array([0.1, 0.1, 0.0, 0.0]), 2 * math.pi)

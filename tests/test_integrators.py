@@ -12,8 +12,9 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from sinktheory import ParameterError, RunSettings, Sink, Well
+from sinktheory.ensemble import start_state
 from sinktheory.integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
-from sinktheory.simulate import first_order_rhs, simulate, start_state
+from sinktheory.simulate import first_order_rhs, simulate
 
 
 @pytest.mark.parametrize("name", SCHEMES)

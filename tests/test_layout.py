@@ -4,8 +4,9 @@ import numpy as np
 import pytest
 
 from sinktheory import ParameterError, RunSettings, Sink, Well
+from sinktheory.ensemble import start_state
 from sinktheory.layout import SINK_PARAMS, StateLayout, pack_params
-from sinktheory.simulate import simulate, start_state
+from sinktheory.simulate import simulate
 
 
 def test_blocks_partition_the_row():

@@ -52,7 +52,7 @@ def test_only_the_plot_package_imports_matplotlib():
     "code",
     [
         "import sinktheory.bifurcation, sinktheory.recurrence, sinktheory.series",
-        "import sinktheory.sweep.runner, sinktheory.sweep.kinds, sinktheory.chaos.maps",
+        "import sinktheory.sweep.runner, sinktheory.sweep.kinds, sinktheory.sweep.chaosmap",
         # a sweep worker's work: one bifurcation point computed
         "from sinktheory.sweep.kinds import KINDS\n"
         "k = KINDS['bifurcation']\n"

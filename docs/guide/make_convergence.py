@@ -27,10 +27,11 @@ sys.path.insert(0, str(HERE.parents[1] / "benchmarks"))
 from machine import describe  # noqa: E402
 
 from sinktheory.billiard.convergence import NS, QUANTITIES, convergence, lyapunov_chart  # noqa: E402
-from sinktheory.chaos.maps import beta_grid, chaotic, threshold  # noqa: E402
+from sinktheory.chaos.verdicts import chaotic, threshold  # noqa: E402
 from sinktheory.floquet import model_problem, scan  # noqa: E402
 from sinktheory.model import RunSettings  # noqa: E402
 from sinktheory.plot.convergence import convergence_figure, lyapunov_figure  # noqa: E402
+from sinktheory.sweep.chaosmap import beta_grid  # noqa: E402
 
 ALPHA, RANGE, CHART_NS = 0.5, (-0.7, 0.45), (4, 10, 20)
 #: The tail of the stiffnesses fitted on their own (past the peak of the focusing wells).
@@ -47,7 +48,7 @@ def _pm(mean: float, se: float) -> str:
 
 
 def _verdict(mean: float, se: float, periods: int) -> str:
-    """C (chaotic) or R, as the chaos maps decide (:func:`sinktheory.chaos.maps.chaotic`)."""
+    """C (chaotic) or R, as the chaos maps decide (:func:`sinktheory.chaos.verdicts.chaotic`)."""
     return "C" if chaotic(mean, se, periods) else "R"
 
 

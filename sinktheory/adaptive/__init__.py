@@ -61,7 +61,16 @@ from pathlib import Path
 import numpy as np
 
 from .. import validation as v
-from ..errors import NumericalError, ParameterError
+from ..ensemble import (
+    SimulationResult,
+    SimulationState,
+    engine_params,
+    join_values,
+    prepare,
+    run_parameters,
+    split_values,
+)
+from ..errors import ParameterError, StepControlError
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..model import RunSettings, Sink
 from ..progress import ProgressBar
@@ -81,10 +90,6 @@ BLOCK = 16
 #: The controller's constants: the inner distance factor b of d = b (1 - w) and the
 #: crossing factor c0 (the prototype's choices; phi = w^3 / 3 is written into the kernel).
 _B, _C0 = 1.0, 1.0
-
-
-class StepControlError(NumericalError):
-    """A run of the adaptive step needed more than :data:`MAX_STEPS` steps in a period."""
 
 
 _TEMPLATE = Path(__file__).with_name("_template.py")
@@ -192,8 +197,6 @@ def _control(eps: float, n: int) -> tuple[float, float, float, float]:
 
 def _engine_state(sink: Sink, values: np.ndarray):
     """(module, q, v, parameter table) of state rows (R, 2 + 4k)."""
-    from ..simulate import engine_params, split_values
-
     module = kernels(sink.well.shape, sink.well.n)
     q, vel = (np.ascontiguousarray(a) for a in split_values(np.asarray(values, dtype=float)))
     return module, q, vel, module._engine.table_of(engine_params(sink), q.shape[1])
@@ -224,7 +227,7 @@ def controller_steps(
     --------
     >>> from sinktheory import Sink, Well
     >>> from sinktheory.layout import StateLayout
-    >>> from sinktheory.simulate import start_state
+    >>> from sinktheory.ensemble import start_state
     >>> sink = Sink(Well(0.5, 0.3, 4), particles=1, mass=0.2)
     >>> y0 = start_state(sink, 0.5, np.array([[[0.003, -0.004]]]))
     >>> flip = StateLayout(1).v
@@ -235,8 +238,6 @@ def controller_steps(
     >>> bool(np.abs(back - y0).max() < 1e-12), resets, resets_back
     (True, array([0]), array([0]))
     """
-    from ..simulate import join_values
-
     eps = check_eps(eps)
     count = v.positive_int("count", count)
     module, q, vel, table = _engine_state(sink, values)
@@ -291,32 +292,12 @@ def simulate_adaptive(
     >>> res.final_state.method, res.message.split(":")[0]
     ('adaptive', '1 run(s) x 1 period(s), adaptive blanes-moan6, eps = 0.15')
     """
-    from ..simulate import (
-        SimulationResult,
-        SimulationState,
-        _check_record,
-        _initial_values,
-        default_energy_bound,
-        join_values,
-        run_parameters,
-    )
-
-    settings = RunSettings() if settings is None else settings
-    if not isinstance(sink, Sink):
-        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-    if not isinstance(settings, RunSettings):
-        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
     eps = check_eps(eps)
     scheme = get_scheme(scheme).name
-    record = _check_record(record)
-    if "trajectory" in record:
-        raise ParameterError("record", "trajectory", f"a subset of {RECORDS} (adaptive step)")
-    settings.check_memory(sink, record)
-    bound = v.positive(
-        "energy_bound", default_energy_bound(None) if energy_bound is None else energy_bound
-    )
-    values, t0, h0 = _initial_values(sink, settings, initial, initial_state)
-    runs, periods = values.shape[0], settings.periods
+    begun = prepare(sink, settings, record, initial=initial, initial_state=initial_state,
+                    energy_bound=energy_bound, allowed=RECORDS)  # fmt: skip
+    settings, record, bound, values = begun.settings, begun.record, begun.bound, begun.values
+    t0, h0, runs, periods = begun.time, begun.reference_energy, begun.runs, settings.periods
     check_work(replace(settings, runs=runs), sink, estimated_steps(sink, float(np.max(h0)), eps))
     module, q, vel, table = _engine_state(sink, values)
     K = sink.particles

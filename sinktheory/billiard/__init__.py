@@ -23,3 +23,8 @@ __all__ = [
     "sinai_table",
     "stadium_table",
 ]
+
+
+from .._verbs import make_callable as _make_callable  # noqa: E402 (module complete here)
+
+_make_callable(__name__, "billiard")

@@ -4,7 +4,7 @@ functions of the wall stiffness n, with the observed rate of convergence.
 For one well (shape, alpha, beta), k particles of total mass m and container energy E0,
 each stiffness n of the soft-wall sink and the rigid billiard n = oo (moving container,
 same table, mass ratio and start: :func:`sinktheory.billiard.billiard`) run the same
-seeded ensemble (positions of :func:`sinktheory.simulate.random_positions`, particles at
+seeded ensemble (positions of :func:`sinktheory.ensemble.random_positions`, particles at
 rest, container at X = sqrt(2 E0) at rest).  Three figures per run:
 
 * ``lambda1``: the largest Lyapunov exponent per unit time after ``transient`` periods
@@ -164,7 +164,8 @@ class Measurement(Result):
 def _soft(sink, settings, lyapunov, transient, tol) -> Measurement:
     from ..chaos import chaos
     from ..chaos.sink import start_energy
-    from ..simulate import default_energy_bound, simulate
+    from ..ensemble import default_energy_bound
+    from ..simulate import simulate
     from ..stepsize import resolve_step
 
     periods, runs = settings.periods, settings.runs

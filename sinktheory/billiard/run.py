@@ -6,7 +6,7 @@ velocities absolute (as in :mod:`sinktheory.layout`).
 
 * Moving container (the sink): the container starts at X = sqrt(2 E0) at rest and the
   particles at rest at the seeded random positions of
-  :func:`sinktheory.simulate.random_positions`, exactly as ``sinktheory simulate`` starts
+  :func:`sinktheory.ensemble.random_positions`, exactly as ``sinktheory simulate`` starts
   its runs, but with rigid walls.  lambda_1 by two nearby trajectories (distance
   :data:`SHADOW_DISTANCE` in the full phase space, pulled back :data:`RENORMALISATIONS`
   times a period).
@@ -32,10 +32,10 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ..ensemble import random_positions
 from ..errors import BracketError, EnergyDriftError, ParameterError
 from ..model import RunSettings, Sink, Well
 from ..results import Result
-from ..simulate import random_positions
 from ..validation import positive, positive_int, real_array
 from . import kernels as K
 from .table import Table, rigid_table
@@ -271,7 +271,7 @@ def simulate_billiard(
 
 def start_directions(settings: RunSettings, particles: int) -> np.ndarray:
     """(R, k, 2) unit vectors in seeded random directions, one child seed per run (a
-    stream apart from the positions' of :func:`sinktheory.simulate.random_positions`).
+    stream apart from the positions' of :func:`sinktheory.ensemble.random_positions`).
 
     Examples
     --------

@@ -17,8 +17,9 @@ Jacobian of the discrete flow and is symplectic.  On top of it:
 * :func:`two_orbit_exponent` -- the two-trajectory (Benettin) estimate of lambda_1, an
   independent check that needs no tangent map;
 * :mod:`sinktheory.plot.chaos` -- convergence plots (imports matplotlib when called);
-* :mod:`sinktheory.chaos.maps` -- chaos maps lambda_1(beta) on the sweep layer (the
-  ``chaos`` sweep kind) against the Floquet-stable intervals, for Figs. 3 and 11.
+* :mod:`sinktheory.chaos.verdicts` -- chaotic or regular from the exponents' means and
+  standard errors, and the agreement of a chaos map (:mod:`sinktheory.sweep.chaosmap`,
+  the ``chaos`` sweep kind over beta) with the Floquet-stable intervals.
 
 Every run is seeded (positions as in ``simulate``, deviation vectors from the same seed)
 and bitwise reproducible for any thread count or engine block size.
@@ -53,3 +54,8 @@ __all__ = [
     "symplectic_defect",
     "two_orbit_exponent",
 ]
+
+
+from .._verbs import make_callable as _make_callable  # noqa: E402 (module complete here)
+
+_make_callable(__name__, "chaos")

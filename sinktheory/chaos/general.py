@@ -94,7 +94,9 @@ def check_run(system, q, v, dt, steps, segments, *, per_run: bool = False) -> tu
     system, finite start states q and v of one shape (D, R), dt > 0, and steps and
     segments integers in [1, :data:`~sinktheory.validation.MAX_STEPS_PER_PERIOD`]; with
     ``per_run``, dt and steps may be one per run (arrays (R,), checked entry by entry)."""
-    system = val.engine_system("system", system)
+    from ..engine.cache import engine_system  # numba loads with the first run
+
+    system = engine_system("system", system)
     q = val.real_array("q", q)
     v = val.real_array("v", v)
     if q.ndim != 2 or q.shape != v.shape or 0 in q.shape:

@@ -2,7 +2,7 @@
 
 :func:`chaos` starts the same runs as :func:`sinktheory.simulate.simulate` for the same
 :class:`~sinktheory.model.RunSettings` (container at X = sqrt(2 E0) at rest, particles at
-rest at :func:`~sinktheory.simulate.random_positions`), with the same step, scheme and
+rest at :func:`~sinktheory.ensemble.random_positions`), with the same step, scheme and
 energy audit, and records the indicators once per container period T = 2 pi.
 
 The transverse exponent is that of the invariant subspace y = 0 (every y_j = ydot_j = 0,
@@ -32,10 +32,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .. import validation as val
-from ..errors import ParameterError
-from ..integrators import DEFAULT_SCHEME, get_scheme
-from ..model import RunSettings, Sink
-from ..simulate import (
+from ..ensemble import (
     ENERGY_BOUND,
     engine_name,
     engine_params,
@@ -44,6 +41,9 @@ from ..simulate import (
     start_state,
     total_energy,
 )
+from ..errors import ParameterError
+from ..integrators import DEFAULT_SCHEME, get_scheme
+from ..model import RunSettings, Sink
 from ..stepsize import aligned_step
 from ..worklimit import check_particle_steps, step_of, tangent_steps
 from .general import (

@@ -2,7 +2,7 @@
 
 A chaos map calls a beta chaotic when the mean finite-time exponent of its runs minus two
 standard errors exceeds THRESHOLD_FACTOR ln t / t at the end of the run
-(:mod:`sinktheory.chaos.maps`).  Most betas of the paper's maps are clearly chaotic long
+(:mod:`sinktheory.chaos.verdicts`).  Most betas of the paper's maps are clearly chaotic long
 before the end, so the runs are looked at on the way (:data:`LOOKS`): at a quarter of the
 periods a group of runs (one beta) stops if its mean minus **four** standard errors exceeds
 the threshold at that time, at half the periods if it exceeds it by **three**.  The
@@ -37,9 +37,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..simulate import ENERGY_BOUND
+from ..ensemble import ENERGY_BOUND
 from ..sinkstats import ensemble_mean
-from .maps import threshold
+from .verdicts import threshold
 
 if TYPE_CHECKING:
     from ..engine.core import Ensemble
@@ -88,8 +88,8 @@ def staged_chaos(sinks, settings, *, dt, transverse: bool, method: str,
     exponents of ``chaos_batch`` (and of ``chaos`` alone) with the same step.  ``dt``: one
     step, or one per set-up (as for ``chaos_batch``).
     """
+    from ..ensemble import engine_name
     from ..integrators import get_scheme
-    from ..simulate import engine_name
     from .sink import _join, _params, _per_run, _Point, _vectors, point_steps, transverse_mask
 
     points = [_Point.of(k, s, transverse, None) for k, s in zip(sinks, settings, strict=True)]

@@ -3,7 +3,7 @@
 Deviation vectors live in the engine's coordinates (q, v) (positions and velocities, see
 :class:`sinktheory.engine.core.Ensemble`).  Run r draws its vectors from
 ``SeedSequence(seed, spawn_key=(r, 0))`` -- the first child of the seed that
-:func:`sinktheory.simulate.random_positions` gives run r -- so they depend only on the seed
+:func:`sinktheory.ensemble.random_positions` gives run r -- so they depend only on the seed
 and r, never on how runs are spread over threads.  The columns are orthonormalised by
 modified Gram-Schmidt in plain numpy (no LAPACK, whose results may depend on threads).
 

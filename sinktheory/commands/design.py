@@ -187,7 +187,7 @@ def _run(args: argparse.Namespace) -> Output:
     if store.exists() and not args.resume:
         raise ParameterError("out", args.out, "a new store", why="it exists; --resume continues it")
     from ..design.explorer import DesignRun, plan, todo_of  # xarray, zarr: when exploring
-    from ..design.report import label
+    from ..plot.design import label
     from ..sweep.runner import execute
 
     sweep = plan(params_of(args), args.seed)

@@ -165,8 +165,8 @@ def _fixed_scan(well, result):
 
 def _agreement(args, sink, energy, lo, hi, plot) -> Output:
     """--agreement: the chart on a beta grid scored against a chaos map."""
-    from ..chaos.maps import beta_grid, chaos_map
     from ..nnm.agreement import agreement_report, transverse_chart
+    from ..sweep.chaosmap import beta_grid, chaos_map
 
     well = sink.well
     betas = beta_grid([(lo, hi)], args.agreement)

@@ -98,12 +98,7 @@ import numpy as np
 
 from .. import validation as v
 from ..engine.cache import load
-from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
-from ..integrators import get_scheme
-from ..layout import StateLayout
-from ..model import RunSettings, Sink
-from ..progress import ProgressBar
-from ..simulate import (
+from ..ensemble import (
     ENERGY_BOUND,
     engine_name,
     engine_params,
@@ -111,8 +106,12 @@ from ..simulate import (
     split_values,
     start_state,
 )
+from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
+from ..integrators import get_scheme
+from ..layout import StateLayout
+from ..model import DAMPING_KINDS, RunSettings, Sink
+from ..progress import ProgressBar
 from ..stepsize import DEFAULT_TOL, PERIOD, check_tol, resolve_step
-from .measures import DAMPING_KINDS
 
 _RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
 

@@ -280,9 +280,6 @@ def _rqa(series: np.ndarray, eps: float) -> dict:
 LINE_ATTACHMENTS = ("nes", "impact")
 #: Every attachment the design explorer compares: the 2-D well and the 1-D absorbers.
 ATTACHMENTS = ("well", *LINE_ATTACHMENTS)
-#: How the particles lose energy: a contact weight, or a dashpot to the container
-#: (:mod:`sinktheory.design.inelastic`).
-DAMPING_KINDS = ("contact", "viscous")
 
 
 def design_measures(

@@ -67,11 +67,11 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
-from ..model import MAX_PERIODS, RunSettings, Sink, Well
+from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings, Sink, Well
 from ..sinkstats import ensemble_mean
 from ..stepsize import check_tol
 from ..worklimit import check_particle_steps, step_of, tangent_steps
-from .measures import DAMPING_KINDS, RQA_MEASURES, design_measures, horizons_of
+from .measures import RQA_MEASURES, design_measures, horizons_of
 
 #: Results of a point that come from its ensemble (besides the container energy).
 ENSEMBLE_RESULTS = (

@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..plot.design import label, swept
 from .measures import VERDICTS
 from .ranking import rank
 
@@ -38,24 +39,6 @@ def fmt(x: float, se: float | None = None, digits: int = 3) -> str:
     if se is not None and math.isfinite(se):
         text += f" ± {se:.{digits}f}"
     return text
-
-
-def swept(ds) -> list[str]:
-    """Swept parameters of a design dataset (the dimensions of ``done``)."""
-    return list(ds.done.dims)
-
-
-def label(value) -> str:
-    """A parameter value as a person would type it (floats without round-off).
-
-    Examples
-    --------
-    >>> label(-0.5 + 0.09), label(np.float64(0.4)), label("flat"), label(5)
-    ('-0.41', '0.4', 'flat', '5')
-    """
-    if isinstance(value, float | np.floating):
-        return f"{float(value):g}"
-    return str(value)
 
 
 def is_damped(ranked: list) -> bool:

@@ -29,6 +29,7 @@ from pathlib import Path
 import llvmlite.binding as _llvm
 
 from .. import __version__
+from ..errors import ParameterError
 
 # The engine's loops run over the runs of a block (often 8-32 of them).  LLVM's default
 # vectoriser interleaves 4 vector iterations, so a loop of fewer than 16 runs fell back to
@@ -136,3 +137,38 @@ def import_generated(path: Path, text, module_name: str):
     sys.modules[module_name] = module
     spec.loader.exec_module(module)
     return module
+
+
+def engine_system(name: str, value: object) -> str:
+    """The name of an engine system: ``sink_<shape>_n<N>`` (a shape of the model, N in
+    [1, 1000]) or one of the engine's reference systems (``henon_heiles``, ``duffing2``).
+
+    Examples
+    --------
+    >>> engine_system("system", "sink_flat_n4")
+    'sink_flat_n4'
+    >>> engine_system("system", "sink_flat_n0")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: system = 'sink_flat_n0' is not allowed: must be an \
+engine system (sink_<shape>_n<N>, henon_heiles, duffing2) (n = 0 is not allowed: must be \
+an integer in [1, 1000])
+    """
+    from ..model import MAX_N, SHAPES
+    from ..validation import choice, positive_int
+
+    allowed = "an engine system (sink_<shape>_n<N>, henon_heiles, duffing2)"
+    if not isinstance(value, str):
+        raise ParameterError(name, value, allowed)
+    parts = value.split("_")
+    try:
+        if parts[0] == "sink" and len(parts) == 3 and parts[2][:1] == "n":
+            choice("shape", parts[1], SHAPES)
+            digits = parts[2][1:]
+            positive_int("n", int(digits) if digits.isdigit() else digits, maximum=MAX_N)
+        load(value)
+    except ParameterError as e:
+        raise ParameterError(name, value, allowed, why=str(e)) from None
+    except KeyError:
+        raise ParameterError(name, value, allowed) from None
+    return value

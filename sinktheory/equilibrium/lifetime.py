@@ -384,8 +384,8 @@ def measure_lifetimes(
     >>> c.samples, c.runs, round(c.law.energy, 6)
     (41, 2, 0.5)
     """
-    from ..equilibrium import equilibrium_law
     from ..simulate import simulate
+    from .law import equilibrium_law
 
     settings.check(sink)
     v.positive_int("transient", transient, minimum=0, maximum=settings.periods - 4)

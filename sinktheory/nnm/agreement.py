@@ -18,9 +18,9 @@ beta at fixed E (:func:`transverse_chart`) and corrected by shooting at each bet
 grid; its transverse (y) multipliers decide stability: |phi_T/2| <= 1 is stable.
 
 Agreement (:func:`agreement_report`).  On one beta grid, the chaos map's verdict per beta
-(:func:`sinktheory.chaos.maps.verdicts`: chaotic when mean lambda_1 - 2 s.e. exceeds
+(:func:`sinktheory.chaos.verdicts.verdicts`: chaotic when mean lambda_1 - 2 s.e. exceeds
 3 ln t / t) is compared with each theory's prediction (stable <-> regular): the share of
-grid betas where they coincide, by :func:`sinktheory.chaos.maps.agreement` for both.
+grid betas where they coincide, by :func:`sinktheory.chaos.verdicts.agreement` for both.
 
 Examples
 --------
@@ -202,7 +202,7 @@ def agreement_report(
     sink, energy, betas : as for :func:`transverse_chart` (the chaos map uses the same
         well, particles, mass and energy).
     chaos : xarray.Dataset, optional
-        A chaos map over exactly ``betas`` (:func:`sinktheory.chaos.maps.chaos_map`);
+        A chaos map over exactly ``betas`` (:func:`sinktheory.sweep.chaosmap.chaos_map`);
         computed with ``runs``, ``periods``, ``dt``, ``seed``, ``workers`` otherwise.
     chart : TransverseChart, optional
         :func:`transverse_chart` over exactly ``betas`` (computed otherwise).
@@ -218,8 +218,9 @@ def agreement_report(
         ``beta``, ``phi_half_nnm``, ``phi_half_floquet``, ``lambda1``, ``lambda1_se``,
         ``chaotic_verdict`` for plotting.
     """
-    from ..chaos.maps import agreement, chaos_map, verdicts
+    from ..chaos.verdicts import agreement, verdicts
     from ..floquet import model_problem
+    from ..sweep.chaosmap import chaos_map
 
     betas = np.asarray(betas, dtype=float)
     w = sink.well

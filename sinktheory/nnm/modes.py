@@ -44,7 +44,7 @@ MODES = ("container", "particle")
 def sink_flow(sink: Sink, scheme: str | None = None) -> FlowSystem:
     """The :class:`FlowSystem` of a :class:`~sinktheory.model.Sink` (engine name and
     parameters as :mod:`sinktheory.simulate` defines them)."""
-    from ..simulate import engine_name, engine_params
+    from ..ensemble import engine_name, engine_params
 
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")

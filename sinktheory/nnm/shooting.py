@@ -60,7 +60,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import validation as v
-from ..errors import NumericalError, ParameterError
+from ..errors import NumericalError, ParameterError, ShootingError
 from .stability import Floquet, floquet
 from .system import FlowSystem
 
@@ -74,10 +74,6 @@ MAX_STEP = 0.25
 #: round-off long before (sixth order: (h omega)^6 ~ 1e-16 near 500 steps per fastest
 #: oscillation), and every Newton iteration carries 2D tangent vectors over them.
 MAX_SHOOT_STEPS = 10**6
-
-
-class ShootingError(NumericalError):
-    """Newton's method on the periodicity conditions did not converge."""
 
 
 @dataclass

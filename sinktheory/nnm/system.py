@@ -40,6 +40,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import validation as val
+from ..engine.cache import engine_system
 from ..engine.core import Ensemble
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, get_scheme
@@ -83,7 +84,7 @@ class FlowSystem:
     masses: np.ndarray = field(init=False)
 
     def __post_init__(self) -> None:
-        self.system = val.engine_system("system", self.system)
+        self.system = engine_system("system", self.system)
         self.params = np.ascontiguousarray(val.real_array("params", self.params)).reshape(-1)
         self.members = val.positive_int("members", self.members, minimum=0, maximum=MAX_RUNS)
         names = parameter_names(self.system)

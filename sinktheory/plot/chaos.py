@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..chaos import maps
+from ..chaos import verdicts
 from ..chaos.result import ChaosResult
 
 #: GALI values below this are round-off (unit vectors parallel to machine precision).
@@ -113,8 +113,8 @@ def draw_map(ds, stable_intervals, ax, *, title: str = "") -> None:
     if "transverse" in ds and np.isfinite(ds.transverse.values).all():
         ax.plot(beta, ds.transverse.values, "s--", color="C1", ms=2.5, lw=0.8,
                 label="transverse (y = 0)")  # fmt: skip
-    ax.axhline(maps.threshold(int(ds.attrs["periods"])), color="k", lw=0.6, ls=":",
-               label=f"{maps.THRESHOLD_FACTOR:g} ln t / t")  # fmt: skip
+    ax.axhline(verdicts.threshold(int(ds.attrs["periods"])), color="k", lw=0.6, ls=":",
+               label=f"{verdicts.THRESHOLD_FACTOR:g} ln t / t")  # fmt: skip
     ax.plot([], [], color="tab:green", alpha=0.4, lw=6, label="Floquet-stable y = 0")
     ax.set_xlabel(r"$\beta$")
     ax.set_ylabel(r"$\lambda_1$ (per unit time)")
@@ -123,25 +123,3 @@ def draw_map(ds, stable_intervals, ax, *, title: str = "") -> None:
     ax.legend(fontsize="small", loc="upper left")
     if title:
         ax.set_title(title, fontsize="medium")
-
-
-def figure_maps(figure: int, **options):
-    """Chaos maps for the panels of Fig. 3 or Fig. 11, one axes each, beside the
-    Floquet-stable intervals.
-
-    ``options`` go to :func:`sinktheory.chaos.maps.figure_panels` (points, runs, periods,
-    workers, progress).  Returns (matplotlib Figure, {panel label: agreement dict}).
-    """
-    from matplotlib.figure import Figure
-
-    panels = maps.figure_panels(figure, **options)
-    fig = Figure(figsize=(7.5, 3.6 * len(panels)), layout="constrained")
-    axes = np.atleast_1d(fig.subplots(len(panels), 1))
-    for p, ax in zip(panels, axes, strict=True):
-        ds = p["map"]
-        title = (
-            f"Fig. {figure}, {p['label']}: {ds.attrs['runs']} runs x "
-            f"{ds.attrs['periods']} periods per beta"
-        )
-        draw_map(ds, p["stable_intervals"], ax, title=title)
-    return fig, {p["label"]: p["agreement"] for p in panels}

@@ -31,7 +31,24 @@ from itertools import combinations
 
 import numpy as np
 
-from ..design.report import label, swept
+
+def swept(ds) -> list[str]:
+    """Swept parameters of a design dataset (the dimensions of ``done``)."""
+    return list(ds.done.dims)
+
+
+def label(value) -> str:
+    """A parameter value as a person would type it (floats without round-off).
+
+    Examples
+    --------
+    >>> label(-0.5 + 0.09), label(np.float64(0.4)), label("flat"), label(5)
+    ('-0.41', '0.4', 'flat', '5')
+    """
+    if isinstance(value, float | np.floating):
+        return f"{float(value):g}"
+    return str(value)
+
 
 #: (title, how to make the measure from the dataset, reduce with "max" or "min", colormap)
 HEAT = (

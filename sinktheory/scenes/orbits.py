@@ -3,7 +3,7 @@ beside each the chaos map lambda_1(beta) that decides regular or irregular.
 
 Each panel needs single-particle sections (:mod:`sinktheory.bifurcation`), the maximal
 Lyapunov exponent and the transverse exponent of y = 0 on the same betas
-(:mod:`sinktheory.chaos.maps`), both computed through the sweep layer, and the stability
+(:mod:`sinktheory.sweep.chaosmap`), both computed through the sweep layer, and the stability
 scan of the fixed-container normal mode (:mod:`sinktheory.floquet`).  A beta is chaotic
 when the ensemble's lambda_1 minus two standard errors exceeds 3 ln t / t (a regular
 orbit's finite-time exponent decays like ln t / t); the report gives how often (a) the
@@ -14,11 +14,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..chaos.maps import THRESHOLD_FACTOR, agreement, beta_grid, chaos_map, verdicts
+from ..chaos.verdicts import THRESHOLD_FACTOR, agreement, verdicts
 from ..floquet import model_problem, scan
 from ..model import confining_betas
 from ..plot.paper import orbit_figure, orbit_panel
 from ..sweep import run_sweep
+from ..sweep.chaosmap import beta_grid, chaos_map
 from ..sweep.views import bifurcation_diagram
 from .base import FAILS, HOLDS, UNDECIDED, Claim, Scene, SceneResult
 

@@ -55,13 +55,14 @@ import numpy as np
 
 from .. import validation as v
 from ..bifurcation import QUANTITIES
-from ..design.measures import ATTACHMENTS, DAMPING_KINDS
+from ..design.measures import ATTACHMENTS
 from ..dop853 import DEFAULT_RTOL
+from ..ensemble import ENERGY_BOUND
 from ..equilibrium import ergodicity as _ergodicity
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
-from ..model import MAX_PERIODS, SHAPES, RunSettings, Sink, Well
-from ..simulate import ENERGY_BOUND, simulate
+from ..model import DAMPING_KINDS, MAX_PERIODS, SHAPES, RunSettings, Sink, Well
+from ..simulate import simulate
 from ..worklimit import check_work, step_of
 
 REQUIRED = object()

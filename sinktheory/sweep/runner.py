@@ -49,7 +49,7 @@ import numpy as np
 import xarray as xr
 
 from .. import validation as v
-from ..errors import NumericalError, ParameterError
+from ..errors import NumericalError, ParameterError, SweepPointError
 from ..progress import ProgressBar
 from ..worklimit import resumable
 from .kinds import KINDS, Kind
@@ -58,10 +58,6 @@ from .store import MemoryStore, SweepStore, _checked_path
 
 #: Below this many seconds of estimated work, local processes are not worth starting.
 POOL_THRESHOLD = 2.0
-
-
-class SweepPointError(NumericalError):
-    """A point of a sweep failed numerically; the message names the point."""
 
 
 class DamagedStoreWarning(UserWarning):
