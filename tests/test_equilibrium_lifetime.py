@@ -130,38 +130,3 @@ def test_fig8_late_distribution_and_returns_agree_with_the_law(k, transient):
     assert abs(c.mean - c.law.mean) < 3 * c.mean_stderr
     assert np.all(np.abs(c.return_time_z()) < 3), (c.return_time, c.kac_periods)
     assert c.kac_periods == pytest.approx(1 / c.law.tail(c.fractions), rel=1e-15)
-
-
-def test_relaxation_of_a_known_exponential_approach():
-    # mean 0.2 + 0.3 exp(-t / 150) with autocorrelated noise (AR(1), phi = 0.9): the fit
-    # recovers tau within 3 jackknife errors over 12 independent ensembles on average,
-    # and the first window in the 2-sigma band starts where the exact curve enters it
-    # (|0.3 exp(-t/150)| = 2 s, s the window's standard error) to within a few windows.
-    from sinktheory.equilibrium.relaxation import measure_relaxation
-
-    rng = np.random.default_rng(4)
-    t = np.arange(3001)
-    zs, settles = [], []
-    for _ in range(12):
-        noise = signal.lfilter([1.0], [1.0, -0.9], rng.standard_normal((16, t.size)), axis=1)
-        runs = 0.2 + 0.3 * np.exp(-t / 150.0) + 0.01 * noise
-        r = measure_relaxation(runs, 0.2, window=50)
-        zs.append((r.rate_time - 150) / r.rate_stderr)
-        settles.append(r.settle_time)
-        assert r.chi2 < 3 and abs(r.late_z) < 4
-    band = 2 * np.median(r.stderr)
-    exact = 150 * math.log(0.3 / band)
-    assert abs(np.mean(zs)) < 1.5 and np.std(zs) < 2.5
-    assert abs(np.median(settles) - exact) < 150
-
-
-def test_relaxation_never_settling_is_nan():
-    from sinktheory.equilibrium.relaxation import measure_relaxation
-
-    runs = 0.3 + 0.001 * np.random.default_rng(1).standard_normal((5, 400))
-    r = measure_relaxation(runs, 0.2, window=20)
-    assert math.isnan(r.settle_time) and r.late_z > 10
-    with pytest.raises(ParameterError, match="energy_runs"):
-        measure_relaxation(runs[:2], 0.2)
-    with pytest.raises(ParameterError, match="window"):
-        measure_relaxation(runs, 0.2, window=200)
