@@ -49,6 +49,25 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_json(parser)
 
 
+def _pm(value: float, stderr: float) -> str:
+    """'value +- error' in 17 characters; says 'not seen' or 'no error' instead of NaN."""
+    import math
+
+    if not math.isfinite(value):
+        return f"{'not seen':<17s}"
+    if not math.isfinite(stderr):
+        return f"{value:<8.4g} no error"
+    return f"{value:.4g} +- {stderr:.2g}".ljust(17)
+
+
+def _autocorrelation(tau: float, effective: float) -> str:
+    import math
+
+    if not math.isfinite(tau):
+        return "autocorrelation time not measurable (runs shorter than ~12 of it)"
+    return f"autocorrelation time {tau:.3g} periods ({effective:.3g} effective samples)"
+
+
 def run(args: argparse.Namespace) -> Output:
     import numpy as np
 
@@ -78,22 +97,24 @@ def run(args: argparse.Namespace) -> Output:
         f"{sink.well.shape} well alpha={law.alpha:g} beta={law.beta:g} n={law.n}, "
         f"k={law.particles}, m={sink.mass:g}, E0={settings.energy:g} (total E={law.energy:.6g})",
         f"  {sim.message}",
-        f"  kept {c.runs} runs x {c.samples} periods after {c.transient}; autocorrelation time "
-        f"{c.autocorrelation_time:.3g} periods ({c.effective_samples:.3g} effective samples)",
+        f"  kept {c.runs} runs x {c.samples} periods after {c.transient}; "
+        + _autocorrelation(c.autocorrelation_time, c.effective_samples),
         f"  <E_c>  measured {c.mean:.6g} +- {c.mean_stderr:.2g}, law {law.mean:.6g}, "
         f"homogeneous estimate {law.homogeneous_mean:.6g}",
         f"  KS distance to the law {c.ks_distance:.3g}, run-bootstrap p-value {c.ks_pvalue:.3g}",
         "  f      P law       occupation        return time: Kac   measured          "
-        "entry interval: measured  (sojourn / P)",
+        "(seen whole)       entry interval: measured  (sojourn / P)",
     ]
     for i, f in enumerate(c.fractions):
-        lines.append(
+        row = (
             f"  {f:<5g}  {c.tails[i]:<10.4g}"
-            f"  {c.occupation[i]:.4g} +- {c.occupation_stderr[i]:<6.2g}"
-            f"  {c.kac_periods[i]:<9.4g}  {c.return_time[i]:.4g} +- {c.return_time_stderr[i]:<6.2g}"
-            f"  {c.entry_interval[i]:.4g} +- {c.entry_interval_stderr[i]:<6.2g}"
-            f"  ({c.entry_interval_predicted[i]:.4g})"
+            f"  {_pm(c.occupation[i], c.occupation_stderr[i])}"
+            f"  {c.kac_periods[i]:<9.4g}  {_pm(c.return_time[i], c.return_time_stderr[i])}"
+            f"  {_pm(c.observed_return[i], c.observed_return_stderr[i])}"
+            f"  {_pm(c.entry_interval[i], c.entry_interval_stderr[i])}"
+            + ("" if np.isnan(c.sojourn[i]) else f"  ({c.entry_interval_predicted[i]:.4g})")
         )
+        lines.append(row.rstrip())
     out = Output(data, "\n".join(lines))
     if plot is not None:
         from ..plot.equilibrium import plot_lifetimes

@@ -8,8 +8,9 @@
 * :mod:`~sinktheory.equilibrium.lifetime` -- measured return times, sojourns, entry
   intervals, autocorrelation times and a run-bootstrap KS comparison of simulated runs
   with the law;
-* :mod:`~sinktheory.equilibrium.relaxation` -- when the ensemble mean of E_c reaches the
-  law's mean (first passage into a band of standard errors) and the exponential rate;
+* :mod:`~sinktheory.equilibrium.relaxation` -- when the ensemble mean of E_c settles
+  within a fraction of the law's mean (crossing of a fitted stretched exponential, with a
+  bootstrap interval over runs that does not move with their number);
 * :mod:`~sinktheory.equilibrium.ergodicity` -- the ergodicity map: the runs' distance
   from the law beside lambda_1, point by point (also the sweep kind ``ergodicity``).
 """

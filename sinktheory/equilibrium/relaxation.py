@@ -2,27 +2,51 @@
 
 The rule
 --------
-Cut the runs (R, P + 1) into windows of W periods.  Window i has the mean b_i over runs
-and periods in it, and the standard error s_i of that mean from the spread of the runs'
-own window means (runs are independent).  The **settling time** is the start (in periods)
-of the first window whose mean lies within ``z`` standard errors of the law's mean mu,
-|b_i - mu| <= z s_i; its error is the delete-one-run jackknife of the whole rule, and it
-is NaN when no window gets there (run longer).  A first passage says when the mean
-arrives, not that it stays: ``late_z`` = (mean of the second half of the windows - mu) /
-its standard error says whether the runs' late mean agrees with the law.
+Let mu be the law's mean <E_c> and x(t) = (<E_c>(t) - mu) / mu the relative excess of
+the ensemble mean.  The **settling time** t_f is when the excess has fallen to a stated
+fraction f of the law's mean (default 5 %): |x(t_f)| = f.
 
-Where the approach is exponential, b_i - mu = A exp(-t_i / tau) is fitted by weighted
-least squares over the windows (t_i the window centres, weights 1 / s_i^2) with mu
-fixed; tau's error is again the jackknife over runs, and the fit's reduced chi-square
-says whether the exponential describes the approach (near 1) or not (>> 1).
+Near t_f the excess is of the order of the run-to-run noise: for Fig. 8's five particles
+one run's E_c fluctuates by about its own mean, with an autocorrelation time of ~1500
+periods, so 64 runs see the mean curve only to ~10 % of mu in any window.  The first
+time a noisy curve dips below f therefore comes earlier the noisier the curve, i.e. the
+fewer the runs (the rule used before this one moved from 1150 periods with 8 runs to
+3100 with 48).  The rule here reads t_f off a smooth curve fitted to the whole approach,
+so that its expected value does not depend on the number of runs R:
+
+1. Cut the runs (R, P + 1) into windows of W periods; window i has the ensemble mean
+   x_i of the runs' window means (as excess over mu) and the standard error s_i of x_i
+   from the spread of those R window means (runs are independent, so s_i needs no
+   correction for the autocorrelation inside a run).
+2. Fit the stretched exponential x(t) = A exp(-(t / tau)^b) to the x_i at the window
+   centres t_i by least squares weighted with 1 / s_i^2 (the relative weights, and so
+   the fitted curve's expected value, do not depend on R).  b = 1 is one exponential;
+   b < 1 says the approach slows down as it goes on (the Fig. 8 set-up: b ~ 0.75, and an
+   exponential's tau grows from ~800 to ~1080 periods as its fit starts later); the
+   reduced chi-square says whether the fitted curve describes the windows (near 1) or
+   not (>> 1).
+3. t_f = tau (ln(|A| / f))^(1 / b), the fitted curve's crossing of f (0 when |A| <= f).
+   It is NaN when the crossing lies beyond the record (run longer); ``late_z``, the
+   late half's mean minus mu in its standard errors, says whether the runs reach the law
+   at all.
+
+Errors come from the bootstrap over runs: B ensembles of R runs drawn with replacement
+from the R runs (whole runs, which keeps each run's autocorrelation: a block bootstrap
+with runs as blocks), each fitted like the data.  The interval of t_f is the percentile
+interval at ``level``; tau and b get the bootstraps' standard deviations, and the curve
+a pointwise percentile band.  More runs narrow the interval about as 1 / sqrt(R) and do
+not move it (tests/test_relaxation.py; benchmarks/bench_relaxation.py measures the
+coverage).  Where the stretched exponential does not describe the approach (chi2 >> 1),
+t_f is the crossing of the best-fitting member of the family, not of the curve itself.
 
 Examples
 --------
 >>> rng = np.random.default_rng(0)
->>> t = np.arange(2001)
->>> runs = 0.2 + 0.3 * np.exp(-t / 150.0) + 0.02 * rng.standard_normal((16, t.size))
->>> r = measure_relaxation(runs, 0.2, window=50)
->>> abs(r.rate_time / 150 - 1) < 0.1, 300 < r.settle_time < 1200
+>>> t = np.arange(4001)
+>>> runs = 0.2 * (1 + 3 * np.exp(-t / 400.0)) + 0.02 * rng.standard_normal((16, t.size))
+>>> r = measure_relaxation(runs, 0.2, resamples=99)
+>>> exact = 400 * math.log(3 / 0.05)  # 1638 periods
+>>> bool(r.settle_low < exact < r.settle_high), abs(r.stretch - 1) < 0.1
 (True, True)
 """
 
@@ -37,142 +61,191 @@ from .. import validation as v
 from ..errors import ParameterError
 from ..results import Result
 
+#: Bootstrap ensembles of runs drawn for the errors.
+BOOTSTRAP = 999
+#: Range of the stretching exponent b allowed in the fit.
+STRETCH_RANGE = (0.2, 5.0)
+
 
 @dataclass(frozen=True)
 class Relaxation(Result):
-    """The settling of the ensemble mean at ``target`` (module docstring).
+    """The approach of the ensemble mean to ``target`` (module docstring).
 
     Attributes
     ----------
-    target : the law's mean <E_c>
-    window, z : window length (periods) and the tolerance in standard errors
-    times : window centres (periods); ``means``, ``stderr``: b_i and s_i
-    settle_time, settle_stderr : start of the first window in the band, jackknife error
-    late_z : (late mean - mu) / its standard error, over the second half of the windows
-    rate_time, rate_stderr : tau of the exponential fit and its jackknife error
-    amplitude : A of the fit
-    chi2 : reduced chi-square of the fit
+    target : the law's mean mu
+    fraction : f, the relative excess that counts as settled
+    window, runs, level, resamples : periods per window, runs R, confidence level of the
+        intervals, bootstrap ensembles B
+    times : window centres (periods)
+    means, stderr : ensemble mean of E_c per window and its standard error across runs
+    low, high : pointwise bootstrap band of ``means`` at ``level``
+    settle_time : t_f, the fitted curve's crossing of f (NaN beyond the record)
+    settle_low, settle_high : bootstrap percentile interval of t_f at ``level``
+    amplitude : A; ``rate_time``, ``rate_stderr``: tau and its bootstrap error;
+        ``stretch``, ``stretch_stderr``: b and its bootstrap error
+    chi2 : reduced chi-square of the fit (degrees of freedom: windows - 3)
+    late_z : (mean over the second half of the windows - mu) / its standard error
     """
 
     target: float
+    fraction: float
     window: int
-    z: float
+    runs: int
+    level: float
+    resamples: int
     times: np.ndarray
     means: np.ndarray
     stderr: np.ndarray
+    low: np.ndarray
+    high: np.ndarray
     settle_time: float
-    settle_stderr: float
-    late_z: float
+    settle_low: float
+    settle_high: float
+    amplitude: float
     rate_time: float
     rate_stderr: float
-    amplitude: float
+    stretch: float
+    stretch_stderr: float
     chi2: float
+    late_z: float
 
-    DIMS = {"means": ("time",), "stderr": ("time",)}
+    DIMS = {name: ("time",) for name in ("means", "stderr", "low", "high")}
     COORDS = {"times": "time"}
 
 
-def _windows(e: np.ndarray, window: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    count = e.shape[1] // window
-    per_run = e[:, : count * window].reshape(e.shape[0], count, window).mean(axis=2)
-    times = (np.arange(count) + 0.5) * window
-    return times, per_run.mean(axis=0), per_run.std(axis=0, ddof=1) / math.sqrt(e.shape[0])
+def _curve(weights: np.ndarray, window_means: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Means and standard errors over runs of ``window_means`` (R, n) for ensembles given
+    as run counts ``weights`` (E, R) summing to R: returns two arrays (E, n)."""
+    R = window_means.shape[0]
+    mean = weights @ window_means / R
+    square = weights @ window_means**2 / R
+    var = np.maximum(square - mean**2, 0.0) * R / (R - 1)
+    return mean, np.sqrt(var / R)
 
 
-def _settle(times, means, stderr, target, z, window) -> float:
-    inside = np.flatnonzero(np.abs(means - target) <= z * stderr)
-    return float(times[inside[0]] - 0.5 * window) if inside.size else math.nan
+def _model(p: np.ndarray, t: np.ndarray, sign: float) -> np.ndarray:
+    """sign exp(p0 - (t / tau)^b) with p = (ln|A|, ln tau, ln b)."""
+    return sign * np.exp(p[0] - (t / math.exp(p[1])) ** math.exp(p[2]))
 
 
-def _fit(times, means, stderr, target) -> tuple[float, float, float]:
-    """(tau, A, reduced chi2) of b - mu = A exp(-t / tau), weighted by 1 / s^2, with tau
-    bounded to [t_0 / 10, 100 x the span] (NaN when the fit fails)."""
-    from scipy.optimize import curve_fit
+def _fit(t, x, s, sign, start) -> tuple[np.ndarray, float]:
+    """Weighted least-squares parameters (ln|A|, ln tau, ln b) and the sum of squared
+    normalised residuals, from ``start``."""
+    from scipy.optimize import least_squares
 
-    d = means - target
-    sigma = np.where(stderr > 0, stderr, np.min(stderr[stderr > 0], initial=1.0))
-    if d[0] == 0 or times.size < 3:
-        return math.nan, math.nan, math.nan
-    span = float(times[-1] + times[0])
-    below = np.flatnonzero(np.abs(d) < abs(d[0]) / math.e)  # first 1/e crossing
-    guess = float(min(max(times[below[0]] if below.size else span, times[0]), 10 * span))
+    def residuals(p):
+        return (_model(p, t, sign) - x) / s
 
-    def model(t, a, tau):
-        return a * np.exp(-t / tau)
+    def jacobian(p):
+        b = math.exp(p[2])
+        u = (t / math.exp(p[1])) ** b
+        m = _model(p, t, sign) / s
+        return np.column_stack([m, m * b * u, -m * b * u * np.log(t / math.exp(p[1]))])
 
-    try:
-        with np.errstate(over="ignore", invalid="ignore"):
-            (a, tau), _ = curve_fit(
-                model,
-                times,
-                d,
-                p0=(d[0] * math.exp(times[0] / guess), guess),
-                sigma=sigma,
-                absolute_sigma=True,
-                bounds=([-np.inf, times[0] / 10], [np.inf, 100 * span]),
-            )
-    except (RuntimeError, ValueError):
-        return math.nan, math.nan, math.nan
-    chi2 = float(np.sum(((d - model(times, a, tau)) / sigma) ** 2) / max(times.size - 2, 1))
-    return float(tau), float(a), chi2
+    span = float(t[-1] + t[0])
+    lo = [-50.0, math.log(t[0] / 10), math.log(STRETCH_RANGE[0])]
+    hi = [50.0, math.log(100 * span), math.log(STRETCH_RANGE[1])]
+    start = np.clip(start, np.add(lo, 1e-9), np.subtract(hi, 1e-9))
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        out = least_squares(residuals, start, jac=jacobian, bounds=(lo, hi), x_scale=1.0)
+    return out.x, float(2 * out.cost)
+
+
+def _crossing(p: np.ndarray, fraction: float) -> float:
+    """t_f = tau (ln(|A| / f))^(1 / b) of the fitted curve (0 when |A| <= f)."""
+    depth = p[0] - math.log(fraction)
+    return math.exp(p[1]) * depth ** math.exp(-p[2]) if depth > 0 else 0.0
+
+
+def _start(t: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Starting parameters: b = 1, tau at the first fall of |x| below |x_0| / e."""
+    below = np.flatnonzero(np.abs(x) < abs(x[0]) / math.e)
+    tau = float(t[below[0]] if below.size else t[-1])
+    return np.array([math.log(abs(x[0]) + 1e-300) + t[0] / tau, math.log(tau), 0.0])
 
 
 def measure_relaxation(
-    energy_runs, target: float, *, window: int = 50, z: float = 2.0
+    energy_runs,
+    target: float,
+    *,
+    fraction: float = 0.05,
+    window: int = 50,
+    level: float = 0.95,
+    resamples: int = BOOTSTRAP,
+    seed: int = 0,
 ) -> Relaxation:
-    """Settling time and exponential rate of the ensemble mean of ``energy_runs`` (R, P + 1)
-    at ``target`` (the law's mean), by the rule of the module docstring.
+    """Settling time of the ensemble mean of ``energy_runs`` (R, P + 1) at ``target``
+    (the law's mean), with bootstrap intervals, by the rule of the module docstring.
 
     Parameters
     ----------
     energy_runs : array (R >= 3, P + 1)
-        Container energy E(jT) of independent runs.
-    target : float
+        Container energy E(jT) of independent runs, all started alike.
+    target : float > 0
         The law's mean <E_c>.
+    fraction : float > 0
+        Relative excess |<E_c> - target| / target that counts as settled.
     window : int >= 1
-        Periods per window (at least 3 windows must fit).
-    z : float > 0
-        Tolerance in standard errors.
+        Periods per window (at least 4 windows must fit).
+    level : float in (0, 1)
+        Confidence level of the intervals.
+    resamples : int >= 20
+        Bootstrap ensembles of runs.
+    seed : int >= 0
+        Seed of the bootstrap's draws.
     """
     e = v.real_array("energy_runs", energy_runs)
-    if e.ndim != 2 or e.shape[0] < 3:
-        raise ParameterError(
-            "energy_runs", f"an array of shape {e.shape}", "shape (runs >= 3, P + 1)"
-        )
-    target = v.finite("target", target)
-    window = v.positive_int("window", window, maximum=max(e.shape[1] // 3, 1))
-    z = v.positive("z", z)
-    times, means, stderr = _windows(e, window)
-    settle = _settle(times, means, stderr, target, z, window)
-    late = e[:, times.size // 2 * window : times.size * window].mean(axis=1)
-    late_z = float((late.mean() - target) / (late.std(ddof=1) / math.sqrt(e.shape[0])))
-    tau, amplitude, chi2 = _fit(times, means, stderr, target)
-    R = e.shape[0]
-    settles, taus = [], []
-    for r in range(R):
-        rest = np.delete(e, r, axis=0)
-        t_, m_, s_ = _windows(rest, window)
-        settles.append(_settle(t_, m_, s_, target, z, window))
-        taus.append(_fit(t_, m_, s_, target)[0])
-
-    def jack(values, full):
-        x = np.asarray(values)
-        if not math.isfinite(full) or not np.all(np.isfinite(x)):
-            return math.nan
-        return float(math.sqrt((R - 1) / R * np.sum((x - x.mean()) ** 2)))
-
+    if e.ndim != 2 or e.shape[0] < 3 or e.shape[1] < 4 or not np.all(np.isfinite(e)):
+        shown = f"an array of shape {e.shape}" + ("" if np.all(np.isfinite(e)) else " with NaN")
+        raise ParameterError("energy_runs", shown, "finite, of shape (runs >= 3, P + 1 >= 4)")
+    target = v.positive("target", target)
+    fraction = v.positive("fraction", fraction)
+    window = v.positive_int("window", window, maximum=e.shape[1] // 4)
+    if not 0 < v.finite("level", level) < 1:
+        raise ParameterError("level", level, "a number in (0, 1)")
+    resamples = v.positive_int("resamples", resamples, minimum=20)
+    seed = v.positive_int("seed", seed, minimum=0)
+    R, n = e.shape[0], e.shape[1] // window
+    per_run = (e[:, : n * window].reshape(R, n, window).mean(axis=2) - target) / target
+    times = (np.arange(n) + 0.5) * window
+    counts = np.vstack([np.ones(R), _draws(R, resamples, seed)])
+    means, stderr = _curve(counts, per_run)
+    stderr = np.where(stderr > 0, stderr, np.min(stderr[stderr > 0], initial=1.0))
+    sign = 1.0 if means[0, 0] >= 0 else -1.0
+    p, chi2 = _fit(times, means[0], stderr[0], sign, _start(times, means[0]))
+    pairs = zip(means[1:], stderr[1:], strict=True)
+    boot = np.array([_fit(times, m, s, sign, p)[0] for m, s in pairs])
+    settles = np.array([_crossing(q, fraction) for q in boot])
+    tail = (1 - level) / 2
+    settle = _crossing(p, fraction)
+    late = per_run[:, n // 2 :].mean(axis=1)
     return Relaxation(
         target=target,
+        fraction=fraction,
         window=window,
-        z=z,
+        runs=R,
+        level=level,
+        resamples=resamples,
         times=times,
-        means=means,
-        stderr=stderr,
-        settle_time=settle,
-        settle_stderr=jack(settles, settle),
-        late_z=late_z,
-        rate_time=tau,
-        rate_stderr=jack(taus, tau),
-        amplitude=amplitude,
-        chi2=chi2,
+        means=target * (1 + means[0]),
+        stderr=target * stderr[0],
+        low=target * (1 + np.quantile(means[1:], tail, axis=0)),
+        high=target * (1 + np.quantile(means[1:], 1 - tail, axis=0)),
+        settle_time=settle if settle <= n * window else math.nan,
+        settle_low=float(np.quantile(settles, tail)),
+        settle_high=float(np.quantile(settles, 1 - tail)),
+        amplitude=sign * math.exp(p[0]),
+        rate_time=math.exp(p[1]),
+        rate_stderr=float(np.std(np.exp(boot[:, 1]), ddof=1)),
+        stretch=math.exp(p[2]),
+        stretch_stderr=float(np.std(np.exp(boot[:, 2]), ddof=1)),
+        chi2=chi2 / max(n - 3, 1),
+        late_z=float(late.mean() / (late.std(ddof=1) / math.sqrt(R))),
     )
+
+
+def _draws(runs: int, resamples: int, seed: int) -> np.ndarray:
+    """How often each run is drawn in each of ``resamples`` bootstrap ensembles (B, R)."""
+    picks = np.random.default_rng(seed).integers(0, runs, size=(resamples, runs))
+    return np.stack([np.bincount(row, minlength=runs) for row in picks]).astype(float)
