@@ -1,7 +1,9 @@
 """The ``sinktheory`` command.
 
 Bad input prints one line on stderr and exits with status 2, writing nothing; a
-numerical failure exits with status 1 and says where it happened.
+numerical failure exits with status 1 and says where it happened.  Ctrl-C (SIGINT) or
+SIGTERM prints one line and exits with status 130 or 143, writing nothing (commands
+that keep a store add how to resume it).
 """
 
 from __future__ import annotations
@@ -12,7 +14,7 @@ import re
 import sys
 
 from . import commands
-from .commands._common import write_outputs
+from .commands._common import interruptible, write_outputs
 from .errors import NumericalError, ParameterError
 
 #: What argparse should read as a negative number, not an option: decimal and scientific
@@ -76,7 +78,13 @@ def _command(argv: list[str]) -> str | None:
 
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
-    parser = build_parser(_command(argv) or "")
+    command = _command(argv)
+    with interruptible(f"sinktheory {command}" if command else "sinktheory", hint=None):
+        return _main(argv, command)
+
+
+def _main(argv: list[str], command: str | None) -> int:
+    parser = build_parser(command or "")
     try:
         args = parser.parse_args(argv)
     except UsageError as e:

@@ -1,4 +1,5 @@
-"""Progress of long work on stderr: a tqdm bar on a terminal, plain lines in a log.
+"""Progress of long work on stderr (a tqdm bar on a terminal, plain lines in a log), and
+interrupts of long compiled work.
 
 :class:`ProgressBar` counts units of work and shows nothing for work shorter than
 ``delay`` seconds, so short runs stay clean.  After that:
@@ -7,6 +8,14 @@
 * on anything else (a log file, a CI console, a notebook's stderr), one plain line at most
   every :data:`LOG_INTERVAL` seconds and a last line when the work ends, instead of the
   carriage-return redraws a terminal bar would leave in the file.
+
+Compiled (numba) code cannot act on a signal: Python runs the handler only when the
+compiled call returns, and a handler that raises (Ctrl-C's KeyboardInterrupt) while numba
+boxes the call's results breaks the boxing (a SystemError, or a segmentation fault).
+:class:`HeldSignals` records SIGINT and SIGTERM instead and delivers them when the caller
+chooses; :func:`chunks` cuts long compiled work into calls of about
+:data:`CHUNK_SECONDS`, delivering a held signal between two calls, so that Ctrl-C ends
+the work within a fraction of a second.
 
 Examples
 --------
@@ -27,8 +36,11 @@ Examples
 
 from __future__ import annotations
 
+import signal
 import sys
+import threading
 import time
+from collections.abc import Iterator
 from typing import TextIO
 
 from tqdm.std import tqdm
@@ -37,6 +49,8 @@ from tqdm.std import tqdm
 LOG_INTERVAL = 15.0
 #: Seconds between redraws of the bar on a terminal.
 TERMINAL_INTERVAL = 0.5
+#: Seconds of compiled work between two checks for an interrupt (:func:`chunks`).
+CHUNK_SECONDS = 0.1
 
 
 #: A log line: no bar, the count, the time so far and left, the rate.
@@ -152,3 +166,86 @@ class ProgressBar:
             self.stream.write("\n")
             self.stream.flush()
         self.drawn = self.drawn or shown
+
+
+class HeldSignals:
+    """SIGINT and SIGTERM recorded, not acted on, inside the ``with`` block, and delivered
+    to the handlers in place before (Ctrl-C's KeyboardInterrupt, a command's SIGTERM
+    handler) by :meth:`release`, at a point of the caller's choosing.
+
+    Used around compiled calls (module docstring) and around a process pool's own code
+    (an exception raised there by a signal could leave the pool half done).  Outside the
+    main thread (where signal handlers cannot be set) nothing is held.
+
+    Examples
+    --------
+    >>> with HeldSignals() as held:
+    ...     signal.raise_signal(signal.SIGINT)  # recorded, nothing raised
+    ...     try:
+    ...         held.release()                  # delivered: the default handler raises
+    ...     except KeyboardInterrupt:
+    ...         print("interrupted")
+    interrupted
+    """
+
+    SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+    def __enter__(self) -> HeldSignals:
+        self.held: list[int] = []
+        self.previous = {}
+        if threading.current_thread() is threading.main_thread():
+            self.previous = {s: signal.signal(s, self._hold) for s in self.SIGNALS}
+        return self
+
+    def _hold(self, signum, frame) -> None:
+        self.held.append(signum)
+
+    def release(self) -> None:
+        """If a signal was held: restore the handlers and deliver it (what its handler
+        raises is raised here)."""
+        if not self.held:
+            return
+        held, self.held = self.held, []
+        self._restore()
+        for signum in dict.fromkeys(held):
+            signal.raise_signal(signum)  # the handler runs before this returns
+
+    def _restore(self) -> None:
+        for signum, handler in self.previous.items():
+            signal.signal(signum, signal.SIG_DFL if handler is None else handler)
+        self.previous = {}
+
+    def __exit__(self, kind, error, traceback) -> None:
+        if kind is None:
+            self.release()
+        self._restore()
+
+
+def chunks(
+    total: int, seconds: float = CHUNK_SECONDS, most: int | None = None
+) -> Iterator[tuple[int, int]]:
+    """Ranges ``(start, stop)`` covering ``range(total)`` in order, each sized to take
+    about ``seconds`` (timed from the ones before: the first is 1 unit, then at most 4
+    times the last) and at most ``most`` units, with SIGINT and SIGTERM held while the
+    caller works on a range and delivered before the next one (:class:`HeldSignals`).
+
+    Examples
+    --------
+    >>> ranges = list(chunks(100, seconds=1.0))
+    >>> ranges[:3], ranges[-1][1]
+    ([(0, 1), (1, 5), (5, 21)], 100)
+    >>> max(stop - start for start, stop in chunks(100, seconds=1.0, most=10))
+    10
+    """
+    most = total if most is None else max(1, int(most))
+    start, size = 0, 1
+    with HeldSignals() as held:
+        while start < total:
+            stop = min(total, start + size)
+            began = time.perf_counter()
+            yield start, stop
+            held.release()
+            elapsed = time.perf_counter() - began
+            grow = 4.0 if elapsed <= 0 else min(4.0, seconds / elapsed)
+            size = min(most, max(1, int((stop - start) * grow)))
+            start = stop

@@ -26,6 +26,7 @@ from sinktheory.billiard import (
 )
 from sinktheory.billiard import kernels as K
 from sinktheory.billiard.impact import V, impulse_expression, mu, n_x, n_y, v_x, v_y
+from sinktheory.billiard.run import _outputs
 from sinktheory.errors import ParameterError
 from sinktheory.model import RunSettings
 
@@ -151,10 +152,8 @@ def test_circle_conserves_angular_momentum():
     pos = np.array([[[0.05, 0.02]]])
     vel = np.array([[[0.6, 0.8]]])
     ell = pos[0, 0, 0] * vel[0, 0, 1] - pos[0, 0, 1] * vel[0, 0, 0]
-    hits, _, _, status, _ = K.run_fixed(
-        pos, vel, np.zeros((1, 0, 4)), 500, 2 * math.pi, t.kinds, t.coef, t.cap, t.hneg, t.gx,
-        t.eps, t.reach,
-    )  # fmt: skip
+    _, _, hits, status, _ = out = _outputs(1, len(t.kinds), 500, 2)
+    K.run_fixed(pos, vel, np.zeros((1, 0, 4)), 0, 500, 2 * math.pi, *_arrays(t), out)
     assert status[0] == 0 and hits.sum() > 5000
     ell_end = pos[0, 0, 0] * vel[0, 0, 1] - pos[0, 0, 1] * vel[0, 0, 0]
     # each reflection changes ell by rounding only (the normal is radial): 1e-12 after
@@ -256,10 +255,13 @@ def test_small_mass_limit_is_the_fixed_billiard():
     t = rigid_table("flat", 0.5, 0.3)
     pos, vel = _start(2, 0.05, 0.02), _unit_directions(2)
     p1, v1 = pos.copy(), vel.copy()
-    K.run_fixed(p1, v1, np.zeros((2, 0, 4)), 1, 2 * math.pi, *_arrays(t))
+    K.run_fixed(p1, v1, np.zeros((2, 0, 4)), 0, 1, 2 * math.pi, *_arrays(t), _out(t, 2, 2))
     p2, v2 = pos.copy(), vel.copy()
     shadow = (np.zeros((0, 2)), np.zeros((0, 1, 2)), np.zeros((0, 1, 2)))
-    K.run_moving(np.zeros((2, 2)), p2, v2, 1e-12, 1, 2 * math.pi, *_arrays(t), shadow, 1e-9, 1)
+    K.run_moving(
+        np.zeros((2, 2)), p2, v2, 1e-12, 0, 1, 2 * math.pi, *_arrays(t), shadow, 1e-9, 1,
+        _out(t, 2, 3),
+    )  # fmt: skip
     np.testing.assert_allclose(p2, p1, atol=1e-4)
     np.testing.assert_allclose(v2, v1, atol=1e-4)
     # and the statistics: mean free time and lambda_1 agree with the fixed table's
@@ -275,6 +277,11 @@ def test_small_mass_limit_is_the_fixed_billiard():
 
 def _arrays(t):
     return t.kinds, t.coef, t.cap, t.hneg, t.gx, t.eps, t.reach
+
+
+def _out(t, runs, records):
+    """The output arrays of one period of the kernels (records: 2 fixed, 3 moving)."""
+    return _outputs(runs, len(t.kinds), 1, records)
 
 
 def _hexagon_lorentz_table(spacing):
@@ -323,9 +330,13 @@ def test_time_reversal_retraces_the_run(moving):
     none = (np.zeros((0, 2)), np.zeros((0, 1, 2)), np.zeros((0, 1, 2)))
     for _ in range(2):
         if moving:
-            K.run_moving(cont, pos, vel, 0.3, 1, 2 * math.pi, *_arrays(t), none, 1e-9, 1)
+            K.run_moving(
+                cont, pos, vel, 0.3, 0, 1, 2 * math.pi, *_arrays(t), none, 1e-9, 1, _out(t, 3, 3)
+            )
         else:
-            K.run_fixed(pos, vel, np.zeros((3, 0, 4)), 1, 2 * math.pi, *_arrays(t))
+            K.run_fixed(
+                pos, vel, np.zeros((3, 0, 4)), 0, 1, 2 * math.pi, *_arrays(t), _out(t, 3, 2)
+            )
         vel *= -1
         cont[:, 1] *= -1
     np.testing.assert_allclose(pos, pos0, atol=1e-6)

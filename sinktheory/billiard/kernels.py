@@ -294,21 +294,24 @@ def energies(cont, vel, mu):
 
 
 @numba.njit(cache=True)
-def run_fixed(pos, vel, tan, periods, period, kinds, coef, cap, hneg, gx, eps, reach):
-    """Fixed container, R runs (pos, vel (R, k, 2); tan (R, k, 4) or (R, 0, 4)).
+def run_fixed(
+    pos, vel, tan, first, last, period, kinds, coef, cap, hneg, gx, eps, reach, out
+):  # fmt: skip
+    """Fixed container, R runs (pos, vel (R, k, 2); tan (R, k, 4) or (R, 0, 4)), periods
+    ``first`` .. ``last`` - 1 (the caller runs them in chunks; a run whose status is set
+    is not advanced).
 
-    Returns (hits (R, walls), logs (R, periods + 1) accumulated log growth of the
-    deviation vector (renormalised every period), sum of |v|^2 over the particles
-    (R, periods + 1), status (R,), where (R, 2))."""
-    R = pos.shape[0]
-    hits = np.zeros((R, kinds.shape[0]), dtype=np.int64)
-    logs = np.zeros((R, periods + 1))
-    v2 = np.zeros((R, periods + 1))
-    status = np.zeros(R, dtype=np.int64)
-    where = np.zeros((R, 2))
-    for r in range(R):
-        v2[r, 0] = np.sum(vel[r] ** 2)
-        for p in range(periods):
+    ``out`` = (logs (R, P + 1) accumulated log growth of the deviation vector
+    (renormalised every period), sum of |v|^2 over the particles (R, P + 1), hits
+    (R, walls), status (R,), where (R, 2)), filled at records first + 1 .. last (and 0 if
+    first is 0)."""
+    logs, v2, hits, status, where = out
+    for r in range(pos.shape[0]):
+        if first == 0:
+            v2[r, 0] = np.sum(vel[r] ** 2)
+        if status[r] != OK:
+            continue
+        for p in range(first, last):
             st, j, t = advance_fixed(
                 pos[r], vel[r], tan[r], period, kinds, coef, cap, hneg, gx, eps, reach, hits[r]
             )
@@ -323,7 +326,6 @@ def run_fixed(pos, vel, tan, periods, period, kinds, coef, cap, hneg, gx, eps, r
                 norm = math.sqrt(np.sum(tan[r] ** 2))
                 logs[r, p + 1] += math.log(norm)
                 tan[r] /= norm
-    return hits, logs, v2, status, where
 
 
 @numba.njit(cache=True)
@@ -335,30 +337,30 @@ def _distance(c1, p1, v1, c2, p2, v2):
 
 @numba.njit(cache=True)
 def run_moving(
-    cont, pos, vel, mu, periods, period, kinds, coef, cap, hneg, gx, eps, reach, shadow, d0,
-    renorm,
+    cont, pos, vel, mu, first, last, period, kinds, coef, cap, hneg, gx, eps, reach, shadow,
+    d0, renorm, out,
 ):  # fmt: skip
-    """Moving container, R runs: cont (R, 2), pos, vel (R, k, 2).  ``shadow`` is a tuple
-    (cont, pos, vel) of nearby copies (R = 0 rows: no Lyapunov exponent), pulled back to
-    distance d0 from their run ``renorm`` times a period (two-trajectory method: often
-    enough that the pair stays close and its impacts nearly simultaneous).
+    """Moving container, R runs: cont (R, 2), pos, vel (R, k, 2), periods ``first`` ..
+    ``last`` - 1 (the caller runs them in chunks; a run whose status is set is not
+    advanced).  ``shadow`` is a tuple (cont, pos, vel) of nearby copies (R = 0 rows: no
+    Lyapunov exponent), pulled back to distance d0 from their run ``renorm`` times a
+    period (two-trajectory method: often enough that the pair stays close and its
+    impacts nearly simultaneous).
 
-    Returns (container energy (R, periods + 1), total energy (R, periods + 1), hits
-    (R, walls), logs (R, periods + 1), status (R,), where (R, 2))."""
-    R = pos.shape[0]
+    ``out`` = (container energy (R, P + 1), total energy (R, P + 1), logs (R, P + 1),
+    hits (R, walls), status (R,), where (R, 2)), filled at records first + 1 .. last (and
+    0 if first is 0)."""
+    ec, et, logs, hits, status, where = out
     sc, sp, sv = shadow
     lyap = sc.shape[0] > 0
     chunks = renorm if lyap else 1
-    ec = np.zeros((R, periods + 1))
-    et = np.zeros((R, periods + 1))
-    hits = np.zeros((R, kinds.shape[0]), dtype=np.int64)
     spare = np.zeros(kinds.shape[0], dtype=np.int64)
-    logs = np.zeros((R, periods + 1))
-    status = np.zeros(R, dtype=np.int64)
-    where = np.zeros((R, 2))
-    for r in range(R):
-        ec[r, 0], et[r, 0] = energies(cont[r], vel[r], mu)
-        for p in range(periods):
+    for r in range(pos.shape[0]):
+        if first == 0:
+            ec[r, 0], et[r, 0] = energies(cont[r], vel[r], mu)
+        if status[r] != OK:
+            continue
+        for p in range(first, last):
             logs[r, p + 1] = logs[r, p]
             st = OK
             for c in range(chunks):
@@ -386,4 +388,3 @@ def run_moving(
             if st != OK:
                 break
             ec[r, p + 1], et[r, p + 1] = energies(cont[r], vel[r], mu)
-    return ec, et, hits, logs, status, where

@@ -35,6 +35,7 @@ import numpy as np
 from ..ensemble import random_positions
 from ..errors import BracketError, EnergyDriftError, ParameterError
 from ..model import RunSettings, Sink, Well
+from ..progress import chunks
 from ..results import Result
 from ..validation import positive, positive_int, real_array
 from . import kernels as K
@@ -150,6 +151,14 @@ def _raise_status(status, where, what: str) -> None:
         )
 
 
+def _outputs(R: int, walls: int, periods: int, records: int) -> tuple:
+    """The arrays a kernel fills (:func:`kernels.run_fixed`, :func:`kernels.run_moving`):
+    ``records`` records (R, periods + 1), hits (R, walls), status (R,), where (R, 2)."""
+    rec = (np.zeros((R, periods + 1)) for _ in range(records))
+    return (*rec, np.zeros((R, walls), dtype=np.int64), np.zeros(R, dtype=np.int64),
+            np.zeros((R, 2)))  # fmt: skip
+
+
 def simulate_billiard(
     table: Table,
     positions,
@@ -206,11 +215,12 @@ def simulate_billiard(
         tan = rng.normal(size=(R, k, 4)) if lyapunov else np.zeros((R, 0, 4))
         if lyapunov:
             tan /= np.sqrt((tan**2).sum(axis=(1, 2)))[:, None, None]
-        if discard:
-            *_, status, where = K.run_fixed(pos, vel, tan, discard, PERIOD, *arrays)
-            _raise_status(status, where, "fixed billiard (discarded periods)")
-        hits, logs, v2, status, where = K.run_fixed(pos, vel, tan, periods, PERIOD, *arrays)
-        _raise_status(status, where, "fixed billiard")
+        for count, what in ((discard, "fixed billiard (discarded periods)"),
+                            (periods, "fixed billiard")):  # fmt: skip
+            logs, v2, hits, status, where = out = _outputs(R, len(arrays[0]), count, 2)
+            for first, last in chunks(count):
+                K.run_fixed(pos, vel, tan, first, last, PERIOD, *arrays, out)
+            _raise_status(status, where, what)
         cont_e = np.zeros((R, periods + 1))
         total = 0.5 * mu * v2
         method = "tangent map"
@@ -229,33 +239,16 @@ def simulate_billiard(
             table.check_positions("positions", shadow[1])
         else:
             shadow = (np.zeros((0, 2)), np.zeros((0, k, 2)), np.zeros((0, k, 2)))
-        if discard:
-            *_, status, where = K.run_moving(
-                cont,
-                pos,
-                vel,
-                mu,
-                discard,
-                PERIOD,
-                *arrays,
-                shadow,
-                SHADOW_DISTANCE,
-                RENORMALISATIONS,
-            )
-            _raise_status(status, where, "moving billiard (discarded periods)")
-        cont_e, total, hits, logs, status, where = K.run_moving(
-            cont,
-            pos,
-            vel,
-            mu,
-            periods,
-            PERIOD,
-            *arrays,
-            shadow,
-            SHADOW_DISTANCE,
-            RENORMALISATIONS,
-        )
-        _raise_status(status, where, "moving billiard")
+        for count, what in ((discard, "moving billiard (discarded periods)"),
+                            (periods, "moving billiard")):  # fmt: skip
+            out = _outputs(R, len(arrays[0]), count, 3)
+            cont_e, total, logs, hits, status, where = out
+            for first, last in chunks(count):
+                K.run_moving(
+                    cont, pos, vel, mu, first, last, PERIOD, *arrays, shadow, SHADOW_DISTANCE,
+                    RENORMALISATIONS, out,
+                )  # fmt: skip
+            _raise_status(status, where, what)
         method = "two trajectories"
     result = BilliardResult(
         table, container is None, k, mu, times, cont_e, total, hits,

@@ -44,14 +44,15 @@ class Interrupted(KeyboardInterrupt):
 
 
 @contextlib.contextmanager
-def interruptible(prog: str, hint: str = "--resume continues") -> Iterator[None]:
+def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterator[None]:
     """Turn SIGINT (Ctrl-C) and SIGTERM into one line on stderr and the shell's status.
 
     Inside, SIGTERM raises :class:`Interrupted` (SIGINT raises KeyboardInterrupt, as
     always), so ``finally`` blocks close the store and end the worker processes.  Then
-    ``PROG: interrupted; HINT`` is printed and SystemExit raised with status 128 + the
-    signal's number: 130 for SIGINT, 143 for SIGTERM (what a shell reports for a process
-    the signal ended, so job managers see the usual codes).
+    ``PROG: interrupted; HINT`` (or ``PROG: interrupted`` without a hint) is printed and
+    SystemExit raised with status 128 + the signal's number: 130 for SIGINT, 143 for
+    SIGTERM (what a shell reports for a process the signal ended, so job managers see the
+    usual codes).
     """
 
     def on_term(signum, frame):
@@ -66,7 +67,7 @@ def interruptible(prog: str, hint: str = "--resume continues") -> Iterator[None]
     except KeyboardInterrupt as e:
         signum = getattr(e, "signum", signal.SIGINT)
         e.__traceback__ = None  # let the frames go: a pool's queues are freed before exit
-        print(f"{prog}: interrupted; {hint}", file=sys.stderr, flush=True)
+        print(f"{prog}: interrupted" + (f"; {hint}" if hint else ""), file=sys.stderr, flush=True)
         status = 128 + int(signum)
     else:
         status = None

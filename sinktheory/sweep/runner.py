@@ -50,7 +50,7 @@ import xarray as xr
 
 from .. import validation as v
 from ..errors import NumericalError, ParameterError, SweepPointError
-from ..progress import ProgressBar
+from ..progress import HeldSignals, ProgressBar
 from ..worklimit import resumable
 from .kinds import KINDS, Kind
 from .plan import Sweep
@@ -183,7 +183,7 @@ def execute(
         tasks = _tasks(sweep, target.done())
         pending = sum(len(t) for t in tasks)
         bar = ProgressBar(pending, enabled=progress, label="sweep ", unit="point")
-        try:  # closing: a pool's run holds the signals until it ends (_HeldSignals)
+        try:  # closing: a pool's run holds the signals until it ends (HeldSignals)
             with contextlib.closing(engine.run(sweep.kind, tasks)) as results:
                 for task, outputs in results:
                     indices = np.array([index for index, _, _ in task])
@@ -311,7 +311,7 @@ def _run_here(kind: str, tasks: list) -> Iterator[tuple[list, list]]:
 
 
 def _run_pool(pool: ProcessPoolExecutor, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
-    with _HeldSignals() as signals:
+    with HeldSignals() as signals:
         with _main_file_hidden():  # the workers are started by these submits
             futures = {pool.submit(_checked, kind, task): task for task in tasks}
         remaining = set(futures)
@@ -320,50 +320,6 @@ def _run_pool(pool: ProcessPoolExecutor, kind: str, tasks: list) -> Iterator[tup
             signals.release()  # an interrupt raises here, between the pool's calls
             for future in finished:
                 yield futures[future], future.result()
-
-
-class _HeldSignals:
-    """SIGINT and SIGTERM recorded, not acted on, while a pool is driven, and delivered to
-    the handlers in place before (Ctrl-C's KeyboardInterrupt, the command's SIGTERM
-    handler) by :meth:`release`, at a point of the driver's choosing.
-
-    An exception raised by a signal inside the pool's own code could leave it half done:
-    a worker forked but not yet recorded (it escaped :func:`_end_workers` and printed a
-    traceback once the pool's semaphores were gone), or a lock of the pool or of a future
-    left held, on which ending the pool then waited for ever.  Outside the main thread
-    (where signal handlers cannot be set) nothing is held.
-    """
-
-    SIGNALS = (signal.SIGINT, signal.SIGTERM)
-
-    def __enter__(self) -> _HeldSignals:
-        self.held: list[int] = []
-        self.previous = {}
-        if threading.current_thread() is threading.main_thread():
-            self.previous = {s: signal.signal(s, self._hold) for s in self.SIGNALS}
-        return self
-
-    def _hold(self, signum, frame) -> None:
-        self.held.append(signum)
-
-    def release(self) -> None:
-        """If a signal was held: restore the handlers and deliver it (what its handler
-        raises is raised here)."""
-        if not self.held:
-            return
-        self._restore()
-        for signum in dict.fromkeys(self.held):
-            signal.raise_signal(signum)  # the handler runs before this returns
-
-    def _restore(self) -> None:
-        for signum, handler in self.previous.items():
-            signal.signal(signum, signal.SIG_DFL if handler is None else handler)
-        self.previous = {}
-
-    def __exit__(self, kind, error, traceback) -> None:
-        if kind is None:
-            self.release()
-        self._restore()
 
 
 def _run_dask(client, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
