@@ -1,8 +1,10 @@
-"""The README stays true: every `sinktheory ...` command and option it quotes exists.
+"""The README and the docs stay true: every `sinktheory ...` command and option they quote
+exists.
 
 Command lines are read from the README's shell code blocks (continuation lines joined) and
-inline code spans (the command table, the prose); each names a subcommand of the real
-parser and only options that subcommand (or the top-level parser) accepts.  Placeholders
+inline code spans, and from the RST pages of docs/ (``code`` blocks and ````literal````
+spans: the command table of docs/guide/overview.rst, the guides); each names a subcommand
+of the real parser and only options that subcommand (or the top-level parser) accepts.  Placeholders
 (``...``, ``KIND``, ``FILE.png``) and values are not options, so only the words that look
 like options (``--name``) are checked.
 """
@@ -15,7 +17,11 @@ import pytest
 from sinktheory.cli import build_parser
 from sinktheory.commands import HELP
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+DOCS = ROOT / "docs"
+#: The page with the table of every command (moved out of the README, which links to it).
+OVERVIEW = DOCS / "guide" / "overview.rst"
 OPTION = re.compile(r"(?<![\w-])--[a-z][a-z0-9-]*")
 
 
@@ -50,6 +56,35 @@ def command_lines(text: str) -> list[str]:
     return [" ".join(line.split()) for line in lines]
 
 
+def rst_command_lines(text: str) -> list[str]:
+    """Every quoted ``sinktheory <word> ...`` command line of an RST page: the lines of its
+    ``code``/``code-block`` blocks (continuations joined) and its ````literal```` spans."""
+    lines, block = [], None
+    for line in text.splitlines() + [""]:
+        if block is not None and (not line.strip() or line.startswith(" ")):
+            block.append(line)
+            continue
+        if block is not None:  # the block ended: read its commands
+            joined = re.sub(r"\\\n\s*", " ", "\n".join(block))
+            for code in joined.splitlines():
+                lines += re.findall(r"\bsinktheory\s+[^&;#]*", code)
+            block = None
+        if re.match(r"\.\. code(-block)?::", line.strip()):
+            shell = line.split("::", 1)[1].strip() in ("bash", "sh", "console", "")
+            block = [] if shell else None
+    for span in re.findall(r"``([^`]+)``", text.replace("\n", " ")):
+        lines += re.findall(r"\bsinktheory\s+[^&;]*", span)
+    return [" ".join(line.split()) for line in lines]
+
+
+def quoted_lines() -> list[str]:
+    """The command lines quoted by the README and every RST page of the docs."""
+    lines = command_lines(README.read_text())
+    for page in sorted(DOCS.rglob("*.rst")):
+        lines += rst_command_lines(page.read_text())
+    return sorted(set(lines))
+
+
 def parsers():
     parser = build_parser()
     sub = next(a for a in parser._actions if a.dest == "command")
@@ -58,11 +93,16 @@ def parsers():
 
 def test_the_readme_quotes_commands():
     lines = command_lines(README.read_text())
-    assert len(lines) > 20
+    assert len(lines) >= 5
     assert "sinktheory reproduce --out out/" in lines
 
 
-@pytest.mark.parametrize("line", sorted(set(command_lines(README.read_text()))))
+def test_the_docs_quote_commands_too():
+    assert len(rst_command_lines(OVERVIEW.read_text())) > 20
+    assert len(quoted_lines()) > len(set(command_lines(README.read_text()))) + 20
+
+
+@pytest.mark.parametrize("line", quoted_lines())
 def test_quoted_command_exists_with_its_options(line):
     top, subparsers = parsers()
     word = line.split()[1]
@@ -77,8 +117,8 @@ def test_quoted_command_exists_with_its_options(line):
 
 
 def test_every_command_has_a_row_in_the_command_table():
-    table = [line for line in README.read_text().splitlines() if line.startswith("| `sinktheory ")]
-    named = {line.split()[2] for line in table}
+    table = re.findall(r"^   \* - ``sinktheory (\w+)", OVERVIEW.read_text(), re.M)
+    named = set(table)
     assert named == set(HELP), set(HELP) ^ named
 
 
@@ -87,6 +127,11 @@ def test_the_extractor_sees_wrong_commands():
     text = "```bash\nsinktheory well --alpha 1 \\\n    --no-such 2\n```\nand `sinktheory nope --x`"
     lines = command_lines(text)
     assert lines == ["sinktheory well --alpha 1 --no-such 2", "sinktheory nope --x"]
+    rst = (
+        ".. code:: bash\n\n   sinktheory well --alpha 1 \\\n       --no-such 2\n\n"
+        ".. code:: python\n\n   import sinktheory as st\n\nand ``sinktheory nope --x``\n"
+    )
+    assert rst_command_lines(rst) == lines
     _, subparsers = parsers()
     assert "--no-such" not in subparsers["well"]._option_string_actions
     assert "nope" not in subparsers
