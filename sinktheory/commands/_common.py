@@ -63,7 +63,13 @@ def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterato
     except ValueError:  # not the main thread: leave SIGTERM alone
         previous = None
     try:
-        yield
+        try:
+            yield
+        except SystemError as e:  # see interrupt_behind
+            interrupt = interrupt_behind(e)
+            if interrupt is None:
+                raise
+            raise interrupt from None
     except KeyboardInterrupt as e:
         signum = getattr(e, "signum", signal.SIGINT)
         e.__traceback__ = None  # let the frames go: a pool's queues are freed before exit
@@ -76,6 +82,36 @@ def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterato
             signal.signal(signal.SIGTERM, previous)
     if status is not None:
         raise SystemExit(status)
+
+
+def interrupt_behind(error: BaseException) -> KeyboardInterrupt | None:
+    """The KeyboardInterrupt (or :class:`Interrupted`) among the causes of ``error``, if any.
+
+    A signal that arrives while a compiled (numba) function runs is acted on when it
+    returns, and if that is while numba boxes its results (which calls Python), the
+    interrupt surfaces as a SystemError ("returned a result with an exception set") caused
+    by it.  Long compiled loops hold the signals (:func:`sinktheory.progress.chunks`);
+    this finds the interrupt behind any other compiled call.
+
+    Examples
+    --------
+    >>> try:
+    ...     try:
+    ...         raise KeyboardInterrupt
+    ...     except KeyboardInterrupt as e:
+    ...         raise SystemError("returned a result with an exception set") from e
+    ... except SystemError as e:
+    ...     found = interrupt_behind(e)
+    >>> type(found).__name__, interrupt_behind(SystemError("other"))
+    ('KeyboardInterrupt', None)
+    """
+    seen = set()
+    while error is not None and id(error) not in seen:
+        if isinstance(error, KeyboardInterrupt):
+            return error
+        seen.add(id(error))
+        error = error.__cause__ or error.__context__
+    return None
 
 
 def damage_note(repaired: int) -> str:
