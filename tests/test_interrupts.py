@@ -110,3 +110,25 @@ def test_interrupt_behind_a_compiled_call_is_an_interrupt(capsys, monkeypatch):
         run_cli(["period", "--n", "2", "--amplitude", "1"], capsys)
     assert info.value.code == 130
     assert capsys.readouterr().err == "sinktheory period: interrupted\n"
+
+
+def test_interrupt_lets_zarr_finish_the_io_in_flight():
+    """An interrupt during a store write left zarr's tasks pending; exiting then closed
+    zarr's event loop under them ("Task was destroyed but it is pending!" after the
+    command's line).  The interrupt now waits for them (briefly)."""
+    import asyncio
+
+    import zarr.core.sync as zsync
+
+    from sinktheory.commands._common import _settle_zarr
+
+    done = []
+
+    async def write():
+        await asyncio.sleep(0.2)
+        done.append(True)
+
+    zsync.sync(asyncio.sleep(0))  # zarr's loop is running
+    asyncio.run_coroutine_threadsafe(write(), zsync.loop[0])  # in flight, not awaited
+    _settle_zarr()
+    assert done == [True]

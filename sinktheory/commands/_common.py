@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import asyncio
 import contextlib
 import math
 import os
@@ -73,6 +74,7 @@ def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterato
     except KeyboardInterrupt as e:
         signum = getattr(e, "signum", signal.SIGINT)
         e.__traceback__ = None  # let the frames go: a pool's queues are freed before exit
+        _settle_zarr()
         print(f"{prog}: interrupted" + (f"; {hint}" if hint else ""), file=sys.stderr, flush=True)
         status = 128 + int(signum)
     else:
@@ -82,6 +84,25 @@ def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterato
             signal.signal(signal.SIGTERM, previous)
     if status is not None:
         raise SystemExit(status)
+
+
+def _settle_zarr(timeout: float = 1.0) -> None:
+    """Let zarr's I/O thread finish the reads and writes an interrupt left in flight (a
+    chunk or two, milliseconds), so that exiting does not close its event loop under them:
+    that printed "Task was destroyed but it is pending!" after the command's last line.
+    Nothing to do when zarr was not used."""
+    sync = sys.modules.get("zarr.core.sync")
+    loop = None if sync is None else sync.loop[0]
+    if loop is None or loop.is_closed() or not loop.is_running():
+        return
+
+    async def pending() -> None:
+        tasks = asyncio.all_tasks() - {asyncio.current_task()}
+        if tasks:
+            await asyncio.wait(tasks, timeout=timeout)
+
+    with contextlib.suppress(Exception):  # a loop that cannot settle only prints more
+        asyncio.run_coroutine_threadsafe(pending(), loop).result(timeout + 0.5)
 
 
 def interrupt_behind(error: BaseException) -> KeyboardInterrupt | None:
