@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import asyncio
 import contextlib
 import math
 import os
@@ -63,10 +64,17 @@ def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterato
     except ValueError:  # not the main thread: leave SIGTERM alone
         previous = None
     try:
-        yield
+        try:
+            yield
+        except SystemError as e:  # see interrupt_behind
+            interrupt = interrupt_behind(e)
+            if interrupt is None:
+                raise
+            raise interrupt from None
     except KeyboardInterrupt as e:
         signum = getattr(e, "signum", signal.SIGINT)
         e.__traceback__ = None  # let the frames go: a pool's queues are freed before exit
+        _settle_zarr()
         print(f"{prog}: interrupted" + (f"; {hint}" if hint else ""), file=sys.stderr, flush=True)
         status = 128 + int(signum)
     else:
@@ -76,6 +84,55 @@ def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterato
             signal.signal(signal.SIGTERM, previous)
     if status is not None:
         raise SystemExit(status)
+
+
+def _settle_zarr(timeout: float = 1.0) -> None:
+    """Let zarr's I/O thread finish the reads and writes an interrupt left in flight (a
+    chunk or two, milliseconds), so that exiting does not close its event loop under them:
+    that printed "Task was destroyed but it is pending!" after the command's last line.
+    Nothing to do when zarr was not used."""
+    sync = sys.modules.get("zarr.core.sync")
+    loop = None if sync is None else sync.loop[0]
+    if loop is None or loop.is_closed() or not loop.is_running():
+        return
+
+    async def pending() -> None:
+        tasks = asyncio.all_tasks() - {asyncio.current_task()}
+        if tasks:
+            await asyncio.wait(tasks, timeout=timeout)
+
+    with contextlib.suppress(Exception):  # a loop that cannot settle only prints more
+        asyncio.run_coroutine_threadsafe(pending(), loop).result(timeout + 0.5)
+
+
+def interrupt_behind(error: BaseException) -> KeyboardInterrupt | None:
+    """The KeyboardInterrupt (or :class:`Interrupted`) among the causes of ``error``, if any.
+
+    A signal that arrives while a compiled (numba) function runs is acted on when it
+    returns, and if that is while numba boxes its results (which calls Python), the
+    interrupt surfaces as a SystemError ("returned a result with an exception set") caused
+    by it.  Long compiled loops hold the signals (:func:`sinktheory.progress.chunks`);
+    this finds the interrupt behind any other compiled call.
+
+    Examples
+    --------
+    >>> try:
+    ...     try:
+    ...         raise KeyboardInterrupt
+    ...     except KeyboardInterrupt as e:
+    ...         raise SystemError("returned a result with an exception set") from e
+    ... except SystemError as e:
+    ...     found = interrupt_behind(e)
+    >>> type(found).__name__, interrupt_behind(SystemError("other"))
+    ('KeyboardInterrupt', None)
+    """
+    seen = set()
+    while error is not None and id(error) not in seen:
+        if isinstance(error, KeyboardInterrupt):
+            return error
+        seen.add(id(error))
+        error = error.__cause__ or error.__context__
+    return None
 
 
 def damage_note(repaired: int) -> str:
