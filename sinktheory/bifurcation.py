@@ -42,6 +42,17 @@ from .simulate import default_step, simulate
 from .stepsize import ladder_step
 from .worklimit import check_particle_steps
 
+__all__ = [
+    "bifurcation",
+    "BifurcationDiagram",
+    "QUANTITIES",
+    "sampled_run",
+    "section",
+    "section_step",
+    "sections",
+    "START",
+]
+
 QUANTITIES = ("y", "energy")
 #: Start of the particle relative to the container (Fig. 4 of the paper).
 START = (0.0, 0.01)

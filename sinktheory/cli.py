@@ -17,6 +17,8 @@ from . import commands
 from .commands._common import interruptible, write_outputs
 from .errors import NumericalError, ParameterError
 
+__all__ = ["build_parser", "main", "NEGATIVE_NUMBER", "UsageError"]
+
 #: What argparse should read as a negative number, not an option: decimal and scientific
 #: literals and -inf / -nan (argparse's own pattern knows only -1 and -1.5).
 NEGATIVE_NUMBER = re.compile(

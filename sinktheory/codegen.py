@@ -20,6 +20,8 @@ from sympy.printing.pycode import MpmathPrinter, PythonCodePrinter
 
 from . import symbolic as S
 
+__all__ = ["GENERATED_DIR", "GeometryPrinter", "ipow", "KernelPrinter", "render", "write"]
+
 GENERATED_DIR = Path(__file__).parent / "_generated"
 
 _BANNER = (

@@ -21,6 +21,8 @@ True
 
 import numpy as np
 
+__all__ = ["A", "B", "C", "DEFAULT_RTOL", "E3", "E5", "N_STAGES"]
+
 #: Default relative tolerance of one step of the Hill integration (:mod:`sinktheory.hill`);
 #: gives phi to about 1e-11 (see tests).  Kept here, beside the tableau, so that modules
 #: that only need the number (the sweep kinds) do not load the compiled kernels.

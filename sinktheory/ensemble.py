@@ -32,6 +32,28 @@ from .results import Result
 from .runstats import ensemble_mean
 from .stepsize import DEFAULT_TOL
 
+__all__ = [
+    "check_record",
+    "check_sink",
+    "default_energy_bound",
+    "ENERGY_BOUND",
+    "engine_name",
+    "engine_params",
+    "initial_values",
+    "join_values",
+    "prepare",
+    "random_positions",
+    "RECORDS",
+    "run_parameters",
+    "SimulationResult",
+    "SimulationState",
+    "split_values",
+    "Start",
+    "start_positions",
+    "start_state",
+    "total_energy",
+]
+
 #: What :func:`sinktheory.simulate.simulate` can record.
 RECORDS = ("container", "particles", "trajectory", "final")
 #: Default bound on the relative total-energy error before a run is stopped.

@@ -101,6 +101,25 @@ from .model import MAX_N, Well
 from .results import Result, plain
 from .twins import python_kernel
 
+__all__ = [
+    "Boundary",
+    "BOUNDARY_FACTORS",
+    "FloquetChart",
+    "HillProblem",
+    "JSON_CAP",
+    "json_value",
+    "LN2",
+    "MAX_LAMBDA",
+    "model_hill",
+    "model_problem",
+    "pure_hill",
+    "pure_problem",
+    "rigid_limit_phi_half",
+    "ROOT_XTOL",
+    "scan",
+    "StabilityScan",
+]
+
 #: Largest |lambda| A0^2 accepted: at 1e10 one quarter period takes about 1 s; at 1e12
 #: it exceeds the integration's budget of 1e6 steps (measured, n = 4).
 MAX_LAMBDA = 1e10

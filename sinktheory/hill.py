@@ -70,6 +70,20 @@ from .dop853 import DEFAULT_RTOL
 from .errors import HillIntegrationError, NonFiniteStateError, ParameterError
 from .twins import python_kernel
 
+__all__ = [
+    "check_amplitude",
+    "integrate_quarter_period",
+    "METHODS",
+    "monodromy_solve_ivp",
+    "PURE",
+    "PYTHON_CALLS",
+    "PYTHON_STEPS",
+    "quarter_period_length",
+    "quarter_period_mpmath",
+    "QuarterPeriod",
+    "RENORM_BITS",
+]
+
 #: Solution pairs are divided by 2^RENORM_BITS when their size exceeds 2^RENORM_BITS.
 RENORM_BITS = 400
 

@@ -35,6 +35,8 @@ import numpy as np
 
 from . import validation as v
 
+__all__ = ["DEFAULT_SCHEME", "get_scheme", "SCHEMES", "SplittingScheme"]
+
 
 @dataclass(frozen=True)
 class SplittingScheme:

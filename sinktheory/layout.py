@@ -34,6 +34,8 @@ import numpy as np
 
 from .errors import ParameterError
 
+__all__ = ["pack_params", "SINK_PARAMS", "StateLayout"]
+
 #: The engine's runtime parameters of a sink, in the order its kernels read them (the
 #: particle mass is mu = m / k).  Shape, n and k are compiled into the engine instead.
 SINK_PARAMS = ("alpha", "beta", "gamma", "mu")

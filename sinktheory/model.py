@@ -36,6 +36,27 @@ from .errors import ParameterError
 from .results import Result
 from .twins import python_kernel
 
+__all__ = [
+    "confining_betas",
+    "DAMPING_KINDS",
+    "MAX_N",
+    "MAX_PERIODS",
+    "MAX_REACH",
+    "MAX_RUNS",
+    "MAX_SCALED_ENERGY",
+    "MAX_SECONDS",
+    "MIN_MU",
+    "MIN_RELATIVE_WALL_DISTANCE",
+    "Reach",
+    "RunSettings",
+    "SECONDS_PER_PARTICLE_STEP",
+    "SHAPES",
+    "Sink",
+    "SinkSummary",
+    "Well",
+    "WellSummary",
+]
+
 #: Names of the registered well shapes (:data:`sinktheory.symbolic.SHAPES`), with one
 #: kernel bundle each in :mod:`sinktheory._generated.shapes`.
 SHAPES = _shapes.NAMES

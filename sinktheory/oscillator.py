@@ -80,6 +80,22 @@ from .errors import BracketError, ParameterError, PeriodOutOfRangeError
 from .model import MAX_N
 from .results import Result
 
+__all__ = [
+    "exact_shape",
+    "exact_shape_mp",
+    "exact_solution",
+    "exact_solution_mp",
+    "GUARD_DIGITS",
+    "MAX_DPS",
+    "Oscillator",
+    "oscillator",
+    "period",
+    "significant",
+    "STARTS",
+    "triangle_wave",
+    "triangle_wave_derivative",
+]
+
 
 def _generated():
     """The generated kernels (they import numba: loaded on first use, so the light commands

@@ -45,6 +45,15 @@ from typing import TextIO
 
 from tqdm.std import tqdm
 
+__all__ = [
+    "CHUNK_SECONDS",
+    "chunks",
+    "HeldSignals",
+    "LOG_INTERVAL",
+    "ProgressBar",
+    "TERMINAL_INTERVAL",
+]
+
 #: Seconds between the plain progress lines written when the stream is not a terminal.
 LOG_INTERVAL = 15.0
 #: Seconds between redraws of the bar on a terminal.

@@ -41,6 +41,16 @@ from . import validation as v
 from .errors import ParameterError
 from .results import Result, plain
 
+__all__ = [
+    "DEFAULT_RATE",
+    "epsilon_for_rate",
+    "recurrence_image",
+    "recurrence_rate",
+    "RQA",
+    "rqa",
+    "rqa_matrix",
+]
+
 #: Default recurrence rate used to pick eps.
 DEFAULT_RATE = 0.05
 

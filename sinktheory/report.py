@@ -7,6 +7,8 @@ from dataclasses import dataclass
 from .results import Result
 from .scenes.base import Scene, SceneResult
 
+__all__ = ["render", "SceneOutcome"]
+
 
 @dataclass
 class SceneOutcome(Result):

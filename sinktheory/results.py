@@ -46,6 +46,8 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+__all__ = ["attribute", "plain", "Result"]
+
 
 def plain(x: Any) -> Any:
     """``x`` as plain JSON-ready Python (see the module docstring for the rules).

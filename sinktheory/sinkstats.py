@@ -37,6 +37,14 @@ from . import validation as v
 from .errors import ParameterError
 from .runstats import as_runs, ensemble_mean
 
+__all__ = [
+    "equipartition_container_energy",
+    "first_fall_below",
+    "running_mean",
+    "sink_measures",
+    "SinkMeasures",
+]
+
 
 def running_mean(series, window: int) -> np.ndarray:
     """Trailing running mean: out[j] = mean(series[j : j + window]), length N - window + 1.

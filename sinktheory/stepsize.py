@@ -41,6 +41,23 @@ from . import validation as v
 from .errors import ParameterError
 from .integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
 
+__all__ = [
+    "aligned_step",
+    "CALIBRATION",
+    "check_tol",
+    "choose",
+    "cost_table",
+    "DEFAULT_TOL",
+    "LADDER_RUNGS",
+    "ladder_step",
+    "PERIOD",
+    "resolve_step",
+    "step_for",
+    "StepChoice",
+    "stiffness_frequency",
+    "TOL_RANGE",
+]
+
 if TYPE_CHECKING:
     from .model import Sink
 

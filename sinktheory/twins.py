@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import types as pytypes
 
+__all__ = ["python_kernel"]
+
 
 def python_kernel(kernel):
     """The pure-Python twin of a compiled kernel (or of a plain function calling them).

@@ -26,6 +26,24 @@ from pathlib import Path
 
 from .errors import ParameterError
 
+__all__ = [
+    "BOOLS",
+    "choice",
+    "finite",
+    "fits_memory",
+    "flag",
+    "MAX_STEPS_PER_PERIOD",
+    "memory_limit",
+    "nbytes_text",
+    "nonnegative",
+    "positive",
+    "positive_int",
+    "real_array",
+    "stiffness",
+    "time_step",
+    "writable_directory",
+]
+
 
 def _is_bool(value: object) -> bool:
     """True for Python and numpy booleans (which float() would quietly turn into 0 or 1)."""

@@ -59,6 +59,17 @@ from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink, We
 from .stepsize import DEFAULT_TOL, resolve_step
 from .validation import MAX_STEPS_PER_PERIOD
 
+__all__ = [
+    "check_particle_steps",
+    "check_work",
+    "MAX_INTERACTIVE_SECONDS",
+    "max_seconds",
+    "resumable",
+    "step_of",
+    "tangent_steps",
+    "VECTOR_STEP",
+]
+
 #: Particle steps one deviation vector adds per particle and step, at least: the tangent
 #: kick multiplies the vector by the particle's 2 x 2 Hessian block and the container
 #: coupling (0.48 and 0.41 of a particle step measured for flat n = 4, k = 5 and 20 with

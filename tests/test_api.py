@@ -50,3 +50,22 @@ def test_errors_keep_their_old_import_paths():
 def test_an_unknown_name_is_an_attribute_error():
     with pytest.raises(AttributeError, match="no attribute 'simulat'"):
         st.simulat  # noqa: B018
+
+
+def _public_modules():
+    import pkgutil
+
+    for info in pkgutil.walk_packages(st.__path__, "sinktheory."):
+        parts = info.name.split(".")
+        if not any(p.startswith("_") for p in parts[1:]):
+            yield info.name
+
+
+@pytest.mark.parametrize("name", sorted(_public_modules()))
+def test_every_public_module_declares_what_it_exports(name):
+    import importlib
+
+    module = importlib.import_module(name)
+    assert isinstance(getattr(module, "__all__", None), list), f"{name} has no __all__"
+    missing = [n for n in module.__all__ if not hasattr(module, n)]
+    assert not missing, f"{name}.__all__ names what it lacks: {missing}"

@@ -77,6 +77,38 @@ from ..progress import ProgressBar
 from ..stepsize import DEFAULT_TOL, PERIOD, choose
 from ..worklimit import check_work
 
+__all__ = [
+    "BLOCK",
+    "check_eps",
+    "check_work",
+    "choose",
+    "controller_steps",
+    "DEFAULT_EPS",
+    "DEFAULT_SCHEME",
+    "DEFAULT_TOL",
+    "engine_params",
+    "estimated_steps",
+    "get_scheme",
+    "join_values",
+    "kernels",
+    "MAX_EPS",
+    "MAX_STEPS",
+    "ParameterError",
+    "PERIOD",
+    "prepare",
+    "ProgressBar",
+    "RECORDS",
+    "run_parameters",
+    "RunSettings",
+    "simulate_adaptive",
+    "SimulationResult",
+    "SimulationState",
+    "Sink",
+    "split_values",
+    "StepControlError",
+    "v",
+]
+
 #: eps when none is given: |dH|/H0 <= 2e-8 on Fig. 8's ensemble for n = 4..100.
 DEFAULT_EPS = 0.25
 #: Largest eps accepted (beyond it the wall approach is covered in too few steps).

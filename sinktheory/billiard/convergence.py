@@ -59,6 +59,24 @@ from ..results import Result
 from ..sinkstats import ensemble_mean
 from .run import PERIOD, BilliardResult, billiard
 
+__all__ = [
+    "CHUNK_SAMPLES",
+    "Convergence",
+    "convergence",
+    "count_hits",
+    "HIT_FRACTION",
+    "lambda_after",
+    "lyapunov_chart",
+    "LyapunovChart",
+    "measure",
+    "Measurement",
+    "NS",
+    "power_rate",
+    "QUANTITIES",
+    "wall_ratios",
+    "wall_terms",
+]
+
 #: Stiffnesses measured by default.
 NS = (4, 10, 20, 50, 100)
 #: A maximum of a wall term counts as a hit when it exceeds this fraction of the

@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+__all__ = ["impulse_expression", "J", "kinetic_energy", "mu", "velocities_after"]
+
 mu = sp.Symbol("mu", positive=True)
 J = sp.Symbol("J", real=True)
 v_x, v_y, V, n_x, n_y = sp.symbols("v_x v_y V n_x n_y", real=True)

@@ -28,6 +28,23 @@ import math
 import numba
 import numpy as np
 
+__all__ = [
+    "advance_fixed",
+    "advance_moving",
+    "energies",
+    "impact",
+    "impulse",
+    "MAX_ITERATIONS",
+    "MAX_REPEATS",
+    "next_hit",
+    "outward_normal",
+    "reflect_tangent",
+    "run_fixed",
+    "run_moving",
+    "wall_hessian",
+    "wall_value",
+]
+
 POLYNOMIAL, CAPSULE = 0, 1
 #: Conservative-advancement steps allowed in one search before giving up (status 1).
 MAX_ITERATIONS = 100_000

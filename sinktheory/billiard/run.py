@@ -41,6 +41,19 @@ from ..validation import positive, positive_int, real_array
 from . import kernels as K
 from .table import Table, rigid_table
 
+__all__ = [
+    "billiard",
+    "BilliardResult",
+    "ENERGY_BOUND",
+    "PERIOD",
+    "RENORMALISATIONS",
+    "rigid_limit",
+    "RigidLimit",
+    "SHADOW_DISTANCE",
+    "simulate_billiard",
+    "start_directions",
+]
+
 #: Relative total-energy error above which a run is reported as broken (the engine is
 #: exact up to rounding: flights in closed form, impacts conserving energy exactly).
 ENERGY_BOUND = 1e-10

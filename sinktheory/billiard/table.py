@@ -42,6 +42,18 @@ from ..results import Result
 from ..validation import positive
 from .kernels import CAPSULE, POLYNOMIAL
 
+__all__ = [
+    "EPS_UNITS",
+    "Piece",
+    "poly_eval",
+    "polynomial_table",
+    "rigid_table",
+    "SCAN_EXTENT",
+    "sinai_table",
+    "stadium_table",
+    "Table",
+]
+
 _s = sp.Symbol("s", real=True)
 #: Rounding units of a wall function below which a particle counts as on the wall.
 EPS_UNITS = 64

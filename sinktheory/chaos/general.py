@@ -38,6 +38,19 @@ from ..integrators import DEFAULT_SCHEME, get_scheme
 from .result import ChaosResult
 from .vectors import random_vectors
 
+__all__ = [
+    "check_block",
+    "check_bound",
+    "check_gali",
+    "check_params",
+    "check_renorm",
+    "check_run",
+    "check_spectrum",
+    "check_transverse",
+    "indicators",
+    "vector_count",
+]
+
 
 def check_gali(gali: int, dim: int) -> int:
     """k of GALI_k: 0 (none) or an integer in [2, 2D]."""

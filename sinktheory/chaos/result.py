@@ -14,6 +14,8 @@ import numpy as np
 from ..results import Result, plain
 from ..sinkstats import ensemble_mean
 
+__all__ = ["ChaosResult", "PER_RUN_NOTE", "sali_from_gali2", "time_average"]
+
 #: What ``as_dict`` says next to the per-run values (``--json`` of ``sinktheory chaos``).
 PER_RUN_NOTE = (
     "per-run values: a chaotic run changes with any change of round-off (threads, compiler, "

@@ -57,6 +57,16 @@ from .general import (
 from .result import ChaosResult
 from .vectors import random_vectors
 
+__all__ = [
+    "chaos",
+    "chaos_batch",
+    "check_tangent_work",
+    "point_steps",
+    "start_energy",
+    "tangent_runs",
+    "transverse_mask",
+]
+
 
 def transverse_mask(particles: int) -> np.ndarray:
     """Phase-space directions (q, v of the engine) of the particles' y: the y_j."""

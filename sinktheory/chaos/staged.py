@@ -41,6 +41,8 @@ from ..ensemble import ENERGY_BOUND
 from ..sinkstats import ensemble_mean
 from .verdicts import threshold
 
+__all__ = ["LOOKS", "looks", "MIN_LOOK", "staged_chaos", "staged_exponent", "StagedExponent"]
+
 if TYPE_CHECKING:
     from ..engine.core import Ensemble
 

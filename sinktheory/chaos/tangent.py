@@ -29,6 +29,8 @@ from .. import validation as val
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from .general import check_block, check_params, check_run
 
+__all__ = ["canonical", "finite_difference_jacobian", "monodromy", "symplectic_defect"]
+
 
 def monodromy(
     system: str,

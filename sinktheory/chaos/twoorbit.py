@@ -26,6 +26,8 @@ from ..integrators import DEFAULT_SCHEME, get_scheme
 from .general import check_params, check_run
 from .vectors import random_vectors
 
+__all__ = ["D0_RANGE", "two_orbit_exponent"]
+
 #: Allowed initial separations d0: from 1e-13 times the state's largest entry (above that
 #: the shadow's difference carries at least ~1000 ulps) up to 1e-3 (still linear).
 D0_RANGE = (1e-13, 1e-3)

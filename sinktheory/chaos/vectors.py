@@ -28,6 +28,8 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 
+__all__ = ["MAX_DIM", "orthonormalise", "random_vectors", "vector_seed"]
+
 #: Largest number of coordinates D (1 + 2k for k = 10^5 particles).
 MAX_DIM = 200_001
 

@@ -14,6 +14,8 @@ import argparse
 from . import HELP as HELPS
 from ._common import Output, add_json, add_sink_arguments, number, png_path
 
+__all__ = ["add_arguments", "HELP", "NAME", "run"]
+
 NAME = "billiard"
 HELP = HELPS[NAME]
 

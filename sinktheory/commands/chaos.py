@@ -26,6 +26,8 @@ from ._common import (
     well_from_args,
 )
 
+__all__ = ["add_arguments", "HELP", "NAME", "run"]
+
 NAME = "chaos"
 HELP = HELPS[NAME]
 

@@ -20,6 +20,8 @@ from ..errors import ParameterError
 from . import HELP as HELPS
 from ._common import Output, add_json, number, png_path
 
+__all__ = ["add_arguments", "HELP", "KINDS", "NAME", "run"]
+
 NAME = "compare"
 HELP = HELPS[NAME]
 KINDS = ("nes", "impact", "well")  # sinktheory.attachments.KINDS (kept light here)

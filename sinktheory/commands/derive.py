@@ -24,6 +24,20 @@ from typing import TYPE_CHECKING
 from . import HELP as HELPS
 from ._common import Output, add_json
 
+__all__ = [
+    "add_arguments",
+    "cache_file",
+    "cached_renderings",
+    "digest",
+    "equations",
+    "HELP",
+    "NAME",
+    "renderings",
+    "run",
+    "SOURCES",
+    "sympifiable",
+]
+
 if TYPE_CHECKING:
     import sympy as sp
 

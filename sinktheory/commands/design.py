@@ -37,6 +37,17 @@ from ._common import (
     output_directory,
 )
 
+__all__ = [
+    "add_arguments",
+    "GRID",
+    "HELP",
+    "NAME",
+    "NEGATIVE_VALUE",
+    "params_of",
+    "run",
+    "SETTINGS",
+]
+
 NAME = "design"
 HELP = HELPS[NAME]
 

@@ -15,6 +15,8 @@ from ._common import (
     well_from_args,
 )
 
+__all__ = ["add_arguments", "FRACTIONS", "HELP", "NAME", "run"]
+
 NAME = "equilibrium"
 HELP = HELPS[NAME]
 #: Default tail fractions f (as in :data:`sinktheory.equilibrium.law.FRACTIONS`, kept

@@ -23,6 +23,8 @@ from ..errors import ParameterError
 from . import HELP as HELPS
 from ._common import Output, add_json, number, png_path
 
+__all__ = ["add_arguments", "HELP", "NAME", "run"]
+
 NAME = "floquet"
 HELP = HELPS[NAME]
 

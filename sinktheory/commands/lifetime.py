@@ -17,6 +17,8 @@ from ._common import (
     well_from_args,
 )
 
+__all__ = ["add_arguments", "CHART_PARTICLES", "FRACTIONS", "HELP", "NAME", "run"]
+
 NAME = "lifetime"
 HELP = HELPS[NAME]
 #: Default fractions f for the sets {E_c >= f E}.

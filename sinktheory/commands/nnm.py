@@ -28,6 +28,8 @@ from ..errors import ParameterError
 from . import HELP as HELPS
 from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
 
+__all__ = ["add_arguments", "HELP", "NAME", "run"]
+
 NAME = "nnm"
 HELP = HELPS[NAME]
 

@@ -7,6 +7,8 @@ import argparse
 from . import HELP as HELPS
 from ._common import Output, add_json, number
 
+__all__ = ["add_arguments", "decimal_text", "HELP", "NAME", "run"]
+
 NAME = "period"
 HELP = HELPS[NAME]
 

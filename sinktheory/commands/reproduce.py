@@ -19,6 +19,8 @@ from ..scenes import FIGURES, estimate
 from . import HELP as HELPS
 from ._common import Output, add_json, as_directory, output_directory
 
+__all__ = ["add_arguments", "HELP", "NAME", "run"]
+
 NAME = "reproduce"
 HELP = HELPS[NAME]
 

@@ -7,6 +7,8 @@ import argparse
 from . import HELP as HELPS
 from ._common import Output, add_json, number, png_path
 
+__all__ = ["add_arguments", "HELP", "NAME", "run"]
+
 NAME = "series"
 HELP = HELPS[NAME]
 

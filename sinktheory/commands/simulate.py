@@ -27,6 +27,8 @@ from ._common import (
     well_from_args,
 )
 
+__all__ = ["add_arguments", "HELP", "NAME", "QUOTED", "run"]
+
 if TYPE_CHECKING:
     import numpy as np
 

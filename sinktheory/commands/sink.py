@@ -7,6 +7,8 @@ import argparse
 from . import HELP as HELPS
 from ._common import Output, add_json, add_sink_arguments, add_well_arguments, well_from_args
 
+__all__ = ["add_arguments", "HELP", "NAME", "run"]
+
 NAME = "sink"
 HELP = HELPS[NAME]
 

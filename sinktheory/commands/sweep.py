@@ -20,6 +20,8 @@ from ..validation import writable_directory
 from . import HELP as HELPS
 from ._common import Output, add_json, damage_note, interruptible, number
 
+__all__ = ["add_arguments", "HELP", "NAME", "params_of", "run"]
+
 NAME = "sweep"
 HELP = HELPS[NAME]
 

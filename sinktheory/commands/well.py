@@ -8,6 +8,8 @@ from ..validation import positive
 from . import HELP as HELPS
 from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
 
+__all__ = ["add_arguments", "HELP", "NAME", "run"]
+
 NAME = "well"
 HELP = HELPS[NAME]
 

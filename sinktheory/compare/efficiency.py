@@ -34,6 +34,17 @@ from ..attachments import KINDS, Attachment
 from ..errors import ParameterError
 from ..results import Result
 
+__all__ = [
+    "attachments_of",
+    "compare",
+    "Comparison",
+    "energies_of",
+    "FRACTION",
+    "MAX_ENERGIES",
+    "steps_per_period",
+    "work",
+]
+
 #: The share of the initial energy whose dissipation time is reported.
 FRACTION = 0.9
 #: Most initial energies of one comparison.

@@ -32,6 +32,15 @@ from ..errors import ParameterError
 from ..results import Result
 from .wavelet import DEFAULT_WAVELET, WaveletMap, wavelet_map
 
+__all__ = [
+    "backbone",
+    "BACKBONE_POINTS",
+    "BACKBONE_STEPS",
+    "START_TRIES",
+    "transfer_map",
+    "TransferMap",
+]
+
 #: Shooting steps per period and largest points per direction of the backbone.
 BACKBONE_STEPS = 200
 BACKBONE_POINTS = 150

@@ -45,6 +45,17 @@ from .. import validation as v
 from ..errors import ParameterError
 from ..results import Result
 
+__all__ = [
+    "COI_WIDTHS",
+    "DEFAULT_WAVELET",
+    "MAX_FREQUENCIES",
+    "morlet",
+    "PRECISION",
+    "ridge_of",
+    "wavelet_map",
+    "WaveletMap",
+]
+
 #: The complex Morlet wavelet used unless another ``cmorB-C`` is asked for.
 DEFAULT_WAVELET = "cmor1.5-1.0"
 #: Envelope standard deviations that must fit inside the record on either side of a

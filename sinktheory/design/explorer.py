@@ -30,6 +30,8 @@ import numpy as np
 
 from .ranking import rank
 
+__all__ = ["DesignRun", "explore", "plan", "todo_of"]
+
 
 @dataclass(frozen=True)
 class DesignRun:

@@ -58,6 +58,22 @@ from ..errors import ParameterError
 from ..results import Result
 from ..sinkstats import ensemble_mean, equipartition_container_energy, sink_measures
 
+__all__ = [
+    "ABSORBED_LEVELS",
+    "ATTACHMENTS",
+    "BOOTSTRAP_TAG",
+    "default_window",
+    "design_measures",
+    "DesignMeasures",
+    "horizons_of",
+    "LINE_ATTACHMENTS",
+    "longest_excursion",
+    "RQA_MEASURES",
+    "sustained_crossing",
+    "VERDICTS",
+    "WINDOW_FRACTION",
+]
+
 #: Fractions of E0 absorbed whose settling times are measured.
 ABSORBED_LEVELS = (0.5, 0.8)
 #: Default settling window as a fraction of the run length (:func:`default_window`).

@@ -73,6 +73,19 @@ from ..stepsize import check_tol
 from ..worklimit import check_particle_steps, step_of, tangent_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of
 
+__all__ = [
+    "attachment_of",
+    "check",
+    "compute",
+    "ensemble",
+    "ENSEMBLE_RESULTS",
+    "lyapunov",
+    "MAX_BOOTSTRAP",
+    "SAMPLES",
+    "settings_of",
+    "sink_of",
+]
+
 #: Results of a point that come from its ensemble (besides the container energy).
 ENSEMBLE_RESULTS = (
     "dashpot",

@@ -41,6 +41,8 @@ import math
 
 import numpy as np
 
+__all__ = ["DESIGN_PARAMS", "design_table", "pareto_front", "pareto_layers", "rank"]
+
 #: The design parameters a user sweeps (any other parameter of the kind may be given too).
 DESIGN_PARAMS = (
     "shape",

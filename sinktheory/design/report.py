@@ -30,6 +30,8 @@ from ..plot.design import label, swept
 from .measures import VERDICTS
 from .ranking import rank
 
+__all__ = ["damper", "fmt", "is_damped", "report_text", "table_rows", "write_csv", "write_report"]
+
 
 def fmt(x: float, se: float | None = None, digits: int = 3) -> str:
     """``x ± se`` with ``digits`` decimals ('never' for NaN values)."""

@@ -57,6 +57,22 @@ from dataclasses import dataclass
 
 import numpy as np
 
+__all__ = [
+    "block_costs",
+    "BlockPlan",
+    "CALIBRATION",
+    "candidates",
+    "efficient_width",
+    "fixed",
+    "groups_of",
+    "layout",
+    "machine_key",
+    "measure",
+    "plan",
+    "SIZES",
+    "THREAD_GAIN",
+]
+
 #: Block sizes the policy measures and chooses from (a last block is padded up to one).
 SIZES = (1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 28, 32, 40, 48, 56, 64)
 #: A second thread must cut the predicted wall time by this factor to be used (a thread

@@ -31,6 +31,16 @@ import llvmlite.binding as _llvm
 from .. import __version__
 from ..errors import ParameterError
 
+__all__ = [
+    "cache_dir",
+    "cost_table_path",
+    "engine_system",
+    "import_generated",
+    "LLVM_OPTIONS",
+    "load",
+    "sink_name",
+]
+
 # The engine's loops run over the runs of a block (often 8-32 of them).  LLVM's default
 # vectoriser interleaves 4 vector iterations, so a loop of fewer than 16 runs fell back to
 # scalar code; one vector per iteration keeps small blocks vectorised (measured 1.5x on

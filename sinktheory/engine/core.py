@@ -33,6 +33,8 @@ from ..progress import ProgressBar, chunks
 from . import blocks
 from .cache import cost_table_path, load
 
+__all__ = ["audit_error", "earliest_failure", "Ensemble", "Records", "TANGENT_MODES"]
+
 #: Tangent modes: none (raw deviation vectors, e.g. a monodromy matrix), Gram-Schmidt
 #: orthonormalisation at every renormalisation (Lyapunov spectrum), or independent
 #: normalisation (GALI/SALI, maximal exponent).

@@ -37,6 +37,8 @@ import sympy as sp
 from ..codegen import KernelPrinter
 from .systems import SeparableSystem, Term
 
+__all__ = ["EnginePrinter", "render", "RESERVED", "STEPPER"]
+
 STEPPER = Path(__file__).with_name("_stepper.py")
 
 

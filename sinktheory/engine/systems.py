@@ -29,6 +29,8 @@ import sympy as sp
 
 from .. import symbolic as S
 
+__all__ = ["henon_heiles", "SeparableSystem", "sink_system", "Term", "two_dof_duffing"]
+
 
 @dataclass(frozen=True)
 class Term:

@@ -51,6 +51,17 @@ from ..errors import NumericalError
 from ..model import Well
 from ..twins import python_kernel
 
+__all__ = [
+    "area_quadrature",
+    "area_ratio",
+    "AREA_RTOL",
+    "basin_area",
+    "CLOSED_FORMS",
+    "MAX_RAYS",
+    "scaled_energy",
+    "SCAN_POINTS",
+]
+
 #: Relative agreement of two successive trapezoid sums (rays doubled) that ends the
 #: quadrature; the error of the last sum is far below it (geometric convergence).
 AREA_RTOL = 1e-13

@@ -38,6 +38,18 @@ from .. import validation as v
 from ..results import Result
 from .law import check_fractions
 
+__all__ = [
+    "check_point",
+    "DEFAULTS",
+    "ergodicity_map",
+    "ergodicity_point",
+    "ErgodicityMap",
+    "fractions_of",
+    "P_LEVEL",
+    "RESULTS",
+    "verdict",
+]
+
 #: KS p-value below which the runs are said not to sample the law.
 P_LEVEL = 0.01
 #: The point's parameters beyond the well and the sink, with defaults.

@@ -60,6 +60,18 @@ from ..results import Result
 from ..sinkstats import equipartition_container_energy
 from .area import area_ratio, scaled_energy
 
+__all__ = [
+    "CHEB_DEGREES",
+    "CHEB_TOL",
+    "check_fractions",
+    "equilibrium_law",
+    "EquilibriumLaw",
+    "EquilibriumSummary",
+    "FRACTIONS",
+    "LEVELS",
+    "PANEL_NODES",
+]
+
 #: Largest trailing Chebyshev coefficient of a log density h_j accepted (absolute: an
 #: error delta in h is a relative error delta in the density).
 CHEB_TOL = 1e-12

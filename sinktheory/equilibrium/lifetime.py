@@ -77,6 +77,22 @@ from ..errors import ParameterError
 from ..results import Result
 from .law import EquilibriumLaw, check_fractions
 
+__all__ = [
+    "autocorrelation_time",
+    "BOOTSTRAP",
+    "compare_with_law",
+    "ENERGY_SLACK",
+    "jackknife_ratio",
+    "kaplan_meier_mean",
+    "ks_distance",
+    "KS_GRID",
+    "LawComparison",
+    "measure_lifetimes",
+    "SOKAL_C",
+    "visit_statistics",
+    "VisitStatistics",
+]
+
 #: Bootstrap resamples of whole runs for the p-value of the KS distance.
 BOOTSTRAP = 999
 #: Points of the grid (equally spaced in the law's probability) where the empirical and

@@ -61,6 +61,8 @@ from .. import validation as v
 from ..errors import ParameterError
 from ..results import Result
 
+__all__ = ["BOOTSTRAP", "measure_relaxation", "Relaxation", "STRETCH_RANGE"]
+
 #: Bootstrap ensembles of runs drawn for the errors.
 BOOTSTRAP = 999
 #: Range of the stretching exponent b allowed in the fit.

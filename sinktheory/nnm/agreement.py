@@ -47,6 +47,15 @@ from .continuation import continue_orbits, merge
 from .modes import mode_guess, sink_flow
 from .shooting import Orbit, ShootingError, shoot
 
+__all__ = [
+    "agreement_report",
+    "LOW_ENERGY",
+    "reach_energy",
+    "statement",
+    "transverse_chart",
+    "TransverseChart",
+]
+
 #: Energy at which the container's linear mode starts (the particles barely touch the walls).
 LOW_ENERGY = 1e-4
 

@@ -56,6 +56,17 @@ from ..errors import ParameterError
 from ..model import Sink
 from .continuation import Branch, check_stop, continue_orbits, merge
 
+__all__ = [
+    "container_share",
+    "harmonic_balance",
+    "harmonic_balance_frequency",
+    "HB_AGREEMENT",
+    "inphase_backbone",
+    "inphase_pieces",
+    "localisation_energy",
+    "START_TRIES",
+]
+
 #: Start energies of :func:`inphase_pieces` (log-spaced over the range).
 START_TRIES = 6
 #: Largest relative gap between a piece's frequency and the one-harmonic balance at its

@@ -70,6 +70,24 @@ from .shooting import (
 from .stability import angles, classify
 from .system import FlowSystem
 
+__all__ = [
+    "Branch",
+    "check_ds",
+    "check_stop",
+    "continue_both",
+    "continue_orbits",
+    "DS_MIN_FACTOR",
+    "DS_RANGE",
+    "Event",
+    "LOCATE_ITER",
+    "MAX_POINTS",
+    "MAX_TURN",
+    "merge",
+    "switch_branch",
+    "tangent",
+    "TOUCH_TOL",
+]
+
 #: Arclength-step limits relative to the initial step.
 DS_MIN_FACTOR = 1e-4
 #: First arclength steps accepted: below 1e-6 the smallest step (x DS_MIN_FACTOR) nears

@@ -38,6 +38,8 @@ from ..errors import ParameterError
 from ..model import Sink
 from .system import FlowSystem
 
+__all__ = ["fixed_container_amplitude", "linear_modes", "mode_guess", "MODES", "sink_flow"]
+
 MODES = ("container", "particle")
 
 

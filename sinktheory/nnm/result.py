@@ -14,6 +14,8 @@ import numpy as np
 
 from ..results import Result
 
+__all__ = ["BranchResult"]
+
 
 def _pad(rows: list[np.ndarray]) -> np.ndarray:
     width = max((r.size for r in rows), default=0)

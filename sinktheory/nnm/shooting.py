@@ -64,6 +64,19 @@ from ..errors import NumericalError, ParameterError, ShootingError
 from .stability import Floquet, floquet
 from .system import FlowSystem
 
+__all__ = [
+    "checked_start",
+    "checked_steps",
+    "MAX_ITER",
+    "MAX_SHOOT_STEPS",
+    "MAX_STEP",
+    "Orbit",
+    "shoot",
+    "ShootingProblem",
+    "subspace_indices",
+    "XTOL",
+]
+
 #: Newton stops when the update's largest component is below this (ln T, z0 units).
 XTOL = 1e-11
 #: Newton iterations before giving up.

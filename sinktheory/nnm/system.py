@@ -47,6 +47,8 @@ from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..layout import SINK_PARAMS
 from ..model import MAX_RUNS
 
+__all__ = ["FlowSystem", "parameter_names"]
+
 
 def parameter_names(system: str) -> tuple[str, ...]:
     """Names of the runtime parameters of engine ``system``.

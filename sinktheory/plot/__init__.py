@@ -9,3 +9,6 @@ worker) never loads it.
 * :mod:`.design` -- heat maps and the Pareto chart of a design sweep;
 * :mod:`.chaos` -- convergence plots of the chaos indicators.
 """
+
+#: Nothing here but the submodules (import them by name).
+__all__: list[str] = []

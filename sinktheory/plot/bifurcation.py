@@ -17,6 +17,8 @@ import numpy as np
 
 from ..bifurcation import BifurcationDiagram
 
+__all__ = ["plot_bifurcation"]
+
 
 def plot_bifurcation(diagram: BifurcationDiagram, unstable=(), ax=None, title=None):
     """Draw the section points against beta; shade the Floquet-unstable ``unstable``

@@ -15,6 +15,8 @@ import numpy as np
 
 from ..billiard.run import BilliardResult
 
+__all__ = ["billiard_figure"]
+
 
 def billiard_figure(result: BilliardResult, *, title: str = ""):
     """Three panels: the table (walls coloured by curvature sign: blue dispersing, red

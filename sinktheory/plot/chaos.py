@@ -18,6 +18,8 @@ import numpy as np
 from ..chaos import verdicts
 from ..chaos.result import ChaosResult
 
+__all__ = ["convergence_figure", "draw_map", "FLOOR", "plot_convergence"]
+
 #: GALI values below this are round-off (unit vectors parallel to machine precision).
 FLOOR = 1e-16
 

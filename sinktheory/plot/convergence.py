@@ -15,6 +15,8 @@ import numpy as np
 
 from ..billiard.convergence import Convergence, LyapunovChart
 
+__all__ = ["convergence_figure", "lyapunov_figure"]
+
 
 def lyapunov_figure(chart: LyapunovChart, *, title: str = ""):
     """lambda_1(beta) for each soft n and for n = oo on one plot, error bars of one

@@ -31,6 +31,18 @@ from itertools import combinations
 
 import numpy as np
 
+__all__ = [
+    "energy_curves",
+    "HEAT",
+    "heatmap",
+    "heatmaps",
+    "label",
+    "panels",
+    "pareto_chart",
+    "swept",
+    "ZETA",
+]
+
 
 def swept(ds) -> list[str]:
     """Swept parameters of a design dataset (the dimensions of ``done``)."""

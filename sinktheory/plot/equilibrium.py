@@ -5,6 +5,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+__all__ = ["plot_ergodicity", "plot_law", "plot_lifetimes", "VERDICTS"]
+
 
 def plot_law(summary, ax=None):
     """Density of s = E_c / E (an :class:`~sinktheory.equilibrium.EquilibriumSummary`),

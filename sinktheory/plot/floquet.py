@@ -22,6 +22,8 @@ from matplotlib.ticker import SymmetricalLogLocator
 from .. import validation as v
 from ..floquet import StabilityScan, model_problem, pure_problem, scan
 
+__all__ = ["plot_fig7", "plot_scan", "plot_tongues"]
+
 _LABEL = {"lam": r"$\Lambda$", "beta": r"$\beta$"}
 _CAP = 1e300
 

@@ -13,6 +13,8 @@ from __future__ import annotations
 
 from ..recurrence import epsilon_for_rate, recurrence_image
 
+__all__ = ["plot_recurrence"]
+
 
 def plot_recurrence(energy, eps: float | None = None, ax=None, title: str | None = None):
     """Draw the recurrence plot of ``energy`` (ones dark, zeros white); return the Figure."""

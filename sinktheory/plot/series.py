@@ -15,6 +15,8 @@ from .. import validation as v
 from ..oscillator import exact_shape, period, triangle_wave
 from ..series import triangle_series
 
+__all__ = ["plot_series"]
+
 
 def plot_series(n: int, order: int, *, points: int = 801):
     """Exact x(t) and the approximations U_1 ... U_order over one period, with errors.

@@ -17,6 +17,8 @@ import numpy as np
 from ..model import Sink
 from ..simulate import SimulationResult
 
+__all__ = ["plot_ensemble_energy"]
+
 
 def plot_ensemble_energy(result: SimulationResult, sink: Sink):
     """<E>(t/T) with its standard-error band, from a result that recorded "container".

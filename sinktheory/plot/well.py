@@ -7,6 +7,8 @@ from matplotlib.figure import Figure
 
 from ..model import Well
 
+__all__ = ["LEVEL_FRACTIONS", "plot_well"]
+
 #: Level lines drawn, as fractions of the energy E (the outermost one, E itself, is bold).
 LEVEL_FRACTIONS = (1e-3, 1e-2, 0.05, 0.15, 0.35, 0.65, 1.0)
 

@@ -8,6 +8,8 @@ from typing import Any
 
 from ..results import Result
 
+__all__ = ["Claim", "Scene", "SceneResult"]
+
 HOLDS, FAILS, UNDECIDED = "holds", "does not hold", "cannot be decided"
 
 

@@ -13,6 +13,20 @@ from ..simulate import simulate
 from ..sinkstats import SinkMeasures, ensemble_mean, running_mean, sink_measures
 from .base import FAILS, HOLDS, Claim, Scene, SceneResult
 
+__all__ = [
+    "ensemble",
+    "FIG12",
+    "FIG45_BETAS",
+    "FIG5",
+    "FIG8",
+    "FIG8_KS",
+    "FIG8_N",
+    "FIG8_WELL",
+    "FIG9",
+    "FIG9_BETAS",
+    "FIG9_EPS",
+]
+
 E0, MASS, SEED = 0.5, 0.2, 2016
 
 

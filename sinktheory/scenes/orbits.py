@@ -23,6 +23,8 @@ from ..sweep.chaosmap import beta_grid, chaos_map
 from ..sweep.views import bifurcation_diagram
 from .base import FAILS, HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
+__all__ = ["FIG11", "FIG3"]
+
 #: Agreement between Floquet stability and the chaos map needed for "holds";
 #: below LOW the claim "does not hold".
 AGREE, LOW = 0.8, 0.6

@@ -6,6 +6,8 @@ from ..floquet import model_problem, scan
 from ..plot.floquet import plot_fig7
 from .base import HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
+__all__ = ["FIG7"]
+
 ALPHA, NS, RANGE = 0.5, (2, 10), (-1.0, 0.499)
 
 

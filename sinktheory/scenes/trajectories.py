@@ -10,6 +10,8 @@ from ..model import RunSettings, Sink, Well
 from ..plot.paper import trajectory_panels
 from .base import HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
+__all__ = ["BETAS", "FIG4", "SAMPLES", "trajectory"]
+
 BETAS = (-0.5, -0.3, -0.2, -0.14, 0.009, 0.3)
 ALPHA, N, MASS, START = 0.5, 10, 0.2, (0.0, 0.01)
 #: Trajectory samples per container period (about 40 per wall-to-wall flight).

@@ -37,6 +37,17 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 
+__all__ = [
+    "fingerprint",
+    "Grid",
+    "MAX_POINTS",
+    "parse_param",
+    "parse_range",
+    "parse_value",
+    "point_seed",
+    "Value",
+]
+
 Value = int | float | str
 #: Most points of one sweep (every point is checked before any work starts: about
 #: 0.1 ms each, so 1e6 points take a couple of minutes just to check).

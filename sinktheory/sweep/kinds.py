@@ -65,6 +65,20 @@ from ..model import DAMPING_KINDS, MAX_PERIODS, SHAPES, RunSettings, Sink, Well
 from ..simulate import simulate
 from ..worklimit import check_work, step_of
 
+__all__ = [
+    "DESIGN_TOL",
+    "FLOQUET_RESULTS",
+    "get_kind",
+    "Kind",
+    "KINDS",
+    "Param",
+    "REQUIRED",
+    "Result",
+    "SECONDS_PER_PERIOD",
+    "SINK",
+    "WELL",
+]
+
 REQUIRED = object()
 #: Rough cost of one container period of one particle (n = 10, single thread: 24 sections
 #: of 80 periods took 1.6 s); only used to decide whether to start local processes.

@@ -33,6 +33,8 @@ from ..worklimit import resumable
 from .grid import Grid, fingerprint, point_seed
 from .kinds import Kind, get_kind
 
+__all__ = ["MARK", "Sweep"]
+
 #: Attribute that marks a store as a sinktheory sweep (its value: the fingerprint).
 MARK = "sweep_fingerprint"
 

@@ -56,6 +56,8 @@ from .kinds import KINDS, Kind
 from .plan import Sweep
 from .store import MemoryStore, SweepStore, _checked_path
 
+__all__ = ["DamagedStoreWarning", "execute", "POOL_THRESHOLD", "run_sweep", "SweepRun"]
+
 #: Below this many seconds of estimated work, local processes are not worth starting.
 POOL_THRESHOLD = 2.0
 

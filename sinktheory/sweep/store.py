@@ -78,6 +78,17 @@ from .. import validation as v
 from ..errors import ParameterError
 from .plan import MARK, Sweep
 
+__all__ = [
+    "CHECKSUM",
+    "CHECKSUM_ATTR",
+    "CHUNK_VALUES",
+    "coordinates",
+    "LOCK",
+    "MemoryStore",
+    "selection",
+    "SweepStore",
+]
+
 #: File in the store locked by the process writing to it.
 LOCK = ".sweep.lock"
 #: Variable holding each point's checksum: BLAKE2b (64 bits) of its stored results.

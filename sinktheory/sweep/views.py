@@ -18,6 +18,8 @@ import xarray as xr
 from ..bifurcation import BifurcationDiagram
 from ..errors import ParameterError
 
+__all__ = ["bifurcation_diagram"]
+
 
 def bifurcation_diagram(dataset: xr.Dataset) -> BifurcationDiagram:
     """The :class:`~sinktheory.bifurcation.BifurcationDiagram` of a bifurcation sweep over
