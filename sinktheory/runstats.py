@@ -1,25 +1,34 @@
-"""Statistics over independent runs: one place for the mean, its standard error and the
-rule for a single run.
+"""Statistics over independent runs: the one place for the mean, its standard error, the
+spread, and the rule for a single run.
 
 Runs of an ensemble are independent (each has its own seeded start), so the standard
 error of a mean over R runs is the sample standard deviation (ddof = 1) over sqrt(R).
-With a single run the spread is unknown: the standard error is returned as zeros, and a
-caller that must tell "no spread" from "unknown spread" checks the number of runs.
+
+**The rule for a single run**: its spread is unknown, so the spread and the standard error
+of one run are NaN: undefined, never 0 (which would claim an exact mean) and never an
+error (one run is a valid simulation).  ``as_dict()`` turns NaN into ``null`` in JSON, the
+text of the commands says "no standard error from one run" (:func:`plus_minus`), and a
+verdict that needs a standard error (chaotic or regular, agreement with a law) is not
+given from one run.
 
 Examples
 --------
 >>> m, se = ensemble_mean([[1.0, 2.0], [3.0, 6.0]])
 >>> m.tolist(), se.tolist()
 ([2.0, 4.0], [1.0, 2.0])
+>>> mean_stderr([0.5])
+(0.5, nan)
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
 from .errors import ParameterError
 
-__all__ = ["as_runs", "ensemble_mean"]
+__all__ = ["as_runs", "ensemble_mean", "mean_stderr", "plus_minus", "spread"]
 
 
 def as_runs(energy_runs) -> np.ndarray:
@@ -41,19 +50,61 @@ def as_runs(energy_runs) -> np.ndarray:
 
 
 def ensemble_mean(energy_runs) -> tuple[np.ndarray, np.ndarray]:
-    """Mean over runs (axis 0 of an (R, N) array) and its standard error.
-
-    The standard error is the sample std (ddof = 1) over sqrt(R); for a single run it is
-    returned as zeros (module docstring).
+    """Mean over runs (axis 0 of an (R, N) array) and its standard error, std (ddof = 1)
+    over sqrt(R); NaN for a single run (module docstring).
 
     Examples
     --------
     >>> m, se = ensemble_mean([[1.0, 2.0]])
-    >>> m.tolist(), se.tolist()
-    ([1.0, 2.0], [0.0, 0.0])
+    >>> m.tolist(), np.isnan(se).tolist()
+    ([1.0, 2.0], [True, True])
     """
     e = as_runs(energy_runs)
     mean = e.mean(axis=0)
     if e.shape[0] == 1:
-        return mean, np.zeros_like(mean)
+        return mean, np.full_like(mean, np.nan)
     return mean, e.std(axis=0, ddof=1) / np.sqrt(e.shape[0])
+
+
+def spread(values) -> float:
+    """Standard deviation (ddof = 1) of the values, one per run; NaN for fewer than two
+    (a NaN value gives NaN: callers that drop failed runs do so first, and say so).
+
+    Examples
+    --------
+    >>> spread([1.0, 3.0]), spread([2.0])
+    (1.4142135623730951, nan)
+    """
+    x = np.asarray(values, dtype=float).ravel()
+    return float(x.std(ddof=1)) if x.size > 1 else math.nan
+
+
+def mean_stderr(values) -> tuple[float, float]:
+    """(mean, standard error) of the values, one per run; the standard error is NaN for
+    one value and both are NaN for none.
+
+    Examples
+    --------
+    >>> mean_stderr([1.0, 2.0, 3.0, 4.0])
+    (2.5, 0.6454972243679028)
+    """
+    x = np.asarray(values, dtype=float).ravel()
+    if not x.size:
+        return math.nan, math.nan
+    return float(x.mean()), spread(x) / math.sqrt(x.size)
+
+
+def plus_minus(
+    mean: float, stderr: float | None, digits: str = ".6g", se_digits: str = ".2g"
+) -> str:
+    """``mean +- stderr`` as the commands print it, or the mean and "(no standard error
+    from one run)" when the standard error is NaN (None, as ``as_dict()`` gives it).
+
+    Examples
+    --------
+    >>> plus_minus(0.25, 0.01), plus_minus(0.25, None)
+    ('0.25 +- 0.01', '0.25 (no standard error from one run)')
+    """
+    if stderr is None or math.isnan(stderr):
+        return f"{mean:{digits}} (no standard error from one run)"
+    return f"{mean:{digits}} +- {stderr:{se_digits}}"

@@ -35,7 +35,7 @@ import numpy as np
 
 from . import validation as v
 from .errors import ParameterError
-from .runstats import as_runs, ensemble_mean
+from .runstats import as_runs, ensemble_mean, spread
 
 __all__ = [
     "equipartition_container_energy",
@@ -116,8 +116,8 @@ class SinkMeasures:
     ----------
     first_below : {fraction: first period with <E> < fraction * E0, or None}
     long_time_mean : mean over runs of each run's time average after ``transient``
-    long_time_stderr : standard error of that mean across runs (0 for one run)
-    run_spread : standard deviation (ddof = 1) of the runs' time averages (0 for one run)
+    long_time_stderr : standard error of that mean across runs (NaN for one run)
+    run_spread : standard deviation (ddof = 1) of the runs' time averages (NaN for one run)
     equipartition : E_total / (1 + k (1 + 1/n))
     particle_fraction : 1 - long_time_mean / E_total, the share of energy the particles hold
     transient : first period included in the long-time averages
@@ -166,14 +166,14 @@ def sink_measures(
     mean, _ = ensemble_mean(e)
     per_run = e[:, transient:].mean(axis=1)
     R = per_run.size
-    spread = float(per_run.std(ddof=1)) if R > 1 else 0.0
+    run_spread = spread(per_run)
     total = v.positive("total_energy", total_energy)
     ltm = float(per_run.mean())
     return SinkMeasures(
         first_below=first_fall_below(mean, fractions, e0),
         long_time_mean=ltm,
-        long_time_stderr=spread / np.sqrt(R) if R > 1 else 0.0,
-        run_spread=spread,
+        long_time_stderr=run_spread / np.sqrt(R),
+        run_spread=run_spread,
         equipartition=equipartition_container_energy(total, particles, n),
         particle_fraction=1.0 - ltm / total,
         transient=transient,

@@ -275,7 +275,10 @@ def test_cli_single_run_from_initial_positions(capsys):
     argv = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "10", "--initial", "0", "0.01"]
     assert main(argv + ["--periods", "2", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["parameters"]["runs"] == 1 and data["stderr"] == [0.0, 0.0, 0.0]
+    # one run has no standard error: NaN in Python, null in JSON, said in the text
+    assert data["parameters"]["runs"] == 1 and data["stderr"] == [None, None, None]
+    assert main(argv + ["--periods", "2"]) == 0
+    assert "(no standard error from one run)" in capsys.readouterr().out
 
 
 @pytest.mark.parametrize(

@@ -37,6 +37,7 @@ from ..errors import BracketError, EnergyDriftError, ParameterError
 from ..model import RunSettings, Sink, Well
 from ..progress import chunks
 from ..results import Result
+from ..runstats import mean_stderr
 from ..validation import positive, positive_int, real_array
 from . import kernels as K
 from .table import Table, rigid_table
@@ -67,9 +68,8 @@ PERIOD = 2 * math.pi
 
 
 def _stats(values: np.ndarray) -> dict[str, float]:
-    v = np.asarray(values, dtype=float)
-    se = float(v.std(ddof=1) / math.sqrt(len(v))) if len(v) > 1 else 0.0
-    return {"mean": float(v.mean()), "stderr": se}
+    mean, se = mean_stderr(values)
+    return {"mean": mean, "stderr": se}
 
 
 @dataclass(frozen=True)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 
+from ..runstats import plus_minus
 from . import HELP as HELPS
 from ._common import Output, add_json, add_sink_arguments, number, png_path
 
@@ -40,7 +41,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _fmt(stats: dict) -> str:
-    return f"{stats['mean']:.6g} +- {stats['stderr']:.2g}"
+    return plus_minus(stats["mean"], stats["stderr"])
 
 
 def run(args: argparse.Namespace) -> Output:

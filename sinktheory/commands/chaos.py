@@ -14,6 +14,7 @@ import numpy as np
 
 from ..integrators import DEFAULT_SCHEME, SCHEMES
 from ..model import RunSettings, Sink
+from ..runstats import plus_minus
 from . import HELP as HELPS
 from ._common import (
     Output,
@@ -85,7 +86,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _fmt(mean, se) -> str:
-    return f"{mean:.6g} +- {se:.2g}"
+    return plus_minus(mean, se)
 
 
 def run(args: argparse.Namespace) -> Output:
@@ -152,8 +153,8 @@ def run(args: argparse.Namespace) -> Output:
     if result.megno is not None:
         m = data["mean_megno"]
         lines.append(
-            f"<Y>(t_end) (time-averaged MEGNO; 2 = quasi-periodic) = {m['mean']:.6g} +- "
-            f"{m['stderr']:.2g}"
+            "<Y>(t_end) (time-averaged MEGNO; 2 = quasi-periodic) = "
+            + plus_minus(m["mean"], m["stderr"])
         )
     if result.transverse is not None:
         lines.append(f"transverse exponent of y = 0: {_fmt(*result.mean('transverse'))}")

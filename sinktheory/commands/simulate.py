@@ -179,13 +179,16 @@ def run(args: argparse.Namespace) -> Output:
     mean, stderr = result.ensemble_energy()
     data = result.as_dict()
     w = sink.well
+    from ..runstats import plus_minus  # numpy: after the early refusals
+
     text = "\n".join(
         [
             f"{w.shape} well alpha={w.alpha:g} beta={w.beta:g} n={w.n} gamma={w.gamma:g}; "
             f"k={sink.particles}, m={sink.mass:g}",
             result.message,
-            f"<E>(0) = {mean[0]:.6f}   <E>({settings.periods} T) = {mean[-1]:.6f} "
-            f"+- {stderr[-1]:.2g} (standard error over {settings.runs} run(s))",
+            f"<E>(0) = {mean[0]:.6f}   <E>({settings.periods} T) = "
+            + plus_minus(mean[-1], stderr[-1], ".6f")
+            + f" (over {settings.runs} run(s))",
         ]
     )
     writers = {}
@@ -203,6 +206,7 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     """--n inf: the same runs in the rigid billiard (moving container); gamma plays no part."""
     from ..billiard import billiard
     from ..model import RunSettings
+    from ..runstats import plus_minus
     from ..sinkstats import ensemble_mean
     from ..validation import positive
 
@@ -221,8 +225,9 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
             f"{runs} run(s) x {args.periods} period(s), exact flights, "
             f"{int(result.collisions.sum())} impacts: max relative energy error "
             f"{result.max_relative_energy_error:.3g}",
-            f"<E>(0) = {mean[0]:.6f}   <E>({args.periods} T) = {mean[-1]:.6f} "
-            f"+- {stderr[-1]:.2g} (standard error over {runs} run(s))",
+            f"<E>(0) = {mean[0]:.6f}   <E>({args.periods} T) = "
+            + plus_minus(mean[-1], stderr[-1], ".6f")
+            + f" (over {runs} run(s))",
         ]
     )
     writers = {}

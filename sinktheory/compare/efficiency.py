@@ -33,6 +33,7 @@ from .. import validation as v
 from ..attachments import KINDS, Attachment
 from ..errors import ParameterError
 from ..results import Result
+from ..runstats import mean_stderr
 
 __all__ = [
     "attachments_of",
@@ -188,11 +189,8 @@ class Comparison(Result):
 
 
 def _mean_se(x: np.ndarray) -> tuple[float, float]:
-    x = x[np.isfinite(x)]
-    if not x.size:
-        return math.nan, math.nan
-    se = float(x.std(ddof=1) / math.sqrt(x.size)) if x.size > 1 else math.nan
-    return float(x.mean()), se
+    """Mean and standard error over the runs that reached the level (finite values)."""
+    return mean_stderr(x[np.isfinite(x)])
 
 
 def steps_per_period(att, energy: float, *, runs: int, periods: int, tol=None) -> int:

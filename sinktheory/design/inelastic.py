@@ -111,6 +111,7 @@ from ..integrators import get_scheme
 from ..layout import StateLayout
 from ..model import DAMPING_KINDS, RunSettings, Sink
 from ..progress import ProgressBar
+from ..runstats import mean_stderr
 from ..stepsize import DEFAULT_TOL, PERIOD, check_tol, resolve_step
 
 _RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
@@ -167,9 +168,7 @@ class InelasticResult:
     def equivalent_damping(self) -> tuple[float, float]:
         """zeta_eq of the container: mean over runs and its standard error (ddof = 1;
         NaN for one run)."""
-        z = self.damping_ratio
-        se = float(z.std(ddof=1) / math.sqrt(z.size)) if z.size > 1 else math.nan
-        return float(z.mean()), se
+        return mean_stderr(self.damping_ratio)
 
 
 @dataclass(frozen=True)

@@ -56,6 +56,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 from ..results import Result
+from ..runstats import spread
 from ..sinkstats import ensemble_mean, equipartition_container_energy, sink_measures
 
 __all__ = [
@@ -281,8 +282,7 @@ def longest_excursion(mean, threshold: float) -> float:
 def _se(values: np.ndarray) -> float:
     """Standard deviation (ddof = 1) of the finite values (NaN if fewer than two)."""
     x = np.asarray(values, dtype=float)
-    x = x[np.isfinite(x)]
-    return float(x.std(ddof=1)) if x.size > 1 else math.nan
+    return spread(x[np.isfinite(x)])
 
 
 def _rqa(series: np.ndarray, eps: float) -> dict:

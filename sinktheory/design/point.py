@@ -68,6 +68,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings, Sink, Well
+from ..runstats import mean_stderr
 from ..sinkstats import ensemble_mean
 from ..stepsize import check_tol
 from ..worklimit import check_particle_steps, step_of, tangent_steps
@@ -207,9 +208,7 @@ def lyapunov(p: dict, seed: int) -> tuple[float, float]:
         box=p["box"],
     )
     res = chaos(sink_of(p), settings, progress=False)
-    lam = np.asarray(res.lambda1, dtype=float)
-    se = float(lam.std(ddof=1) / math.sqrt(lam.size)) if lam.size > 1 else math.nan
-    return float(lam.mean()), se
+    return mean_stderr(res.lambda1)
 
 
 def ensemble(p: dict, seed: int) -> dict[str, Any]:
@@ -239,8 +238,7 @@ def ensemble(p: dict, seed: int) -> dict[str, Any]:
             "dt_used": res.dt,
             "zeta_eq": zeta,
             "zeta_eq_se": zeta_se,
-            "dissipated": float(share.mean()),
-            "dissipated_se": float(share.std(ddof=1) / math.sqrt(share.size)),
+            **dict(zip(("dissipated", "dissipated_se"), mean_stderr(share), strict=True)),
         }
     res = simulate(
         sink,
@@ -285,17 +283,14 @@ def _impulse_ensemble(p: dict, seed: int) -> dict[str, Any]:
     integral = trapezoid(res.container_energy, res.t, axis=1)
     zeta = work / (2.0 * integral)
     share = work / res.initial_energy
-    runs = zeta.size
     return {
         "energy": res.container_energy[:, ::SAMPLES],
         "h0": res.initial_energy,
         "dashpot": 1.0,
         "max_relative_energy_error": res.max_audit_error,
         "dt_used": res.dt,
-        "zeta_eq": float(zeta.mean()),
-        "zeta_eq_se": float(zeta.std(ddof=1) / math.sqrt(runs)),
-        "dissipated": float(share.mean()),
-        "dissipated_se": float(share.std(ddof=1) / math.sqrt(runs)),
+        **dict(zip(("zeta_eq", "zeta_eq_se"), mean_stderr(zeta), strict=True)),
+        **dict(zip(("dissipated", "dissipated_se"), mean_stderr(share), strict=True)),
     }
 
 

@@ -125,8 +125,8 @@ def check_point(p: dict) -> None:
 
 def verdict(lambda1: float, lambda1_se: float, ks_pvalue: float, mean_z: float) -> int:
     """The rule of the module docstring."""
-    if not math.isfinite(lambda1):
-        return -1
+    if not (math.isfinite(lambda1) and math.isfinite(lambda1_se)):
+        return -1  # no exponent, or one run: no standard error to judge it by
     if not lambda1 - 3 * lambda1_se > 0:
         return 0
     return 2 if ks_pvalue > P_LEVEL and abs(mean_z) < 3 else 1
@@ -164,7 +164,8 @@ def ergodicity_point(p: dict, seed: int) -> dict:
             progress=False,
         )
         summary = res.as_dict()["lambda1"]
-        lam, lam_se = float(summary["mean"]), float(summary["stderr"])
+        lam = float(summary["mean"])
+        lam_se = math.nan if summary["stderr"] is None else float(summary["stderr"])
     mean_z = (c.mean - law.mean) / c.mean_stderr if c.mean_stderr > 0 else math.nan
     return {
         "law_mean": law.mean,

@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..billiard.run import BilliardResult
+from ..runstats import ensemble_mean
 
 __all__ = ["billiard_figure"]
 
@@ -48,9 +49,7 @@ def billiard_figure(result: BilliardResult, *, title: str = ""):
     if result.fixed:
         ax_e.text(0.5, 0.5, "fixed container", ha="center", va="center", transform=ax_e.transAxes)
     else:
-        e = result.container_energy
-        mean = e.mean(axis=0)
-        se = e.std(axis=0, ddof=1) / np.sqrt(len(e)) if len(e) > 1 else np.zeros_like(mean)
+        mean, se = ensemble_mean(result.container_energy)  # no band for one run
         ax_e.plot(periods, mean, color="k")
         ax_e.fill_between(periods, mean - se, mean + se, color="0.7")
     ax_e.set_xlabel("t / T")
