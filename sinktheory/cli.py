@@ -14,7 +14,7 @@ import re
 import sys
 
 from . import commands
-from .commands._common import interruptible, write_outputs
+from .commands._common import interruptible, settle_zarr, write_outputs
 from .errors import NumericalError, ParameterError
 
 __all__ = ["build_parser", "main", "NEGATIVE_NUMBER", "UsageError"]
@@ -82,7 +82,10 @@ def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     command = _command(argv)
     with interruptible(f"sinktheory {command}" if command else "sinktheory", hint=None):
-        return _main(argv, command)
+        try:
+            return _main(argv, command)
+        finally:  # nothing may print after the command's last line
+            settle_zarr()
 
 
 def _main(argv: list[str], command: str | None) -> int:

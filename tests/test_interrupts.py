@@ -115,12 +115,13 @@ def test_interrupt_behind_a_compiled_call_is_an_interrupt(capsys, monkeypatch):
 def test_interrupt_lets_zarr_finish_the_io_in_flight():
     """An interrupt during a store write left zarr's tasks pending; exiting then closed
     zarr's event loop under them ("Task was destroyed but it is pending!" after the
-    command's line).  The interrupt now waits for them (briefly)."""
+    command's line); so did a refusal while reads were in flight.  The command now waits
+    for them (briefly) before it exits."""
     import asyncio
 
     import zarr.core.sync as zsync
 
-    from sinktheory.commands._common import _settle_zarr
+    from sinktheory.commands._common import settle_zarr
 
     done = []
 
@@ -130,5 +131,5 @@ def test_interrupt_lets_zarr_finish_the_io_in_flight():
 
     zsync.sync(asyncio.sleep(0))  # zarr's loop is running
     asyncio.run_coroutine_threadsafe(write(), zsync.loop[0])  # in flight, not awaited
-    _settle_zarr()
+    settle_zarr()
     assert done == [True]

@@ -74,7 +74,6 @@ def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterato
     except KeyboardInterrupt as e:
         signum = getattr(e, "signum", signal.SIGINT)
         e.__traceback__ = None  # let the frames go: a pool's queues are freed before exit
-        _settle_zarr()
         print(f"{prog}: interrupted" + (f"; {hint}" if hint else ""), file=sys.stderr, flush=True)
         status = 128 + int(signum)
     else:
@@ -86,11 +85,12 @@ def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterato
         raise SystemExit(status)
 
 
-def _settle_zarr(timeout: float = 1.0) -> None:
-    """Let zarr's I/O thread finish the reads and writes an interrupt left in flight (a
-    chunk or two, milliseconds), so that exiting does not close its event loop under them:
-    that printed "Task was destroyed but it is pending!" after the command's last line.
-    Nothing to do when zarr was not used."""
+def settle_zarr(timeout: float = 1.0) -> None:
+    """Let zarr's I/O thread finish the reads and writes left in flight by an interrupt or
+    an error (a chunk that does not decode fails a read while the others go on), so that
+    exiting does not close its event loop under them: that printed "Task was destroyed but
+    it is pending!" or "Event loop is closed" after the command's last line.  Nothing to do
+    when zarr was not used."""
     sync = sys.modules.get("zarr.core.sync")
     loop = None if sync is None else sync.loop[0]
     if loop is None or loop.is_closed() or not loop.is_running():

@@ -110,17 +110,60 @@ def _sink_settings(p: dict, seed: int):
     return sink, settings
 
 
+#: The well's and the sink's parameters a point takes (alpha, beta and n required).
+MODEL = {"alpha": None, "beta": None, "n": None, "gamma": 1.0, "shape": "flat",
+         "particles": 1, "mass": 0.2, "energy": 0.5}  # fmt: skip
+#: Set by a sweep to tell replicas of one point apart (their seeds differ).
+REPLICA = "replica"
+
+
 def check_point(p: dict) -> None:
-    """Refuse a point before anything runs (the model's validators name the parameter)."""
+    """Refuse a point before anything runs: unknown or missing parameters, and every
+    value the simulation and the Lyapunov ensemble would refuse (the model's validators,
+    the memory and work limits), each named by the point's parameter (a Lyapunov
+    ensemble's refusal names ``lyapunov_runs`` or ``lyapunov_periods``)."""
+    from dataclasses import replace
+
+    from ..chaos.sink import check_tangent_work
+    from ..stepsize import check_tol
+    from ..worklimit import check_work, step_of
+
+    if not isinstance(p, dict):
+        raise v.ParameterError("p", p, "a dict of the point's parameters")
+    allowed = (*MODEL, *DEFAULTS, REPLICA)
+    for name in p:
+        if name not in allowed:
+            raise v.ParameterError(name, p[name], f"a parameter of a point: {', '.join(allowed)}")
+    for name, default in MODEL.items():
+        if default is None and name not in p:
+            raise v.ParameterError(name, "missing", "given (alpha, beta and n are required)")
     p = {**DEFAULTS, **p}
     sink, settings = _sink_settings(p, 0)
     settings.check(sink)
     v.positive_int("runs", p["runs"], minimum=2)
     v.positive_int("transient", p["transient"], minimum=0, maximum=p["periods"] - 4)
     fractions_of(p["fractions"])
-    v.positive_int("lyapunov_runs", p["lyapunov_runs"], minimum=0)
-    v.positive_int("lyapunov_periods", p["lyapunov_periods"])
-    v.positive("tol", p["tol"])
+    v.positive_int(REPLICA, p.get(REPLICA, 0), minimum=0)
+    tol = check_tol(p["tol"])
+    _, _, steps, _ = step_of(sink, settings.total_energy_bound(sink), tol=tol, settings=settings)
+    check_work(settings, sink, steps)
+    lyapunov_runs = v.positive_int("lyapunov_runs", p["lyapunov_runs"], minimum=0)
+    if lyapunov_runs == 1:
+        raise v.ParameterError(
+            "lyapunov_runs", 1, "0 (none) or an integer >= 2 (a standard error needs two runs)"
+        )
+    periods = v.positive_int("lyapunov_periods", p["lyapunov_periods"])
+    if lyapunov_runs:
+        try:
+            lyapunov = replace(settings, runs=lyapunov_runs, periods=periods)
+            lyapunov.check(sink)
+            check_tangent_work(sink, lyapunov, steps, None, 0, False)
+        except v.ParameterError as e:
+            if e.name not in ("runs", "periods"):
+                raise
+            named = v.ParameterError(f"lyapunov_{e.name}", e.value, e.allowed)
+            named.args = (str(e).replace(e.name, named.name, 1),)  # the same reason
+            raise named from None
 
 
 def verdict(lambda1: float, lambda1_se: float, ks_pvalue: float, mean_z: float) -> int:
@@ -139,8 +182,8 @@ def ergodicity_point(p: dict, seed: int) -> dict:
     from ..simulate import simulate
     from .lifetime import compare_with_law
 
-    p = {**DEFAULTS, **p}
     check_point(p)
+    p = {**DEFAULTS, **p}
     sink, settings = _sink_settings(p, seed)
     sim = simulate(sink, settings, tol=p["tol"], progress=False)
     law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))

@@ -34,6 +34,7 @@ from __future__ import annotations
 import contextlib
 import multiprocessing
 import os
+import shutil
 import signal
 import sys
 import threading
@@ -175,6 +176,7 @@ def execute(
     if store is not None:
         store = _checked_path(store)  # before reaching a scheduler or computing anything
     # reach the scheduler first: a bad address must not leave a new store behind
+    created = False
     with _Engine(scheduler, workers) as engine:
         if store is None:
             target = MemoryStore(sweep)
@@ -182,9 +184,11 @@ def execute(
             target = SweepStore.open(store, sweep, repair=repair)
         else:
             target = SweepStore.create(store, sweep)
+            created = True
         tasks = _tasks(sweep, target.done())
         pending = sum(len(t) for t in tasks)
         bar = ProgressBar(pending, enabled=progress, label="sweep ", unit="point")
+        refused = False
         try:  # closing: a pool's run holds the signals until it ends (HeldSignals)
             with contextlib.closing(engine.run(sweep.kind, tasks)) as results:
                 for task, outputs in results:
@@ -194,9 +198,14 @@ def execute(
                     }
                     target.write(indices, values)
                     bar.update(len(task))
+        except ParameterError:  # a point refused its input: the sweep was never valid
+            refused = True
+            raise
         finally:
             bar.close()
             target.close()
+            if refused and created:  # a refusal leaves no store behind
+                shutil.rmtree(target.path, ignore_errors=True)
     return SweepRun(
         target.dataset(),
         target.path,

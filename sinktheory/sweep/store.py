@@ -57,6 +57,7 @@ that does not exist yet (resume to continue the sweep stored there)
 
 from __future__ import annotations
 
+import contextlib
 import fcntl
 import hashlib
 import itertools
@@ -66,6 +67,7 @@ import os
 import shutil
 import uuid
 import warnings
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -137,7 +139,8 @@ class SweepStore:
             encoding = {name: {"chunks": _chunks(sweep, name)} for name in sweep.kind.results}
             encoding["done"] = {"chunks": _flag_chunks(sweep)}
             encoding[CHECKSUM] = {"chunks": _flag_chunks(sweep)}
-            with warnings.catch_warnings():  # consolidated metadata: not (yet) in the v3 spec
+            # consolidated metadata: not (yet) in the v3 spec
+            with warnings.catch_warnings(), _naming(path):
                 warnings.filterwarnings("ignore", message="Consolidated metadata")
                 template.to_zarr(tmp, mode="w-", compute=False, encoding=encoding)
             try:
@@ -227,14 +230,17 @@ class SweepStore:
     def write(self, indices: np.ndarray, results: dict[str, Any]) -> None:
         """Store the results of the points ``indices`` (flat, C order), then flag them done.
 
-        ``results[name]`` has shape (len(indices), *result dimensions).
+        ``results[name]`` has shape (len(indices), *result dimensions).  An I/O error
+        (disk full, file too large) names the store.
         """
-        for name, value in results.items():
-            _vset(self._arrays[name], *selection(self.sweep, indices, value))
-        if self._checksum is not None:
-            sums = _point_checksums(self.sweep, results)
-            _vset(self._checksum, *selection(self.sweep, indices, sums))
-        _vset(self._arrays["done"], *selection(self.sweep, indices, np.ones(len(indices), bool)))
+        with _naming(self.path):
+            for name, value in results.items():
+                _vset(self._arrays[name], *selection(self.sweep, indices, value))
+            if self._checksum is not None:
+                sums = _point_checksums(self.sweep, results)
+                _vset(self._checksum, *selection(self.sweep, indices, sums))
+            flags = np.ones(len(indices), bool)
+            _vset(self._arrays["done"], *selection(self.sweep, indices, flags))
 
     # --- checks on resuming ---------------------------------------------------------------
     def _verify(self, repair: bool) -> None:
@@ -400,6 +406,18 @@ def _read_all(array: zarr.Array) -> None:
     step = array.chunks[0]
     for start in range(0, array.shape[0], step):
         array[start : start + step]
+
+
+@contextlib.contextmanager
+def _naming(path: Path) -> Iterator[None]:
+    """Give an I/O error that names no file (zarr's writes raise them so) the store's
+    path, so that "File too large" or "No space left on device" says where."""
+    try:
+        yield
+    except OSError as e:
+        if e.filename:
+            raise
+        raise OSError(e.errno, e.strerror or str(e), str(path)) from e
 
 
 def _lock(path: Path):

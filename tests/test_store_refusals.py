@@ -1,0 +1,92 @@
+"""Sweep stores: a refusal leaves no store behind and names the right parameter; an I/O
+error names the store."""
+
+from __future__ import annotations
+
+import dataclasses
+import resource
+import subprocess
+import sys
+
+import pytest
+
+from sinktheory.equilibrium.ergodicity import ergodicity_point
+from sinktheory.errors import ParameterError
+from sinktheory.sweep import run_sweep
+from sinktheory.sweep import runner as runner_module
+from sinktheory.sweep.plan import Sweep
+from sinktheory.sweep.store import SweepStore
+
+POINT = {"alpha": 0.5, "beta": 0.3, "n": 4}
+
+
+@pytest.mark.parametrize(
+    ("extra", "name"),
+    [
+        ({"tol": 1}, "tol"),  # the simulator's range 1e-12..1e-4: refused after the store
+        ({"tol": 1e-20}, "tol"),
+        ({"lyapunov_periods": 10**18}, "lyapunov_periods"),  # blamed periods
+        ({"lyapunov_runs": 10**11}, "lyapunov_runs"),
+        ({"lyapunov_runs": 1}, "lyapunov_runs"),  # a standard error of 0 from one run
+        ({"replica": -1}, "replica"),  # was accepted
+    ],
+)
+def test_ergodicity_refusal_names_the_parameter_and_leaves_no_store(extra, name, tmp_path):
+    store = tmp_path / "e.zarr"
+    with pytest.raises(ParameterError) as info:
+        run_sweep("ergodicity", {**POINT, **extra}, store=store, workers=1, progress=False)
+    assert info.value.name == name
+    assert str(info.value).startswith(f"{name} = ")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    ("point", "name"),
+    [
+        ({"beta": 0.3, "n": 4}, "alpha"),  # KeyError before
+        ({**POINT, "periods_": 10}, "periods_"),  # unknown keys were ignored
+        ("x", "p"),  # TypeError before
+    ],
+)
+def test_ergodicity_point_refuses_bad_points(point, name):
+    with pytest.raises(ParameterError) as info:
+        ergodicity_point(point, 0)
+    assert info.value.name == name
+
+
+def test_a_point_refused_while_computing_leaves_no_new_store(tmp_path, monkeypatch):
+    """The kind's checks cannot foresee every refusal; one that comes from a point's
+    computation still removes the store this run created (not a resumed one)."""
+    kind = runner_module.KINDS["floquet"]
+
+    def refuse(params, seed):
+        raise ParameterError("rtol", 1, "what the computation accepts")
+
+    monkeypatch.setitem(runner_module.KINDS, "floquet", dataclasses.replace(kind, compute=refuse))
+    params = {"alpha": 0.5, "beta": [0.1, 0.2], "n": 4}
+    with pytest.raises(ParameterError, match="rtol"):
+        run_sweep("floquet", params, store=tmp_path / "f.zarr", workers=1, progress=False)
+    assert list(tmp_path.iterdir()) == []
+    # a store that exists is the user's: resuming it into a refusal keeps it
+    SweepStore.create(tmp_path / "g.zarr", Sweep.make("floquet", params)).close()
+    with pytest.raises(ParameterError, match="rtol"):
+        run_sweep("floquet", params, store=tmp_path / "g.zarr", workers=1, progress=False,
+                  resume=True)  # fmt: skip
+    assert [p.name for p in tmp_path.iterdir()] == ["g.zarr"]
+
+
+def test_file_too_large_names_the_store(tmp_path):
+    """A file-size limit makes zarr's chunk writes fail with EFBIG; the message named no
+    file ("could not write : File too large")."""
+
+    def small_files():
+        resource.setrlimit(resource.RLIMIT_FSIZE, (8192, 8192))
+
+    argv = ["sweep", "floquet", "--param", "alpha=0.5", "--param", "beta=-0.3:0.3:20000"]
+    argv += ["--param", "n=2,10", "--out", "big.zarr", "--workers", "1", "--quiet"]
+    proc = subprocess.run(
+        [sys.executable, "-m", "sinktheory", *argv], cwd=tmp_path, capture_output=True,
+        text=True, preexec_fn=small_files, timeout=120,
+    )  # fmt: skip
+    assert proc.returncode == 1, proc.stderr
+    assert proc.stderr == "sinktheory sweep: could not write big.zarr: File too large\n"
