@@ -38,8 +38,8 @@ from .integrators import DEFAULT_SCHEME, get_scheme
 from .layout import StateLayout
 from .model import RunSettings, Sink, Well
 from .results import Result
-from .simulate import default_step, simulate
-from .stepsize import ladder_step
+from .simulate import simulate
+from .stepsize import default_step, ladder_step
 from .worklimit import check_particle_steps
 
 __all__ = [

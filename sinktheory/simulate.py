@@ -18,7 +18,7 @@ Units: the paper's (container mass 1, spring 1, period T = 2 pi).  Energies:
   E + sum_j e_j = H, the conserved total, exactly.
 
 Where it stops being trustworthy: the step must resolve the fastest wall collision
-(:func:`default_step` derives it from the energy); a step too large raises
+(:func:`sinktheory.stepsize.default_step` derives it from the energy); a step too large raises
 :class:`~sinktheory.errors.EnergyDriftError` (or :class:`~sinktheory.errors.NonFiniteStateError`
 when the state overflows) instead of returning numbers.  Individual trajectories are chaotic:
 differences (round-off included) grow by a factor ~10-100 per period once the particles are
@@ -59,42 +59,20 @@ from .ensemble import (
     split_values,
 )
 from .errors import ParameterError
-from .integrators import DEFAULT_SCHEME, get_scheme
+from .integrators import get_scheme
 from .layout import StateLayout
 from .model import RunSettings, Sink
-from .stepsize import DEFAULT_TOL, PERIOD, check_tol, choose
-from .worklimit import check_work, step_of
+from .stepsize import PERIOD, check_tol, step_of
+from .worklimit import check_work
 
 __all__ = [
     "ENERGY_BOUND",
     "RECORDS",
     "SimulationResult",
     "SimulationState",
-    "default_step",
     "first_order_rhs",
     "simulate",
 ]
-
-
-def default_step(
-    sink: Sink, energy: float, method: str = DEFAULT_SCHEME, tol: float = DEFAULT_TOL
-) -> tuple[float, int]:
-    """(dt, steps per period) of ``method`` for relative energy error ``tol``.
-
-    The step comes from the scheme's calibrated error model at the fastest frequency the
-    total ``energy`` allows (:func:`sinktheory.stepsize.step_for`); dt is shortened so a
-    period T = 2 pi is a whole number of steps and E(jT) is sampled exactly at t = jT.
-
-    Examples
-    --------
-    >>> from sinktheory import Sink, Well
-    >>> dt, steps = default_step(Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2), 0.5)
-    >>> import math
-    >>> abs(dt * steps - 2 * math.pi) < 1e-12
-    True
-    """
-    choice = choose(sink, energy, tol, method)
-    return choice.dt, choice.steps_per_period
 
 
 def first_order_rhs(sink: Sink):

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -47,19 +47,21 @@ __all__ = [
     "check_tol",
     "choose",
     "cost_table",
+    "default_step",
     "DEFAULT_TOL",
     "LADDER_RUNGS",
     "ladder_step",
     "PERIOD",
     "resolve_step",
     "step_for",
+    "step_of",
     "StepChoice",
     "stiffness_frequency",
     "TOL_RANGE",
 ]
 
 if TYPE_CHECKING:
-    from .model import Sink
+    from .model import RunSettings, Sink
 
 #: The container's period T = 2 pi (mass 1, spring 1).
 PERIOD = 2.0 * math.pi
@@ -197,6 +199,27 @@ def step_for(method: str, omega: float, tol: float) -> StepChoice:
     )
 
 
+def default_step(
+    sink: Sink, energy: float, method: str = DEFAULT_SCHEME, tol: float = DEFAULT_TOL
+) -> tuple[float, int]:
+    """(dt, steps per period) of ``method`` for relative energy error ``tol``.
+
+    The step comes from the scheme's calibrated error model at the fastest frequency the
+    total ``energy`` allows (:func:`step_for`); dt is shortened so a
+    period T = 2 pi is a whole number of steps and E(jT) is sampled exactly at t = jT.
+
+    Examples
+    --------
+    >>> from sinktheory import Sink, Well
+    >>> dt, steps = default_step(Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2), 0.5)
+    >>> import math
+    >>> abs(dt * steps - 2 * math.pi) < 1e-12
+    True
+    """
+    choice = choose(sink, energy, tol, method)
+    return choice.dt, choice.steps_per_period
+
+
 def cost_table(sink: Sink, energy: float, tol: float, methods=None) -> list[StepChoice]:
     """Each scheme's largest step for ``tol`` at total ``energy`` in ``sink``, cheapest
     (fewest force evaluations per period) first."""
@@ -246,3 +269,78 @@ def resolve_step(
             "tol", tol, "a tolerance this well reaches in at most 1e9 steps per period"
         )
     return choice.method, choice.dt, choice.steps_per_period, tol
+
+
+#: Defaults a too-stiff well is tried with, in order, to find the parameter responsible.
+_SUSPECTS = (("gamma", 1.0), ("mass", 0.2), ("energy", 0.5))
+
+
+def step_of(
+    sink: Sink,
+    energy: float,
+    *,
+    method: str | None = None,
+    dt: float | None = None,
+    tol: float | None = None,
+    settings: RunSettings | None = None,
+) -> tuple[str, float, int, float | None]:
+    """(method, dt, steps per period, tol) as :func:`~sinktheory.stepsize.resolve_step`,
+    but a well too stiff for any step within the limit names the parameter responsible.
+
+    The suspects (gamma, mass, total energy) are set one at a time to their defaults;
+    the first whose default lets the tolerance be reached is named.  When none does, the
+    tolerance is named if the caller gave it, else the stiffest parameter left (n).  With
+    ``settings`` (the runs' E0 and start box) each trial's total energy is the bound
+    :meth:`~sinktheory.model.RunSettings.total_energy_bound` of its own well (the
+    particles' start energy scales with gamma), and E0 is the suspect ``energy``.
+
+    Examples
+    --------
+    >>> from sinktheory import Sink, Well
+    >>> step_of(Sink(Well(0.5, 0.3, 4, gamma=1e308)), 0.5)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: gamma = 1e+308 is not allowed: must be small enough \
+that the well can be integrated ... (with gamma = 1 it can)
+    """
+    from .model import Sink, Well  # the model's kernels load only for a diagnosis
+
+    try:
+        return resolve_step(sink, energy, method=method, dt=dt, tol=tol)
+    except ParameterError as e:
+        if e.name != "tol" or dt is not None:
+            raise
+        error = e
+    limit = tol if tol is not None else DEFAULT_TOL
+    w = sink.well
+    e0 = energy if settings is None else settings.energy
+    for name, default in _SUSPECTS:
+        given = {"gamma": w.gamma, "mass": sink.mass, "energy": e0}[name]
+        if given == default:
+            continue
+        values = {"gamma": w.gamma, "mass": sink.mass, "energy": e0, name: default}
+        well = Well(w.alpha, w.beta, w.n, gamma=values["gamma"], shape=w.shape)
+        trial = Sink(well, particles=sink.particles, mass=values["mass"])
+        total = values["energy"]
+        if settings is not None:
+            total = replace(settings, energy=total).total_energy_bound(trial)
+        try:
+            well.check_energy(total)
+            resolve_step(trial, total, method=method, tol=limit)
+        except ParameterError:
+            continue
+        raise ParameterError(
+            name,
+            given,
+            f"small enough that the well can be integrated to tol = {limit:g} in at most "
+            f"{v.MAX_STEPS_PER_PERIOD:.0e} steps per period",
+            why=f"with {name} = {default:g} it can",
+        ) from None
+    if tol is not None:
+        raise error
+    raise ParameterError(
+        "n",
+        w.n,
+        f"a wall soft enough to integrate to tol = {limit:g} in at most "
+        f"{v.MAX_STEPS_PER_PERIOD:.0e} steps per period",
+    ) from None

@@ -1,13 +1,10 @@
 """Work limits checked before anything runs, naming the parameter responsible.
 
 Checks shared by the analyses that integrate ensembles (simulations, chaos indicators,
-design points, sweep kinds, normal-mode continuation):
+design points, sweep kinds, normal-mode continuation); the step they price comes from
+:func:`sinktheory.stepsize.step_of`, which names the parameter of a well too stiff to
+integrate:
 
-* :func:`step_of` -- the step for a tolerance, as :func:`sinktheory.stepsize.resolve_step`
-  picks it, except that a well too stiff to integrate within
-  :data:`~sinktheory.validation.MAX_STEPS_PER_PERIOD` steps per period names the model
-  parameter that makes it so (``gamma = 1e308``, a tiny ``mass``), not a tolerance the
-  caller never gave;
 * :func:`check_particle_steps` -- the work of a computation in particle steps, tangent
   vectors included (:func:`tangent_steps`), priced at the optimistic
   :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP`, against the limit in force
@@ -23,11 +20,6 @@ inside :func:`resumable`) against the model's :data:`~sinktheory.model.MAX_SECON
 Examples
 --------
 >>> from sinktheory import RunSettings, Sink, Well
->>> step_of(Sink(Well(0.5, 0.3, 4, gamma=1e308)), 0.5)  # doctest: +ELLIPSIS
-Traceback (most recent call last):
-...
-sinktheory.errors.ParameterError: gamma = 1e+308 is not allowed: must be small enough that \
-the well can be integrated ... (with gamma = 1 it can)
 >>> tangent_steps(particles=1, vectors=0), tangent_steps(particles=1, vectors=6)
 (1.0, 2.8)
 >>> max_seconds() / 86400
@@ -52,12 +44,9 @@ from __future__ import annotations
 import contextlib
 from collections.abc import Iterator
 from contextvars import ContextVar
-from dataclasses import replace
 
 from .errors import ParameterError
-from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink, Well
-from .stepsize import DEFAULT_TOL, resolve_step
-from .validation import MAX_STEPS_PER_PERIOD
+from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 
 __all__ = [
     "check_particle_steps",
@@ -65,7 +54,6 @@ __all__ = [
     "MAX_INTERACTIVE_SECONDS",
     "max_seconds",
     "resumable",
-    "step_of",
     "tangent_steps",
     "VECTOR_STEP",
 ]
@@ -85,9 +73,6 @@ MAX_INTERACTIVE_SECONDS = 86400.0
 
 #: Whether the work being checked is a resumable sweep's (set by :func:`resumable`).
 _RESUMABLE: ContextVar[bool] = ContextVar("sinktheory_resumable_work", default=False)
-
-#: Defaults a too-stiff well is tried with, in order, to find the parameter responsible.
-_SUSPECTS = (("gamma", 1.0), ("mass", 0.2), ("energy", 0.5))
 
 
 def tangent_steps(particles: int, vectors: int) -> float:
@@ -161,63 +146,3 @@ def check_work(settings: RunSettings, sink: Sink, steps_per_period: int) -> None
         f"{settings.runs} run(s) x {settings.periods} period(s) x {steps_per_period} "
         f"step(s) x {sink.particles} particle(s)",
     )
-
-
-def step_of(
-    sink: Sink,
-    energy: float,
-    *,
-    method: str | None = None,
-    dt: float | None = None,
-    tol: float | None = None,
-    settings: RunSettings | None = None,
-) -> tuple[str, float, int, float | None]:
-    """(method, dt, steps per period, tol) as :func:`~sinktheory.stepsize.resolve_step`,
-    but a well too stiff for any step within the limit names the parameter responsible.
-
-    The suspects (gamma, mass, total energy) are set one at a time to their defaults;
-    the first whose default lets the tolerance be reached is named.  When none does, the
-    tolerance is named if the caller gave it, else the stiffest parameter left (n).  With
-    ``settings`` (the runs' E0 and start box) each trial's total energy is the bound
-    :meth:`~sinktheory.model.RunSettings.total_energy_bound` of its own well (the
-    particles' start energy scales with gamma), and E0 is the suspect ``energy``.
-    """
-    try:
-        return resolve_step(sink, energy, method=method, dt=dt, tol=tol)
-    except ParameterError as e:
-        if e.name != "tol" or dt is not None:
-            raise
-        error = e
-    limit = tol if tol is not None else DEFAULT_TOL
-    w = sink.well
-    e0 = energy if settings is None else settings.energy
-    for name, default in _SUSPECTS:
-        given = {"gamma": w.gamma, "mass": sink.mass, "energy": e0}[name]
-        if given == default:
-            continue
-        values = {"gamma": w.gamma, "mass": sink.mass, "energy": e0, name: default}
-        well = Well(w.alpha, w.beta, w.n, gamma=values["gamma"], shape=w.shape)
-        trial = Sink(well, particles=sink.particles, mass=values["mass"])
-        total = values["energy"]
-        if settings is not None:
-            total = replace(settings, energy=total).total_energy_bound(trial)
-        try:
-            well.check_energy(total)
-            resolve_step(trial, total, method=method, tol=limit)
-        except ParameterError:
-            continue
-        raise ParameterError(
-            name,
-            given,
-            f"small enough that the well can be integrated to tol = {limit:g} in at most "
-            f"{MAX_STEPS_PER_PERIOD:.0e} steps per period",
-            why=f"with {name} = {default:g} it can",
-        ) from None
-    if tol is not None:
-        raise error
-    raise ParameterError(
-        "n",
-        w.n,
-        f"a wall soft enough to integrate to tol = {limit:g} in at most "
-        f"{MAX_STEPS_PER_PERIOD:.0e} steps per period",
-    ) from None

@@ -20,7 +20,8 @@ from sinktheory import ParameterError, RunSettings, Sink, Well
 from sinktheory.cli import main
 from sinktheory.ensemble import random_positions, total_energy
 from sinktheory.errors import EnergyDriftError, NonFiniteStateError
-from sinktheory.simulate import PERIOD, SimulationState, default_step, first_order_rhs, simulate
+from sinktheory.simulate import PERIOD, SimulationState, first_order_rhs, simulate
+from sinktheory.stepsize import default_step
 
 FIG8 = Sink(Well(alpha=0.5, beta=0.3, n=4), particles=5, mass=0.2)
 STIFF = Sink(Well(alpha=0.5, beta=0.3, n=10), particles=5, mass=0.2)

@@ -44,8 +44,8 @@ from ..ensemble import (
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..model import RunSettings, Sink
-from ..stepsize import aligned_step
-from ..worklimit import check_particle_steps, step_of, tangent_steps
+from ..stepsize import aligned_step, step_of
+from ..worklimit import check_particle_steps, tangent_steps
 from .general import (
     check_block,
     check_gali,

@@ -195,11 +195,11 @@ def _mean_se(x: np.ndarray) -> tuple[float, float]:
 
 def steps_per_period(att, energy: float, *, runs: int, periods: int, tol=None) -> int:
     """Integration steps per period of ``att`` after an impulse of ``energy``: the step
-    :func:`sinktheory.worklimit.step_of` picks for the start's total energy bound (a well
+    :func:`sinktheory.stepsize.step_of` picks for the start's total energy bound (a well
     too stiff to integrate is refused naming its parameter); the vibro-impact flow is
     exact between impacts and is counted as one step per recorded sample."""
     from ..model import RunSettings
-    from ..worklimit import step_of
+    from ..stepsize import step_of
 
     if att.kind == "impact":
         return 0

@@ -70,8 +70,8 @@ from ..errors import ParameterError
 from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings, Sink, Well
 from ..runstats import mean_stderr
 from ..sinkstats import ensemble_mean
-from ..stepsize import check_tol
-from ..worklimit import check_particle_steps, step_of, tangent_steps
+from ..stepsize import check_tol, step_of
+from ..worklimit import check_particle_steps, tangent_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of
 
 __all__ = [

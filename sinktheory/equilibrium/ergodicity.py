@@ -125,8 +125,8 @@ def check_point(p: dict) -> None:
     from dataclasses import replace
 
     from ..chaos.sink import check_tangent_work
-    from ..stepsize import check_tol
-    from ..worklimit import check_work, step_of
+    from ..stepsize import check_tol, step_of
+    from ..worklimit import check_work
 
     if not isinstance(p, dict):
         raise v.ParameterError("p", p, "a dict of the point's parameters")

@@ -63,7 +63,8 @@ from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
 from ..model import DAMPING_KINDS, MAX_PERIODS, SHAPES, RunSettings, Sink, Well
 from ..simulate import simulate
-from ..worklimit import check_work, step_of
+from ..stepsize import step_of
+from ..worklimit import check_work
 
 __all__ = [
     "DESIGN_TOL",
