@@ -34,6 +34,7 @@ import numpy as np
 from .. import validation as val
 from ..ensemble import (
     ENERGY_BOUND,
+    check_sink,
     engine_name,
     engine_params,
     split_values,
@@ -310,10 +311,7 @@ class _Point:
 
     @classmethod
     def of(cls, sink, settings, transverse: bool, initial) -> _Point:
-        if not isinstance(sink, Sink):
-            raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-        if not isinstance(settings, RunSettings):
-            raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
+        settings = check_sink(sink, settings)
         positions = start_positions(sink, settings, initial)
         values = start_state(sink, settings.energy, positions)
         h0 = total_energy(sink, values)

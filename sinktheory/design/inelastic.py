@@ -99,7 +99,8 @@ import numpy as np
 from .. import validation as v
 from ..engine.cache import load
 from ..ensemble import (
-    ENERGY_BOUND,
+    check_sink,
+    default_energy_bound,
     engine_name,
     engine_params,
     random_positions,
@@ -112,7 +113,7 @@ from ..layout import StateLayout
 from ..model import DAMPING_KINDS, RunSettings, Sink
 from ..progress import ProgressBar
 from ..runstats import mean_stderr
-from ..stepsize import DEFAULT_TOL, PERIOD, check_tol, resolve_step
+from ..stepsize import PERIOD, check_tol, resolve_step
 
 _RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
 
@@ -221,11 +222,7 @@ def setup(
     """Check the input and build the start state, the step and the audit bound exactly
     as :func:`sinktheory.simulate.simulate` does (ParameterError for bad input); with
     ``samples_per_period`` > 0 the steps per period are rounded up to a multiple of it."""
-    settings = RunSettings() if settings is None else settings
-    if not isinstance(sink, Sink):
-        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-    if not isinstance(settings, RunSettings):
-        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
+    settings = check_sink(sink, settings)
     damping = v.nonnegative("damping", damping)
     kind = v.choice("damping_kind", kind, DAMPING_KINDS)
     samples = v.positive_int("samples_per_period", samples_per_period, minimum=0,
@@ -235,7 +232,7 @@ def setup(
     if tol is not None:
         tol = check_tol(tol)
     if energy_bound is None:
-        energy_bound = max(ENERGY_BOUND, 100.0 * (tol or DEFAULT_TOL))
+        energy_bound = default_energy_bound(tol)
     bound = v.positive("energy_bound", energy_bound)
     settings.check(sink)
     q, vel = split_values(start_rows(sink, settings, start))
