@@ -29,27 +29,30 @@ def synthetic_runs(runs, steps, rng, phi=0.98, sigma=2.0):
 
 
 def test_more_runs_narrow_the_interval_and_do_not_move_it():
-    # 8 independent sets of 64 runs; the first 16 and 32 runs of each give the smaller
+    # 6 independent sets of 64 runs; the first 16 and 32 runs of each give the smaller
     # ensembles.  Expected: the 95 % intervals contain the exact crossing about 95 % of
-    # the time (22.8 of 24; 20 or more has probability 0.99 at the nominal level),
-    # widths shrink like 1 / sqrt(R) (w16 / w64 = 2; benchmarks/bench_relaxation.py
-    # measured 2.0 over 20 sets), the intervals of one set overlap, and the mean
-    # estimate does not drift with R beyond its errors.
+    # the time (17.1 of 18; 15 or more has probability 0.99 at the nominal level, 0.90
+    # at a coverage of 0.9), widths shrink like 1 / sqrt(R) (w16 / w64 = 2), the
+    # intervals of one set overlap, and the mean estimate does not drift with R beyond
+    # its errors (benchmarks/bench_relaxation.py: the same over 40 sets).
     inside, ratios, estimates = 0, [], {16: [], 32: [], 64: []}
-    for seed in range(8):
+    for seed in range(6):
         runs = synthetic_runs(64, 8001, np.random.default_rng(seed))
-        r = {R: measure_relaxation(runs[:R], 1.0, resamples=199, seed=seed) for R in (16, 32, 64)}
+        r = {
+            R: measure_relaxation(runs[:R], 1.0, window=100, resamples=199, seed=seed)
+            for R in (16, 32, 64)
+        }
         inside += sum(x.settle_low <= EXACT <= x.settle_high for x in r.values())
         assert max(x.settle_low for x in r.values()) < min(x.settle_high for x in r.values())
         width = {R: x.settle_high - x.settle_low for R, x in r.items()}
         ratios.append(width[16] / width[64])
         for R, x in r.items():
             estimates[R].append(x.settle_time)
-            assert x.chi2 < 2 and abs(x.late_z) < 4
-    assert inside >= 20, inside
+            assert x.chi2 < 2 and abs(x.late_z) < 4 and x.tail_start < EXACT
+    assert inside >= 15, inside
     assert 1.4 < np.median(ratios) < 2.9, ratios
     drift = np.mean(estimates[16]) - np.mean(estimates[64])
-    assert abs(drift) < 3 * np.std(estimates[16], ddof=1) / math.sqrt(8), estimates
+    assert abs(drift) < 3 * np.std(estimates[16], ddof=1) / math.sqrt(6), estimates
 
 
 def test_one_exponential_and_an_approach_from_below():
@@ -65,21 +68,22 @@ def test_one_exponential_and_an_approach_from_below():
     assert r.stderr[-1] == pytest.approx(0.05 / math.sqrt(16 * 50), rel=0.4)
 
 
-def test_never_settling_is_nan_and_bad_input_is_refused():
+def test_never_settling_is_flagged_and_bad_input_is_refused():
     runs = 0.3 + 0.001 * np.random.default_rng(1).standard_normal((5, 400))
     r = measure_relaxation(runs, 0.2, window=20, resamples=20)
-    assert math.isnan(r.settle_time) and r.late_z > 10
+    assert r.extrapolated and r.settle_time > 400 and r.late_z > 10
     for name, kwargs in [
         ("target", {"target": -1}),
         ("target", {"target": 0}),
         ("fraction", {"fraction": 0}),
         ("window", {"window": 200}),
+        ("tail", {"tail": 0.05}),
         ("level", {"level": 1}),
         ("resamples", {"resamples": 0}),
         ("seed", {"seed": -1}),
     ]:
         with pytest.raises(ParameterError, match=name):
-            measure_relaxation(runs, **{"target": 0.2, **kwargs})
+            measure_relaxation(runs, **{"target": 0.2, "window": 20, **kwargs})
     with pytest.raises(ParameterError, match="energy_runs"):
         measure_relaxation(runs[:2], 0.2)
     with pytest.raises(ParameterError, match="energy_runs"):
@@ -105,5 +109,5 @@ def test_fig8_k5_settling_is_stable_in_ensemble_size():
     assert max(x.settle_low for x in r.values()) < min(x.settle_high for x in r.values()), r
     widths = {R: x.settle_high - x.settle_low for R, x in r.items()}
     assert widths[64] < widths[16], widths
-    assert all(math.isfinite(x.settle_time) for x in r.values())
+    assert not any(x.extrapolated for x in r.values())
     assert abs(r[64].late_z) < 3 and r[64].chi2 < 2
