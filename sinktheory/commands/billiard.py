@@ -38,6 +38,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _fmt(stats: dict) -> str:
+    """``mean +- se`` of an ensemble statistic, or why there is none.
+
+    Examples
+    --------
+    >>> _fmt({"mean": 0.5, "stderr": 0.01}), _fmt({"mean": None, "stderr": None})
+    ('0.5 +- 0.01', 'undefined (a run had no impact)')
+    """
+    if stats["mean"] is None:
+        return "undefined (a run had no impact)"
     return f"{stats['mean']:.6g} +- {stats['stderr']:.2g}"
 
 
