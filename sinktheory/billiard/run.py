@@ -38,7 +38,7 @@ from ..model import RunSettings, Sink, Well
 from ..progress import chunks
 from ..results import Result
 from ..runstats import mean_stderr
-from ..validation import positive, positive_int, real_array
+from ..validation import flag, positive, positive_int, real_array
 from . import kernels as K
 from .table import Table, rigid_table
 
@@ -64,11 +64,20 @@ SHADOW_DISTANCE = 1e-9
 #: time the pair separates by at most e^(5 T / 32) ~ 3 between them, so the two
 #: trajectories' impacts stay within ~1e-8 time units of each other.
 RENORMALISATIONS = 32
+#: Smallest E0 of the moving container's lambda_1: the shadow trajectory must start close
+#: next to the motion, SHADOW_DISTANCE <= 1e-3 x the container's amplitude sqrt(2 E0).
+MIN_SHADOW_ENERGY = 0.5 * (1e3 * SHADOW_DISTANCE) ** 2
 PERIOD = 2 * math.pi
 
 
 def _stats(values: np.ndarray) -> dict[str, float]:
-    mean, se = mean_stderr(values)
+    """Mean and standard error over the runs (:func:`sinktheory.runstats.mean_stderr`);
+    NaN (JSON null) when a run's value is not finite (a run without impacts has no mean
+    free time)."""
+    v = np.asarray(values, dtype=float)
+    if not np.all(np.isfinite(v)):
+        return {"mean": math.nan, "stderr": math.nan}
+    mean, se = mean_stderr(v)
     return {"mean": mean, "stderr": se}
 
 
@@ -123,8 +132,13 @@ class BilliardResult(Result):
 
     @property
     def mean_free_time(self) -> np.ndarray:
-        """(R,) time between a particle's impacts: k t / (impacts of all particles)."""
-        return self.particles * self.duration / self.collisions.sum(axis=1)
+        """(R,) time between a particle's impacts: k t / (impacts of all particles); inf
+        for a run without impacts (a table far larger than the motion, or E0 so small that
+        nothing reaches a wall within the run)."""
+        hits = self.collisions.sum(axis=1).astype(float)
+        out = np.full(hits.shape, math.inf)
+        np.divide(self.particles * self.duration, hits, out=out, where=hits > 0)
+        return out
 
     @property
     def lambda1(self) -> np.ndarray | None:
@@ -133,8 +147,14 @@ class BilliardResult(Result):
 
     @property
     def lambda1_per_collision(self) -> np.ndarray | None:
-        """(R,) the same per impact of a particle: lambda_1 x mean free time."""
-        return None if self.logs is None else self.lambda1 * self.mean_free_time
+        """(R,) the same per impact of a particle: lambda_1 x mean free time (NaN for a run
+        without impacts)."""
+        if self.logs is None:
+            return None
+        mft = self.mean_free_time
+        out = np.full(mft.shape, math.nan)
+        np.multiply(self.lambda1, mft, out=out, where=np.isfinite(mft))
+        return out
 
     def items(self) -> dict[str, Any]:
         out = super().items()
@@ -311,8 +331,17 @@ def billiard(
     fixed : keep the container fixed; the particles share E0 (E0 / k each)
     lyapunov : also compute lambda_1
     """
-    settings = settings or RunSettings()
+    settings = RunSettings() if settings is None else settings
+    if not isinstance(settings, RunSettings):
+        raise ParameterError("settings", settings, "a RunSettings")
+    fixed, lyapunov = flag("fixed", fixed), flag("lyapunov", lyapunov)
     sink = Sink(Well(alpha, beta, 1, shape=shape), particles=particles, mass=mass)
+    if lyapunov and not fixed and not settings.energy >= MIN_SHADOW_ENERGY:
+        raise ParameterError(
+            "energy", settings.energy, f">= {MIN_SHADOW_ENERGY:g} for lambda_1 of a moving "
+            "container", why=f"its shadow trajectory starts {SHADOW_DISTANCE:g} away, which "
+            "must be small next to the container's amplitude sqrt(2 E0)",
+        )  # fmt: skip
     settings.check_box(sink.well)
     settings.check_memory(sink, ("container", "container", "container"))  # E_c, E, logs
     table = rigid_table(shape, alpha, beta)

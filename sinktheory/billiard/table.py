@@ -60,6 +60,11 @@ EPS_UNITS = 64
 #: Largest extent scanned along a wall looking for its corner, in units of
 #: max(alpha, |beta|, 1): a wall that meets no other by then leaves the table open.
 SCAN_EXTENT = 50.0
+#: Largest |alpha| and |beta| of a rigid table: the bounds of its wall functions'
+#: derivatives over the table grow like powers of its size up to the 12th (symmetric
+#: well), which overflow double precision from about 1e25 (the container's amplitude is
+#: of order 1: no particle meets a wall of a table this large anyway).
+MAX_SCALE = 1e20
 
 
 @dataclass(frozen=True)
@@ -344,6 +349,13 @@ def rigid_table(shape: str, alpha: float, beta: float) -> Table:
     """
     well = Well(alpha, beta, 1, shape=shape)
     alpha, beta = well.alpha, well.beta
+    name, value = ("beta", beta) if abs(beta) > alpha else ("alpha", alpha)
+    if abs(value) > MAX_SCALE:
+        raise ParameterError(
+            name, value, f"at most {MAX_SCALE:g} in magnitude for a rigid table",
+            why="the bounds of the wall functions over a larger table overflow double "
+            "precision",
+        )  # fmt: skip
     walls, denominators = _shape_walls(shape)
     at = {S.alpha: alpha, S.beta: beta}
     coefs = [_coef_array(m, lam(alpha, beta)) for m, lam, _, _ in walls]

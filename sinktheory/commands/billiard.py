@@ -41,6 +41,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _fmt(stats: dict) -> str:
+    """``mean +- se`` of an ensemble statistic, or why there is none.
+
+    Examples
+    --------
+    >>> _fmt({"mean": 0.5, "stderr": 0.01}), _fmt({"mean": None, "stderr": None})
+    ('0.5 +- 0.01', 'undefined (a run had no impact)')
+    >>> _fmt({"mean": 0.5, "stderr": None})
+    '0.5 (no standard error from one run)'
+    """
+    if stats["mean"] is None:
+        return "undefined (a run had no impact)"
     return plus_minus(stats["mean"], stats["stderr"])
 
 
