@@ -21,12 +21,10 @@ True
 
 import numpy as np
 
+from .limits import DEFAULT_RTOL
+
 __all__ = ["A", "B", "C", "DEFAULT_RTOL", "E3", "E5", "N_STAGES"]
 
-#: Default relative tolerance of one step of the Hill integration (:mod:`sinktheory.hill`);
-#: gives phi to about 1e-11 (see tests).  Kept here, beside the tableau, so that modules
-#: that only need the number (the sweep kinds) do not load the compiled kernels.
-DEFAULT_RTOL = 1e-13
 
 #: Stages of one step (the 13th, at c = 1 with the weights B, is the next step's first).
 N_STAGES = 12

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import validation as v
+from .limits import DEFAULT_SCHEME
 
 __all__ = ["DEFAULT_SCHEME", "get_scheme", "SCHEMES", "SplittingScheme"]
 
@@ -194,10 +195,6 @@ SCHEMES: dict[str, SplittingScheme] = {
         ),
     )
 }
-
-#: The scheme used when a step ``dt`` is given without a method (with a tolerance, the
-#: cheapest scheme is chosen by :func:`sinktheory.stepsize.choose`).
-DEFAULT_SCHEME = "blanes-moan6"
 
 
 def get_scheme(name: str) -> SplittingScheme:

@@ -33,6 +33,7 @@ import numpy as np
 from . import validation as v
 from ._generated import shapes as _shapes
 from .errors import ParameterError
+from .limits import MAX_N, MAX_PERIODS, MAX_RUNS, MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
 from .results import Result
 from .twins import python_kernel
 
@@ -76,18 +77,6 @@ MIN_RELATIVE_WALL_DISTANCE = 1e-8
 #: Smallest mass mu = m / k of one particle: its inverse (in every acceleration) and the
 #: stiffness omega^2 ~ V'' / mu must stay finite and resolvable by a time step.
 MIN_MU = 1e-12
-#: Largest ensemble and run length: beyond them seeding the runs, or one energy record,
-#: alone takes minutes or gigabytes.
-MAX_RUNS = 10**7
-MAX_PERIODS = 10**9
-#: An optimistic cost of one particle step (measured 5e-7 s on 2 cores in 2026-11), used
-#: to refuse work that could not finish within MAX_SECONDS (30 days: a sweep's point) or
-#: sinktheory.worklimit.MAX_INTERACTIVE_SECONDS (a day: a computation that cannot resume).
-SECONDS_PER_PARTICLE_STEP = 1e-7
-MAX_SECONDS = 30 * 86400.0
-#: Largest wall stiffness accepted.  Kernels stay finite far beyond it; the limit keeps
-#: integer powers s^(2n) of wall ratios |s| <= 1.5 well inside float64 range.
-MAX_N = 1000
 
 
 # scalar geometry by Python (see sinktheory.twins): light commands never start numba's

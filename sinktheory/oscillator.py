@@ -77,6 +77,7 @@ import numpy as np
 
 from . import validation as v
 from .errors import BracketError, ParameterError, PeriodOutOfRangeError
+from .limits import MAX_DPS
 from .model import MAX_N
 from .results import Result
 
@@ -160,12 +161,6 @@ def significant(x: mpmath.mpf, digits: int) -> str:
 
 def _check_n(n: object) -> int:
     return v.positive_int("n", n, maximum=MAX_N)
-
-
-#: Most significant digits of the mp path.  mpmath's Gamma function is the cost: with its
-#: pure-Python backend one Gamma value takes about 0.5 s at 300 digits, 2-17 s at 1000
-#: and minutes at 10000 (measured 2026-11 on the 2-core development machine).
-MAX_DPS = 1000
 
 
 def _check_dps(dps: object, name: str = "dps") -> int:

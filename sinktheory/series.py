@@ -91,6 +91,7 @@ import numpy as np
 
 from . import validation as v
 from .errors import ParameterError
+from .limits import MAX_ORDER
 from .model import MAX_N
 from .oscillator import exact_shape, period, triangle_wave, triangle_wave_derivative
 from .results import Result
@@ -113,9 +114,6 @@ __all__ = [
     "triangle_wave",
     "triangle_wave_derivative",
 ]
-
-#: Highest order built (exact rational arithmetic grows like order^4).
-MAX_ORDER = 20
 
 
 @functools.cache

@@ -40,6 +40,7 @@ import numpy as np
 from . import validation as v
 from .errors import ParameterError
 from .integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
+from .limits import DEFAULT_TOL, TOL_RANGE
 
 __all__ = [
     "aligned_step",
@@ -77,10 +78,6 @@ CALIBRATION: dict[str, tuple[float, float]] = {
     "blanes-moan6": (2.24e-7, 0.9),
     "suzuki-umeno8": (2.89e-6, 0.65),
 }
-#: The default tolerance of :func:`sinktheory.simulate.simulate`.
-DEFAULT_TOL = 1e-8
-#: Tolerances the calibration supports (round-off floor below, no accuracy above).
-TOL_RANGE = (1e-12, 1e-4)
 
 
 @functools.lru_cache(maxsize=1024)

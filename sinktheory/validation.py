@@ -25,6 +25,7 @@ import tempfile
 from pathlib import Path
 
 from .errors import ParameterError
+from .limits import MAX_STEPS_PER_PERIOD
 
 __all__ = [
     "BOOLS",
@@ -238,10 +239,6 @@ def fits_memory(name: str, value: object, nbytes: float, what: str, allowed: str
             why=f"{what} would need about {nbytes_text(nbytes)} of memory, over the "
             f"{nbytes_text(limit)} allowed (half of this machine's memory)",
         )
-
-
-#: Most integration steps in one container period T = 2 pi (a step >= 6.3e-9).
-MAX_STEPS_PER_PERIOD = 10**9
 
 
 def time_step(name: str, value: object, period: float = 2 * math.pi) -> float:

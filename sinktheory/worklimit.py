@@ -46,6 +46,7 @@ from collections.abc import Iterator
 from contextvars import ContextVar
 
 from .errors import ParameterError
+from .limits import MAX_INTERACTIVE_SECONDS
 from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 
 __all__ = [
@@ -65,11 +66,6 @@ __all__ = [
 #: the limit optimistic.
 VECTOR_STEP = 0.3
 
-#: The longest estimated work (seconds at SECONDS_PER_PARTICLE_STEP, itself optimistic) a
-#: computation that cannot resume may start.  The paper's largest jobs estimate minutes
-#: (``sinktheory reproduce`` as a whole about 83 s measured); a day keeps a mistyped size
-#: from holding a machine for days, while a sweep goes up to MAX_SECONDS per point.
-MAX_INTERACTIVE_SECONDS = 86400.0
 
 #: Whether the work being checked is a resumable sweep's (set by :func:`resumable`).
 _RESUMABLE: ContextVar[bool] = ContextVar("sinktheory_resumable_work", default=False)

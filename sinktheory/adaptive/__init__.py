@@ -72,6 +72,7 @@ from ..ensemble import (
 )
 from ..errors import ParameterError, StepControlError
 from ..integrators import DEFAULT_SCHEME, get_scheme
+from ..limits import DEFAULT_EPS, MAX_EPS
 from ..model import RunSettings, Sink
 from ..progress import ProgressBar
 from ..stepsize import DEFAULT_TOL, PERIOD, choose
@@ -109,10 +110,6 @@ __all__ = [
     "v",
 ]
 
-#: eps when none is given: |dH|/H0 <= 2e-8 on Fig. 8's ensemble for n = 4..100.
-DEFAULT_EPS = 0.25
-#: Largest eps accepted (beyond it the wall approach is covered in too few steps).
-MAX_EPS = 0.5
 #: What the adaptive method records (no trajectory: its steps are not on a grid).
 RECORDS = ("container", "particles", "final")
 #: Steps a run may take in one period before it is stopped (StepControlError).

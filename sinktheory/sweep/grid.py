@@ -36,6 +36,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..limits import MAX_SWEEP_POINTS as MAX_POINTS
 
 __all__ = [
     "fingerprint",
@@ -49,9 +50,6 @@ __all__ = [
 ]
 
 Value = int | float | str
-#: Most points of one sweep (every point is checked before any work starts: about
-#: 0.1 ms each, so 1e6 points take a couple of minutes just to check).
-MAX_POINTS = 10**6
 
 
 def parse_value(text: str) -> Value:

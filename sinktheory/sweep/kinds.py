@@ -56,11 +56,11 @@ import numpy as np
 from .. import validation as v
 from ..bifurcation import QUANTITIES
 from ..design.measures import ATTACHMENTS
-from ..dop853 import DEFAULT_RTOL
 from ..ensemble import ENERGY_BOUND
 from ..equilibrium import ergodicity as _ergodicity
 from ..errors import ParameterError
 from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
+from ..limits import DEFAULT_RTOL
 from ..model import DAMPING_KINDS, MAX_PERIODS, SHAPES, RunSettings, Sink, Well
 from ..simulate import simulate
 from ..stepsize import step_of

@@ -1,0 +1,88 @@
+"""Limits and defaults a user meets: the one place for the bounds every input is checked
+against and the values used when an option is not given.
+
+Numerical safeguards inside one algorithm (iteration caps of a root finder, step bounds
+of a Newton method) stay beside that algorithm; what is here is what a user can ask for
+and be refused, or leave out and get.  The modules that use a limit import it from here,
+so ``sinktheory.model.MAX_N`` and ``sinktheory.limits.MAX_N`` are the same object.
+
+Examples
+--------
+>>> MAX_N, DEFAULT_TOL, TOL_RANGE
+(1000, 1e-08, (1e-12, 0.0001))
+>>> MAX_INTERACTIVE_SECONDS < MAX_SECONDS
+True
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "DEFAULT_EPS",
+    "DEFAULT_RTOL",
+    "DEFAULT_SCHEME",
+    "DEFAULT_TOL",
+    "MAX_DPS",
+    "MAX_EPS",
+    "MAX_INTERACTIVE_SECONDS",
+    "MAX_N",
+    "MAX_ORDER",
+    "MAX_PERIODS",
+    "MAX_RUNS",
+    "MAX_SECONDS",
+    "MAX_STEPS_PER_PERIOD",
+    "MAX_SWEEP_POINTS",
+    "SECONDS_PER_PARTICLE_STEP",
+    "TOL_RANGE",
+]
+
+# ----------------------------------------------------------------- the model's parameters
+#: Largest wall stiffness accepted.  Kernels stay finite far beyond it; the limit keeps
+#: integer powers s^(2n) of wall ratios |s| <= 1.5 well inside float64 range.
+MAX_N = 1000
+
+# ------------------------------------------------------------------ ensembles and work
+#: Largest ensemble and run length: beyond them seeding the runs, or one energy record,
+#: alone takes minutes or gigabytes.
+MAX_RUNS = 10**7
+MAX_PERIODS = 10**9
+#: An optimistic cost of one particle step (measured 5e-7 s on 2 cores in 2026-11), used
+#: to refuse work that could not finish within MAX_SECONDS (30 days: a sweep's point) or
+#: MAX_INTERACTIVE_SECONDS (a day: a computation that cannot resume).
+SECONDS_PER_PARTICLE_STEP = 1e-7
+MAX_SECONDS = 30 * 86400.0
+#: The longest estimated work (seconds at SECONDS_PER_PARTICLE_STEP, itself optimistic) a
+#: computation that cannot resume may start.  The paper's largest jobs estimate minutes
+#: (``sinktheory reproduce`` as a whole about 83 s measured); a day keeps a mistyped size
+#: from holding a machine for days, while a sweep goes up to MAX_SECONDS per point.
+MAX_INTERACTIVE_SECONDS = 86400.0
+#: Most points of one sweep (every point is checked before any work starts: about
+#: 0.1 ms each, so 1e6 points take a couple of minutes just to check).
+MAX_SWEEP_POINTS = 10**6
+
+# ------------------------------------------------------------------------- time steps
+#: Most integration steps in one container period T = 2 pi (a step >= 6.3e-9).
+MAX_STEPS_PER_PERIOD = 10**9
+#: The default tolerance of :func:`sinktheory.simulate.simulate`.
+DEFAULT_TOL = 1e-8
+#: Tolerances the calibration supports (round-off floor below, no accuracy above).
+TOL_RANGE = (1e-12, 1e-4)
+#: The scheme used when a step ``dt`` is given without a method (with a tolerance, the
+#: cheapest scheme is chosen by :func:`sinktheory.stepsize.choose`).
+DEFAULT_SCHEME = "blanes-moan6"
+#: The adaptive step's eps when none is given: |dH|/H0 <= 2e-8 on Fig. 8's ensemble for
+#: n = 4..100.
+DEFAULT_EPS = 0.25
+#: Largest eps accepted (beyond it the wall approach is covered in too few steps).
+MAX_EPS = 0.5
+#: Default relative tolerance of one step of the Hill integration (:mod:`sinktheory.hill`);
+#: gives phi to about 1e-11 (see tests).
+DEFAULT_RTOL = 1e-13
+
+# --------------------------------------------------------------- exact and series paths
+#: Most significant digits of the oscillator's mp path.  mpmath's Gamma function is the
+#: cost: with its pure-Python backend one Gamma value takes about 0.5 s at 300 digits,
+#: 2-17 s at 1000 and minutes at 10000 (measured 2026-11 on the 2-core development machine).
+MAX_DPS = 1000
+#: Highest order of the triangle-wave series built (exact rational arithmetic grows like
+#: order^4).
+MAX_ORDER = 20
