@@ -27,6 +27,9 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    # copies MathJax 3 into _static/mathjax/ and points mathjax_path at it: the math
+    # renders in a browser without a network (the default loads MathJax from a CDN)
+    "sphinx-mathjax-offline",
     "sphinx.ext.viewcode",
     "numpydoc",
     "sinktheory_docs",

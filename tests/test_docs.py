@@ -8,6 +8,7 @@ gallery, so it takes about a minute.
 
 from __future__ import annotations
 
+import functools
 import importlib
 import inspect
 import os
@@ -16,6 +17,7 @@ import re
 import shutil
 import subprocess
 import sys
+from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
@@ -47,6 +49,57 @@ def site(tmp_path_factory) -> Path:
     return out / "html"
 
 
+class _Tags(HTMLParser):
+    """The scripts and stylesheets a page loads."""
+
+    def __init__(self, html: str):
+        super().__init__(convert_charrefs=True)
+        self.assets: list[str] = []  # src of <script>, href of <link rel=stylesheet>
+        self.feed(html)
+        self.close()
+
+    def handle_starttag(self, tag, attrs):
+        a = {k: v or "" for k, v in attrs}
+        if tag == "script" and a.get("src"):
+            self.assets.append(a["src"])
+        elif tag == "link" and "stylesheet" in a.get("rel", "").lower().split():
+            self.assets.append(a.get("href", ""))
+
+
+REMOTE = re.compile(r"\s*(https?:|//)", re.I)
+# the <script> and <link> tags of a page (quoted attribute values may hold a ">"): only
+# these go through the HTML parser, which is slow on the large API pages
+SCRIPT_OR_LINK = re.compile(r"""<(?:script|link)\b(?:[^>"']|"[^"]*"|'[^']*')*>""", re.I)
+
+
+@functools.lru_cache(maxsize=4)
+def _assets(html: str) -> tuple[str, ...]:
+    tags = SCRIPT_OR_LINK.findall(html)
+    # a <script> is closed at once, else the parser reads the tags after it as its code
+    closed = [t + "</script>" if t[:7].lower() == "<script" else t for t in tags]
+    return tuple(_Tags("".join(closed)).assets)
+
+
+def _remote_assets(html: str) -> list[str]:
+    return [url for url in _assets(html) if REMOTE.match(url)]
+
+
+def _missing_local_assets(page: Path, html: str) -> list[str]:
+    local = [url for url in _assets(html) if not REMOTE.match(url)]
+    return [url for url in local if not (page.parent / url.split("?")[0]).is_file()]
+
+
+def _bundled_mathjax(page: Path, html: str) -> Path | None:
+    """The MathJax script a page loads, if it is the copy in the build's _static/."""
+    for url in _assets(html):
+        if REMOTE.match(url):
+            continue
+        path = (page.parent / url.split("?")[0]).resolve()
+        if path.name == "tex-chtml.js" and path.parent.name == "mathjax":
+            return path if path.is_file() else None
+    return None
+
+
 def _public_modules() -> list[str]:
     names = ["sinktheory"]
     for info in pkgutil.walk_packages(sinktheory.__path__, "sinktheory."):
@@ -58,6 +111,61 @@ def _public_modules() -> list[str]:
 def test_site_builds_without_warnings(site):
     for page in ("index", "getting_started", "cli", "gallery", "api/index", "theory/index"):
         assert (site / f"{page}.html").exists(), page
+
+
+def test_no_page_loads_a_remote_script_or_stylesheet(site):
+    """Opened without a network, every page has all it loads (math included)."""
+    pages = sorted(site.rglob("*.html"))
+    assert len(pages) > 50
+    remote, missing, local = {}, {}, 0
+    for page in pages:
+        html = page.read_text()
+        name = str(page.relative_to(site))
+        remote[name] = _remote_assets(html)
+        missing[name] = _missing_local_assets(page, html)
+        local += len(_assets(html))
+    assert local > 3 * len(pages)  # the check saw the pages' scripts and stylesheets
+    assert not {k: v for k, v in remote.items() if v}, "loaded from another site"
+    assert not {k: v for k, v in missing.items() if v}, "not in the build"
+
+
+def test_pages_with_math_load_the_bundled_mathjax(site):
+    with_math = []
+    for page in sorted(site.rglob("*.html")):
+        html = page.read_text()
+        if 'class="math' in html:
+            with_math.append(page.relative_to(site).as_posix())
+            assert _bundled_mathjax(page, html), page
+    assert "theory/potential.html" in with_math
+    mathjax = site / "_static" / "mathjax"
+    assert (mathjax / "tex-chtml.js").stat().st_size > 100_000
+    # the fonts MathJax's HTML output loads, relative to its script
+    assert len(list((mathjax / "output" / "chtml" / "fonts" / "woff-v2").glob("*.woff"))) > 10
+
+
+def test_the_checks_of_offline_pages_catch_a_remote_or_missing_file(tmp_path):
+    remote = [
+        '<script src="https://cdn.example.org/mathjax/tex-chtml.js"></script>',
+        '<SCRIPT defer SRC="HTTP://cdn.example.org/a.js"></SCRIPT>',
+        '<link rel="stylesheet" href="//fonts.example.org/a.css">',
+        '<link href="https://example.org/a.css" rel="preload stylesheet">',
+        '<script data-note="a > b" src="https://cdn.example.org/a.js"></script>',
+        '<script src="_static/a.js"></script>\n<script src="https://cdn.example.org/b.js">',
+    ]
+    for tag in remote:
+        assert _remote_assets(f"<html><head>{tag}</head></html>"), tag
+    harmless = '<a href="https://arxiv.org/abs/1610.02939">paper</a><link rel="icon" href="//x">'
+    assert not _remote_assets(harmless + '<script src="_static/a.js?v=1"></script>')
+    page = tmp_path / "theory" / "page.html"
+    page.parent.mkdir()
+    local = '<script defer src="../_static/mathjax/tex-chtml.js"></script>'
+    assert _missing_local_assets(page, local) == ["../_static/mathjax/tex-chtml.js"]
+    assert _bundled_mathjax(page, local) is None  # referenced, but not in the build
+    assert _bundled_mathjax(page, remote[0]) is None
+    (tmp_path / "_static" / "mathjax").mkdir(parents=True)
+    (tmp_path / "_static" / "mathjax" / "tex-chtml.js").write_text("//")
+    assert _missing_local_assets(page, local) == []
+    assert _bundled_mathjax(page, local) == tmp_path / "_static" / "mathjax" / "tex-chtml.js"
 
 
 def test_every_public_function_and_class_is_documented(site):
