@@ -27,14 +27,31 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    # copies MathJax 3 into _static/mathjax/ and points mathjax_path at it: the math
+    # renders in a browser without a network (the default loads MathJax from a CDN)
+    "sphinx-mathjax-offline",
     "sphinx.ext.viewcode",
     "numpydoc",
+    "myst_nb",
     "sinktheory_docs",
 ]
 
 templates_path = ["_templates"]
 exclude_patterns = ["_build", "_autogen"]
 root_doc = "index"
+# no Markdown pages: .ipynb are the notebooks of ../notebooks, copied in by sinktheory_docs
+source_suffix = {".rst": "restructuredtext", ".ipynb": "myst-nb"}
+
+# --- notebooks: executed at every build, an error fails it ----------------------------
+# They are committed without outputs, so the build is where their outputs come from
+# (tests/test_docs.py checks the rendered tour; nothing else executes it in CI).
+nb_execution_mode = "force"
+nb_execution_raise_on_error = True
+nb_execution_timeout = 600
+nb_execution_in_temp = True  # a notebook that writes files leaves nothing in docs/
+nb_merge_streams = True
+nb_ipywidgets_js = {}  # the default loads require.js from a CDN on pages with widgets
+myst_enable_extensions = ["dollarmath"]  # $...$ in Markdown cells is math, as in Jupyter
 
 # --- API reference: autosummary over the package, discovered at build time ---------
 autosummary_generate = True

@@ -27,7 +27,9 @@
     to reuse the last run instead of reproducing again (for quick local rebuilds).
 
 The extension also empties ``docs/api/generated/`` before autosummary writes its stub
-pages, so a module that was moved or deleted leaves no stale page behind.
+pages, so a module that was moved or deleted leaves no stale page behind, and copies the
+notebooks of ``../notebooks/`` into ``docs/notebooks/`` (ignored by git), where myst-nb
+executes and renders them; their kernels import the same sinktheory as the build.
 """
 
 from __future__ import annotations
@@ -57,6 +59,8 @@ DOCS = HERE.parent
 AUTOGEN = DOCS / "_autogen"
 GALLERY = AUTOGEN / "gallery"
 API_GENERATED = DOCS / "api" / "generated"
+NOTEBOOKS_SOURCE = DOCS.parent / "notebooks"
+NOTEBOOKS = DOCS / "notebooks"
 
 
 # --- equations from the symbolic model ------------------------------------------------
@@ -402,11 +406,41 @@ def _clean_api_stubs(app) -> None:
     shutil.rmtree(API_GENERATED, ignore_errors=True)
 
 
+# --- notebooks ----------------------------------------------------------------------------
+def _copy_notebooks(app) -> None:
+    """Mirror ``../notebooks/*.ipynb`` into ``docs/notebooks/`` for myst-nb.
+
+    A notebook whose bytes did not change is left alone (its time stamp too), so an
+    incremental build does not execute it again; one deleted from ``../notebooks/`` is
+    deleted here.  The kernels myst-nb starts inherit ``PYTHONPATH``: the imported
+    sinktheory's folder goes first, so the notebooks run the code these pages document
+    rather than some other installed copy.
+    """
+    if not NOTEBOOKS_SOURCE.is_dir():
+        logger.warning("notebooks: %s not found, no notebook pages", NOTEBOOKS_SOURCE)
+        return
+    NOTEBOOKS.mkdir(exist_ok=True)
+    wanted = {p.name: p for p in NOTEBOOKS_SOURCE.glob("*.ipynb")}
+    for stale in NOTEBOOKS.glob("*.ipynb"):
+        if stale.name not in wanted:
+            stale.unlink()
+    for name, source in wanted.items():
+        target = NOTEBOOKS / name
+        if not target.exists() or target.read_bytes() != source.read_bytes():
+            shutil.copyfile(source, target)
+    import sinktheory
+
+    root = str(Path(sinktheory.__file__).resolve().parents[1])
+    paths = [root] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
+    os.environ["PYTHONPATH"] = os.pathsep.join(dict.fromkeys(paths))
+
+
 def setup(app):
     app.add_directive("symbolic", SymbolicMath)
     app.add_directive("cli-reference", CliReference)
     app.add_directive("paper-gallery", PaperGallery)
     app.connect("builder-inited", _clean_api_stubs, priority=100)  # before autosummary
+    app.connect("builder-inited", _copy_notebooks)  # before the sources are listed
     app.connect("env-before-read-docs", _start_reproduce)
     app.connect("build-finished", _stop_reproduce)
     app.connect("autodoc-process-docstring", escape_plain_math, priority=100)  # before numpydoc
