@@ -41,10 +41,43 @@ def test_level_line_curvature_against_a_circle():
     assert abs(level_line_curvature(well, 0.5) - (-1 / r)) < 1e-5
 
 
-def test_quick_reproduction_of_every_figure(tmp_path, capsys):
-    """The README's main job at preview fidelity: every scene draws and reports."""
+class _Recorder(dict):
+    """The engine cache's dict of loaded engines, noting every engine asked for."""
+
+    def __init__(self, loaded, asked):
+        super().__init__(loaded)
+        self.asked = asked
+
+    def __contains__(self, name):
+        self.asked.append(name)
+        return super().__contains__(name)
+
+
+def test_quick_reproduction_of_every_figure(tmp_path, capsys, monkeypatch):
+    """The README's main job at preview fidelity: every scene draws and reports, and each
+    runs exactly the engines its estimate counts (sinktheory.scenes.ENGINES)."""
+    from sinktheory.commands import reproduce
+    from sinktheory.engine import cache
+    from sinktheory.scenes import ENGINES
+
+    asked = []
+    monkeypatch.setattr(cache, "_loaded", _Recorder(cache._loaded, asked))
+    say = reproduce._say
+    monkeypatch.setattr(reproduce, "_say", lambda text: (asked.append(text), say(text)))
     out = tmp_path / "all"
     assert main(["reproduce", "--quick", "--out", str(out), "--json"]) == 0
+    runs, figure = {}, None
+    for item in asked:
+        if item.startswith("Fig. ") and "/" in item.split(":")[0]:
+            figure = int(item.split()[1])
+            runs[figure] = set()
+        elif figure is not None and not item.startswith(("Fig. ", "reproduce:")):
+            runs[figure].add(item)
+    assert sorted(runs) == sorted(ENGINES)
+    earlier = set()
+    for f in sorted(runs):  # a figure may reuse a result an earlier figure computed
+        assert set(ENGINES[f]) - earlier <= runs[f] <= set(ENGINES[f]), f
+        earlier |= runs[f]
     data = json.loads(capsys.readouterr().out)
     assert sorted(f["figure"] for f in data["figures"]) == sorted(SCENES)
     assert all(f["error"] is None and f["claims"] for f in data["figures"])

@@ -1,7 +1,9 @@
 """``sinktheory reproduce``: every figure of the paper as a PNG, and report.md.
 
 Before each figure one line on stderr names it with its expected run time (as measured on
-a 2-core machine, :data:`sinktheory.scenes.SECONDS`), and after it one line gives the
+a 2-core machine, :data:`sinktheory.scenes.SECONDS`, plus about
+:data:`~sinktheory.engine.cache.COMPILE_SECONDS` for each engine it compiles on first
+use, :data:`sinktheory.scenes.ENGINES`), and after it one line gives the
 time it took, so a log file shows where a long run is; long computations inside a figure
 add their own progress lines (:mod:`sinktheory.progress`).  The scene modules (numpy,
 numba, matplotlib) are imported only after the arguments are checked.
@@ -42,6 +44,21 @@ def _say(text: str) -> None:
     print(text, file=sys.stderr, flush=True)
 
 
+def _first_compilations(figures) -> dict[int, list[str]]:
+    """The engines each figure will compile on its first use here: those it runs
+    (:data:`sinktheory.scenes.ENGINES`) that are not in the cache and that no earlier
+    figure of this run compiles."""
+    from ..engine.cache import compiled
+    from ..scenes import ENGINES
+
+    seen: set[str] = set()
+    out = {}
+    for number in figures:
+        out[number] = [e for e in ENGINES[number] if e not in seen and not compiled(e)]
+        seen.update(ENGINES[number])
+    return out
+
+
 def run(args: argparse.Namespace) -> Output:
     figures = sorted(set(args.figure or FIGURES))
     unknown = [f for f in figures if f not in FIGURES]
@@ -51,21 +68,31 @@ def run(args: argparse.Namespace) -> Output:
     out_dir = output_directory("out", args.out)
 
     from .. import __version__
+    from ..engine.cache import COMPILE_SECONDS
     from ..errors import NumericalError
     from ..report import SceneOutcome, render
     from ..scenes import scene as scene_of
 
-    expected = sum(estimate(f, args.quick) for f in figures)
+    first_use = _first_compilations(figures)
+    compiling = COMPILE_SECONDS * sum(len(e) for e in first_use.values())
+    expected = sum(estimate(f, args.quick) for f in figures) + compiling
     _say(
         f"reproduce: {len(figures)} figure(s) at {'quick' if args.quick else 'paper'} "
-        f"fidelity, expected about {expected:.0f} s (measured on 2 cores)"
+        f"fidelity, expected about {expected:.0f} s (measured on 2 cores"
+        + (
+            f"; includes about {compiling:.0f} s compiling engines on first use)"
+            if compiling
+            else ")"
+        )
     )
     outcomes = []
     for i, number in enumerate(figures, 1):
         scene = scene_of(number)
+        new = first_use[number]
+        seconds = estimate(number, args.quick) + COMPILE_SECONDS * len(new)
         _say(
-            f"Fig. {number} ({i}/{len(figures)}): {scene.title}; "
-            f"about {estimate(number, args.quick):.0f} s"
+            f"Fig. {number} ({i}/{len(figures)}): {scene.title}; about {seconds:.0f} s"
+            + (f" (compiles {', '.join(new)} first)" if new else "")
         )
         start = time.perf_counter()
         try:

@@ -117,6 +117,26 @@ def cost_table_path(name: str, coordinates: int) -> Path:
     return cache_dir() / f"{name}_{_digest()}_D{int(coordinates)}_{machine_key()}.blocks.json"
 
 
+#: Wall seconds to print and compile one engine on its first use (numba compiles its
+#: ``advance`` and every kernel under it), as ``reproduce`` adds it to its estimates:
+#: 22-30 s per engine on a 2-core AVX2 EPYC, 12-16 s on a 2-core AVX-512 Xeon (the quick
+#: Figs. 3, 8, 12 with an empty cache, 2026-11-26).
+COMPILE_SECONDS = 20.0
+
+
+def compiled(name: str) -> bool:
+    """Whether the machine code of engine ``name`` is in the cache already (numba's index
+    of its ``advance`` is there), so that a first use loads it instead of compiling.
+
+    Examples
+    --------
+    >>> compiled("no_such_system")
+    False
+    """
+    stem = f"{name}_{_digest()}"
+    return any((cache_dir() / "__pycache__").glob(f"{stem}.advance-*.nbi"))
+
+
 def load(name: str):
     """The compiled engine module of system ``name`` (generated on first use)."""
     if name in _loaded:

@@ -53,6 +53,24 @@ SECONDS = {
 }
 
 
+#: The compiled engines each figure runs (:func:`sinktheory.engine.cache.load` names), so
+#: that ``reproduce`` can add their compilation to its estimate on a machine that has not
+#: compiled them yet (``tests/test_reproduce.py`` checks the table against what each
+#: figure loads).
+ENGINES = {
+    2: (),
+    3: ("sink_flat_n2", "sink_flat_n10"),
+    4: ("sink_flat_n10",),
+    5: ("sink_flat_n10",),
+    7: (),
+    8: ("sink_flat_n4",),
+    9: ("sink_flat_n4",),
+    10: (),
+    11: ("sink_symmetric_n6",),
+    12: ("sink_symmetric_n6", "sink_flat_n4"),
+}
+
+
 def scene(number: int):
     """The :class:`~sinktheory.scenes.base.Scene` of figure ``number`` (imported now)."""
     module = import_module(f".{MODULES[number]}", __name__)
@@ -75,4 +93,4 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["FIGURES", "MODULES", "SCENES", "SECONDS", "estimate", "scene", *_BASE]
+__all__ = ["ENGINES", "FIGURES", "MODULES", "SCENES", "SECONDS", "estimate", "scene", *_BASE]
