@@ -81,6 +81,53 @@ API.update(
 )  # fmt: skip
 
 
+def _two_orbit(direction):
+    from sinktheory.chaos.twoorbit import two_orbit_exponent
+
+    q, v = np.array([[0.0], [-0.25]]), np.array([[0.42081], [0.0]])  # Henon-Heiles
+    return two_orbit_exponent("henon_heiles", q, v, [], dt=0.05, steps=20, segments=2,
+                              direction=direction)  # fmt: skip
+
+
+def _floquet(f=(1.0, 0, 0, 0), g=(0, 1.0, 0, 0), free=None):
+    from sinktheory.nnm.stability import floquet
+
+    return floquet(np.eye(4), np.array(f), np.array(g), free)
+
+
+def _sink_mode():
+    from sinktheory.model import Sink, Well
+
+    return Sink(Well(0.5, 0.3, 4), particles=1)
+
+
+def _continue_orbits(**kw):
+    from sinktheory.nnm.continuation import continue_orbits
+    from sinktheory.nnm.modes import mode_guess, sink_flow
+
+    z0, T = mode_guess(_sink_mode(), "container", 0.5)
+    return continue_orbits(sink_flow(_sink_mode()), z0, T, steps=100, **kw)
+
+
+def _continue_both(**kw):
+    from sinktheory.nnm.continuation import continue_both
+
+    return continue_both(_sink_mode(), "container", energy=0.5, points=3, steps=100, **kw)
+
+
+API.update(
+    {
+        "two_orbit zero direction": (lambda: _two_orbit((np.zeros((2, 1, 1)),) * 2), "direction"),
+        "floquet f = 0": (lambda: _floquet(f=np.zeros(4)), "f"),  # NaN multipliers
+        "floquet g = 0": (lambda: _floquet(g=np.zeros(4)), "g"),
+        "floquet free out of range": (lambda: _floquet(free=[0, 7]), "free"),  # IndexError
+        "floquet free 0.5": (lambda: _floquet(free=[0.5]), "free"),  # cast to 0
+        "continue_orbits ds_max < ds": (lambda: _continue_orbits(ds=0.1, ds_max=0.01), "ds_max"),
+        "continue_both stop excludes start": (lambda: _continue_both(stop=(1, 2)), "stop"),
+    }
+)
+
+
 @pytest.mark.parametrize("case", list(API))
 def test_api_refuses_with_the_parameter_named(case):
     call, name = API[case]
