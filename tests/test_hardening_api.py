@@ -158,7 +158,40 @@ def entries():
         ("reach_energy", reach_energy, dict(sink=_sink(), energy=2e-4, steps=200, max_points=20)),
         ("sink_flow", sink_flow, dict(sink=_sink())),
         ("floquet", floquet, dict(M=M, f=np.array([1.0, 0, 0, 0]), g=np.array([0, 1.0, 0, 0]))),
+        *_rigid_and_equilibrium_entries(small),
     ]
+
+
+def _rigid_and_equilibrium_entries(small):
+    """The billiard, equilibrium-law and ergodicity entry points (issue 34)."""
+    from sinktheory.billiard import billiard, simulate_billiard
+    from sinktheory.billiard.table import rigid_table
+    from sinktheory.equilibrium import equilibrium_law
+    from sinktheory.equilibrium.area import area_ratio, basin_area, scaled_energy
+    from sinktheory.equilibrium.ergodicity import ergodicity_point
+    from sinktheory.equilibrium.law import check_fractions
+
+    well = _sink().well
+    law = equilibrium_law(_sink(), 0.5)
+    point = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 2, "periods": 20, "transient": 10,
+             "lyapunov_runs": 0}  # fmt: skip
+    start = {"positions": np.array([[[0.01, 0.02]]]), "velocities": np.array([[[1.0, 0.5]]])}
+    return [
+        ("billiard", billiard, dict(shape="flat", alpha=0.5, beta=0.3, particles=1, mass=0.2,
+                                    settings=small, fixed=False, lyapunov=True)),
+        ("simulate_billiard", simulate_billiard,
+         dict(table=rigid_table("flat", 0.5, 0.3), **start, mu=0.1, container=None,
+              periods=2, lyapunov=True, seed=0, discard=0)),
+        ("ergodicity_point", ergodicity_point, dict(p=point, seed=0)),
+        ("law.pdf", law.pdf, dict(s=[0.0, 0.5])),
+        ("law.tail", law.tail, dict(f=0.5)),
+        ("law.kac_periods", law.kac_periods, dict(f=0.5)),
+        ("law.summary", law.summary, dict(fractions=[0.5], levels=[0.5], points=5)),
+        ("scaled_energy", scaled_energy, dict(well=well, energy=0.5)),
+        ("area_ratio", area_ratio, dict(well=well, t=[0.5, 1.0])),
+        ("basin_area", basin_area, dict(well=well, energy=0.5)),
+        ("check_fractions", check_fractions, dict(fractions=[0.5])),
+    ]  # fmt: skip
 
 
 ENTRIES = entries()

@@ -34,11 +34,11 @@ import numpy as np
 
 from ..ensemble import random_positions
 from ..errors import BracketError, EnergyDriftError, ParameterError
-from ..model import RunSettings, Sink, Well
+from ..model import MAX_PERIODS, RunSettings, Sink, Well
 from ..progress import chunks
 from ..results import Result
 from ..runstats import mean_stderr
-from ..validation import flag, positive, positive_int, real_array
+from ..validation import fits_memory, flag, positive, positive_int, real_array
 from . import kernels as K
 from .table import Table, rigid_table
 
@@ -228,6 +228,8 @@ def simulate_billiard(
     >>> int(r.collisions.sum()) > 0, r.max_relative_energy_error < 1e-14
     (True, True)
     """
+    if not isinstance(table, Table):
+        raise ParameterError("table", table, "a sinktheory.billiard.table.Table")
     pos = np.array(real_array("positions", positions), dtype=float)
     vel = np.array(real_array("velocities", velocities), dtype=float)
     if pos.ndim != 3 or pos.shape[2] != 2 or vel.shape != pos.shape:
@@ -238,9 +240,14 @@ def simulate_billiard(
         raise ParameterError("positions", "non-finite values", "finite positions and velocities")
     table.check_positions("positions", pos)
     mu = positive("mu", mu)
-    periods = positive_int("periods", periods)
-    discard = positive_int("discard", discard, minimum=0)
+    periods = positive_int("periods", periods, maximum=MAX_PERIODS)
+    discard = positive_int("discard", discard, minimum=0, maximum=MAX_PERIODS)
+    lyapunov = flag("lyapunov", lyapunov)
+    seed = positive_int("seed", seed, minimum=0)
     R, k, _ = pos.shape
+    for name, count in (("periods", periods), ("discard", discard)):  # 4 records each
+        fits_memory(name, count, 32.0 * R * (count + 1), f"{R} run(s) x {count} period(s)",
+                    "smaller: the records must fit in memory")  # fmt: skip
     arrays = _table_arrays(table)
     rng = np.random.default_rng(seed)
     times = PERIOD * np.arange(periods + 1)

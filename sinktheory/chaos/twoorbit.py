@@ -80,7 +80,12 @@ def two_orbit_exponent(
             raise ParameterError("direction", f"arrays of shapes {dq.shape}, {dv.shape}",
                                  f"(dq, dv) of shape ({D}, 1, {R})")  # fmt: skip
     u = np.concatenate([dq[:, 0], dv[:, 0]])
-    u = u / np.sqrt((u**2).sum(0))
+    norms = np.sqrt((u**2).sum(0))
+    if not np.all(np.isfinite(norms) & (norms > 0)):
+        r = int(np.flatnonzero(~(np.isfinite(norms) & (norms > 0)))[0])
+        raise ParameterError("direction", f"a vector of length {norms[r]!r} for run {r}",
+                             "finite non-zero vectors, one per run")  # fmt: skip
+    u = u / norms
     z = np.concatenate([q, v])
     Z = np.concatenate([z, z + d0 * u], axis=1)  # reference runs, then shadow runs
     from ..engine.core import Ensemble  # numba loads with the first run

@@ -68,8 +68,12 @@ def run(args: argparse.Namespace) -> Output:
         + ", ".join(f"{p:g}: {q:.6g}" for p, q in zip(s.levels, s.quantiles, strict=True)),
         "  f       P(E_c >= f E)    Kac mean return time (periods T)",
     ]
-    for f, p, kac in zip(s.fractions, s.tails, s.kac_periods, strict=True):
-        lines.append(f"  {f:<6g}  {p:<15.6g}  {kac:.6g}")
+    for f, p, kac, log10 in zip(s.fractions, s.tails, s.kac_periods, s.log10_kac_periods,
+                                strict=True):  # fmt: skip
+        tail, time = (
+            (f"{p:.6g}", f"{kac:.6g}") if p > 0 else (f"10^{-log10:.4f}", f"10^{log10:.4f}")
+        )
+        lines.append(f"  {f:<6g}  {tail:<15}  {time}")
     out = Output(data, "\n".join(lines))
     if plot is not None:
         from ..plot.equilibrium import plot_law

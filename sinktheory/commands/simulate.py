@@ -135,14 +135,21 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
     if args.dt is not None:
         time_step("--dt", args.dt)
     if args.method == "adaptive":
-        from ..adaptive import check_eps
+        from ..adaptive import MAX_EPS, MAX_STEPS, check_eps, estimated_steps
 
         for name, value in (("--dt", args.dt), ("--tol", args.tol)):
             if value is not None:
                 raise ParameterError(name, value, "absent with --method adaptive (--eps sets "
                                      "its steps)")  # fmt: skip
         if args.eps is not None:
-            check_eps(args.eps)
+            # the estimate grows like 1 / eps: the smallest eps within the steps a period
+            # may take (1e-320 overflowed it; 1e-300 was refused naming --runs)
+            energy = settings.total_energy_bound(sink)
+            smallest = MAX_EPS * estimated_steps(sink, energy, MAX_EPS) / MAX_STEPS
+            if not check_eps(args.eps) >= smallest:
+                raise ParameterError("--eps", args.eps, f">= {smallest:.3g} for this well and "
+                                     f"energy", why=f"the adaptive step would take over "
+                                     f"{MAX_STEPS} steps a period (estimated)")  # fmt: skip
     elif args.eps is not None:
         raise ParameterError("--eps", args.eps, "absent unless --method adaptive")
 

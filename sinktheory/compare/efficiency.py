@@ -238,6 +238,31 @@ def work(
     return total
 
 
+def check_damping(damping, attachments) -> float:
+    """``damping`` >= 0 whose rate on every attachment's particles, c (1 + m) / m (the
+    relative velocity's decay rate), is a finite number (at 1e308 it overflowed into a
+    LinAlgError of the vibro-impact flow).
+
+    Examples
+    --------
+    >>> from sinktheory.attachments import Attachment
+    >>> check_damping(1e308, [Attachment("impact")])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: damping = 1e+308 is not allowed: must be <= 2.99...e+307 \
+(the rate c (1 + m) / m on the particles of mass m = 0.2 must be finite)
+    """
+    c = v.nonnegative("damping", damping)
+    mass = min(float(att.mass) for att in attachments)
+    largest = np.finfo(float).max / ((1.0 + mass) / mass)
+    if not c <= largest:
+        raise ParameterError(
+            "damping", damping, f"<= {largest:.17g}",
+            why=f"the rate c (1 + m) / m on the particles of mass m = {mass:g} must be finite",
+        )  # fmt: skip
+    return c
+
+
 def compare(
     attachments,
     energies,
@@ -287,7 +312,7 @@ def compare(
     energies = v.real_array("energies", energies)
     if energies.ndim != 1 or not energies.size or not np.all(energies > 0):
         raise ParameterError("energies", energies.tolist(), "a non-empty list of numbers > 0")
-    v.nonnegative("damping", damping)
+    check_damping(damping, attachments)
     runs = v.positive_int("runs", runs, minimum=2)
     samples_per_period = v.positive_int("samples_per_period", samples_per_period,
                                         maximum=100_000)  # fmt: skip

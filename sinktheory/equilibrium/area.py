@@ -79,7 +79,8 @@ def scaled_energy(well: Well, energy: float) -> float:
     >>> scaled_energy(Well(0.5, 0.3, 4), 0.125)
     1.0
     """
-    return (2 * well.n * energy / well.gamma) ** (1.0 / well.n)
+    _check_well(well)
+    return (2 * well.n * v.positive("energy", energy) / well.gamma) ** (1.0 / well.n)
 
 
 def _beta_function(a: float, b: float) -> float:
@@ -103,9 +104,13 @@ def _circular_ratio(well: Well, t: np.ndarray) -> np.ndarray:
 CLOSED_FORMS = {"flat": _flat_ratio, "circular": _circular_ratio}
 
 
-def _check(well: Well, energy: float) -> float:
+def _check_well(well: Well) -> None:
     if not isinstance(well, Well):
         raise v.ParameterError("well", well, "a sinktheory.model.Well")
+
+
+def _check(well: Well, energy: float) -> float:
+    _check_well(well)
     e = v.positive("energy", energy)
     well.check_energy(e)
     return e
@@ -159,7 +164,10 @@ def area_ratio(well: Well, t) -> np.ndarray:
     >>> area_ratio(Well(0.5, 0.0, 4, shape="circular"), [0.5, 1.0]).round(12).tolist()
     [0.785398163397, 0.785398163397]
     """
-    t = np.asarray(t, dtype=float)
+    _check_well(well)
+    t = v.real_array("t", t)
+    if not np.all(np.isfinite(t) & (t > 0)):
+        raise v.ParameterError("t", t.tolist(), "finite numbers > 0")
     closed = CLOSED_FORMS.get(well.shape)
     if closed is not None:
         return closed(well, t)

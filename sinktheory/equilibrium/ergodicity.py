@@ -183,6 +183,7 @@ def ergodicity_point(p: dict, seed: int) -> dict:
     from .lifetime import compare_with_law
 
     check_point(p)
+    seed = v.positive_int("seed", seed, minimum=0)
     p = {**DEFAULTS, **p}
     sink, settings = _sink_settings(p, seed)
     sim = simulate(sink, settings, tol=p["tol"], progress=False)

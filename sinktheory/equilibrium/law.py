@@ -58,6 +58,7 @@ from ..errors import NumericalError, ParameterError
 from ..model import Sink
 from ..results import Result
 from ..sinkstats import equipartition_container_energy
+from ..twins import python_kernel
 from .area import area_ratio, scaled_energy
 
 __all__ = [
@@ -82,6 +83,8 @@ PANEL_NODES = 20
 #: Default fractions f of the total energy for the tail table, and quantile levels.
 FRACTIONS = (0.1, 0.2, 0.3, 0.5, 0.8)
 LEVELS = (0.05, 0.25, 0.5, 0.75, 0.95)
+#: Most points of the summary's curves (each point one density and one tail).
+MAX_POINTS = 100_000
 
 
 def _panels(steepness: float) -> tuple[np.ndarray, np.ndarray]:
@@ -233,7 +236,9 @@ class EquilibriumLaw(Result):
         >>> law.pdf([0.0, 1.0]).round(12).tolist()  # Beta(1, 1.5): 1.5 (1 - s)^0.5
         [1.5, 0.0]
         """
-        s = np.asarray(s, dtype=float)
+        s = v.real_array("s", s)
+        if not np.all(np.isfinite(s)):
+            raise ParameterError("s", s.tolist(), "finite numbers (0 outside [0, 1])")
         inside = (s >= 0) & (s < 1)
         r = np.where(inside, 1 - s, 0.5)
         log = (self.exponent - 1) * np.log(r) + self._density.h(r ** (1 / self.n))
@@ -241,7 +246,8 @@ class EquilibriumLaw(Result):
         return np.where(inside, out, 0.0)
 
     def tail(self, f) -> np.ndarray | float:
-        """P(E_c >= f E) for fractions f in [0, 1].
+        """P(E_c >= f E) for fractions f in [0, 1] (0.0 where it is below float range:
+        :meth:`log_tail` gives it).
 
         Examples
         --------
@@ -250,12 +256,27 @@ class EquilibriumLaw(Result):
         >>> round(float(law.tail(0.8)), 12) == round(0.2**1.25, 12)
         True
         """
-        fs = np.asarray(f, dtype=float)
+        out = np.exp(self.log_tail(f))
+        return float(out) if np.ndim(out) == 0 else out
+
+    def log_tail(self, f) -> np.ndarray | float:
+        """log P(E_c >= f E) for fractions f in [0, 1] (-inf at f = 1): finite where the
+        tail itself underflows (many particles, 0.5^1250 at k = 1000, n = 4).
+
+        Examples
+        --------
+        >>> from sinktheory.model import Sink, Well
+        >>> law = equilibrium_law(Sink(Well(0.5, 0.0, 4), particles=1000), 0.5)
+        >>> round(float(law.log_tail(0.5)) / math.log(0.5), 9)  # Beta(1, 1250)
+        1250.0
+        """
+        fs = v.real_array("fraction", f)
         if np.any(~((fs >= 0) & (fs <= 1))):
             raise ParameterError("fraction", f, "numbers in [0, 1]")
         flat = fs.ravel()
         ratios = _moments(self._density, self.n, [((1 - x) ** (1 / self.n), 0) for x in flat])
-        out = (np.where(flat < 1, (1 - flat), 0.0) ** self.exponent * ratios).reshape(fs.shape)
+        with np.errstate(divide="ignore"):  # log 0 = -inf at f = 1
+            out = (self.exponent * np.log1p(-flat) + np.log(ratios)).reshape(fs.shape)
         return float(out) if out.ndim == 0 else out
 
     def cdf(self, s) -> np.ndarray | float:
@@ -292,11 +313,27 @@ class EquilibriumLaw(Result):
 
     def kac_periods(self, f) -> np.ndarray | float:
         """Kac's mean return time, in periods T, of the period-sampled motion to the set
-        {E_c >= f E}: 1 / P(E_c >= f E) (see :mod:`sinktheory.equilibrium.lifetime`)."""
+        {E_c >= f E}: 1 / P(E_c >= f E) (see :mod:`sinktheory.equilibrium.lifetime`), for
+        fractions f in (0, 1).  NumericalError when it exceeds float range
+        (:meth:`log10_kac_periods` gives it)."""
+        logs = self.log10_kac_periods(f)
+        if np.any(logs >= math.log10(np.finfo(float).max)):
+            raise NumericalError(
+                f"equilibrium law: Kac's return time to E_c >= f E reaches 10^"
+                f"{np.max(logs):.1f} periods at f = {f}, beyond float range "
+                "(log10_kac_periods gives it)"
+            )
         return 1.0 / self.tail(f)
 
+    def log10_kac_periods(self, f) -> np.ndarray | float:
+        """log10 of Kac's mean return time (periods) to {E_c >= f E}, f in (0, 1)."""
+        fs = check_fractions(f)
+        out = -self.log_tail(fs) / math.log(10)
+        return float(out[0]) if np.ndim(f) == 0 else out.reshape(np.shape(f))
+
     def summary(self, fractions=FRACTIONS, levels=LEVELS, points: int = 201) -> EquilibriumSummary:
-        """The law's tables (tails, Kac return times, quantiles) and curves on a grid of s.
+        """The law's tables (tails, Kac return times, quantiles) and curves on a grid of
+        ``points`` values of s (at most :data:`MAX_POINTS`).
 
         Examples
         --------
@@ -307,14 +344,18 @@ class EquilibriumLaw(Result):
         ([0.5], True)
         """
         fractions = check_fractions(fractions)
-        levels = np.asarray(levels, dtype=float)
-        grid = np.linspace(0.0, 1.0, v.positive_int("points", points, minimum=2))
+        levels = v.real_array("level", levels)
+        points = v.positive_int("points", points, minimum=2, maximum=MAX_POINTS)
+        grid = np.linspace(0.0, 1.0, points)
         tails = np.atleast_1d(self.tail(fractions))
+        with np.errstate(over="ignore", divide="ignore"):  # beyond float range: inf, and
+            kac = 1.0 / tails  # log10_kac_periods gives it
         return EquilibriumSummary(
             law=self,
             fractions=fractions,
             tails=tails,
-            kac_periods=1.0 / tails,
+            kac_periods=kac,
+            log10_kac_periods=np.atleast_1d(self.log10_kac_periods(fractions)),
             levels=levels,
             quantiles=np.atleast_1d(self.quantile(levels)) * self.energy,
             s=grid,
@@ -326,8 +367,9 @@ class EquilibriumLaw(Result):
 def check_fractions(fractions) -> np.ndarray:
     """Fractions f as a 1-D array, each in the open interval (0, 1) (ParameterError naming
     ``fraction`` otherwise)."""
-    fs = v.real_array("fraction", fractions)
-    fs = np.atleast_1d(fs)
+    fs = np.atleast_1d(v.real_array("fraction", fractions)).ravel()
+    if not fs.size:
+        raise ParameterError("fraction", fractions, "one or more numbers in (0, 1)")
     for f in fs:
         if not (0 < f < 1):
             raise ParameterError("fraction", float(f), "a number in (0, 1)")
@@ -337,13 +379,15 @@ def check_fractions(fractions) -> np.ndarray:
 @dataclass(frozen=True)
 class EquilibriumSummary(Result):
     """What ``sinktheory equilibrium`` prints: the law, its tails P(E_c >= f E) and Kac
-    return times 1/P (periods) at ``fractions``, its quantiles (energies) at ``levels``,
+    return times 1/P (periods) at ``fractions`` (with their log10, finite where the time
+    exceeds float range and is inf), its quantiles (energies) at ``levels``,
     and its density and distribution function of s = E_c / E on the grid ``s``."""
 
     law: EquilibriumLaw
     fractions: np.ndarray
     tails: np.ndarray
     kac_periods: np.ndarray
+    log10_kac_periods: np.ndarray
     levels: np.ndarray
     quantiles: np.ndarray
     s: np.ndarray
@@ -354,12 +398,30 @@ class EquilibriumSummary(Result):
         "fractions": ("fraction",),
         "tails": ("fraction",),
         "kac_periods": ("fraction",),
+        "log10_kac_periods": ("fraction",),
         "levels": ("level",),
         "quantiles": ("level",),
         "pdf": ("s",),
         "cdf": ("s",),
     }
     COORDS = {"fractions": "fraction", "levels": "level"}
+
+
+def _near_escape(well, e: float, error: NumericalError) -> Exception:
+    """The error to raise when the one-particle series failed: at an energy just below the
+    shape's escape saddle, where the basin's area is singular (its derivative grows like
+    log(E_s - e)) and no series of degree 128 converges, a ParameterError naming the
+    energy; else ``error`` itself."""
+    k = well.kernels
+    if not k.ESCAPE_NAME:
+        return error
+    escape = float(python_kernel(k.escape_energy)(well.alpha, well.beta, well.gamma, well.n))
+    return ParameterError(
+        "energy", e, f"< {escape:.6g}, the height of {k.ESCAPE_NAME} of this {well.shape} well, "
+        "and far enough below it for the law's series to converge",
+        why=f"{100 * (1 - e / escape):.2g} % below it: the basin's area is singular at the "
+        f"saddle, and {error}",
+    )  # fmt: skip
 
 
 def equilibrium_law(sink: Sink, energy: float) -> EquilibriumLaw:
@@ -391,7 +453,10 @@ def equilibrium_law(sink: Sink, energy: float) -> EquilibriumLaw:
         # t = 0 (u = 0) is the limit A / t -> F(0): evaluated a hair inside
         return np.log(area_ratio(well, t_e * np.maximum(u, 1e-300)))
 
-    one = _Density(1 + 1 / n, _interpolate(h1, "log A(e) / t"))
+    try:
+        one = _Density(1 + 1 / n, _interpolate(h1, "log A(e) / t"))
+    except NumericalError as error:
+        raise _near_escape(well, e, error) from None
     result, base, bits = None, one, k
     while bits:
         if bits & 1:

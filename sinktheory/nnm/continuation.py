@@ -273,6 +273,8 @@ def continue_orbits(
     lo, hi = check_stop(stop)
     ds = check_ds(ds)
     ds_max = None if ds_max is None else check_ds(ds_max, "ds_max")
+    if ds_max is not None and not ds_max >= ds:
+        raise ParameterError("ds_max", ds_max, f">= ds = {ds:g} (the largest step)")
     max_points = v.positive_int("max_points", max_points, maximum=MAX_POINTS)
     work = 2 * max_points * steps * tangent_steps(system.members or 1, 2 * system.dim)
     check_particle_steps(
@@ -283,6 +285,10 @@ def continue_orbits(
     problem = ShootingProblem(
         system, steps, free, z0, parameter, h, phase, phase_index, phase_ref=z0.copy()
     )
+    start = h if parameter == "energy" else problem.lam(system, h)
+    if not lo <= start <= hi:  # the branch would end at its first point (with NaN phi)
+        raise ParameterError("stop", stop, f"an interval containing the start's {parameter} "
+                             f"= {start:.6g}")  # fmt: skip
     u = problem.pack(z0, T, 0.0, problem.lam(system, h))
     u, J, data, it = problem.newton(u)
     first = problem.orbit(u, data, it)

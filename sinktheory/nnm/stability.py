@@ -186,7 +186,20 @@ def floquet(M: np.ndarray, f: np.ndarray, g: np.ndarray, free=None) -> Floquet:
                              "a square (2D, 2D) monodromy with f and g of shape (2D,)")  # fmt: skip
     if not (np.isfinite(M).all() and np.isfinite(f).all() and np.isfinite(g).all()):
         raise ParameterError("M", "non-finite entries", "finite M, f and g")
-    free = np.arange(n) if free is None else np.asarray(free, dtype=int)
+    free = np.arange(n) if free is None else v.real_array("free", free).ravel()
+    if (
+        free.size < 2
+        or np.any(free % 1)
+        or np.any((free < 0) | (free >= n))
+        or np.unique(free).size < free.size
+    ):
+        raise ParameterError("free", free.tolist(), f"two or more distinct indices in [0, {n})")
+    free = free.astype(int)
+    # an orbit, not an equilibrium: the flow and the energy's gradient do not vanish on it
+    for name, vector in (("f", f[free]), ("g", g[free])):
+        if not np.any(vector):
+            raise ParameterError(name, "a zero vector on the orbit's subspace",
+                                 "a non-zero vector (z0 on an orbit, not at rest)")  # fmt: skip
     other = np.setdiff1d(np.arange(n), free)
     Mi = M[np.ix_(free, free)]
     every = np.linalg.eigvals(M)
