@@ -7,7 +7,7 @@ Usage::
 0. ``sinktheory equilibrium`` for the Fig. 8 well, k = 5, as a fresh process: wall and
    CPU time (best of 3; most of it is Python and numba's import).
 1. Cost of a law (flat, circular, symmetric wells; k = 1, 5, 100, 1000); its accuracy is
-   the test suite's business (tests/test_equilibrium.py).
+   the test suite's business (tests/equilibrium/test_equilibrium.py).
 2. Fig. 8 set-up (flat, alpha 0.5, beta 0.3, n 4, m 0.2, E0 0.5), k = 1 and 2: 8 runs x
    3000 periods after a transient (500 periods for k = 1, 1500 for k = 2), against the
    law: mean +- error across runs, KS distance and run-bootstrap p-value, occupation of

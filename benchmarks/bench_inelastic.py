@@ -57,7 +57,7 @@ def best(repeat, f, *args, **kw):
 
 def against_solve_ivp() -> tuple[float, float]:
     """|error| of W(T) + |error| of E(T) of both integrators, one run of k = 1, one period,
-    against DOP853 (the reference of tests/test_design_inelastic.py)."""
+    against DOP853 (the reference of tests/studies/test_design_inelastic.py)."""
     import sys
     from pathlib import Path
 

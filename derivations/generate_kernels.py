@@ -2,7 +2,7 @@
 
     python derivations/generate_kernels.py
 
-Prints the files written.  Commit the result; tests/test_generated.py fails whenever the
+Prints the files written.  Commit the result; tests/foundations/test_generated.py fails whenever the
 checked-in kernels differ from what this script produces.
 """
 

@@ -1,6 +1,6 @@
 """Sphinx configuration for the sinktheory documentation.
 
-Build with warnings as errors (this is what tests/test_docs.py runs)::
+Build with warnings as errors (this is what tests/interface/test_docs.py runs)::
 
     sphinx-build -W --keep-going -b html docs docs/_build/html
 
@@ -44,7 +44,7 @@ source_suffix = {".rst": "restructuredtext", ".ipynb": "myst-nb"}
 
 # --- notebooks: executed at every build, an error fails it ----------------------------
 # They are committed without outputs, so the build is where their outputs come from
-# (tests/test_docs.py checks the rendered tour; nothing else executes it in CI).
+# (tests/interface/test_docs.py checks the rendered tour; nothing else executes it in CI).
 nb_execution_mode = "force"
 nb_execution_raise_on_error = True
 nb_execution_timeout = 600

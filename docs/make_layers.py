@@ -2,8 +2,8 @@
 
 ``python docs/make_layers.py`` checks the package against the table (exit 1 with one line
 per broken rule) and writes ``docs/design/layers.inc``, the diagram of the design page.
-``tests/test_layers.py`` runs the same check and compares the diagram with a fresh one, so
-the table, the code and the docs cannot drift apart.
+``tests/foundations/test_layers.py`` runs the same check and compares the diagram with a
+fresh one, so the table, the code and the docs cannot drift apart.
 
 The import graph comes from grimp (import-linter's graph library), which reads every
 import statement, including those inside functions, without importing the package.

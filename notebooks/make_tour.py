@@ -2,9 +2,9 @@
 
     python notebooks/make_tour.py
 
-The notebook is committed without outputs (tests/test_notebooks.py checks it, and that it
+The notebook is committed without outputs (tests/interface/test_notebooks.py checks it, and that it
 matches this file).  The documentation build executes it with myst-nb and renders it as
-a page with its outputs; tests/test_docs.py checks that page for the printed results and
+a page with its outputs; tests/interface/test_docs.py checks that page for the printed results and
 the two figures as images.  The first cell selects matplotlib's inline backend:
 without it a kernel started with ``MPLBACKEND=Agg`` (CI, the test suite, some servers)
 shows a returned figure as the text ``<Figure size 800x450 with 1 Axes>``.

@@ -5,7 +5,7 @@ Ordinary Differential Equations I*, 2nd ed., Springer 1993, Sec. II.10; the publ
 Fortran code ``dop853.f``), to 30 digits: 12 stages plus the first-same-as-last stage 13,
 an 8th-order solution ``B`` and the two error estimators of the 5th- and 3rd-order
 embedded solutions, ``E5 = B - b5`` and ``E3 = B - b3``.  Only what
-:mod:`sinktheory.hill` uses; ``tests/test_dop853.py`` checks every order condition up to
+:mod:`sinktheory.hill` uses; ``tests/oscillator/test_dop853.py`` checks every order condition up to
 order 8 (the 200 rooted trees) for ``B``, up to 5 for ``E5`` and 3 for ``E3``.
 
 Kept here rather than read from ``scipy.integrate._ivp`` (a private module, and importing

@@ -66,7 +66,7 @@ deeply unstable zones.
 
 Link to the full dynamics: in the simulator, a light particle (mu = 1e-4) on the
 unstable normal mode grows its y at exactly this exponent times sqrt(gamma/mu)/(alpha -
-beta) (tests/test_floquet_vs_simulation.py, agreement 4e-6).  How far the intervals
+beta) (tests/oscillator/test_floquet_vs_simulation.py, agreement 4e-6).  How far the intervals
 predict the chaos of the oscillating container (mu = 0.2, Figs. 3 and 11) is measured
 by ``sinktheory reproduce`` and stated in its report.
 

@@ -47,7 +47,7 @@ Two evaluators:
   ``betaincinv`` for a start, one Newton step with the forward ``betainc`` to polish it;
   for z^(2n) below 1e-17 the first-order form z = q K is already exact to double
   precision (this also avoids the underflow of w = z^(2n) for large n).  Measured
-  against the mp path (``tests/test_oscillator.py``, ``benchmarks/bench_series.py``):
+  against the mp path (``tests/oscillator/test_oscillator.py``, ``benchmarks/bench_series.py``):
   max |error| / A0 <= 8e-16 for n = 1 ... 1000 over the whole period (tested < 2e-15),
   including points within 1e-15 of the turning point and of x = 0.  Times are reduced
   to the phase t / T first, so a large |t| costs |t| eps / T in phase.  The float path

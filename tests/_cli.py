@@ -1,4 +1,8 @@
-"""Shared by the CLI tests: run ``sinktheory`` in-process and capture its output."""
+"""Shared by the CLI tests: run ``sinktheory`` in-process and capture its output, and check
+a clean refusal (exit 2, one line naming the parameter, nothing written)."""
+
+import warnings
+from pathlib import Path
 
 from sinktheory.cli import main
 
@@ -8,3 +12,27 @@ def run_cli(argv, capsys):
     code = main(argv)
     out, err = capsys.readouterr()
     return code, out, err
+
+
+def snapshot(root: Path) -> set[str]:
+    """Every path under ``root`` (hidden files included)."""
+    return {str(p.relative_to(root)) for p in root.rglob("*")}
+
+
+def refused(argv, capsys, tmp_path, monkeypatch, name: str) -> str:
+    """Run ARGV in ``tmp_path``; assert a clean refusal naming ``name``; return stderr."""
+    monkeypatch.chdir(tmp_path)
+    before = snapshot(tmp_path)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        code, out, err = run_cli(argv, capsys)
+    # a warning would reach the user's terminal before the one-line message
+    assert not [w for w in caught if issubclass(w.category, RuntimeWarning)], caught[0].message
+    assert code == 2, (code, err)
+    assert out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert "Traceback" not in err
+    assert f"error: {name} = " in lines[0] or f"argument {name}" in lines[0], lines[0]
+    assert snapshot(tmp_path) == before, "a file was written"
+    return lines[0]

@@ -10,7 +10,7 @@ which the flow keeps because V is even in y): the runs start from the same posit
 y_j = 0, and one deviation vector lies in the y_j-directions only.  Linearised about
 y = 0 each particle's y obeys a Hill equation driven by its x-motion; with the container
 fixed (mass ratio -> 0) this is the paper's Floquet problem (:mod:`sinktheory.floquet`),
-whose ln|rho| / T it then equals (tests/test_chaos.py).
+whose ln|rho| / T it then equals (tests/chaos/test_chaos.py).
 
 Examples
 --------

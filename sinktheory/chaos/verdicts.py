@@ -1,7 +1,7 @@
 """Chaotic or regular: the verdict on finite-time exponents, and its statistical basis.
 
 On a regular orbit deviations grow at most linearly (shear), so the finite-time exponent
-decays like ln t / t (tests/test_chaos.py: the integrable case gives lambda_1 t / ln t ~ 1).
+decays like ln t / t (tests/chaos/test_chaos.py: the integrable case gives lambda_1 t / ln t ~ 1).
 An exponent is called *chaotic* when its mean over runs exceeds that envelope with margin,
 by two standard errors:
 

@@ -40,7 +40,7 @@ HELP = HELPS[NAME]
 #: What the help quotes from the integrator registry (:data:`sinktheory.integrators.SCHEMES`,
 #: ``DEFAULT_SCHEME``), the step-size rule (:data:`sinktheory.stepsize.TOL_RANGE`,
 #: ``DEFAULT_TOL``) and the simulator (:data:`sinktheory.simulate.ENERGY_BOUND`), written out
-#: so that ``--help`` imports neither numpy nor numba; tests/test_startup.py checks each
+#: so that ``--help`` imports neither numpy nor numba; tests/foundations/test_startup.py checks each
 #: against its source.
 QUOTED = {
     "schemes": ("verlet", "yoshida4", "blanes-moan4", "yoshida6", "blanes-moan6", "suzuki-umeno8"),

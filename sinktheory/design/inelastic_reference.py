@@ -6,7 +6,7 @@ D(h/2) o S(h) o D(h/2) as :func:`sinktheory.design.inelastic.simulate_inelastic`
 there for the model, the exact pair flows and the audit), written independently in NumPy:
 a Python loop over steps, array operations over runs, the contact weight from the well's
 own potential (:meth:`sinktheory.model.Well.potential`) instead of the generated energy
-kernel.  It is kept only for that: ``tests/test_design_inelastic.py`` compares the
+kernel.  It is kept only for that: ``tests/studies/test_design_inelastic.py`` compares the
 compiled integrator with it, and ``benchmarks/bench_inelastic.py`` measures the speed-up
 at equal accuracy.  It is too slow for design sweeps (a Python loop over steps).
 

@@ -28,8 +28,8 @@ block size is right everywhere, so the policy is:
    is not tried (a second thread never beats the one-thread table's prediction).
 
 Results do not depend on the plan: a run's arithmetic is the same in every block and
-thread, and inert copies never touch real runs (``tests/test_engine.py`` checks the numbers
-bitwise for several block sizes, thread counts and paddings).
+thread, and inert copies never touch real runs (``tests/simulation/test_engine.py``
+checks the numbers bitwise for several block sizes, thread counts and paddings).
 
 Examples
 --------

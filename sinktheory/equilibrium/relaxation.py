@@ -44,7 +44,7 @@ at Phi(-/+ sqrt(R / (R - 1)) t_{R-1}), t_{R-1} Student's quantile, which widens 
 plain percentile interval by 12 % at R = 16 and so corrects its narrowness for few
 runs); tau and b get the bootstraps' standard deviations (from the central 68 %), and
 the curve a pointwise band alike.  More runs narrow the interval about as 1 / sqrt(R)
-and do not move it (tests/test_relaxation.py); benchmarks/bench_relaxation.py measures
+and do not move it (tests/equilibrium/test_relaxation.py); benchmarks/bench_relaxation.py measures
 the coverage and the bias on synthetic runs.
 
 Examples

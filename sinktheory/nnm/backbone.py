@@ -31,7 +31,7 @@ plot (Kerschen, Vakakis, Lee, McFarland, Kowtko and Bergman, Nonlinear Dyn. 42, 
 Vakakis et al., "Nonlinear Targeted Energy Transfer in Mechanical and Structural
 Systems", 2008).  For the cubic NES of :mod:`sinktheory.attachments` (m = 0.2, kappa =
 625) it is 4.6e-5, against the impulse threshold 4.0e-5 of the averaged flow and 3.8e-5
-measured with a weak dashpot (``tests/test_attachments.py``).
+measured with a weak dashpot (``tests/studies/test_attachments.py``).
 
 Examples
 --------

@@ -55,7 +55,7 @@ SECONDS = {
 
 #: The compiled engines each figure runs (:func:`sinktheory.engine.cache.load` names), so
 #: that ``reproduce`` can add their compilation to its estimate on a machine that has not
-#: compiled them yet (``tests/test_reproduce.py`` checks the table against what each
+#: compiled them yet (``tests/interface/test_reproduce.py`` checks the table against what each
 #: figure loads).
 ENGINES = {
     2: (),

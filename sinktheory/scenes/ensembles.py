@@ -6,6 +6,7 @@ import functools
 
 import numpy as np
 
+from ..canonical import FIG8_WELL
 from ..model import RunSettings, Sink, Well
 from ..plot.paper import energy_curves, energy_panels, recurrence_columns, running_and_recurrence
 from ..recurrence import rqa
@@ -164,8 +165,7 @@ def _fig5(quick: bool) -> SceneResult:
 
 # -------------------------------------------------------------------------- Fig. 8
 FIG8_KS = (1, 3, 5)
-FIG8_N = 4
-FIG8_WELL = Well(0.5, 0.3, FIG8_N)
+FIG8_N = FIG8_WELL.n
 
 
 def _fig8(quick: bool) -> SceneResult:

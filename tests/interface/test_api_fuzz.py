@@ -1,0 +1,273 @@
+"""The Python API validates like the command line (issue 26, item 5).
+
+A property-based test over the public signatures of the chaos, normal-mode and start-state
+entry points: one argument at a time is replaced by a hostile value (wrong type, bool,
+NaN, infinities, huge and tiny numbers, negative counts, wrong shapes, text), the others
+kept valid and small; the call must either succeed or raise one of the documented error
+types -- ParameterError naming a parameter, or a NumericalError -- never a TypeError,
+KeyError, AttributeError, OverflowError, LinAlgError, MemoryError or a numba error.
+Example counts are kept small (the file runs in well under a minute).
+"""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from sinktheory.canonical import FIG8_WELL, HENON_HEILES
+from sinktheory.errors import NumericalError, ParameterError
+
+#: Hostile values tried for every argument (valid ones among them are fine too).
+HOSTILE = [
+    None,
+    True,
+    np.True_,
+    -1,
+    0,
+    1,
+    2,
+    2.5,
+    -0.5,
+    10**12,
+    1e12,
+    1e308,
+    -1e308,
+    1e-300,
+    math.nan,
+    math.inf,
+    -math.inf,
+    "x",
+    "",
+    [],
+    [1.0, 2.0],
+    [[5.0, 5.0]],
+    [[math.nan]],
+    {"a": 1},
+    object(),
+    3 + 1j,
+]
+
+
+def _sink():
+    from sinktheory import Sink
+
+    return Sink(FIG8_WELL, particles=1, mass=0.2)
+
+
+def _flow():
+    from sinktheory.nnm.system import FlowSystem
+
+    return FlowSystem("duffing2", [])
+
+
+HH_Q, HH_V = np.array([[0.0], [-0.25]]), np.array([[0.42081], [0.0]])  # Henon-Heiles
+
+
+def entries():
+    """(name, function, valid keyword arguments) of each public entry point."""
+    from sinktheory import RunSettings
+    from sinktheory.chaos import chaos, indicators, monodromy, random_vectors
+    from sinktheory.chaos import two_orbit_exponent as two_orbit
+    from sinktheory.nnm.agreement import reach_energy
+    from sinktheory.nnm.continuation import continue_both, continue_orbits
+    from sinktheory.nnm.modes import mode_guess, sink_flow
+    from sinktheory.nnm.shooting import shoot
+    from sinktheory.nnm.stability import floquet
+    from sinktheory.nnm.system import FlowSystem
+    from sinktheory.sweep.chaosmap import beta_grid
+
+    small = RunSettings(runs=2, periods=2, seed=1)
+    engine = {"q": HH_Q, "v": HH_V, "params": [], "dt": 0.05, "steps": 4, "segments": 2}
+    duffing = {"z0": np.array([0.1, 0.1, 0.0, 0.0]), "T": 2 * math.pi}
+    M = np.array([[1.0, 1.0, 0, 0], [0, 1.0, 0, 0], [0, 0, 0.0, 1.0], [0, 0, -1.0, 0]])
+    return [
+        (
+            "chaos",
+            chaos,
+            dict(
+                sink=_sink(),
+                settings=small,
+                spectrum=False,
+                gali=0,
+                megno=False,
+                transverse=False,
+                method="blanes-moan6",
+                dt=0.05,
+                renorm=0,
+                initial=None,
+                energy_bound=1e-4,
+                block=None,
+                progress=False,
+            ),
+        ),  # fmt: skip
+        (
+            "indicators",
+            indicators,
+            dict(
+                system=HENON_HEILES,
+                **engine,
+                spectrum=False,
+                gali=0,
+                megno=False,
+                transverse=None,
+                vectors=None,
+                renorm=0,
+                seed=0,
+                bound=math.inf,
+                block=None,
+                progress=False,
+            ),
+        ),  # fmt: skip
+        ("monodromy", monodromy, dict(system=HENON_HEILES, **engine, block=None)),
+        ("two_orbit_exponent", two_orbit, dict(system=HENON_HEILES, **engine, d0=1e-9, seed=0)),
+        ("random_vectors", random_vectors, dict(dim=2, count=1, runs=2, seed=0, mask=None)),
+        ("beta_grid", beta_grid, dict(ranges=[(0.0, 0.2)], points=4)),
+        ("FlowSystem", FlowSystem, dict(system="duffing2", params=[], members=0)),
+        ("shoot", shoot, dict(system=_flow(), **duffing, steps=64, energy=0.01)),
+        (
+            "continue_orbits",
+            continue_orbits,
+            dict(
+                system=_flow(),
+                **duffing,
+                steps=64,
+                energy=0.01,
+                stop=(1e-3, 0.1),
+                ds=0.3,
+                max_points=2,
+                direction=1,
+            ),
+        ),  # fmt: skip
+        ("mode_guess", mode_guess, dict(sink=_sink(), mode="container", energy=0.5)),
+        (
+            "continue_both",
+            continue_both,
+            dict(
+                sink=_sink(),
+                mode="container",
+                parameter="energy",
+                energy=1e-3,
+                stop=(5e-4, 2e-3),
+                steps=200,
+                points=2,
+                ds=0.1,
+                half_traces=False,
+            ),
+        ),  # fmt: skip
+        ("reach_energy", reach_energy, dict(sink=_sink(), energy=2e-4, steps=200, max_points=20)),
+        ("sink_flow", sink_flow, dict(sink=_sink())),
+        ("floquet", floquet, dict(M=M, f=np.array([1.0, 0, 0, 0]), g=np.array([0, 1.0, 0, 0]))),
+        *_rigid_and_equilibrium_entries(small),
+    ]
+
+
+def _rigid_and_equilibrium_entries(small):
+    """The billiard, equilibrium-law and ergodicity entry points (issue 34)."""
+    from sinktheory.billiard import billiard, simulate_billiard
+    from sinktheory.billiard.table import rigid_table
+    from sinktheory.equilibrium import equilibrium_law
+    from sinktheory.equilibrium.area import area_ratio, basin_area, scaled_energy
+    from sinktheory.equilibrium.ergodicity import ergodicity_point
+    from sinktheory.equilibrium.law import check_fractions
+
+    well = _sink().well
+    law = equilibrium_law(_sink(), 0.5)
+    point = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 2, "periods": 20, "transient": 10,
+             "lyapunov_runs": 0}  # fmt: skip
+    start = {"positions": np.array([[[0.01, 0.02]]]), "velocities": np.array([[[1.0, 0.5]]])}
+    return [
+        ("billiard", billiard, dict(shape="flat", alpha=0.5, beta=0.3, particles=1, mass=0.2,
+                                    settings=small, fixed=False, lyapunov=True)),
+        ("simulate_billiard", simulate_billiard,
+         dict(table=rigid_table("flat", 0.5, 0.3), **start, mu=0.1, container=None,
+              periods=2, lyapunov=True, seed=0, discard=0)),
+        ("ergodicity_point", ergodicity_point, dict(p=point, seed=0)),
+        ("law.pdf", law.pdf, dict(s=[0.0, 0.5])),
+        ("law.tail", law.tail, dict(f=0.5)),
+        ("law.kac_periods", law.kac_periods, dict(f=0.5)),
+        ("law.summary", law.summary, dict(fractions=[0.5], levels=[0.5], points=5)),
+        ("scaled_energy", scaled_energy, dict(well=well, energy=0.5)),
+        ("area_ratio", area_ratio, dict(well=well, t=[0.5, 1.0])),
+        ("basin_area", basin_area, dict(well=well, energy=0.5)),
+        ("check_fractions", check_fractions, dict(fractions=[0.5])),
+    ]  # fmt: skip
+
+
+ENTRIES = entries()
+
+
+@pytest.mark.parametrize(("name", "function", "valid"), ENTRIES, ids=[e[0] for e in ENTRIES])
+@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_only_documented_errors_escape(name, function, valid, data):
+    argument = data.draw(st.sampled_from(sorted(valid)), label="argument")
+    value = data.draw(st.sampled_from(HOSTILE), label="value")
+    try:
+        function(**{**valid, argument: value})
+    except ParameterError as e:
+        assert e.name and str(e).startswith(f"{e.name} = "), str(e)
+    except NumericalError:
+        pass
+
+
+def test_valid_arguments_run():
+    """The base arguments are valid: each entry point runs with them as they are."""
+    for _, function, valid in ENTRIES:
+        function(**valid)
+
+
+def test_named_cases_of_the_issue():
+    """The cases the issue lists, each refused naming its parameter."""
+    from sinktheory import RunSettings, Sink, Well
+    from sinktheory.chaos import chaos, indicators, random_vectors
+    from sinktheory.nnm.continuation import continue_orbits
+    from sinktheory.nnm.modes import mode_guess
+    from sinktheory.nnm.shooting import shoot
+    from sinktheory.nnm.stability import floquet
+    from sinktheory.nnm.system import FlowSystem
+    from sinktheory.simulate import simulate
+    from sinktheory.sweep.chaosmap import beta_grid, chaos_map
+
+    small = RunSettings(runs=2, periods=2)
+    duffing = (np.array([0.1, 0.1, 0.0, 0.0]), 2 * math.pi)
+    stop = (1e-3, 0.1)
+    cases = [
+        (lambda: chaos(_sink(), small, megno="yes", dt=0.05), "megno"),
+        (lambda: chaos(_sink(), small, transverse=[1], dt=0.05), "transverse"),
+        (lambda: chaos(_sink(), small, block=True, dt=0.05), "block"),
+        (lambda: chaos(_sink(), small, block=-1, dt=0.05), "block"),
+        (lambda: chaos(_sink(), small, block=2.5, dt=0.05), "block"),
+        (lambda: chaos(_sink(), small, block=1e12, dt=0.05), "block"),
+        (lambda: chaos(_sink(), RunSettings(runs=1), initial=[[5, 5]], dt=0.05), "initial"),
+        (lambda: chaos(_sink(), RunSettings(runs=1, box=1e308), dt=0.05), "box"),
+        (lambda: simulate(_sink(), RunSettings(runs=1), initial=[[5, 5]]), "initial"),
+        (lambda: simulate(Sink(Well(0.5, 0.3, 4, gamma=1e308)), small), "gamma"),
+        (lambda: shoot(_flow(), duffing[0], -1.0, steps=400), "T"),
+        (lambda: shoot(_flow(), *duffing, steps=10**12), "steps"),
+        (lambda: shoot(_flow(), *duffing, steps=64, energy=-1.0), "energy"),
+        (lambda: FlowSystem("nosuch", []), "system"),
+        (lambda: FlowSystem(3, []), "system"),
+        (lambda: floquet(np.full((4, 4), np.nan), np.ones(4), np.ones(4)), "M"),
+        (lambda: mode_guess(_sink(), "container", True), "energy"),
+        (lambda: mode_guess(_sink(), "container", 1e308), "energy"),
+        (lambda: continue_orbits(_flow(), *duffing, steps=64, stop=stop, ds=0), "ds"),
+        (lambda: continue_orbits(_flow(), *duffing, steps=64, stop=stop, ds=-1), "ds"),
+        (
+            lambda: continue_orbits(_flow(), *duffing, steps=64, stop=stop, max_points=-1),
+            "max_points",
+        ),  # fmt: skip
+        (lambda: continue_orbits(_flow(), *duffing, steps=64, stop=(math.nan, 1)), "stop"),
+        (lambda: indicators(3, HH_Q, HH_V, [], dt=0.05, steps=4, segments=2), "system"),
+        (lambda: random_vectors(2, 5, 2, 0), "count"),
+        (lambda: random_vectors(2, 1, -1, 0), "runs"),
+        (lambda: random_vectors(10**12, 1, 1, 0), "dim"),
+        (lambda: beta_grid([(0.0, 0.2)], 0), "points"),
+        (lambda: beta_grid([(0.2, 0.0)], 4), "ranges"),
+        (lambda: chaos_map(0.5, 4, "x", runs=2, periods=2, workers=1), "betas"),
+    ]
+    for make, name in cases:
+        with pytest.raises(ParameterError) as info:
+            make()
+        assert info.value.name == name, (name, str(info.value))

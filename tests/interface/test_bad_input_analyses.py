@@ -1,0 +1,447 @@
+"""Adversarial input, second pass (issue 26): chaos, nnm, design and the newer sweep kinds.
+
+CLI cases go through the command (``refused``: exit 2, one line naming the parameter, no
+traceback, nothing written); interrupts through a real subprocess; damaged stores through
+the store API and the command; the Python API through a property-based test
+(test_api_fuzz.py).
+"""
+
+import numpy as np
+import pytest
+from _cli import refused
+
+from sinktheory.canonical import FIG8_WELL
+
+WELL = ["--alpha", "0.5", "--beta", "0.3", "--n", "4"]
+CHAOS = ["chaos", *WELL, "--runs", "2", "--periods", "2", "--quiet"]
+NNM = ["nnm", *WELL, "--continue", "energy"]
+DESIGN = ["design", "--beta", "0.3", "--n", "4", "--out", "d.zarr", "--quiet"]
+SWEEP_CHAOS = ["sweep", "chaos", "--param", "alpha=0.5", "--param", "beta=0.3", "--param", "n=4"]
+SWEEP_DESIGN = ["sweep", "design", "--param", "beta=0.3", "--param", "n=4"]
+SWEEP_ENSEMBLE = ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=0.3"]
+SWEEP_ENSEMBLE += ["--param", "n=4"]
+SWEEP_BIF = ["sweep", "bifurcation", "--param", "alpha=0.5", "--param", "beta=0.3,0.1"]
+SWEEP_BIF += ["--param", "n=4", "--param", "count=3"]
+OUT = ["--out", "s.zarr", "--quiet"]
+
+# (argv, parameter named, text the line must contain)
+CASES = [
+    # item 1: tracebacks before
+    ([*CHAOS, "--renorm", "1e308"], "renorm", "[0, 1000000000]"),
+    ([*NNM, "--ds", "1e308"], "ds", "[1e-06, 10]"),
+    ([*NNM, "--ds", "1e300"], "ds", "[1e-06, 10]"),
+    ([*DESIGN, "--box", "1e308"], "box", "inside the walls"),
+    ([*DESIGN, "--bootstrap", "1e308"], "bootstrap", "[2, 100000]"),
+    ([*SWEEP_CHAOS, "--param", "gali=2,6", *OUT], "gali", "a single value"),
+    ([*SWEEP_CHAOS, "--param", "transverse=0,1", *OUT], "transverse", "a single value"),
+    ([*SWEEP_CHAOS, "--param", "box=1e308", *OUT], "box", "inside the walls"),
+    ([*SWEEP_BIF, "--param", "gamma=1e308", *OUT], "gamma", "with gamma = 1 it can"),
+    ([*SWEEP_ENSEMBLE, "--param", "box=1e308", *OUT], "box", "inside the walls"),
+    # item 2: the parameter responsible, before any file exists
+    ([*SWEEP_ENSEMBLE, "--param", "gamma=1e308", *OUT], "gamma", "with gamma = 1 it can"),
+    ([*DESIGN, "--gamma", "1e308"], "gamma", "with gamma = 1 it can"),
+    ([*CHAOS, "--gamma", "1e308"], "gamma", "with gamma = 1 it can"),
+    # item 3: absurd sizes refused up front, with the estimate
+    (["nnm", *WELL, "--continue", "energy", "--steps", "1000000000"], "steps", "1000000]"),
+    ([*NNM, "--points", "10000", "--ds", "1e-300"], "ds", "[1e-06, 10]"),
+    ([*DESIGN, "--bootstrap", "1000000000"], "bootstrap", "[2, 100000]"),
+    (["chaos", *WELL, "--particles", "1000", "--spectrum", "--quiet"], "spectrum", "4002"),
+    # 15.6 days estimated: under the sweeps' 30 days, over a one-shot computation's day
+    (["chaos", *WELL, "--particles", "200", "--runs", "25", "--spectrum"], "spectrum", "(1 day)"),
+    (
+        ["simulate", *WELL, "--runs", "10000", "--periods", "100000", "--particles", "20"],
+        "periods",
+        "resumable `sinktheory sweep`",
+    ),  # fmt: skip
+    (["simulate", *WELL, "--gamma", "1e308"], "gamma", "with gamma = 1 it can"),
+    # item 4: values accepted that should not be
+    ([*SWEEP_CHAOS, "--param", "megno=2", *OUT], "megno", "[0, 1]"),
+    ([*SWEEP_CHAOS, "--param", "megno=-1", *OUT], "megno", "[0, 1]"),
+    ([*SWEEP_DESIGN, "--param", "replica=-1", *OUT], "replica", ">= 0"),
+    ([*DESIGN, "--lyapunov-periods", "-1", "--lyapunov-runs", "0"], "lyapunov_periods", "[1,"),
+    ([*DESIGN, "--lyapunov-periods", "0", "--lyapunov-runs", "0"], "lyapunov_periods", "[1,"),
+    ([*DESIGN, "--lyapunov-periods", "0"], "lyapunov_periods", "[1,"),
+]
+
+
+@pytest.mark.parametrize(("argv", "name", "says"), CASES, ids=lambda a: " ".join(a)[-48:])
+def test_refused_cleanly_naming_the_parameter(argv, name, says, capsys, tmp_path, monkeypatch):
+    line = refused(argv, capsys, tmp_path, monkeypatch, name)
+    assert says in line, line
+
+
+def test_spectrum_cost_grows_with_the_square_of_the_dimension():
+    """The estimate counts 2D vectors of 2D components: against a hand count."""
+    from sinktheory import RunSettings, Sink
+    from sinktheory.chaos.sink import check_tangent_work, tangent_runs
+    from sinktheory.errors import ParameterError
+    from sinktheory.model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
+    from sinktheory.worklimit import VECTOR_STEP, resumable
+
+    assert tangent_runs(201, "full", 0, False) == [402]
+    assert tangent_runs(201, "half", 4, True) == [201, 4, 1]
+    sink = Sink(FIG8_WELL, particles=100, mass=0.2)
+    # 100 particles, 402 vectors: k (1 + 0.3 x 402) particle steps per step and run
+    per_step = 100 * (1 + VECTOR_STEP * 402)
+    limit = MAX_SECONDS / SECONDS_PER_PARTICLE_STEP
+    periods = int(limit / (per_step * 1000 * 10)) + 1  # just over the limit at 1000 steps
+    with resumable():  # the 30-day limit
+        check_tangent_work(sink, RunSettings(runs=10, periods=periods - 2), 1000, "full", 0, 0)
+        with pytest.raises(ParameterError) as info:
+            check_tangent_work(sink, RunSettings(runs=10, periods=periods), 1000, "full", 0, 0)
+        assert info.value.name == "spectrum"  # lambda_1 alone would fit
+        with pytest.raises(ParameterError) as info:
+            check_tangent_work(sink, RunSettings(runs=10, periods=periods * 1000), 1000, None, 0, 0)
+        assert info.value.name == "periods"
+    with pytest.raises(ParameterError, match="cannot resume"):  # one shot: a day
+        check_tangent_work(sink, RunSettings(runs=10, periods=periods - 2), 1000, "full", 0, 0)
+
+
+def test_one_shot_work_limit_is_a_day_and_a_sweep_point_30_days():
+    """The same ensemble, estimated by hand at 11.6 days (100 runs x 1e5 periods x 1000
+    steps x 1000 particles at 1e-7 s): simulate() refuses it naming periods and pointing to
+    a sweep; a sweep point accepts it, and refuses ten times more (116 days)."""
+    import math
+
+    from sinktheory import RunSettings, Sink
+    from sinktheory.errors import ParameterError
+    from sinktheory.model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
+    from sinktheory.simulate import simulate
+    from sinktheory.sweep.plan import Sweep
+    from sinktheory.worklimit import MAX_INTERACTIVE_SECONDS
+
+    dt = 2 * math.pi / 1000
+    seconds = 100 * 10**5 * 1000 * 1000 * SECONDS_PER_PARTICLE_STEP
+    assert MAX_INTERACTIVE_SECONDS == 86400 < seconds < MAX_SECONDS
+    with pytest.raises(ParameterError, match=r"cannot resume .*11.6 days.*sinktheory sweep"):
+        simulate(Sink(FIG8_WELL, 1000), RunSettings(runs=100, periods=10**5), dt=dt)
+    point = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 100, "periods": 10**5, "dt": dt}
+    Sweep.make("ensemble", {**point, "particles": 1000})
+    with pytest.raises(ParameterError, match=r"per point of a sweep .*116 days") as info:
+        Sweep.make("ensemble", {**point, "particles": 1000, "dt": dt / 10})
+    assert info.value.name == "periods"
+
+
+# --------------------------------------------------------------------------- interrupts
+def _descendants(pid: int) -> list[int]:
+    """Every process below ``pid`` (the forkserver and the workers it forks)."""
+    import os
+
+    found = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                fields = f.read().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[1]) == pid:
+            found += [int(entry), *_descendants(int(entry))]
+    return found
+
+
+def _cpu_ticks(pid: int) -> int:
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return int(f.read().rsplit(")", 1)[1].split()[11])  # utime
+    except OSError:
+        return 0
+
+
+def _alive(pid: int) -> bool:
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except OSError:
+        return False
+
+
+SLOW_SWEEP = ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=-0.3:0.3:40"]
+SLOW_SWEEP += ["--param", "n=4", "--param", "runs=8", "--param", "periods=2000"]
+SLOW_DESIGN = ["design", "--beta", "-0.3:0.3:20", "--n", "4", "--no-estimate"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "signame", "group", "status"),
+    [
+        (SLOW_SWEEP, "SIGINT", False, 130),  # kill -INT to the driver alone: hung before
+        (SLOW_SWEEP, "SIGINT", True, 130),  # Ctrl-C: the whole process group
+        (SLOW_SWEEP, "SIGTERM", False, 143),
+        (SLOW_DESIGN, "SIGINT", False, 130),
+        (SLOW_SWEEP, "SIGTERM", None, 143),  # None: as soon as the store exists
+    ],
+    ids=["sweep-int-main", "sweep-int-group", "sweep-term-main", "design-int-main", "starting"],
+)
+def test_interrupt_ends_workers_and_exits_promptly(argv, signame, group, status, tmp_path):
+    """Two workers busy on long points (or, with group None, the pool still starting: a
+    worker forked but not yet recorded by the pool once escaped and printed a traceback);
+    the signal ends driver and workers within a few seconds, with exactly one line on
+    stderr naming --resume (a resource-tracker warning of the workers' semaphores once
+    followed it), and the store stays readable."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    import xarray as xr
+
+    command = [sys.executable, "-m", "sinktheory.cli", *argv, "--workers", "2"]
+    command += ["--out", str(tmp_path / "s.zarr"), "--quiet"]
+    proc = subprocess.Popen(
+        command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        start_new_session=True, cwd=tmp_path,
+    )  # fmt: skip
+    try:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline:  # two workers have computed for 1 s or more
+            busy = [p for p in _descendants(proc.pid) if _cpu_ticks(p) >= 100]
+            if len(busy) >= 2 or (group is None and (tmp_path / "s.zarr").exists()):
+                break
+            assert proc.poll() is None, proc.communicate()
+            time.sleep(0.2)
+        else:
+            pytest.fail("the workers did not start within 120 s")
+        below = _descendants(proc.pid)
+        sent = time.monotonic()
+        sig = getattr(signal, signame)
+        os.killpg(proc.pid, sig) if group else os.kill(proc.pid, sig)
+        out, err = proc.communicate(timeout=30)
+        took = time.monotonic() - sent
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.communicate()
+    assert proc.returncode == status, err
+    # 10 s: the driver terminates its workers at once (2 s grace before SIGKILL); a
+    # driver waiting for the tasks in flight would take minutes
+    assert took < 10, took
+    assert err.splitlines() == [f"sinktheory {argv[0]}: interrupted; --resume continues"], err
+    assert "Traceback" not in err and out == ""
+    for _ in range(50):  # the resource tracker ends right after the driver
+        if not any(_alive(p) for p in below):
+            break
+        time.sleep(0.1)
+    assert not any(_alive(p) for p in below), [p for p in below if _alive(p)]
+    ds = xr.open_zarr(tmp_path / "s.zarr")  # whole: created before the points ran
+    assert ds.done.shape == ((40,) if argv is SLOW_SWEEP else (20,))
+
+
+# --------------------------------------------------------------------------- damaged stores
+FLOQUET = {"alpha": 0.5, "beta": [-0.3, -0.2, -0.1, 0.1, 0.2, 0.3], "n": [2, 10]}
+
+
+def _store(path):
+    import xarray as xr
+
+    from sinktheory.sweep import run_sweep
+
+    run_sweep("floquet", FLOQUET, store=path, workers=1, progress=False)
+    return xr.open_zarr(path).load()
+
+
+def _resume(path, repair=False):
+    import xarray as xr
+
+    from sinktheory.sweep import execute
+    from sinktheory.sweep.plan import Sweep
+
+    done = execute(Sweep.make("floquet", FLOQUET), store=path, resume=True, repair=repair,
+                   progress=False)  # fmt: skip
+    return done, xr.open_zarr(path).load()
+
+
+def _set(path, name, change):
+    """Rewrite array ``name`` of the store through zarr (every chunk still decodes)."""
+    import zarr
+
+    group = zarr.open_group(path, mode="r+", use_consolidated=False)
+    values = group[name][...]
+    change(values)
+    group[name][...] = values
+
+
+def _flip_last_bit(values):
+    values.view(np.uint64)[2, 1] ^= np.uint64(1)
+
+
+def _nan_at(values):
+    values[4, 0] = np.nan
+
+
+DAMAGE = [
+    ("lam value flipped", lambda p: _set(p, "lam", _flip_last_bit), 1),
+    ("phi NaN, still done", lambda p: _set(p, "phi", _nan_at), 1),
+    ("lam chunk deleted", lambda p: (p / "lam" / "c" / "0" / "0").unlink(), 12),
+    ("done chunk deleted", lambda p: (p / "done" / "c" / "0" / "0").unlink(), 12),
+    ("checksum chunk deleted", lambda p: (p / "checksum" / "c" / "0" / "0").unlink(), 12),
+]
+
+
+@pytest.mark.parametrize(("what", "damage", "count"), DAMAGE, ids=[d[0] for d in DAMAGE])
+def test_damaged_points_are_counted_and_recomputed(what, damage, count, tmp_path):
+    path = tmp_path / "s.zarr"
+    pristine = _store(path)
+    damage(path)
+    done, after = _resume(path)
+    assert done.computed == done.repaired == count, (done.computed, done.repaired)
+    for name in ("lam", "phi_half", "phi", "stable", "checksum"):
+        np.testing.assert_array_equal(after[name].values, pristine[name].values)
+    again, _ = _resume(path)
+    assert again.computed == again.repaired == 0  # nothing left to repair
+
+
+def test_lost_checksum_array_refuses_the_store(tmp_path):
+    """Not mistaken for a store of the format before checksums (where a decodable flip
+    would be kept): the store recorded that it keeps them."""
+    import shutil
+
+    from sinktheory.errors import ParameterError
+
+    path = tmp_path / "s.zarr"
+    _store(path)
+    _set(path, "lam", _flip_last_bit)
+    shutil.rmtree(path / "checksum")
+    for repair in (False, True):
+        with pytest.raises(ParameterError, match="checksum array is missing"):
+            _resume(path, repair)
+
+
+@pytest.mark.parametrize(("key", "value"), [("alpha", 0.6), ("sweep_seed", 999)])
+def test_edited_attribute_refuses_the_store(key, value, tmp_path):
+    import zarr
+
+    from sinktheory.errors import ParameterError
+
+    path = tmp_path / "s.zarr"
+    _store(path)
+    zarr.open_group(path, mode="r+", use_consolidated=False).attrs[key] = value
+    with pytest.raises(ParameterError, match=f"attribute {key} is {value!r}"):
+        _resume(path)
+
+
+def test_damage_is_said_by_sweep_and_design(capsys, tmp_path, monkeypatch):
+    """Both commands say how many damaged points they recomputed; design has --repair."""
+    import json
+
+    from _cli import run_cli
+
+    monkeypatch.chdir(tmp_path)
+    argv = ["sweep", "floquet", "--param", "alpha=0.5", "--param", "beta=-0.2,0.1"]
+    argv += ["--param", "n=4", "--out", "s.zarr", "--quiet"]
+    assert run_cli(argv, capsys)[0] == 0
+    (tmp_path / "s.zarr" / "phi" / "c" / "0").unlink()
+    code, out, err = run_cli([*argv, "--resume"], capsys)
+    assert code == 0, err
+    assert "2 point(s) computed (2 of them found damaged in the store and recomputed)" in out
+
+    design = ["design", "--beta", "0.1,0.3", "--n", "4", "--runs", "2", "--periods", "12"]
+    design += ["--horizons", "6,12", "--lyapunov-runs", "0", "--bootstrap", "10"]
+    design += ["--no-estimate", "--workers", "1", "--out", "d.zarr", "--quiet", "--json"]
+    assert run_cli(design, capsys)[0] == 0
+    chunk = tmp_path / "d.zarr" / "depth" / "c" / "0"
+    chunk.write_bytes(chunk.read_bytes()[:5])  # no longer decodes
+    code, out, err = run_cli([*design, "--resume"], capsys)
+    assert code == 2 and "damaged" in err and len(err.strip().splitlines()) == 1
+    code, out, err = run_cli([*design, "--resume", "--repair"], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["computed"] == data["repaired"] == 2
+
+
+# --------------------------------------------------------------------------- cosmetics
+def test_sweep_help_names_every_kind(capsys):
+    from sinktheory.cli import main
+    from sinktheory.sweep.kinds import KINDS
+
+    with pytest.raises(SystemExit):
+        main(["sweep", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    listed = text.split("KIND one of ", 1)[1].split(" options:")[0]
+    assert [k.strip() for k in listed.split(",")] == list(KINDS)
+    assert "(floquet, bifurcation, ensemble)" not in text
+
+
+def test_nnm_prints_sigma_at_its_precision(capsys):
+    """sigma vanishes for a conservative flow; computed to Newton's tolerance it prints as 0
+    (the JSON keeps the computed value)."""
+    import json
+
+    from _cli import run_cli
+
+    argv = ["nnm", *WELL, "--continue", "energy", "--points", "3"]
+    code, out, err = run_cli(argv, capsys)
+    assert code == 0, err
+    assert "sigma = 0 (to the Newton tolerance 1e-11)" in out and "e-16" not in out
+    code, out, err = run_cli([*argv, "--json"], capsys)
+    assert 0 < json.loads(out)["max_abs_sigma"] < 1e-11
+
+
+def test_full_disk_message_names_the_file(capsys, tmp_path, monkeypatch):
+    """A write that fails without a file name (EFBIG from a size limit) names the output."""
+    from _cli import run_cli
+
+    from sinktheory.plot import simulate as drawing
+
+    class BigFigure:
+        def savefig(self, path, **kwargs):
+            raise OSError(27, "File too large")
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(drawing, "plot_ensemble_energy", lambda *args: BigFigure())
+    argv = ["simulate", *WELL, "--runs", "2", "--periods", "2", "--quiet", "--plot", "e.png"]
+    code, _, err = run_cli(argv, capsys)
+    assert code == 1
+    assert err.strip() == "sinktheory simulate: could not write e.png: File too large"
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_run_sweep_warns_of_damage(tmp_path):
+    """The Python API says it too: a warning with the count."""
+    from sinktheory.sweep import DamagedStoreWarning, run_sweep
+
+    path = tmp_path / "s.zarr"
+    _store(path)
+    _set(path, "lam", _flip_last_bit)
+    with pytest.warns(DamagedStoreWarning, match="1 damaged point"):
+        run_sweep("floquet", FLOQUET, store=path, resume=True, progress=False)
+
+
+def test_explore_warns_of_damage_and_repairs(tmp_path):
+    from sinktheory.design.explorer import explore
+    from sinktheory.sweep import DamagedStoreWarning
+
+    params = {"beta": [0.1, 0.3], "n": 4, "runs": 2, "periods": 12, "horizons": "6+12",
+              "lyapunov_runs": 0, "bootstrap": 10}  # fmt: skip
+    kw = dict(store=tmp_path / "d.zarr", workers=1, progress=False, estimate_first=False)
+    first = explore(params, **kw)
+    chunk = tmp_path / "d.zarr" / "depth" / "c" / "0"
+    chunk.write_bytes(chunk.read_bytes()[:5])
+    with pytest.warns(DamagedStoreWarning, match="2 damaged design"):
+        run = explore(params, resume=True, repair=True, **kw)
+    assert run.computed == run.repaired == 2
+    np.testing.assert_array_equal(run.dataset.depth.values, first.dataset.depth.values)
+
+
+def test_stiff_or_huge_wells_warn_of_no_overflow(capsys):
+    """Item 7: the step's stiffness search evaluates V beyond the basin, where it overflows
+    to inf (outside, correctly); numpy's RuntimeWarning about it reached stderr for
+    simulate --n 200 and --alpha 1e308.  The frequency itself is checked against its
+    bounds: at least the container's 1, and finite."""
+    import math
+    import warnings
+
+    from _cli import run_cli
+
+    from sinktheory import Sink, Well
+    from sinktheory.stepsize import stiffness_frequency
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        for well in (Well(0.5, 0.3, 200), Well(1e308, 0.3, 4)):
+            omega = stiffness_frequency(Sink(well), 0.5)
+            assert 1.0 <= omega < math.inf
+        argv = ["simulate", "--alpha", "1e308", "--beta", "0.3", "--n", "4", "--runs", "2"]
+        code, out, err = run_cli([*argv, "--periods", "2", "--quiet"], capsys)
+    assert code == 0 and err == "", err

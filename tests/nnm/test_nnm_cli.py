@@ -1,0 +1,57 @@
+"""``sinktheory nnm``: JSON output, the plot, and bad input (one line, exit 2, no file)."""
+
+import json
+
+import pytest
+from _cli import run_cli
+
+BASE = ["nnm", "--alpha", "0.5", "--n", "4"]
+
+
+def test_energy_continuation_json_and_plot(tmp_path, capsys):
+    png = tmp_path / "fep.png"
+    argv = BASE + ["--beta", "-0.2", "--continue", "energy", "--range", "1e-3", "0.2"]
+    code, out, err = run_cli(argv + ["--points", "60", "--plot", str(png), "--json"], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["parameter"] == "energy" and png.stat().st_size > 10_000
+    assert data["max_trivial_error"] < 1e-5 and data["max_abs_sigma"] < 1e-12
+    assert min(data["frequency"]) == pytest.approx(1.0, abs=1e-3)  # container mode, low H
+    assert any(e["kind"] == "fold" for e in data["events"])
+
+
+@pytest.mark.parametrize(
+    "extra, name",
+    [
+        (["--beta", "0.2", "--continue", "mass"], "continue"),
+        (["--beta", "0.2", "--continue", "energy", "--steps", "7"], "steps"),
+        (["--beta", "0.2", "--continue", "energy", "--range", "1", "0.1"], "range"),
+        (["--beta", "0.6", "--continue", "energy"], "beta"),
+        (["--beta", "0.2", "--continue", "beta", "--range", "0.3", "0.4"], "beta"),
+        (["--beta", "0.2", "--continue", "energy", "--agreement", "8"], "agreement"),
+    ],
+)
+def test_bad_input_is_one_line_exit_2_no_file(tmp_path, capsys, extra, name):
+    png = tmp_path / "x.png"
+    code, out, err = run_cli(BASE + extra + ["--plot", str(png)], capsys)
+    assert code == 2 and not png.exists()
+    assert len(err.strip().splitlines()) == 1 and name in err
+
+
+def test_agreement_with_a_small_chaos_map(tmp_path, capsys):
+    """--agreement on 4 betas (2 runs x 20 periods: a smoke-size chaos map): the shares
+    are recomputed here from the JSON's own verdict and stability arrays."""
+    png = tmp_path / "agree.png"
+    argv = BASE + ["--beta", "-0.2", "--continue", "beta", "--range", "-0.6", "0.2",
+                   "--agreement", "4", "--runs", "2", "--periods", "20"]  # fmt: skip
+    code, out, err = run_cli(argv + ["--plot", str(png), "--json"], capsys)
+    assert code == 0, err
+    a = json.loads(out)["agreement"]
+    assert a["betas"] == 4 and png.stat().st_size > 10_000
+    regular = [not c for c in a["chaotic_verdict"]]
+    nnm = [abs(p) <= 1 for p in a["phi_half_nnm"]]
+    fixed = [abs(p) < 1 for p in a["phi_half_floquet"]]
+    for key, stable in (("nnm", nnm), ("floquet", fixed)):
+        share = sum(x == y for x, y in zip(stable, regular, strict=True)) / 4
+        assert a[key] == pytest.approx(share)
+    assert a["statement"].startswith("NNM transverse stability predicts")
