@@ -11,8 +11,8 @@ one run's E_c fluctuates by about its own mean, with an autocorrelation time of 
 periods, so 64 runs see the mean curve only to ~10 % of mu in any window.  The first
 time a noisy curve dips below f therefore comes earlier the noisier the curve, i.e. the
 fewer the runs (the rule used before this one moved from 1150 periods with 8 runs to
-3100 with 48).  The rule here reads t_f off a smooth curve fitted to the whole approach,
-so that its expected value does not depend on the number of runs R:
+3100 with 48).  The rule here reads t_f off curves fitted to the approach, so that its
+expected value does not depend on the number of runs R:
 
 1. Cut the runs (R, P + 1) into windows of W periods; window i has the ensemble mean
    x_i of the runs' window means (as excess over mu) and the standard error s_i of x_i
@@ -26,11 +26,10 @@ so that its expected value does not depend on the number of runs R:
    exponential (b < 1: it slows down as it goes on; the Fig. 8 set-up has b ~ 0.75, and
    an exponential's tau grows from ~800 to ~1080 periods as its fit starts later).
 3. Fit one exponential x(t) = A exp(-t / tau) to the windows from t_tail on (at least
-   6 windows), weighted alike: late in the approach the slowest mode is left, and a
-   sum of modes (two exponentials, say) has no stretched exponential through it, whose
-   crossing would then be off by ~20 % however many runs there are.  The reduced
-   chi-square of this fit says whether one exponential describes the tail (near 1) or
-   not (>> 1).
+   6 windows), weighted alike: late in the approach only the slowest mode is left,
+   while a stretched exponential fitted through a sum of modes (two exponentials, say)
+   misses its crossing by ~20 % however many runs there are.  The reduced chi-square
+   of this fit says whether one exponential describes the tail (near 1) or not (>> 1).
 4. t_f = tau ln(|A| / f), the tail's crossing of f (0 when |A| <= f).  A crossing
    beyond the record is an extrapolation of the tail, flagged ``extrapolated`` (run
    longer); ``late_z``, the late half's mean minus mu in its standard errors, says

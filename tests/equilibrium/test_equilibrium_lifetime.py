@@ -5,6 +5,7 @@ import math
 
 import numpy as np
 import pytest
+from _cli import run_cli
 from scipy import signal, stats
 
 from sinktheory import RunSettings, Sink
@@ -178,3 +179,11 @@ def test_too_short_or_impossible_records_are_refused_or_said_so():
             compare_with_law(e, law, transient=0)
     with pytest.raises(ParameterError, match="resamples"):
         ks_distance(rng.random((4, 50)), lambda s: s, resamples=0)
+
+
+def test_lifetime_command_says_what_a_short_record_cannot_give(capsys):
+    # issue 34's case: exit 0, but no negative autocorrelation time and no "nan +- nan"
+    argv = ["lifetime", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--runs", "2"]
+    code, out, _ = run_cli([*argv, "--periods", "30"], capsys)
+    assert code == 0 and "autocorrelation time not measurable" in out
+    assert "nan" not in out.lower() and " -0." not in out
