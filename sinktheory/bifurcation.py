@@ -29,6 +29,7 @@ from .ensemble import (
     ENERGY_BOUND,
     engine_name,
     engine_params,
+    sink_of,
     split_values,
     start_state,
     total_energy,
@@ -36,15 +37,18 @@ from .ensemble import (
 from .errors import ParameterError
 from .integrators import DEFAULT_SCHEME, get_scheme
 from .layout import StateLayout
+from .limits import MAX_PERIODS
 from .model import RunSettings, Sink, Well
 from .results import Result
 from .simulate import simulate
-from .stepsize import default_step, ladder_step
-from .worklimit import check_particle_steps
+from .stepsize import default_step, ladder_step, step_of
+from .worklimit import check_particle_steps, check_work
 
 __all__ = [
     "bifurcation",
     "BifurcationDiagram",
+    "check_point",
+    "points",
     "QUANTITIES",
     "sampled_run",
     "section",
@@ -259,6 +263,47 @@ def bifurcation(
         transient,
         count,
     )
+
+
+# ----------------------------------------------------------------- sweep points
+def check_point(p: dict) -> None:
+    """Check a ``bifurcation`` sweep point (one particle; transient, count, quantity,
+    energy) and its work."""
+    sink = sink_of(p)
+    if sink.particles != 1:
+        raise ParameterError("particles", sink.particles, "1 for a bifurcation sweep")
+    v.positive_int("transient", p["transient"], minimum=0, maximum=MAX_PERIODS)
+    v.positive_int("count", p["count"], maximum=MAX_PERIODS)
+    v.choice("quantity", p["quantity"], QUANTITIES)
+    settings = RunSettings(energy=p["energy"], runs=1, periods=p["transient"] + p["count"])
+    settings.check(sink)
+    # a well too stiff to integrate names the parameter responsible, and the section's
+    # periods are checked against the work limit
+    _, _, steps, _ = step_of(sink, p["energy"], settings=settings)
+    check_work(settings, sink, steps)
+
+
+def points(points: list) -> list[dict]:
+    """Sections of a task's points, those sharing an engine and the section's settings as
+    one ensemble whose runs carry their own parameters and steps
+    (:func:`sinktheory.bifurcation.sections`)."""
+    groups: dict[tuple, list[int]] = {}
+    for i, (p, _) in enumerate(points):
+        key = (p["shape"], p["n"], p["transient"], p["count"], p["quantity"], p["energy"])
+        groups.setdefault(key, []).append(i)
+    out: list = [None] * len(points)
+    for members in groups.values():
+        first = points[members[0]][0]
+        rows = sections(
+            [sink_of(points[i][0]) for i in members],
+            transient=first["transient"],
+            count=first["count"],
+            quantity=first["quantity"],
+            energy=first["energy"],
+        )
+        for i, row in zip(members, rows, strict=True):
+            out[i] = {"section": row}
+    return out
 
 
 from ._verbs import make_callable as _make_callable  # noqa: E402 (module complete here)

@@ -19,7 +19,7 @@ Examples
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -27,7 +27,7 @@ import numpy as np
 from . import validation as v
 from .errors import ParameterError
 from .layout import StateLayout, pack_params
-from .model import RunSettings, Sink
+from .model import RunSettings, Sink, Well
 from .results import Result
 from .runstats import ensemble_mean
 from .stepsize import DEFAULT_TOL
@@ -45,8 +45,10 @@ __all__ = [
     "random_positions",
     "RECORDS",
     "run_parameters",
+    "settings_of",
     "SimulationResult",
     "SimulationState",
+    "sink_of",
     "split_values",
     "Start",
     "start_positions",
@@ -389,3 +391,25 @@ def prepare(
     )
     values, t0, h0 = initial_values(sink, settings, initial, initial_state)
     return Start(settings, record, bound, values, t0, h0)
+
+
+def sink_of(p: Mapping) -> Sink:
+    """The :class:`~sinktheory.model.Sink` of a sweep point (a dict with the well's
+    alpha, beta, n, gamma, shape and the sink's particles, mass).
+
+    Examples
+    --------
+    >>> p = dict(alpha=0.5, beta=0.3, n=4, gamma=1.0, shape="flat", particles=5, mass=0.2)
+    >>> sink_of(p).particles, sink_of(p).well.n
+    (5, 4)
+    """
+    well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
+    return Sink(well, particles=p["particles"], mass=p["mass"])
+
+
+def settings_of(p: Mapping, seed: int) -> RunSettings:
+    """The :class:`~sinktheory.model.RunSettings` of a sweep point's ensemble (energy,
+    runs, periods, box), seeded with the point's seed."""
+    return RunSettings(
+        energy=p["energy"], runs=p["runs"], periods=p["periods"], seed=seed, box=p["box"]
+    )

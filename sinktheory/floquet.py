@@ -104,6 +104,7 @@ from .twins import python_kernel
 __all__ = [
     "Boundary",
     "BOUNDARY_FACTORS",
+    "check_point",
     "FloquetChart",
     "HillProblem",
     "JSON_CAP",
@@ -112,6 +113,8 @@ __all__ = [
     "MAX_LAMBDA",
     "model_hill",
     "model_problem",
+    "point",
+    "POINT_QUANTITIES",
     "pure_hill",
     "pure_problem",
     "rigid_limit_phi_half",
@@ -793,3 +796,39 @@ def rigid_limit_phi_half(lam, amplitude: float = 1.0) -> np.ndarray:
     """
     a = v.positive("amplitude", amplitude)
     return 1.0 - 2.0 * np.asarray(lam, dtype=float) * a * a
+
+
+# ----------------------------------------------------------------- one sweep point
+#: What a ``floquet`` sweep stores per point (the chart's quantities at one beta; "lam"
+#: is the chart's "lambda").
+POINT_QUANTITIES = ("lam", "phi_half", "phi", "stable", "log_abs_phi_half", "rotation_number",
+                    "floquet_exponent")  # fmt: skip
+
+
+def check_point(p: dict) -> None:
+    """Check a ``floquet`` sweep point (alpha, beta, n, gamma, shape, amplitude, rtol)
+    with the model's own validators."""
+    model_problem(
+        p["alpha"],
+        p["n"],
+        gamma=p["gamma"],
+        shape=p["shape"],
+        amplitude=p["amplitude"],
+        rtol=p["rtol"],
+    ).check([p["beta"]])
+
+
+def point(p: dict, seed: int) -> dict:
+    """The :data:`POINT_QUANTITIES` of :func:`model_hill` at the point's one beta (the
+    seed is not used: the chart is deterministic)."""
+    c = model_hill(
+        p["alpha"],
+        [p["beta"]],
+        p["n"],
+        gamma=p["gamma"],
+        shape=p["shape"],
+        amplitude=p["amplitude"],
+        rtol=p["rtol"],
+    )
+    items = c.items()  # the chart's quantities (sinktheory.results protocol)
+    return {name: items["lambda" if name == "lam" else name][0] for name in POINT_QUANTITIES}

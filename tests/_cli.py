@@ -1,6 +1,8 @@
 """Shared by the CLI tests: run ``sinktheory`` in-process and capture its output, and check
 a clean refusal (exit 2, one line naming the parameter, nothing written)."""
 
+import subprocess
+import sys
 import warnings
 from pathlib import Path
 
@@ -36,3 +38,33 @@ def refused(argv, capsys, tmp_path, monkeypatch, name: str) -> str:
     assert f"error: {name} = " in lines[0] or f"argument {name}" in lines[0], lines[0]
     assert snapshot(tmp_path) == before, "a file was written"
     return lines[0]
+
+
+#: Modules that cost 0.05-1 s to import: a quick answer imports none of them.
+HEAVY = ("numpy", "numba", "sympy", "mpmath", "matplotlib", "scipy", "xarray", "zarr", "dask")
+
+PROBE = """
+import sys
+from sinktheory.cli import main
+try:
+    status = main(sys.argv[1:])
+except SystemExit as e:  # --help exits through argparse
+    status = e.code
+heavy = [m for m in {heavy!r} if m in sys.modules]
+print("STATUS", status, "HEAVY", ",".join(heavy), file=sys.stderr)
+"""
+
+
+def probe(args, tmp_path):
+    """(exit status, heavy modules imported, process) of ``sinktheory ARGS`` run in a
+    fresh process in ``tmp_path``."""
+    proc = subprocess.run(
+        [sys.executable, "-c", PROBE.format(heavy=HEAVY), *args],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+    )
+    last = proc.stderr.strip().splitlines()[-1].split()
+    assert last[0] == "STATUS", proc.stderr
+    heavy = last[3].split(",") if len(last) > 3 else []
+    return int(last[1]), heavy, proc

@@ -38,8 +38,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..ensemble import settings_of, sink_of
 from ..stepsize import choose
-from .point import settings_of, sink_of
 
 #: Seconds to generate and compile the engine of one well shape and n the first time,
 #: with its tangent-map functions for lambda_1 (30-60 s each on the development machine

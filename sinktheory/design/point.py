@@ -66,8 +66,9 @@ from typing import Any
 import numpy as np
 
 from .. import validation as v
+from ..ensemble import settings_of, sink_of
 from ..errors import ParameterError
-from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings, Sink, Well
+from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings
 from ..runstats import mean_stderr
 from ..sinkstats import ensemble_mean
 from ..stepsize import check_tol, step_of
@@ -83,8 +84,6 @@ __all__ = [
     "lyapunov",
     "MAX_BOOTSTRAP",
     "SAMPLES",
-    "settings_of",
-    "sink_of",
 ]
 
 #: Results of a point that come from its ensemble (besides the container energy).
@@ -112,19 +111,6 @@ def attachment_of(p: dict):
         raise ParameterError("gamma", p["gamma"], f"1 for the {p['attachment']} attachment")
     return Attachment(
         p["attachment"], p["shape"], p["alpha"], p["beta"], p["n"], p["particles"], p["mass"]
-    )
-
-
-def sink_of(p: dict) -> Sink:
-    """The :class:`~sinktheory.model.Sink` of a design point."""
-    well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
-    return Sink(well, particles=p["particles"], mass=p["mass"])
-
-
-def settings_of(p: dict, seed: int) -> RunSettings:
-    """The ensemble's :class:`~sinktheory.model.RunSettings` (seeded with the point seed)."""
-    return RunSettings(
-        energy=p["energy"], runs=p["runs"], periods=p["periods"], seed=seed, box=p["box"]
     )
 
 

@@ -3,7 +3,11 @@
 Each kind lists its parameters (type, default, whether it may be swept), checks a point
 with the model's own validators before anything runs, and computes a point as a pure
 function of (parameters, point seed), returning a dict of arrays whose shapes depend only
-on the fixed parameters.
+on the fixed parameters.  The work of each kind lives in its analysis package, loaded at
+the first point: ``check_point`` and ``point`` (or ``points``, many at once) of
+:mod:`sinktheory.floquet`, :mod:`sinktheory.bifurcation`, :mod:`sinktheory.simulate`,
+:mod:`sinktheory.chaos.points` and :mod:`sinktheory.equilibrium.ergodicity`, and
+:mod:`sinktheory.design.point`; this table holds only what a kind takes and stores.
 
 =============  ==============================================  ===============================
 kind           point function                                  results per point
@@ -49,6 +53,7 @@ from __future__ import annotations
 import numbers
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from importlib import import_module
 from typing import Any
 
 import numpy as np
@@ -59,12 +64,9 @@ from ..design.measures import ATTACHMENTS
 from ..ensemble import ENERGY_BOUND
 from ..equilibrium import ergodicity as _ergodicity
 from ..errors import ParameterError
-from ..integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
+from ..integrators import DEFAULT_SCHEME, SCHEMES
 from ..limits import DEFAULT_RTOL
-from ..model import DAMPING_KINDS, MAX_PERIODS, SHAPES, RunSettings, Sink, Well
-from ..simulate import simulate
-from ..stepsize import step_of
-from ..worklimit import check_work
+from ..model import DAMPING_KINDS, SHAPES
 
 __all__ = [
     "DESIGN_TOL",
@@ -84,6 +86,23 @@ REQUIRED = object()
 #: Rough cost of one container period of one particle (n = 10, single thread: 24 sections
 #: of 80 periods took 1.6 s); only used to decide whether to start local processes.
 SECONDS_PER_PERIOD = 1e-3
+
+
+def _lazy(module: str, name: str) -> Callable:
+    """The function ``name`` of the analysis module ``module`` (relative to the package),
+    imported at its first call: every kind's work lives in its own package, and this
+    table loads none of them."""
+
+    def call(*args, **kwargs):
+        return getattr(import_module(module, "sinktheory"), name)(*args, **kwargs)
+
+    call.__name__ = call.__qualname__ = f"{module.lstrip('.')}.{name}"
+    return call
+
+
+def _one(many: Callable) -> Callable:
+    """A point function from a function of many points (grouping never changes a result)."""
+    return lambda p, seed: many([(p, seed)])[0]
 
 
 @dataclass(frozen=True)
@@ -202,35 +221,6 @@ class Kind:
 
 
 # --------------------------------------------------------------------------- floquet
-def _floquet_check(p: dict) -> None:
-    from ..floquet import model_problem  # the Floquet layer loads with its first point
-
-    model_problem(
-        p["alpha"],
-        p["n"],
-        gamma=p["gamma"],
-        shape=p["shape"],
-        amplitude=p["amplitude"],
-        rtol=p["rtol"],
-    ).check([p["beta"]])
-
-
-def _floquet(p: dict, seed: int) -> dict[str, Any]:
-    from ..floquet import model_hill
-
-    c = model_hill(
-        p["alpha"],
-        [p["beta"]],
-        p["n"],
-        gamma=p["gamma"],
-        shape=p["shape"],
-        amplitude=p["amplitude"],
-        rtol=p["rtol"],
-    )
-    items = c.items()  # the chart's quantities (sinktheory.results protocol)
-    return {name: items["lambda" if name == "lam" else name][0] for name in FLOQUET_RESULTS}
-
-
 FLOQUET_RESULTS = {
     "lam": Result((), "float64", "lambda = -2 beta (alpha - beta) of Hill's equation"),
     "phi_half": Result((), "float64", "half trace of the half-period map (+-inf beyond range)"),
@@ -244,97 +234,7 @@ FLOQUET_RESULTS = {
 # --------------------------------------------------------------------------- bifurcation
 
 
-def _sink(p: dict) -> Sink:
-    well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
-    return Sink(well, particles=p["particles"], mass=p["mass"])
-
-
-def _bifurcation_check(p: dict) -> None:
-    sink = _sink(p)
-    if sink.particles != 1:
-        raise ParameterError("particles", sink.particles, "1 for a bifurcation sweep")
-    v.positive_int("transient", p["transient"], minimum=0, maximum=MAX_PERIODS)
-    v.positive_int("count", p["count"], maximum=MAX_PERIODS)
-    v.choice("quantity", p["quantity"], QUANTITIES)
-    settings = RunSettings(energy=p["energy"], runs=1, periods=p["transient"] + p["count"])
-    settings.check(sink)
-    # a well too stiff to integrate names the parameter responsible, and the section's
-    # periods are checked against the work limit
-    _, _, steps, _ = step_of(sink, p["energy"], settings=settings)
-    check_work(settings, sink, steps)
-
-
-def _bifurcation(p: dict, seed: int) -> dict[str, Any]:
-    return _bifurcation_many([(p, seed)])[0]
-
-
-def _bifurcation_many(points: list) -> list[dict[str, Any]]:
-    """Sections of a task's points, those sharing an engine and the section's settings as
-    one ensemble whose runs carry their own parameters and steps
-    (:func:`sinktheory.bifurcation.sections`)."""
-    from ..bifurcation import sections
-
-    groups: dict[tuple, list[int]] = {}
-    for i, (p, _) in enumerate(points):
-        key = (p["shape"], p["n"], p["transient"], p["count"], p["quantity"], p["energy"])
-        groups.setdefault(key, []).append(i)
-    out: list = [None] * len(points)
-    for members in groups.values():
-        first = points[members[0]][0]
-        rows = sections(
-            [_sink(points[i][0]) for i in members],
-            transient=first["transient"],
-            count=first["count"],
-            quantity=first["quantity"],
-            energy=first["energy"],
-        )
-        for i, row in zip(members, rows, strict=True):
-            out[i] = {"section": row}
-    return out
-
-
 # --------------------------------------------------------------------------- ensemble
-def _settings(p: dict, seed: int) -> RunSettings:
-    return RunSettings(
-        energy=p["energy"], runs=p["runs"], periods=p["periods"], seed=seed, box=p["box"]
-    )
-
-
-def _ensemble_check(p: dict) -> int:
-    """Check an ensemble point; its steps per period (a well too stiff for any step
-    names the parameter responsible, and the work is checked against the limit)."""
-    sink, settings = _sink(p), _settings(p, 0)
-    settings.check(sink)
-    get_scheme(p["method"])
-    if p["dt"] is not None:
-        v.time_step("dt", p["dt"])
-    v.positive("energy_bound", p["energy_bound"])
-    v.positive_int("replica", p.get("replica", 0), minimum=0)
-    energy = settings.total_energy_bound(sink)
-    _, _, steps, _ = step_of(sink, energy, method=p["method"], dt=p["dt"], settings=settings)
-    check_work(settings, sink, steps)
-    return steps
-
-
-def _ensemble(p: dict, seed: int) -> dict[str, Any]:
-    res = simulate(
-        _sink(p),
-        _settings(p, seed),
-        method=p["method"],
-        dt=p["dt"],
-        record=("container",),
-        energy_bound=p["energy_bound"],
-        progress=False,
-    )
-    r = res.items()  # the result's own fields and ensemble mean (sinktheory.results)
-    return {
-        "mean_energy": r["mean_energy"],
-        "stderr": r["stderr"],
-        "max_relative_energy_error": r["max_relative_energy_error"],
-        "dt_used": r["dt"],
-    }
-
-
 # --------------------------------------------------------------------------- design
 def _design_check(p: dict) -> None:
     from ..design.point import check  # the design package is loaded when a design runs
@@ -408,8 +308,8 @@ KINDS = {
         "floquet",
         {**WELL, "amplitude": Param(float, 1.0), "rtol": Param(float, DEFAULT_RTOL)},
         FLOQUET_RESULTS,
-        _floquet_check,
-        _floquet,
+        _lazy(".floquet", "check_point"),
+        _lazy(".floquet", "point"),
         batch=64,
         cost=lambda p: 1e-4,  # measured 6e-5 to 7e-5 s for n = 2 to 1000
     ),
@@ -423,12 +323,12 @@ KINDS = {
             "quantity": Param(str, "y", QUANTITIES),
         },
         {"section": Result(("sample",), "float64", "y(jT) or E(jT), j = transient + sample")},
-        _bifurcation_check,
-        _bifurcation,
+        _lazy(".bifurcation", "check_point"),
+        _one(_lazy(".bifurcation", "points")),
         lambda p: {"sample": np.arange(1, p["count"] + 1)},
         batch=256,
         cost=lambda p: SECONDS_PER_PERIOD * (p["transient"] + p["count"]),
-        compute_many=_bifurcation_many,
+        compute_many=_lazy(".bifurcation", "points"),
     ),
     "ensemble": Kind(
         "ensemble",
@@ -449,8 +349,8 @@ KINDS = {
             "max_relative_energy_error": Result((), "float64", "largest |H - H0|/H0 of all runs"),
             "dt_used": Result((), "float64", "integration step used"),
         },
-        _ensemble_check,
-        _ensemble,
+        _lazy(".simulate", "check_point"),
+        _lazy(".simulate", "point"),
         lambda p: {"period": np.arange(p["periods"] + 1)},
         cost=lambda p: SECONDS_PER_PERIOD * p["periods"] * p["runs"] * p["particles"],
     ),
@@ -492,137 +392,6 @@ KINDS = {
 
 
 # --------------------------------------------------------------------------- chaos
-def _chaos_check(p: dict) -> None:
-    from ..chaos.general import check_gali, check_renorm
-    from ..chaos.sink import check_tangent_work
-
-    steps = _ensemble_check(p)
-    check_renorm(p["renorm"])
-    v.positive_int("megno", p["megno"], minimum=0, maximum=1)
-    v.positive_int("transverse", p["transverse"], minimum=0, maximum=1)
-    v.positive_int("stop_early", p["stop_early"], minimum=0, maximum=1)
-    v.positive_int("transient", p["transient"], minimum=0, maximum=max(0, p["periods"] - 1))
-    gali = check_gali(p["gali"], 1 + 2 * p["particles"])
-    if p["stop_early"] and (gali or p["megno"]):
-        raise ParameterError("stop_early", 1, "0 when gali or megno is asked for (they need "
-                             "every run to the end)")  # fmt: skip
-    check_tangent_work(_sink(p), _settings(p, 0), steps, None, gali, bool(p["transverse"]))
-
-
-def _chaos(p: dict, seed: int) -> dict[str, Any]:
-    """lambda_1 (and the transverse exponent, GALI_k, <Y>) of an ensemble seeded with the
-    point's seed (:func:`sinktheory.chaos.chaos`): mean and standard error over the runs."""
-    return _chaos_many([(p, seed)])[0]
-
-
-def _chaos_step(p: dict, seed: int) -> float:
-    """The point's step: ``dt`` if given, else the step for the default tolerance taken
-    down to the ladder of :func:`sinktheory.stepsize.ladder_step`, so that neighbouring
-    betas share a step count and fill the engine's blocks together."""
-    from ..chaos.sink import start_energy
-    from ..stepsize import ladder_step, resolve_step
-
-    if p["dt"] is not None:
-        return p["dt"]
-    sink = _sink(p)
-    top = start_energy(sink, _settings(p, seed), bool(p["transverse"]))
-    return ladder_step(resolve_step(sink, top, method=p["method"])[1])[0]
-
-
-def _chaos_many(points: list) -> list[dict[str, Any]]:
-    """The points of a task grouped by engine, periods and analysis options, each group
-    one ensemble whose runs carry their own parameters and steps
-    (:func:`sinktheory.chaos.chaos_batch`, or with ``stop_early``
-    :func:`sinktheory.chaos.staged.staged_chaos`): a chaos map over beta is one ensemble.
-    Steps per run need ``renorm`` = 0 (it counts steps), so with renorm the step is part
-    of the group."""
-    groups: dict[tuple, list[int]] = {}
-    steps = [_chaos_step(p, seed) for p, seed in points]
-    for i, (p, _) in enumerate(points):
-        same = ("shape", "n", "particles", "periods", "method", "gali", "megno", "transverse",
-                "renorm", "energy_bound", "stop_early", "transient")  # fmt: skip
-        key = (*(p[k] for k in same), steps[i] if p["renorm"] else None)
-        groups.setdefault(key, []).append(i)
-    out: list = [None] * len(points)
-    for members in groups.values():
-        first = points[members[0]][0]
-        sinks = [_sink(points[i][0]) for i in members]
-        settings = [_settings(points[i][0], points[i][1]) for i in members]
-        options = {
-            "dt": [steps[i] for i in members],
-            "transverse": bool(first["transverse"]),
-            "method": first["method"],
-            "renorm": first["renorm"],
-            "energy_bound": first["energy_bound"],
-        }
-        if first["stop_early"]:
-            from ..chaos.staged import staged_chaos
-
-            runs = staged_chaos(sinks, settings, transient=first["transient"], **options)
-            summaries = [_staged_summary(r, dt) for r, dt in zip(runs, options["dt"], strict=True)]
-        else:
-            from ..chaos import chaos_batch
-
-            extra = {"gali": first["gali"], "megno": bool(first["megno"]), "progress": False}
-            results = chaos_batch(sinks, settings, **extra, **options)
-            summaries = [
-                _chaos_summary(res, first["periods"], first["transient"]) for res in results
-            ]
-        for i, summary in zip(members, summaries, strict=True):
-            out[i] = summary
-    return out
-
-
-def _staged_summary(res: dict, dt: float) -> dict[str, Any]:
-    """The chaos kind's results from :func:`~sinktheory.chaos.staged.staged_chaos`: the
-    same means and standard errors over the runs, each exponent at its stopping time."""
-    from ..sinkstats import ensemble_mean
-
-    lam, trans = res["lambda1"], res["transverse"]
-    out = {"lambda1_runs": lam.exponent, "dt_used": np.array(dt)}
-    worst = lam.worst if trans is None else np.maximum(lam.worst, trans.worst)
-    out["max_relative_energy_error"] = np.array(float(worst.max()))
-    for name, s in (("lambda1", lam), ("transverse", trans)):
-        if s is None:
-            mean = se = periods = np.nan
-        else:
-            m, e = ensemble_mean(s.exponent[:, None])
-            mean, se, periods = m[0], e[0], float(s.periods.max())
-        out[name], out[f"{name}_se"] = np.array(mean), np.array(se)
-        out[f"{name}_periods"] = np.array(periods)
-    for name in ("gali", "mean_megno"):
-        out[name] = out[f"{name}_se"] = np.array(np.nan)
-    return out
-
-
-def _chaos_summary(res, periods: int, transient: int) -> dict[str, Any]:
-    """What the chaos kind stores of a ChaosResult: per-run lambda_1 (the growth after
-    ``transient`` periods), ensemble means and standard errors, the audit, the step, and
-    the periods each exponent ran; GALI and MEGNO as ``as_dict`` gives them."""
-    from dataclasses import replace
-
-    from ..chaos.staged import StagedExponent
-
-    res = replace(res, transient=transient)
-    exponents = {
-        name: StagedExponent(rate, np.full(rate.size, periods), res.run_errors)
-        for name, rate in (("lambda1", res.lambda1), ("transverse", res.transverse))
-        if rate is not None
-    }
-    out = _staged_summary(
-        {"lambda1": exponents["lambda1"], "transverse": exponents.get("transverse")},
-        res.parameters["dt"],
-    )
-    d = res.as_dict()
-    keys = {"gali": f"gali{res.gali_order}"}  # as_dict's name where it differs
-    for name in ("gali", "mean_megno"):
-        summary = d.get(keys[name] if name in keys else name, {})  # absent when not computed
-        # None (absent, or a NaN in JSON) is stored as NaN
-        out[name] = np.array(summary.get("mean"), dtype=float)
-        out[f"{name}_se"] = np.array(summary.get("stderr"), dtype=float)
-    return out
-
-
 def _chaos_results() -> dict[str, Result]:
     text = {
         "lambda1": "maximal Lyapunov exponent per unit time (growth after the transient), "
@@ -667,14 +436,14 @@ KINDS["chaos"] = Kind(
         "replica": Param(int, 0),
     },
     _chaos_results(),
-    _chaos_check,
-    _chaos,
+    _lazy(".chaos.points", "check_point"),
+    _one(_lazy(".chaos.points", "points")),
     lambda p: {"run": np.arange(p["runs"])},
     batch=256,
     cost=lambda p: (
         3 * (1 + p["transverse"]) * SECONDS_PER_PERIOD * p["periods"] * p["runs"] * p["particles"]
     ),
-    compute_many=_chaos_many,
+    compute_many=_lazy(".chaos.points", "points"),
 )
 
 

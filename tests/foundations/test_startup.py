@@ -7,27 +7,13 @@ imported when it answers.  numpy, numba, SymPy, mpmath, matplotlib and scipy eac
 """
 
 import inspect
-import subprocess
-import sys
 from importlib import import_module
 
 import pytest
+from _cli import probe
 
 from sinktheory import scenes
 from sinktheory.scenes.base import Scene
-
-HEAVY = ("numpy", "numba", "sympy", "mpmath", "matplotlib", "scipy", "xarray", "zarr", "dask")
-
-PROBE = """
-import sys
-from sinktheory.cli import main
-try:
-    status = main(sys.argv[1:])
-except SystemExit as e:  # --help exits through argparse
-    status = e.code
-heavy = [m for m in {heavy!r} if m in sys.modules]
-print("STATUS", status, "HEAVY", ",".join(heavy), file=sys.stderr)
-"""
 
 #: Commands whose --help is light (the others build their parsers from the sweep layer).
 LIGHT_HELP = ("well", "sink", "derive", "simulate", "period", "series", "reproduce", "floquet")
@@ -39,19 +25,6 @@ EARLY_REFUSALS = [
     (["derive", "--digits", "3"], 2),
     (["period", "--n", "4"], 2),  # neither --amplitude nor --energy
 ]
-
-
-def probe(args, tmp_path):
-    proc = subprocess.run(
-        [sys.executable, "-c", PROBE.format(heavy=HEAVY), *args],
-        capture_output=True,
-        text=True,
-        cwd=tmp_path,
-    )
-    last = proc.stderr.strip().splitlines()[-1].split()
-    assert last[0] == "STATUS", proc.stderr
-    heavy = last[3].split(",") if len(last) > 3 else []
-    return int(last[1]), heavy, proc
 
 
 @pytest.mark.parametrize("command", LIGHT_HELP)

@@ -5,8 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from _cli import run_cli
-from test_startup import probe
+from _cli import probe, run_cli
 
 from sinktheory.attachments import Attachment, impulse_response
 from sinktheory.compare.efficiency import attachments_of, compare
