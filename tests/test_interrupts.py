@@ -47,9 +47,10 @@ def compiled(tmp_path_factory):
         assert main(argv) == 0
 
 
-def _interrupt(argv, signum, cwd, wait=2.5):
+def _interrupt(argv, signum, cwd, wait=2.5, until=None):
     """(status, seconds from the signal to the exit, stdout, stderr) of ``sinktheory
-    ARGV`` sent ``signum`` ``wait`` seconds after it started."""
+    ARGV`` sent ``signum`` ``wait`` seconds after it started (and once the path ``until``
+    exists, if given: a loaded machine starts slowly)."""
     proc = subprocess.Popen(
         [sys.executable, "-c", LAUNCH, *argv],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd,
@@ -57,6 +58,9 @@ def _interrupt(argv, signum, cwd, wait=2.5):
     try:
         assert proc.stderr.readline() == "ready\n"
         time.sleep(wait)
+        deadline = time.monotonic() + 60
+        while until is not None and not until.exists() and time.monotonic() < deadline:
+            time.sleep(0.1)
         assert proc.poll() is None, proc.communicate()  # still computing
         sent = time.monotonic()
         proc.send_signal(signum)
@@ -84,7 +88,7 @@ CASES = {
 @pytest.mark.parametrize("case", list(CASES))
 def test_signal_ends_a_long_command_with_one_line(case, tmp_path):
     argv, signum, hint = CASES[case]
-    status, took, out, err = _interrupt(argv, signum, tmp_path)
+    status, took, out, err = _interrupt(argv, signum, tmp_path, until=hint and tmp_path / "s.zarr")
     assert status == 128 + signum, err
     assert took < 2.0, (took, err)
     line = f"sinktheory {argv[0]}: interrupted" + (f"; {hint}" if hint else "")
