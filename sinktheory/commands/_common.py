@@ -45,12 +45,15 @@ class Interrupted(KeyboardInterrupt):
 
 
 @contextlib.contextmanager
-def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterator[None]:
+def interruptible(
+    prog: str, hint: str | Callable[[], str | None] | None = "--resume continues"
+) -> Iterator[None]:
     """Turn SIGINT (Ctrl-C) and SIGTERM into one line on stderr and the shell's status.
 
     Inside, SIGTERM raises :class:`Interrupted` (SIGINT raises KeyboardInterrupt, as
     always), so ``finally`` blocks close the store and end the worker processes.  Then
-    ``PROG: interrupted; HINT`` (or ``PROG: interrupted`` without a hint) is printed and
+    ``PROG: interrupted; HINT`` (or ``PROG: interrupted`` without a hint; a callable
+    ``hint`` is asked at that moment, e.g. whether there is a store to resume) is printed and
     SystemExit raised with status 128 + the signal's number: 130 for SIGINT, 143 for
     SIGTERM (what a shell reports for a process the signal ended, so job managers see the
     usual codes).
@@ -74,7 +77,8 @@ def interruptible(prog: str, hint: str | None = "--resume continues") -> Iterato
     except KeyboardInterrupt as e:
         signum = getattr(e, "signum", signal.SIGINT)
         e.__traceback__ = None  # let the frames go: a pool's queues are freed before exit
-        print(f"{prog}: interrupted" + (f"; {hint}" if hint else ""), file=sys.stderr, flush=True)
+        said = hint() if callable(hint) else hint
+        print(f"{prog}: interrupted" + (f"; {said}" if said else ""), file=sys.stderr, flush=True)
         status = 128 + int(signum)
     else:
         status = None
@@ -133,6 +137,11 @@ def interrupt_behind(error: BaseException) -> KeyboardInterrupt | None:
         seen.add(id(error))
         error = error.__cause__ or error.__context__
     return None
+
+
+def resume_hint(store: str) -> Callable[[], str | None]:
+    """The hint of an interrupted sweep: ``--resume continues`` once its store exists."""
+    return lambda: "--resume continues" if Path(store).exists() else None
 
 
 def damage_note(repaired: int) -> str:

@@ -35,6 +35,7 @@ from ._common import (
     interruptible,
     number,
     output_directory,
+    resume_hint,
 )
 
 __all__ = [
@@ -181,8 +182,8 @@ def params_of(args: argparse.Namespace) -> dict:
 def run(args: argparse.Namespace) -> Output:
     """Ctrl-C or SIGTERM at any point: one line, status 130 or 143
     (:func:`~sinktheory.commands._common.interruptible`); the store keeps every point
-    finished and ``--resume`` continues it."""
-    with interruptible("sinktheory design"):
+    finished and ``--resume`` continues it (the line says so once the store exists)."""
+    with interruptible("sinktheory design", resume_hint(str(args.out))):
         return _run(args)
 
 

@@ -18,7 +18,7 @@ from ..sweep.grid import Value, parse_param
 from ..sweep.kinds import KINDS
 from ..validation import writable_directory
 from . import HELP as HELPS
-from ._common import Output, add_json, damage_note, interruptible, number
+from ._common import Output, add_json, damage_note, interruptible, number, resume_hint
 
 __all__ = ["add_arguments", "HELP", "NAME", "params_of", "run"]
 
@@ -75,8 +75,8 @@ def params_of(specs: list[str]) -> dict[str, list[Value]]:
 def run(args: argparse.Namespace) -> Output:
     """Ctrl-C or SIGTERM at any point: one line, status 130 or 143
     (:func:`~sinktheory.commands._common.interruptible`); the store keeps every point
-    finished and ``--resume`` continues it."""
-    with interruptible("sinktheory sweep"):
+    finished and ``--resume`` continues it (the line says so once the store exists)."""
+    with interruptible("sinktheory sweep", resume_hint(str(args.out))):
         return _run(args)
 
 

@@ -238,6 +238,20 @@ def work(
     return total
 
 
+def check_attachments(attachments) -> list:
+    """``attachments`` as a non-empty list of :class:`~sinktheory.attachments.Attachment`."""
+    from ..attachments import Attachment
+
+    allowed = "a non-empty list of sinktheory.attachments.Attachment"
+    try:
+        items = list(attachments)
+    except TypeError:
+        raise ParameterError("attachments", attachments, allowed) from None
+    if not items or not all(isinstance(a, Attachment) for a in items):
+        raise ParameterError("attachments", [type(a).__name__ for a in items], allowed)
+    return items
+
+
 def check_damping(damping, attachments) -> float:
     """``damping`` >= 0 whose rate on every attachment's particles, c (1 + m) / m (the
     relative velocity's decay rate), is a finite number (at 1e308 it overflowed into a
@@ -306,9 +320,7 @@ def compare(
     from ..attachments import impulse_response
     from ..progress import ProgressBar
 
-    attachments = list(attachments)
-    if not attachments:
-        raise ParameterError("attachments", attachments, "a non-empty list")
+    attachments = check_attachments(attachments)
     energies = v.real_array("energies", energies)
     if energies.ndim != 1 or not energies.size or not np.all(energies > 0):
         raise ParameterError("energies", energies.tolist(), "a non-empty list of numbers > 0")

@@ -112,9 +112,9 @@ def transfer_map(
     True
     """
     from ..attachments import impulse_response
-    from .efficiency import check_damping
+    from .efficiency import check_attachments, check_damping
 
-    check_damping(damping, [att])
+    check_damping(damping, check_attachments([att]))
     run = v.positive_int("run", run, minimum=0, maximum=10**6)
     res = impulse_response(
         att,

@@ -57,11 +57,12 @@ def _symmetric_law(energy):
     return equilibrium_law(Sink(Well(0.5, 0.3, 4, shape="symmetric")), energy)
 
 
-def _compare(damping):
+def _compare(damping, attachments=None):
     from sinktheory.attachments import Attachment
     from sinktheory.compare.efficiency import compare
 
-    return compare([Attachment("impact")], [0.1], damping=damping, periods=2, runs=2)
+    attachments = [Attachment("impact")] if attachments is None else attachments
+    return compare(attachments, [0.1], damping=damping, periods=2, runs=2)
 
 
 API.update(
@@ -77,6 +78,8 @@ API.update(
         # 0.0027 % below the corner saddle the area's series cannot converge
         "law near the saddle": (lambda: _symmetric_law(75.35), "energy"),
         "compare damping 1e308": (lambda: _compare(1e308), "damping"),  # LinAlgError
+        "compare attachments None": (lambda: _compare(0.1, [None]), "attachments"),  # raw
+        "compare attachments str": (lambda: _compare(0.1, "nes"), "attachments"),
     }
 )  # fmt: skip
 

@@ -137,3 +137,24 @@ def test_interrupt_lets_zarr_finish_the_io_in_flight():
     asyncio.run_coroutine_threadsafe(write(), zsync.loop[0])  # in flight, not awaited
     settle_zarr()
     assert done == [True]
+
+
+@pytest.mark.parametrize("exists", [False, True])
+def test_sweep_names_resume_only_when_there_is_a_store(exists, tmp_path, capsys, monkeypatch):
+    """An interrupt before the store exists (checking a large grid, say) has nothing to
+    resume: the line does not say --resume then."""
+    from sinktheory.commands import sweep
+
+    store = tmp_path / "s.zarr"
+    if exists:
+        store.mkdir()
+
+    def interrupted(args):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(sweep, "_run", interrupted)
+    with pytest.raises(SystemExit) as info:
+        run_cli(["sweep", "floquet", "--param", "alpha=0.5", "--out", str(store)], capsys)
+    assert info.value.code == 130
+    hint = "; --resume continues" if exists else ""
+    assert capsys.readouterr().err == f"sinktheory sweep: interrupted{hint}\n"
