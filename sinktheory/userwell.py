@@ -39,10 +39,16 @@ Checks (:func:`check_well`), at given parameter values
   non-zero gradient: refused); otherwise (singular Hessian, as for every n >= 2 wall, or
   derivatives undefined at the centre) numerically: V(0, 0) <= V on the rings of
   :func:`ring_grid`;
-* **confinement** (numerical): on each of :data:`DIRECTIONS` directions, V at the radius
-  :data:`FAR_RADIUS` exceeds V(0) by :data:`GROWTH` times the largest rise of V over the
-  disc r <= ``radius``, and V does not fall over the last :data:`TAIL` radii of
-  :func:`ray_radii` (overflow to +inf counts as growth);
+* **confinement** (numerical): on each of :data:`DIRECTIONS` directions e, V(R e) - V(0)
+  at R = :data:`FAR_RADIUS` exceeds :data:`GROWTH` times the largest rise of V along e
+  over r <= ``radius``, and V increases over the last :data:`TAIL` radii of
+  :func:`ray_radii` (overflow to +inf counts as growth).  V grows without bound along
+  the grid's rays at least like r^(1/3); slower growth (log r) is refused.  A well
+  closed by a pole of V (a denominator's zero, as the symmetric shape's D(x) = 0 for
+  beta < 0) is refused too: between the grid radii nothing is seen.
+
+All numbers are float64 (a value past its range is +-inf; NaN means complex or
+undefined).
 * **y = 0 invariant** (symbolic, reported, not required): dV/dy(x, 0) == 0 identically,
   decided with :func:`sympy.simplify` after substituting the values.
 
@@ -51,7 +57,7 @@ Examples
 >>> well = UserWell("ellipse", "gamma/(2*n) * ((x/a)**2 + (y/b)**2)**n",
 ...                 {"a": (0.3, (0.01, 10)), "b": 0.2, "gamma": 1, "n": (2, (1, 20))})
 >>> well.potential
-gamma*(y**2/b**2 + x**2/a**2)**n/(2*n)
+gamma*((x/a)**2 + (y/b)**2)**n/(2*n)
 >>> report = check_well(well)
 >>> report.minimum, report.y_invariant
 ('V(0, 0) <= V on the rings (Hessian singular)', True)
@@ -163,7 +169,8 @@ def _power(base: sp.Expr, exponent: sp.Expr, token: str, where: str) -> sp.Expr:
                 raise WellDefinitionError(
                     where, token, f"a number of more than {MAX_DIGITS} digits"
                 )
-    return sp.Pow(base, exponent)
+    # a power of an expression stays as written ((x/a)**2, not x**2/a**2)
+    return sp.Pow(base, exponent, evaluate=not base.free_symbols)
 
 
 class _Builder:
@@ -573,10 +580,12 @@ def load_well(path: str | Path) -> UserWell:
 #: Number of directions of the polar grids (angles 2 pi j / DIRECTIONS: the axes and the
 #: diagonals are among them).
 DIRECTIONS = 64
-#: The confinement check's outermost radius and its growth factor: V(FAR_RADIUS e) - V(0)
-#: must exceed GROWTH times the largest rise of V on the disc r <= radius.
+#: The confinement check's outermost radius and its growth factor: along each direction
+#: e, V(FAR_RADIUS e) - V(0) must exceed GROWTH times the largest rise of V along e over
+#: r <= radius.  Over 2^20 in radius, linear growth gives ~1e6 and r^(1/2) ~1e3 (both
+#: pass); log(1 + r^2) gives 40 and fails: a logarithmic well is refused.
 FAR_RADIUS = 2.0**20
-GROWTH = 1e6
+GROWTH = 100.0
 #: V must not fall over the last TAIL radii of :func:`ray_radii` (factor 2 apart).
 TAIL = 8
 
@@ -620,16 +629,22 @@ class WellCheck:
     y_invariant_reason: str
 
 
-def _numeric(expr: sp.Expr):
-    """A NumPy function of complex (x, y) arrays (complex so that a value leaving the
-    reals shows as an imaginary part instead of a NaN)."""
-    f = sp.lambdify((x, y), expr, modules="numpy")
+def _numeric(expr: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None):
+    """A NumPy function of real (x, y) arrays in float64, the parameters passed as
+    ``values`` at call time so that a power is computed as written ((x/D)^(2n), not
+    x^(2n) / D^(2n), whose parts overflow).  The expression is one built by this module,
+    so printing it runs nothing of the user's.  A value that is complex or undefined
+    comes out NaN; one beyond float64 range comes out +-inf."""
+    values = dict(values or {})
+    f = sp.lambdify((x, y, *values), expr, modules="numpy")
+    args = [float(v) for v in values.values()]
 
     def call(xs, ys):
-        xs = np.asarray(xs, dtype=complex)
-        ys = np.asarray(ys, dtype=complex)
+        xs = np.asarray(xs, dtype=float)
+        ys = np.asarray(ys, dtype=float)
         with np.errstate(all="ignore"):
-            return np.broadcast_to(f(xs, ys), np.broadcast(xs, ys).shape).astype(complex)
+            value = np.asarray(f(xs, ys, *args), dtype=float)
+        return np.broadcast_to(value, np.broadcast(xs, ys).shape)
 
     return call
 
@@ -654,19 +669,21 @@ def _where(xs, ys, i) -> str:
     return f"(x, y) = ({float(np.ravel(xs)[i]):.6g}, {float(np.ravel(ys)[i]):.6g})"
 
 
-def _check_centre(V: sp.Expr, where: str, radius: float) -> None:
-    """Real and finite on :func:`disc_grid`; guards keep their sign there."""
+def _check_centre(V: sp.Expr, f, where: str, radius: float) -> None:
+    """Real and finite on :func:`disc_grid` (NaN or -inf refused; +inf is float64
+    overflow, since a zero denominator or log argument is caught by the guards); guards
+    keep their sign there."""
     xs, ys = disc_grid(radius)
-    values = _numeric(V)(xs, ys)
-    bad = ~np.isfinite(values) | (np.abs(values.imag) > 1e-12 * np.maximum(1, np.abs(values.real)))
+    values = f(xs, ys)
+    bad = np.isnan(values) | (values == -np.inf)
     if bad.any():
         i = int(np.argmax(bad))
         raise WellDefinitionError(
-            where, f"V = {complex(values[i]):.6g}", f"not real and finite at {_where(xs, ys, i)} "
-            f"(the disc r <= {radius:g} around the centre)",
+            where, f"V = {values[i]:.6g}", f"not real and finite at {_where(xs, ys, i)} "
+            f"(the disc r <= {radius:g} around the centre; NaN: complex or undefined)",
         )  # fmt: skip
     for guard, rule in _guards(V):
-        g = _numeric(guard)(xs, ys).real
+        g = _numeric(guard)(xs, ys)
         if "log" in rule:
             bad = ~(g > 0)
         elif "non-integer" in rule:
@@ -681,11 +698,16 @@ def _check_centre(V: sp.Expr, where: str, radius: float) -> None:
             )  # fmt: skip
 
 
-def _check_minimum(V: sp.Expr, where: str, radius: float) -> str:
+def _is_real_number(value: sp.Expr) -> bool:
+    """True for a finite real number SymPy can compare (not nan, zoo, DiracDelta(0))."""
+    return bool(value.is_comparable) and bool(value.is_finite)
+
+
+def _check_minimum(V: sp.Expr, f, where: str, radius: float) -> str:
     """Symbolic second-derivative test at (0, 0), else V(0, 0) <= V on the rings."""
     at = {x: 0, y: 0}
     grad = [sp.simplify(sp.diff(V, v).subs(at)) for v in (x, y)]
-    decided = all(g.is_Number and g.is_finite for g in grad)
+    decided = all(_is_real_number(g) for g in grad)
     if decided and any(g != 0 for g in grad):
         raise WellDefinitionError(
             where, f"grad V(0, 0) = ({grad[0]}, {grad[1]})", "no minimum at the centre: the "
@@ -693,7 +715,7 @@ def _check_minimum(V: sp.Expr, where: str, radius: float) -> str:
         )  # fmt: skip
     if decided:
         h = [sp.simplify(sp.diff(V, a, b).subs(at)) for a, b in ((x, x), (x, y), (y, y))]
-        if all(v.is_number and v.is_finite for v in h):
+        if all(_is_real_number(v) for v in h):
             hxx, hxy, hyy = h
             det = sp.simplify(hxx * hyy - hxy**2)
             if hxx < 0 or hyy < 0 or det < 0:
@@ -704,9 +726,8 @@ def _check_minimum(V: sp.Expr, where: str, radius: float) -> str:
             if hxx > 0 and det > 0:
                 return "strict: gradient 0, Hessian positive definite at (0, 0) (symbolic)"
     xs, ys = ring_grid(radius)
-    f = _numeric(V)
-    v0 = f(0.0, 0.0).real
-    values = f(xs, ys).real
+    v0 = f(0.0, 0.0)
+    values = f(xs, ys)
     slack = 4 * np.finfo(float).eps * abs(float(v0))
     bad = ~(values >= v0 - slack)
     if bad.any():
@@ -719,21 +740,19 @@ def _check_minimum(V: sp.Expr, where: str, radius: float) -> str:
     return f"V(0, 0) <= V on the rings ({why})"
 
 
-def _check_confinement(V: sp.Expr, where: str, radius: float) -> str:
+def _check_confinement(f, where: str, radius: float) -> str:
     """V rises without bound along every ray of the grid (see the module docstring)."""
-    f = _numeric(V)
-    v0 = float(f(0.0, 0.0).real)
-    xs, ys = disc_grid(radius)
-    rise = max(float(np.max(f(xs, ys).real)) - v0, 0.0)
-    r = ray_radii()
+    v0 = float(f(0.0, 0.0))
     a = _angles()
-    values = f(np.outer(np.cos(a), r), np.outer(np.sin(a), r))
-    real = np.where(np.isfinite(values.real) | (values.real == np.inf), values.real, np.nan)
-    real = np.where(np.abs(values.imag) > 1e-12 * np.abs(values.real), np.nan, real)
-    tail = real[:, -TAIL:]
+    near = radius * np.arange(1, 17) / 16
+    rise = np.max(f(np.outer(np.cos(a), near), np.outer(np.sin(a), near)), axis=1) - v0
+    r = ray_radii()
+    tail = f(np.outer(np.cos(a), r), np.outer(np.sin(a), r))[:, -TAIL:]
     with np.errstate(invalid="ignore"):
+        # inf - inf (overflow on consecutive radii) is NaN, not a fall
         falls = np.any(np.diff(tail, axis=1) < 0, axis=1) | np.any(np.isnan(tail), axis=1)
-        short = ~(tail[:, -1] - v0 >= GROWTH * rise) | (tail[:, -1] - v0 <= 0)
+        far = tail[:, -1] - v0
+        short = ~(far >= GROWTH * np.maximum(rise, 0)) | ~(far > 0)
     bad = falls | short
     if bad.any():
         j = int(np.argmax(np.where(bad, -np.nan_to_num(tail[:, -1], nan=-np.inf), -np.inf)))
@@ -742,12 +761,12 @@ def _check_confinement(V: sp.Expr, where: str, radius: float) -> str:
         raise WellDefinitionError(
             where, f"V({FAR_RADIUS:.6g} e) = {tail[j, -1]:.6g}",
             f"not confining: along the direction e = {direction} (angle {angle:g} deg) V does "
-            f"not rise without bound (checked at radii 2^{20 - TAIL + 1}..2^20 against "
-            f"{GROWTH:g} x its rise {rise:.3g} on r <= {radius:g})",
+            f"not rise without bound (V on radii 2^{21 - TAIL}..2^20 must increase to more "
+            f"than V(0) + {GROWTH:g} x its rise {rise[j]:.3g} on r <= {radius:g})",
         )  # fmt: skip
     return (
-        f"V rises on radii 2^{20 - TAIL + 1}..2^20 along {DIRECTIONS} directions, to more "
-        f"than {GROWTH:g} x its rise on r <= {radius:g} (numerical)"
+        f"V increases on radii 2^{21 - TAIL}..2^20 along {DIRECTIONS} directions, to more "
+        f"than V(0) + {GROWTH:g} x its rise on r <= {radius:g} along each (numerical)"
     )
 
 
@@ -783,7 +802,8 @@ def check_well(well: UserWell, radius: float = 1.0, **given: float) -> WellCheck
     ...
     sinktheory.errors.WellDefinitionError: well hh: 'V(1.04858e+06 e) = -3.84307e+17' is \
 refused: not confining: along the direction e = (0, 1) (angle 90 deg) V does not rise \
-without bound (checked at radii 2^13..2^20 against 1e+06 x its rise 0.833 on r <= 1)
+without bound (V on radii 2^13..2^20 must increase to more than V(0) + 100 x its rise 0.167 \
+on r <= 1)
     """
     radius = _number("radius", radius)
     if radius <= 0:
@@ -791,9 +811,10 @@ without bound (checked at radii 2^13..2^20 against 1e+06 x its rise 0.833 on r <
     values = well.values(**given)
     V = well.potential.subs(values)
     where = f"well {well.name}"
-    _check_centre(V, where, radius)
-    minimum = _check_minimum(V, where, radius)
-    confinement = _check_confinement(V, where, radius)
+    f = _numeric(well.potential, values)
+    _check_centre(V, f, where, radius)
+    minimum = _check_minimum(V, f, where, radius)
+    confinement = _check_confinement(f, where, radius)
     invariant, reason = y_invariant(V)
     return WellCheck(
         well.name,
