@@ -316,7 +316,8 @@ of size > 2000 (the limit 2 MAX_N)
     return _Builder(text, symbols, where).build(tree.body)
 
 
-_ALLOWED_HEADS = (sp.Add, sp.Mul, sp.Pow, *FUNCTIONS.values())
+#: SymPy node classes a given expression may contain (sqrt is a Pow).
+_ALLOWED_HEADS = (sp.Add, sp.Mul, sp.Pow, *(f for f in FUNCTIONS.values() if isinstance(f, type)))
 
 
 def _check_expression(expr: sp.Expr, symbols: Mapping[str, sp.Symbol], where: str) -> sp.Expr:
