@@ -578,8 +578,8 @@ def load_well(path: str | Path) -> UserWell:
 
 
 # --- checks ---------------------------------------------------------------------------
-#: Number of directions of the polar grids (angles 2 pi j / DIRECTIONS: the axes and the
-#: diagonals are among them).
+#: Number of directions of the polar grids (angles 2 pi j / DIRECTIONS, a multiple of 8:
+#: the axes and the diagonals are among them, exactly).
 DIRECTIONS = 64
 #: The confinement check's outermost radius and its growth factor: along each direction
 #: e, V(FAR_RADIUS e) - V(0) must exceed GROWTH times the largest rise of V along e over
@@ -591,25 +591,41 @@ GROWTH = 100.0
 TAIL = 8
 
 
-def _angles() -> np.ndarray:
-    return 2 * np.pi * np.arange(DIRECTIONS) / DIRECTIONS
+def _directions() -> tuple[np.ndarray, np.ndarray]:
+    """cos and sin of the angles 2 pi j / DIRECTIONS, built from the first octant by the
+    symmetries of the square, so that the axes are exactly (+-1, 0), (0, +-1) and the
+    diagonals have |cos| == |sin| (a valley of V along x = y is then seen, not missed by
+    one rounding)."""
+    per = DIRECTIONS // 8
+    t = 2 * np.pi * np.arange(per + 1) / DIRECTIONS
+    c, s = np.cos(t), np.sin(t)
+    c[0], s[0] = 1.0, 0.0
+    c[per] = s[per] = np.sqrt(0.5)
+    m = np.arange(per)
+    octants = [
+        (c[m], s[m]), (s[per - m], c[per - m]), (-s[m], c[m]), (-c[per - m], s[per - m]),
+        (-c[m], -s[m]), (-s[per - m], -c[per - m]), (s[m], -c[m]), (c[per - m], -s[per - m]),
+    ]  # fmt: skip
+    cos = np.concatenate([o[0] for o in octants]) + 0.0  # + 0.0 turns -0.0 into 0.0
+    sin = np.concatenate([o[1] for o in octants]) + 0.0
+    return cos, sin
 
 
 def disc_grid(radius: float) -> tuple[np.ndarray, np.ndarray]:
     """Points (x, y) of the disc r <= radius: the centre and radii radius k/16,
     k = 1..16, on :data:`DIRECTIONS` directions (1025 points)."""
     r = radius * np.arange(1, 17) / 16
-    a = _angles()
-    xs = np.concatenate([[0.0], np.outer(r, np.cos(a)).ravel()])
-    ys = np.concatenate([[0.0], np.outer(r, np.sin(a)).ravel()])
+    cos, sin = _directions()
+    xs = np.concatenate([[0.0], np.outer(r, cos).ravel()])
+    ys = np.concatenate([[0.0], np.outer(r, sin).ravel()])
     return xs, ys
 
 
 def ring_grid(radius: float) -> tuple[np.ndarray, np.ndarray]:
     """Rings r = radius 2^-k, k = 1..20, on :data:`DIRECTIONS` directions."""
     r = radius * 2.0 ** -np.arange(1, 21)
-    a = _angles()
-    return np.outer(r, np.cos(a)), np.outer(r, np.sin(a))
+    cos, sin = _directions()
+    return np.outer(r, cos), np.outer(r, sin)
 
 
 def ray_radii() -> np.ndarray:
@@ -744,11 +760,11 @@ def _check_minimum(V: sp.Expr, f, where: str, radius: float) -> str:
 def _check_confinement(f, where: str, radius: float) -> str:
     """V rises without bound along every ray of the grid (see the module docstring)."""
     v0 = float(f(0.0, 0.0))
-    a = _angles()
+    cos, sin = _directions()
     near = radius * np.arange(1, 17) / 16
-    rise = np.max(f(np.outer(np.cos(a), near), np.outer(np.sin(a), near)), axis=1) - v0
+    rise = np.max(f(np.outer(cos, near), np.outer(sin, near)), axis=1) - v0
     r = ray_radii()
-    tail = f(np.outer(np.cos(a), r), np.outer(np.sin(a), r))[:, -TAIL:]
+    tail = f(np.outer(cos, r), np.outer(sin, r))[:, -TAIL:]
     with np.errstate(invalid="ignore"):
         # inf - inf (overflow on consecutive radii) is NaN, not a fall
         falls = np.any(np.diff(tail, axis=1) < 0, axis=1) | np.any(np.isnan(tail), axis=1)
@@ -758,7 +774,7 @@ def _check_confinement(f, where: str, radius: float) -> str:
     if bad.any():
         j = int(np.argmax(np.where(bad, -np.nan_to_num(tail[:, -1], nan=-np.inf), -np.inf)))
         angle = 360 * j / DIRECTIONS
-        direction = f"({round(np.cos(a[j]), 3) + 0:g}, {round(np.sin(a[j]), 3) + 0:g})"
+        direction = f"({round(cos[j], 3) + 0:g}, {round(sin[j], 3) + 0:g})"
         raise WellDefinitionError(
             where, f"V({FAR_RADIUS:.6g} e) = {tail[j, -1]:.6g}",
             f"not confining: along the direction e = {direction} (angle {angle:g} deg) V does "
