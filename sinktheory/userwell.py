@@ -127,8 +127,9 @@ _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
 
 #: Longest text of one expression (the paper's wells take under 100 characters).
 MAX_TEXT_LENGTH = 2000
-#: Deepest nesting of the syntax tree (each operator or call is one level).
-MAX_DEPTH = 40
+#: Deepest nesting of the syntax tree: each operator or call is one level, so a sum of k
+#: terms is k deep (the builder recurses once per level, far below Python's limit).
+MAX_DEPTH = 100
 #: Largest |exponent| of a power with a numerical exponent: 2 MAX_N, the wall power 2n
 #: of the stiffest built-in well.
 MAX_EXPONENT = 2 * MAX_N
@@ -156,15 +157,26 @@ def _token(text: str, node: ast.AST) -> str:
     return segment if len(segment) <= 40 else segment[:37] + "..."
 
 
+def _log10(number: sp.Number) -> float:
+    """log10 |number| of a non-zero SymPy number, without converting it to a float
+    (which overflows past 1e308)."""
+    if number.is_Rational:
+        return math.log10(abs(number.p)) - math.log10(number.q)
+    return math.log10(abs(float(number)))
+
+
 def _power(base: sp.Expr, exponent: sp.Expr, token: str, where: str) -> sp.Expr:
-    """base ** exponent, refusing exponents and numbers too large to build safely."""
+    """base ** exponent, refusing exponents and numbers too large to build safely (the
+    numerical factor of the base counts: (1e300 x)**2000 would expand to a 600 000-digit
+    coefficient)."""
     if exponent.is_Number:
         if abs(exponent) > MAX_EXPONENT:
             raise WellDefinitionError(
                 where, token, f"an exponent of size > {MAX_EXPONENT} (the limit 2 MAX_N)"
             )
-        if base.is_Number and base != 0 and abs(base) != 1:
-            digits = float(abs(exponent)) * abs(math.log10(abs(float(base))))
+        factor = base.as_coeff_Mul()[0] if base.free_symbols else base
+        if factor.is_Number and factor != 0:
+            digits = float(abs(exponent)) * abs(_log10(factor))
             if digits > MAX_DIGITS:
                 raise WellDefinitionError(
                     where, token, f"a number of more than {MAX_DIGITS} digits"
@@ -176,8 +188,9 @@ def _power(base: sp.Expr, exponent: sp.Expr, token: str, where: str) -> sp.Expr:
 class _Builder:
     """Walks a syntax tree and builds the SymPy expression, node by node."""
 
-    def __init__(self, text: str, symbols: Mapping[str, sp.Symbol], where: str):
+    def __init__(self, text: str, root: ast.AST, symbols: Mapping[str, sp.Symbol], where: str):
         self.text = text
+        self.root = root
         self.symbols = symbols
         self.where = where
 
@@ -185,8 +198,8 @@ class _Builder:
         return WellDefinitionError(self.where, _token(self.text, node), reason)
 
     def build(self, node: ast.AST, depth: int = 0) -> sp.Expr:
-        if depth > MAX_DEPTH:
-            raise self.refuse(node, f"nesting deeper than {MAX_DEPTH} levels")
+        if depth > MAX_DEPTH:  # named by the whole text: the deepest node says little
+            raise self.refuse(self.root, f"nesting deeper than {MAX_DEPTH} levels")
         if isinstance(node, ast.Constant):
             value = node.value
             if isinstance(value, bool) or not isinstance(value, int | float):
@@ -313,7 +326,7 @@ of size > 2000 (the limit 2 MAX_N)
     except (SyntaxError, ValueError, RecursionError, MemoryError) as exc:
         reason = getattr(exc, "msg", None) or str(exc) or type(exc).__name__
         raise WellDefinitionError(where, text[:40], f"not an expression ({reason})") from None
-    return _Builder(text, symbols, where).build(tree.body)
+    return _Builder(text, tree.body, symbols, where).build(tree.body)
 
 
 #: SymPy node classes a given expression may contain (sqrt is a Pow).
@@ -337,6 +350,8 @@ def _check_expression(expr: sp.Expr, symbols: Mapping[str, sp.Symbol], where: st
         elif isinstance(node, sp.Number):
             if not node.is_finite:
                 raise WellDefinitionError(where, str(node), "a number that is not finite")
+        elif isinstance(node, sp.Pow) and node.exp.is_Number:
+            _power(node.base, node.exp, str(node)[:40], where)
         elif node in _CONSTANTS.values():
             continue
         elif not isinstance(node, _ALLOWED_HEADS):
