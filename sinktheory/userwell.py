@@ -49,6 +49,7 @@ Checks (:func:`check_well`), at given parameter values
 
 All numbers are float64 (a value past its range is +-inf; NaN means complex or
 undefined).
+* **wall ratios**, if given: below 1 in size at the centre (numerical, float64);
 * **y = 0 invariant** (symbolic, reported, not required): dV/dy(x, 0) == 0 identically,
   decided with :func:`sympy.simplify` after substituting the values.
 
@@ -505,6 +506,14 @@ class UserWell:
 def _parameter(name: object, spec: object) -> Parameter:
     if isinstance(spec, Parameter):
         return spec
+    if isinstance(spec, Mapping):  # as in a well file: {"default": ..., "range": [lo, hi]}
+        extra = [k for k in spec if k not in _PARAMETER_KEYS]
+        if extra or "default" not in spec:
+            raise WellDefinitionError(
+                f"parameters.{name}", extra[0] if extra else "default",
+                "unknown key" if extra else "missing (a default value is required)",
+            )  # fmt: skip
+        return Parameter(name, spec["default"], spec.get("range", (-math.inf, math.inf)))
     if isinstance(spec, tuple | list):
         if len(spec) != 2:
             raise WellDefinitionError(f"parameters.{name}", spec, "must be (default, (lo, hi))")
@@ -845,6 +854,13 @@ on r <= 1)
     where = f"well {well.name}"
     f = _numeric(well.potential, values)
     _check_centre(V, f, where, radius)
+    for i, ratio in enumerate(well.wall_ratios):
+        level = float(_numeric(ratio, values)(0.0, 0.0))
+        if not abs(level) < 1:
+            raise WellDefinitionError(
+                f"{where}: wall_ratios[{i}]", f"{level:.6g} at (0, 0)",
+                "a wall ratio must be below 1 at the centre (its level 1 is the rigid wall)",
+            )  # fmt: skip
     minimum = _check_minimum(V, f, where, radius)
     confinement = _check_confinement(f, where, radius)
     invariant, reason = y_invariant(V)

@@ -73,6 +73,19 @@ def test_a_sympy_expression_is_matched_to_the_declared_symbols_by_name():
 
 
 # --- the definition -----------------------------------------------------------------------
+def test_parameters_may_be_given_as_in_a_well_file():
+    well = UserWell("u", "c*(x**2 + y**2)", {"c": {"default": 0.5, "range": [0, 1]}})
+    assert well.parameters == (Parameter("c", 0.5, (0.0, 1.0)),)
+
+
+def test_a_wall_ratio_must_be_below_one_at_the_centre():
+    good = UserWell("u", "x**2 + y**2", {"L": 0.2}, wall_ratios=["sqrt(x**2 + y**2)/L"])
+    assert check_well(good).y_invariant
+    bad = UserWell("u", "x**2 + y**2", {"L": 0.2}, wall_ratios=["1 + (x/L)**2"])
+    with pytest.raises(WellDefinitionError, match=r"well u: wall_ratios\[0\]: '1 at \(0, 0\)'"):
+        check_well(bad)
+
+
 def test_values_are_exact_and_checked_against_their_ranges():
     well = UserWell("u", "c*(x**2 + y**2)", {"c": (0.1, (0.0, 1.0))})
     assert well.values() == {c: sp.Rational(1, 10)}
@@ -100,6 +113,8 @@ def test_values_are_exact_and_checked_against_their_ranges():
         (dict(potential="c*x**2 + d*y**2"), "potential: 'd' is refused: a name that is not"),
         (dict(wall_ratios="x"), "wall_ratios: 'x' is refused: must be a list"),
         (dict(wall_ratios=["x", "y.real"]), "wall_ratios[1]: 'y.real' is refused: attribute"),
+        (dict(parameters={"c": {"default": 1.0, "code": "x"}}), "parameters.c: 'code' is"),
+        (dict(parameters={"c": {"range": [0, 1]}}), "parameters.c: 'default' is refused"),
     ],
 )
 def test_a_bad_definition_is_refused_by_name(kwargs, message):
