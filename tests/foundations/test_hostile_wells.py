@@ -240,7 +240,7 @@ def test_a_hostile_sympy_expression_is_refused_too():
 
     x = sp.Symbol("x")
     for expr, reason in [
-        (sp.Function("f")(x), "not arithmetic"),
+        (sp.Function("f")(x), "'f' is refused"),
         (sp.besselj(0, x), "not arithmetic"),
         (sp.Integral(x, x), "not arithmetic"),
         (x + sp.I, "not arithmetic"),
@@ -252,3 +252,11 @@ def test_a_hostile_sympy_expression_is_refused_too():
             UserWell("u", expr, {})
     with pytest.raises(WellDefinitionError, match="must be a string or SymPy expression"):
         UserWell("u", lambda: 0, {})
+
+    class Evil(sp.exp):  # would print itself as code when kernels are printed
+        def _numpycode(self, printer):
+            return "__import__('os').getpid()"
+
+    with pytest.raises(WellDefinitionError, match="'Evil' is refused: a class defined outside"):
+        UserWell("u", Evil(x) + x**2, {})
+    assert UserWell("u", sp.exp(1) * x**2 + sp.pi * sp.Symbol("y") ** 2, {}).potential.has(sp.E)
