@@ -7,6 +7,8 @@ import builtins
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from sinktheory.errors import ParameterError, WellDefinitionError
 from sinktheory.userwell import (
@@ -260,3 +262,61 @@ def test_a_hostile_sympy_expression_is_refused_too():
     with pytest.raises(WellDefinitionError, match="'Evil' is refused: a class defined outside"):
         UserWell("u", Evil(x) + x**2, {})
     assert UserWell("u", sp.exp(1) * x**2 + sp.pi * sp.Symbol("y") ** 2, {}).potential.has(sp.E)
+
+
+# --- fuzzing: any text either parses or is refused with a WellDefinitionError ------------
+_PIECES = ["x", "y", "a", "2", "0.5", "1e3", "+", "-", "*", "/", "**", "(", ")", "exp(", "log(",
+           "sqrt(", "Abs(", ",", ".", "[", "]", "'", "lambda", ":", "__import__", " ", "os",
+           "_", "=", "1j", "9**9**9", "\\", "\n", "\x00", "é", "{", "}", "@"]  # fmt: skip
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.sampled_from(_PIECES), max_size=30).map("".join) | st.text(max_size=60))
+def test_any_text_parses_or_is_refused_with_one_line(text):
+    try:
+        expr = parse_potential(text, ("a",))
+    except WellDefinitionError as error:
+        assert "\n" not in str(error) and str(error).startswith("potential: ")
+    else:
+        assert expr.free_symbols <= set(parse_potential("a + x + y", ("a",)).free_symbols)
+
+
+def _grammar():
+    """(text, sympy expression) pairs built from the accepted grammar."""
+    import sympy as sp
+
+    x, y = sp.symbols("x y", real=True)
+    leaves = st.sampled_from(
+        [("x", x), ("y", y), ("2", sp.Integer(2)), ("0.25", sp.Rational(1, 4))]
+    )
+
+    def grow(children):
+        binary = st.tuples(children, st.sampled_from("+-*"), children).map(
+            lambda t: (
+                f"({t[0][0]}) {t[1]} ({t[2][0]})",
+                {"+": t[0][1] + t[2][1], "-": t[0][1] - t[2][1], "*": t[0][1] * t[2][1]}[t[1]],
+            )  # fmt: skip
+        )
+        calls = st.tuples(st.sampled_from(["exp", "sin", "cosh", "Abs"]), children).map(
+            lambda t: (f"{t[0]}({t[1][0]})", getattr(sp, t[0])(t[1][1]))
+        )
+        powers = st.tuples(children, st.integers(0, 4)).map(
+            lambda t: (f"({t[0][0]})**{t[1]}", t[0][1] ** t[1])
+        )
+        return binary | calls | powers
+
+    return st.recursive(leaves, grow, max_leaves=8)
+
+
+@settings(max_examples=100, deadline=None)
+@given(_grammar())
+def test_the_parser_builds_what_sympy_builds(pair):
+    import sympy as sp
+
+    text, expected = pair
+    built = parse_potential(text, ())
+    x, y = sp.symbols("x y", real=True)
+    point = {x: sp.Rational(3, 7), y: -sp.Rational(2, 5)}
+    value = sp.N(expected.subs(point), 30)
+    # both exact; compared at 30 digits to 1e-25 relative (SymPy may order them apart)
+    assert abs(sp.N(built.subs(point), 30) - value) <= 1e-25 * (1 + abs(value))
