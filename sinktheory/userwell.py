@@ -46,12 +46,13 @@ Checks (:func:`check_well`), at given parameter values
   the grid's rays at least like r^(1/3); slower growth (log r) is refused.  A well
   closed by a pole of V (a denominator's zero, as the symmetric shape's D(x) = 0 for
   beta < 0) is refused too: between the grid radii nothing is seen.
-
-All numbers are float64 (a value past its range is +-inf; NaN means complex or
-undefined).
-* **wall ratios**, if given: below 1 in size at the centre (numerical, float64);
+* **wall ratios**, if given: below 1 in size at the centre (numerical);
 * **y = 0 invariant** (symbolic, reported, not required): dV/dy(x, 0) == 0 identically,
   decided with :func:`sympy.simplify` after substituting the values.
+
+The numerical checks run in float64 (a value past its range is +-inf and counts as
+large; NaN means complex or undefined) with the parameters passed at call time, so a
+power is computed as written.
 
 Examples
 --------
