@@ -750,10 +750,15 @@ def _is_real_number(value: sp.Expr) -> bool:
     return bool(value.is_comparable) and bool(value.is_finite)
 
 
+def _at_centre(expr: sp.Expr) -> sp.Expr:
+    """expr at (0, 0), simplified only when substitution leaves more than a number."""
+    value = expr.subs({x: 0, y: 0})
+    return value if value.is_Number else sp.simplify(value)
+
+
 def _check_minimum(V: sp.Expr, f, where: str, radius: float) -> str:
     """Symbolic second-derivative test at (0, 0), else V(0, 0) <= V on the rings."""
-    at = {x: 0, y: 0}
-    grad = [sp.simplify(sp.diff(V, v).subs(at)) for v in (x, y)]
+    grad = [_at_centre(sp.diff(V, v)) for v in (x, y)]
     decided = all(_is_real_number(g) for g in grad)
     if decided and any(g != 0 for g in grad):
         raise WellDefinitionError(
@@ -761,7 +766,7 @@ def _check_minimum(V: sp.Expr, f, where: str, radius: float) -> str:
             "gradient there is not zero",
         )  # fmt: skip
     if decided:
-        h = [sp.simplify(sp.diff(V, a, b).subs(at)) for a, b in ((x, x), (x, y), (y, y))]
+        h = [_at_centre(sp.diff(V, a, b)) for a, b in ((x, x), (x, y), (y, y))]
         if all(_is_real_number(v) for v in h):
             hxx, hxy, hyy = h
             det = sp.simplify(hxx * hyy - hxy**2)
