@@ -23,6 +23,7 @@ __all__ = [
     "ShootingError",
     "StepControlError",
     "SweepPointError",
+    "WellDefinitionError",
 ]
 
 
@@ -45,6 +46,28 @@ class ParameterError(ValueError):
         if why:
             text += f" ({why})"
         super().__init__(text)
+
+
+class WellDefinitionError(ParameterError):
+    """A user's well (an expression, a well file or a parameter value of it) is refused.
+
+    A :class:`ParameterError`, so the CLI exits with status 2.  The message is one line:
+    where (``potential``, a file's key, a check), the offending token or value, and why.
+
+    Examples
+    --------
+    >>> raise WellDefinitionError("potential", "os", "a name that is not declared")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.WellDefinitionError: potential: 'os' is refused: a name that is not declared
+    """
+
+    def __init__(self, where: str, token: object, reason: str):
+        self.name = where
+        self.value = token
+        self.allowed = reason
+        text = f"{where}: {token!r} is refused: {reason}"
+        ValueError.__init__(self, " ".join(text.split()))
 
 
 class NumericalError(RuntimeError):
