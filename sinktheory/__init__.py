@@ -35,6 +35,7 @@ from .errors import (
     ShootingError,
     StepControlError,
     SweepPointError,
+    WellDefinitionError,
 )
 
 #: Verbs that are modules too: calling the module calls its function (:mod:`._verbs`).
@@ -93,6 +94,7 @@ __all__ = [
     "StepControlError",
     "SweepPointError",
     "Well",
+    "WellDefinitionError",
     "bifurcation",
     "billiard",
     "chaos",
