@@ -116,6 +116,8 @@ class KramersMoyal(Result):
     diffusion, diffusion_stderr : D2 = <Delta E^2> / (2 tau) and its standard error
     covariance : covariance of the run means of the first and second moments behind D1
         and D2 (before the division by tau - tau_0), (point, lag, 2, 2)
+    increments, increment_lags : the runs' Delta E (point, lag, run) at every lag measured
+        (tau_0 included), for the exact form of the check
     message : one line on how they were measured
     """
 
@@ -131,6 +133,8 @@ class KramersMoyal(Result):
     diffusion: np.ndarray
     diffusion_stderr: np.ndarray
     covariance: np.ndarray
+    increments: np.ndarray
+    increment_lags: np.ndarray
     message: str = ""
 
     DIMS = {
@@ -142,6 +146,8 @@ class KramersMoyal(Result):
         "diffusion": ("point", "lag"),
         "diffusion_stderr": ("point", "lag"),
         "covariance": ("point", "lag", "moment", "moment2"),
+        "increments": ("point", "increment_lag", "run"),
+        "increment_lags": ("increment_lag",),
     }
     COORDS = {"lags": "lag"}
 
@@ -195,6 +201,7 @@ def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base
         grid, weights = gauss_grid(s.size, n)
         if not np.allclose(grid, s, rtol=0, atol=1e-12):
             raise ParameterError("s", s.tolist(), f"the Gauss grid of {s.size} points, n = {n}")
+    lags_all = lags
     first, second = inc, inc**2
     span = lags
     if base_lag:
@@ -224,6 +231,8 @@ def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base
         diffusion=m[..., 1] / (2 * tau),
         diffusion_stderr=np.sqrt(cov[..., 1, 1]) / (2 * tau),
         covariance=cov,
+        increments=inc,
+        increment_lags=lags_all,
         message=message,
     )
 
@@ -342,11 +351,22 @@ class FluctuationDissipation(Result):
 
 
 def check_fluctuation_dissipation(
-    km: KramersMoyal, law: EquilibriumLaw, *, lag: int | None = None, tests: int = 4
+    km: KramersMoyal,
+    law: EquilibriumLaw,
+    *,
+    lag: int | None = None,
+    tests: int = 4,
+    exact: bool = False,
 ) -> FluctuationDissipation:
     """Whether ``law`` is the stationary density of the Fokker-Planck equation with the
     measured D1, D2 at ``lag`` (default the middle lag): chi^2 of the weak form with
     ``tests`` Legendre test functions (module docstring).
+
+    With ``exact`` the integrands are the runs' own f(E_c(tau)) - f(E_c(tau_0)) (tau_0 = 0
+    without a base lag) instead of their expansion f' Delta E + f'' Delta E^2 / 2: the
+    law's stationarity under the measured dynamics, with no assumption on the size of the
+    jumps.  The two agree for tests <= 2 (f quadratic); where the exact form holds and the
+    expansion fails, E_c is not a diffusion at this lag.
 
     Examples
     --------
@@ -370,6 +390,8 @@ def check_fluctuation_dissipation(
     if not math.isclose(law.energy, km.energy, rel_tol=1e-12):
         raise ParameterError("law", f"a law at E = {law.energy:g}", f"the law at E = {km.energy:g}")
     j = km.lag_index(lag)
+    if v.flag("exact", exact):
+        return _exact_check(km, law, j, tests)
     tau = km.spans[j]
     e = km.energy
     s = km.container_energies / e
@@ -397,6 +419,44 @@ def check_fluctuation_dissipation(
         dof=tests,
         p_value=float(stats.chi2.sf(chi2, tests)),
         scale=np.array(scale),
+        law_particles=law.particles,
+        law_beta=law.beta,
+        law_mean=law.mean,
+    )
+
+
+def _exact_check(km: KramersMoyal, law: EquilibriumLaw, j: int, tests: int):
+    e, runs = km.energy, km.increments.shape[2]
+    s = km.container_energies / e
+    density = law.pdf(s) * km.weights
+    col = int(np.flatnonzero(km.increment_lags == km.lags[j])[0])
+    end = km.container_energies[:, None] + km.increments[:, col]
+    if km.base_lag:
+        base = int(np.flatnonzero(km.increment_lags == km.base_lag)[0])
+        start = km.container_energies[:, None] + km.increments[:, base]
+    else:
+        start = np.repeat(km.container_energies[:, None], runs, axis=1)
+    q = []
+    for m in range(1, tests + 1):
+        c = np.zeros(m + 1)
+        c[m] = 1
+        q.append((L.legval(2 * end / e - 1, c) - L.legval(2 * start / e - 1, c)) / km.spans[j])
+    q = np.stack(q)  # (test, point, run)
+    means = q.mean(axis=2)
+    centred = q - means[..., None]
+    cov_points = np.einsum("mpr,npr->pmn", centred, centred) / (runs - 1) / runs
+    integrals = means @ density
+    cov = np.einsum("p,pmn->mn", density**2, cov_points)
+    chi2 = float(integrals @ np.linalg.solve(cov, integrals))
+    return FluctuationDissipation(
+        lag=int(km.lags[j]),
+        tests=tests,
+        integrals=integrals,
+        stderr=np.sqrt(np.diag(cov)),
+        chi2=chi2,
+        dof=tests,
+        p_value=float(stats.chi2.sf(chi2, tests)),
+        scale=np.sum(np.abs(means) * density, axis=1),
         law_particles=law.particles,
         law_beta=law.beta,
         law_mean=law.mean,

@@ -153,3 +153,32 @@ def test_bad_input_names_the_parameter():
         check_fluctuation_dissipation(km, equilibrium_law(Sink(Well(0.5, 0, 1)), 1.0), lag=3)
     with pytest.raises(ParameterError, match="law"):
         check_fluctuation_dissipation(km, equilibrium_law(Sink(Well(0.5, 0, 1)), 0.5))
+
+
+def test_exact_form_is_the_expansion_for_quadratic_tests():
+    """For f linear and quadratic, f(E + dE) - f(E) = f' dE + f'' dE^2 / 2 exactly, so the
+    two forms of the check give the same integrals (to rounding), with and without a
+    base lag; for a cubic f they differ."""
+    s, _ = gauss_grid(6, 4)
+    inc = jacobi_increments(s, (1, 2), 500, np.random.default_rng(1), a=1.0, b=1.25, c=0.05)
+    law = equilibrium_law(Sink(Well(0.5, 0.0, 4), 1), 1.0)
+    for base in (0, 1):
+        km = kramers_moyal(s, 1.0, 4, (1, 2), inc, base_lag=base)
+        a = check_fluctuation_dissipation(km, law, lag=2, tests=3)
+        b = check_fluctuation_dissipation(km, law, lag=2, tests=3, exact=True)
+        assert np.allclose(a.integrals[:2], b.integrals[:2], rtol=1e-9, atol=1e-15)
+        assert np.allclose(a.stderr[:2], b.stderr[:2], rtol=1e-9)
+        assert not np.isclose(a.integrals[2], b.integrals[2], rtol=1e-3)
+
+
+@pytest.mark.parametrize("seed", [0, 3])
+def test_fig8_single_particle_is_stationary_but_not_a_diffusion_at_one_period(seed):
+    """The same runs: the law is stationary under their exact increments with six test
+    functions (p > 1e-3), but the diffusion's second-order expansion fails from the
+    quartic test on (p < 1e-8; three seeds gave 1e-23 to 1e-31): one period's exchange
+    (|dE| ~ 0.1 of E = 0.5) is no small jump."""
+    sink = Sink(FIG8_WELL, 1, 0.2)
+    km = measure_kramers_moyal(sink, 0.5, points=12, lags=(1,), runs=200, seed=seed)
+    law = equilibrium_law(sink, 0.5)
+    assert check_fluctuation_dissipation(km, law, tests=6, exact=True).p_value > 1e-3
+    assert check_fluctuation_dissipation(km, law, tests=4).p_value < 1e-8
