@@ -72,6 +72,7 @@ __all__ = [
     "KramersMoyal",
     "LAGS",
     "measure_kramers_moyal",
+    "solve_fokker_planck",
 ]
 
 #: Default lags (periods) at which the coefficients are estimated.
@@ -461,6 +462,77 @@ def _exact_check(km: KramersMoyal, law: EquilibriumLaw, j: int, tests: int):
         law_beta=law.beta,
         law_mean=law.mean,
     )
+
+
+def solve_fokker_planck(
+    energy: float,
+    points,
+    drift,
+    diffusion,
+    start: float,
+    periods: int,
+    *,
+    cells: int = 1000,
+    substeps: int = 4,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Mean and standard deviation of E_c at t = 0, 1, ..., ``periods`` (periods) from the
+    Fokker-Planck equation dp/dt = -dJ/dE, J = D1 p - d(D2 p)/dE, on [0, E] with zero
+    flux at both ends, started as a delta at ``start``.
+
+    D1 and D2 are interpolated linearly between ``points`` (constant beyond them; D2
+    clipped at 0).  Finite volumes (``cells``), the drift upwinded, the diffusion flux
+    centred; implicit Euler with ``substeps`` steps per period (first order in both:
+    errors ~1e-3 of E with the defaults, measured on the Jacobi diffusion, whose mean
+    relaxes exactly as exp(-c (a + b) t)).
+
+    Examples
+    --------
+    >>> s = np.linspace(0, 1, 101)
+    >>> mean, sd = solve_fokker_planck(1.0, s, 0.01 * (1 - s - 1.25 * s), 0.01 * s * (1 - s),
+    ...                                1.0, 200)
+    >>> exact = 1 / 2.25 + (1 - 1 / 2.25) * np.exp(-0.0225 * 200)
+    >>> bool(abs(mean[-1] - exact) < 2e-3)
+    True
+    """
+    e = v.positive("energy", energy)
+    cells = v.positive_int("cells", cells, minimum=10)
+    substeps = v.positive_int("substeps", substeps)
+    periods = v.positive_int("periods", periods, minimum=0)
+    x0 = v.finite("start", start)
+    if not 0 <= x0 <= e:
+        raise ParameterError("start", x0, f"an energy in [0, {e:g}]")
+    points = np.asarray(points, dtype=float)
+    h = e / cells
+    centres = (np.arange(cells) + 0.5) * h
+    faces = np.arange(1, cells) * h
+    d1 = np.interp(faces, points, np.asarray(drift, dtype=float))
+    d2 = np.clip(np.interp(centres, points, np.asarray(diffusion, dtype=float)), 0.0, None)
+    # J_{i+1/2} = max(d1, 0) p_i + min(d1, 0) p_{i+1} - (d2_{i+1} p_{i+1} - d2_i p_i) / h
+    left = np.maximum(d1, 0) + d2[:-1] / h  # coefficient of p_i in J_{i+1/2}
+    right = np.minimum(d1, 0) - d2[1:] / h  # coefficient of p_{i+1}
+    # dp_i/dt = (J_{i-1/2} - J_{i+1/2}) / h
+    diag = np.zeros(cells)
+    diag[:-1] -= left / h
+    diag[1:] += right / h
+    upper = -right / h  # d(dp_i)/d p_{i+1}
+    lower = left / h  # d(dp_{i+1})/d p_i
+    dt = 1.0 / substeps
+    banded = np.zeros((3, cells))
+    banded[0, 1:] = -dt * upper
+    banded[1] = 1 - dt * diag
+    banded[2, :-1] = -dt * lower
+    p = np.zeros(cells)
+    p[min(int(x0 / h), cells - 1)] = 1.0
+    means, sds = np.empty(periods + 1), np.empty(periods + 1)
+    from scipy.linalg import solve_banded
+
+    for t in range(periods + 1):
+        if t:
+            for _ in range(substeps):
+                p = solve_banded((1, 1), banded, p)
+        m = p @ centres / p.sum()
+        means[t], sds[t] = m, math.sqrt(max(p @ (centres - m) ** 2 / p.sum(), 0.0))
+    return means, sds
 
 
 def jacobi_increments(s0, lags, runs: int, rng: np.random.Generator, *, a: float, b: float,

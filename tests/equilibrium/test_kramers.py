@@ -23,7 +23,12 @@ from sinktheory.equilibrium import (
     scaled_energy,
     shell_states,
 )
-from sinktheory.equilibrium.kramers import gauss_grid, jacobi_increments, kramers_moyal
+from sinktheory.equilibrium.kramers import (
+    gauss_grid,
+    jacobi_increments,
+    kramers_moyal,
+    solve_fokker_planck,
+)
 from sinktheory.equilibrium.microcanonical import basin_points, particle_energies
 from sinktheory.errors import ParameterError
 from sinktheory.layout import StateLayout
@@ -182,3 +187,23 @@ def test_fig8_single_particle_is_stationary_but_not_a_diffusion_at_one_period(se
     law = equilibrium_law(sink, 0.5)
     assert check_fluctuation_dissipation(km, law, tests=6, exact=True).p_value > 1e-3
     assert check_fluctuation_dissipation(km, law, tests=4).p_value < 1e-8
+
+
+def test_fokker_planck_relaxes_the_jacobi_mean_exactly():
+    """The Jacobi diffusion's mean relaxes exactly as s_inf + (s0 - s_inf) exp(-c (a + b) t)
+    and its stationary law is Beta(a, b): the solver (1000 cells, 4 steps per period,
+    first order) agrees to 2e-3 in the mean at every period and 1e-3 in the final standard
+    deviation; with c off by 10 % the mean misses by more than 5e-3."""
+    s = np.linspace(0, 1, 201)
+    a, b, c = 1.0, 1.25, 0.01
+    t = np.arange(601)
+    exact = a / (a + b) + (1 - a / (a + b)) * np.exp(-c * (a + b) * t)
+    sd_beta = math.sqrt(a * b / ((a + b) ** 2 * (a + b + 1)))
+
+    def solve(cc):
+        return solve_fokker_planck(1.0, s, cc * (a * (1 - s) - b * s), cc * s * (1 - s), 1.0, 600)
+
+    mean, sd = solve(c)
+    assert np.max(np.abs(mean - exact)) < 2e-3
+    assert abs(sd[-1] - sd_beta) < 1e-3
+    assert np.max(np.abs(solve(1.1 * c)[0] - exact)) > 5e-3
