@@ -20,7 +20,11 @@ energies (Gauss grid in w = (1 - E_c/E)^(1/4)) x ``--runs`` runs from the shell
    homogeneous (beta = 0) law, and the laws of k - 1 and k + 1 particles, for
    the raw lag 1 and for the base-lag coefficients at lag 64, over ``--seeds`` seeds;
 4. k = 1 at ten times the runs (lag 1): whether the check separates the exact law from
-   the homogeneous one (4 % apart in mean).
+   the homogeneous one (4 % apart in mean);
+5. k = 1 from the paper's start (E0 = 0.5, particles at rest): <E_c>(t), its spread and
+   the 5 % settling time from the Fokker-Planck equation with the measured coefficients
+   (base 8 at lags 32 and 64, and the raw lag 8 with its fast part left in), one
+   measurement per seed, against 128 runs x 2000 periods (measure_relaxation).
 
 ``--quick``: 40 runs, one seed, k = 1 (shows only that it runs).
 """
@@ -30,12 +34,17 @@ from __future__ import annotations
 import argparse
 import time
 
-from sinktheory import Sink, Well
+import numpy as np
+
+from sinktheory import RunSettings, Sink, Well
 from sinktheory.equilibrium import (
     check_fluctuation_dissipation,
     equilibrium_law,
     measure_kramers_moyal,
+    measure_relaxation,
 )
+from sinktheory.equilibrium.kramers import solve_fokker_planck
+from sinktheory.simulate import simulate
 
 FIG8 = Well(0.5, 0.3, 4)
 HOMOGENEOUS = Well(0.5, 0.0, 4)
@@ -127,6 +136,8 @@ def main() -> None:
                                    runs=10 * args.runs, seed=100)  # fmt: skip
         print(f"\n4. k = 1, {10 * args.runs} runs per point, lag 1:")
         check_table(km, 1, 1, "raw lag 1      ")
+    if 1 in args.particles:
+        fokker_planck(args)
     if args.plot:
         import matplotlib
 
@@ -150,6 +161,52 @@ def main() -> None:
         fig.tight_layout()
         fig.savefig(args.plot, dpi=120)
         print(f"wrote {args.plot}")
+
+
+def settle(mean: np.ndarray, target: float, fraction: float = 0.05):
+    inside = np.abs(mean - target) < fraction * target
+    return int(np.argmax(inside)) if inside.any() else None
+
+
+def fokker_planck(args) -> None:
+    sink = Sink(FIG8, 1, 0.2)
+    runs, periods = (16, 600) if args.quick else (128, 2000)
+    start = time.perf_counter()
+    sim = simulate(sink, RunSettings(runs=runs, periods=periods, seed=1), tol=1e-6,
+                   progress=False)  # fmt: skip
+    law = equilibrium_law(sink, float(sim.initial_energy.mean()))
+    r = measure_relaxation(sim.container_energy, law.mean, resamples=199)
+    ens = sim.container_energy
+    mean, sd, se = ens.mean(0), ens.std(0, ddof=1), ens.std(0, ddof=1) / np.sqrt(runs)
+    s = np.linspace(0, 1, 4001)
+    law_sd = float(
+        np.sqrt(np.sum((s * law.energy - law.mean) ** 2 * law.pdf(s)) / law.pdf(s).sum())
+    )
+    wall = time.perf_counter() - start
+    print(f"\n5. k = 1 from the paper's start: {runs} runs x {periods} periods [{wall:.1f} s]; "
+          f"law mean {law.mean:.4f}, sd {law_sd:.4f}")  # fmt: skip
+    print(f"  simulated: settles at {r.settle_time:.0f} ({r.settle_low:.0f}-{r.settle_high:.0f}), "
+          f"tail tau {r.rate_time:.0f} ± {r.rate_stderr:.0f}")  # fmt: skip
+    times = [t for t in (10, 50, 100, 200, 400, 800, 1500, 2000) if t <= periods]
+    print("  model                  settles  " + "  ".join(f"t={t:<5d}" for t in times)
+          + "  sd at end")  # fmt: skip
+    print("  simulated              " + f"{r.settle_time:7.0f}  "
+          + "  ".join(f"{mean[t]:.3f}±{se[t]:.3f}"[:13].ljust(7) for t in times)
+          + f"  {sd[-1]:.3f}")  # fmt: skip
+    for seed in range(args.seeds):
+        raw = measure_kramers_moyal(sink, 0.5, points=args.points, lags=(8,), runs=args.runs,
+                                    seed=seed)  # fmt: skip
+        slow = measure_kramers_moyal(sink, 0.5, points=args.points, lags=(32, 64),
+                                     runs=args.runs, seed=seed, base_lag=8)  # fmt: skip
+        for label, km, lag in (("base 8, lag 32", slow, 32), ("base 8, lag 64", slow, 64),
+                               ("raw lag 8", raw, 8)):  # fmt: skip
+            j = km.lag_index(lag)
+            m, d = solve_fokker_planck(0.5, km.container_energies, km.drift[:, j],
+                                       km.diffusion[:, j], 0.5, periods)  # fmt: skip
+            t_f = settle(m, law.mean)
+            print(f"  seed {seed} {label:15s} " + (f"{t_f:7d}" if t_f is not None else "  never")
+                  + "  " + "  ".join(f"{m[t]:.3f}".ljust(13) for t in times)
+                  + f"  {d[-1]:.3f}")  # fmt: skip
 
 
 if __name__ == "__main__":

@@ -7,9 +7,13 @@ prescribed E_c with the rest of the state drawn from the shell's conditional mea
 
     D1 = <Delta E> / tau,    D2 = <Delta E^2> / (2 tau),    Delta E = E_c(tau) - E_c(0),
 
-with standard errors from the spread over the runs (independent).  A lag of a few periods
-is short against the relaxation (hundreds of periods) and long against one period's
-exchange; :class:`KramersMoyal` holds every lag asked for, so their agreement can be seen.
+with standard errors from the spread over the runs (independent).  :class:`KramersMoyal`
+holds every lag asked for, so whether they agree can be seen.  For the Fig. 8 well they do
+not at a few periods: E_c moves by ~0.1 (of E = 0.5) within the first period and the
+moments then stay on that plateau up to ~8 periods, so <Delta E> / tau falls like 1 / tau
+(docs/guide/equilibrium.rst).  With a base lag tau_0 the coefficients come from the
+moments' growth after it (:func:`kramers_moyal`), which removes a fast part done by tau_0.
+:func:`solve_fokker_planck` turns coefficients into <E_c>(t) and its spread.
 
 The grid
 --------
