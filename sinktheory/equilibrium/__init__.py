@@ -11,26 +11,42 @@
 * :mod:`~sinktheory.equilibrium.relaxation` -- when the ensemble mean of E_c settles
   within a fraction of the law's mean (crossing of a fitted stretched exponential, with a
   bootstrap interval over runs that does not move with their number);
+* :mod:`~sinktheory.equilibrium.microcanonical` -- states drawn from the shell's measure
+  at a prescribed E_c (the particles on their own microcanonical shell);
+* :mod:`~sinktheory.equilibrium.kramers` -- Kramers-Moyal drift and diffusion of E_c from
+  short runs started there, and the fluctuation-dissipation check against the law;
 * :mod:`~sinktheory.equilibrium.ergodicity` -- the ergodicity map: the runs' distance
   from the law beside lambda_1, point by point (also the sweep kind ``ergodicity``).
 """
 
 from .area import area_quadrature, area_ratio, basin_area, scaled_energy
+from .kramers import (
+    FluctuationDissipation,
+    KramersMoyal,
+    check_fluctuation_dissipation,
+    measure_kramers_moyal,
+)
 from .law import EquilibriumLaw, EquilibriumSummary, equilibrium_law
 from .lifetime import LawComparison, compare_with_law, measure_lifetimes
+from .microcanonical import shell_states
 from .relaxation import Relaxation, measure_relaxation
 
 __all__ = [
     "EquilibriumLaw",
     "EquilibriumSummary",
+    "FluctuationDissipation",
+    "KramersMoyal",
     "LawComparison",
     "Relaxation",
     "basin_area",
     "area_quadrature",
+    "check_fluctuation_dissipation",
     "area_ratio",
     "compare_with_law",
     "equilibrium_law",
+    "measure_kramers_moyal",
     "measure_lifetimes",
     "measure_relaxation",
     "scaled_energy",
+    "shell_states",
 ]
