@@ -36,6 +36,7 @@ Examples
 
 from __future__ import annotations
 
+import os
 import signal
 import sys
 import threading
@@ -60,6 +61,9 @@ LOG_INTERVAL = 15.0
 TERMINAL_INTERVAL = 0.5
 #: Seconds of compiled work between two checks for an interrupt (:func:`chunks`).
 CHUNK_SECONDS = 0.1
+#: Seconds a held signal waits for the compiled call to return before it ends the
+#: process anyway (a call that releases the GIL: one period of a billiard can be long).
+FORCE_AFTER = 1.0
 
 
 #: A log line: no bar, the count, the time so far and left, the rate.
@@ -186,6 +190,14 @@ class HeldSignals:
     (an exception raised there by a signal could leave the pool half done).  Outside the
     main thread (where signal handlers cannot be set) nothing is held.
 
+    A compiled call that runs without the GIL (``nogil``) may take longer than expected
+    (one period of a billiard at a huge energy).  On the command line (when
+    :attr:`forced_line` is set) a watcher thread, woken by the signal itself
+    (:func:`signal.set_wakeup_fd`), waits :data:`FORCE_AFTER` seconds for the handler to
+    run and otherwise writes ``forced_line`` and ends the process with status 128 + the
+    signal's number (no clean-up: only what a kill would leave; outputs are written only
+    after the work, and stores survive a kill).
+
     Examples
     --------
     >>> with HeldSignals() as held:
@@ -198,16 +210,24 @@ class HeldSignals:
     """
 
     SIGNALS = (signal.SIGINT, signal.SIGTERM)
+    #: The line a forced end writes on stderr (set by the command line's interrupt
+    #: handler); None: no watcher.
+    forced_line: str | None = None
 
     def __enter__(self) -> HeldSignals:
         self.held: list[int] = []
         self.previous = {}
+        self.acted = threading.Event()
         if threading.current_thread() is threading.main_thread():
             self.previous = {s: signal.signal(s, self._hold) for s in self.SIGNALS}
+            if self.forced_line is not None:
+                _start_watcher()
+                _HOLDING.append(self)
         return self
 
     def _hold(self, signum, frame) -> None:
         self.held.append(signum)
+        self.acted.set()
 
     def release(self) -> None:
         """If a signal was held: restore the handlers and deliver it (what its handler
@@ -223,11 +243,44 @@ class HeldSignals:
         for signum, handler in self.previous.items():
             signal.signal(signum, signal.SIG_DFL if handler is None else handler)
         self.previous = {}
+        if self in _HOLDING:
+            _HOLDING.remove(self)
 
     def __exit__(self, kind, error, traceback) -> None:
         if kind is None:
             self.release()
         self._restore()
+
+
+#: The HeldSignals holding now, innermost last (their watcher's view).
+_HOLDING: list[HeldSignals] = []
+_WATCHER: list[threading.Thread] = []
+
+
+def _start_watcher() -> None:
+    """Start, once per process, the thread woken by each signal (its number written to a
+    pipe by Python's C-level handler, :func:`signal.set_wakeup_fd`)."""
+    if _WATCHER:
+        return
+    read, write = os.pipe()
+    os.set_blocking(write, False)
+    signal.set_wakeup_fd(write, warn_on_full_buffer=False)
+    _WATCHER.append(threading.Thread(target=_watch, args=(read,), daemon=True))
+    _WATCHER[0].start()
+
+
+def _watch(read: int) -> None:
+    """:class:`HeldSignals`' watcher: a SIGINT or SIGTERM whose handler has not run
+    :data:`FORCE_AFTER` seconds later while signals are held ends the process."""
+    while data := os.read(read, 16):
+        ours = [s for s in data if s in HeldSignals.SIGNALS]
+        holding = _HOLDING[-1] if _HOLDING else None
+        line = HeldSignals.forced_line
+        if not ours or holding is None or line is None:
+            continue
+        if not holding.acted.wait(FORCE_AFTER) and not holding.acted.is_set():
+            os.write(2, (line + "\n").encode())
+            os._exit(128 + ours[0])
 
 
 def chunks(

@@ -310,7 +310,7 @@ def energies(cont, vel, mu):
     return ec, ec + ep
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)  # a signal's watcher runs meanwhile
 def run_fixed(
     pos, vel, tan, first, last, period, kinds, coef, cap, hneg, gx, eps, reach, out
 ):  # fmt: skip
@@ -352,7 +352,7 @@ def _distance(c1, p1, v1, c2, p2, v2):
     return math.sqrt(d)
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)  # a signal's watcher runs meanwhile
 def run_moving(
     cont, pos, vel, mu, first, last, period, kinds, coef, cap, hneg, gx, eps, reach, shadow,
     d0, renorm, out,

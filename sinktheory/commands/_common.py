@@ -66,6 +66,10 @@ def interruptible(
         previous = signal.signal(signal.SIGTERM, on_term)
     except ValueError:  # not the main thread: leave SIGTERM alone
         previous = None
+    from ..progress import HeldSignals
+
+    # a compiled call that keeps a held signal waiting too long ends the process with it
+    forced, HeldSignals.forced_line = HeldSignals.forced_line, f"{prog}: interrupted"
     try:
         try:
             yield
@@ -83,6 +87,7 @@ def interruptible(
     else:
         status = None
     finally:
+        HeldSignals.forced_line = forced
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
     if status is not None:

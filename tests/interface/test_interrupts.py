@@ -80,6 +80,10 @@ CASES = {
     "simulate": (["simulate", *WELL, "--n", "4", *LONG, "--plot", "out.png"], signal.SIGTERM,
                  None),
     "chaos": (["chaos", *WELL, "--n", "4", *LONG], signal.SIGINT, None),
+    # one period of ~1e10 impacts: the compiled call does not return for minutes, so the
+    # signal's watcher ends the process (SIGTERM could not stop it, not even timeout's)
+    "billiard-one-long-period": (["billiard", *WELL, "--runs", "1", "--periods", "1",
+                                  "--fixed", "--energy", "1e18"], signal.SIGTERM, None),
     "sweep": (SWEEP.split(), signal.SIGTERM, "--resume continues"),
 }  # fmt: skip
 
