@@ -450,8 +450,8 @@ def ipow(b, e):
     result = 1.0
     while e > 0:
         if e & 1:
-            result *= b
-        b *= b
+            result = result * b
+        b = b * b  # not in place: the Python twin may be given an array
         e >>= 1
     return result
 

@@ -74,7 +74,7 @@ from ..errors import ParameterError, StepControlError
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..limits import DEFAULT_EPS, MAX_EPS
 from ..model import RunSettings, Sink
-from ..progress import ProgressBar
+from ..progress import ProgressBar, chunks
 from ..stepsize import DEFAULT_TOL, PERIOD, choose
 from ..worklimit import check_work
 
@@ -346,8 +346,7 @@ def simulate_adaptive(
     chunk = max(1, math.ceil(periods / 100))
     bar = ProgressBar(periods, enabled=progress is not False, label="adaptive ", unit="period")
     try:
-        for start in range(0, periods, chunk):
-            stop = min(periods, start + chunk)
+        for start, stop in chunks(periods, most=chunk):  # interrupts between chunks
             module.advance(q, vel, table, fixed, start, stop, BLOCK, audit,
                            (shared, members, taken, resets))  # fmt: skip
             _raise_on_failure(status, fail_period, fail_energy, h0, t0, bound)

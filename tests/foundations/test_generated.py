@@ -185,3 +185,15 @@ def test_period_kernel_against_quadrature():
             assert oscillator.period_mp(n, mpmath.mpf(1)) == pytest.approx(quad, rel=1e-20)
         assert oscillator.period(n, 1.0) == pytest.approx(float(quad), rel=1e-14)
     assert oscillator.period(1, 0.37) == pytest.approx(2 * np.pi, rel=1e-15)
+
+
+def test_the_python_twin_of_ipow_leaves_an_array_argument_alone():
+    """The plain-Python twin of a kernel may be given arrays: squaring must not happen in
+    place, or the caller's array would come back as its own power (it did: y -> y^(2n))."""
+    from sinktheory._generated._support import ipow
+    from sinktheory.twins import python_kernel
+
+    y = np.array([0.5, -1.5, 2.0])
+    out = python_kernel(ipow)(y, 8)
+    np.testing.assert_array_equal(y, [0.5, -1.5, 2.0])
+    np.testing.assert_allclose(out, y**8, rtol=1e-15)  # against numpy's own power
