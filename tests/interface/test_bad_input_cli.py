@@ -245,6 +245,7 @@ LIGHT = {
     "sinktheory.commands._common",
     "sinktheory.errors",
     "sinktheory.limits",  # plain numbers, imports nothing
+    "sinktheory.progress",  # signal holding for Ctrl-C; tqdm only, no numerics
     "sinktheory.validation",
 }
 

@@ -37,7 +37,9 @@ def compiled(tmp_path_factory):
     out = tmp_path_factory.mktemp("warm")
     for argv in (
         ["billiard", *WELL, "--runs", "1", "--periods", "1"],
+        ["billiard", *WELL, "--runs", "1", "--periods", "1", "--fixed", "--lyapunov"],
         ["simulate", *WELL, "--n", "4", "--runs", "1", "--periods", "1"],
+        ["simulate", *WELL, "--n", "inf", "--runs", "1", "--periods", "1"],
         ["chaos", *WELL, "--n", "4", "--runs", "1", "--periods", "1"],
         ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=0.3", "--param", "n=4",
          "--param", "runs=1", "--param", "periods=1", "--workers", "1", "--quiet",
