@@ -10,14 +10,17 @@ interrupt was raised), and simulate and chaos ended with a traceback and status 
 
 from __future__ import annotations
 
+import os
 import signal
 import subprocess
 import sys
 import time
+from pathlib import Path
 
 import pytest
 from _cli import run_cli
 
+ROOT = Path(__file__).resolve().parents[2]
 WELL = ["--alpha", "0.5", "--beta", "0.3"]
 LONG = ["--runs", "2", "--periods", "1000000"]
 #: Starts the command as ``python -m sinktheory`` does, saying on stderr when the package
@@ -51,10 +54,13 @@ def compiled(tmp_path_factory):
 def _interrupt(argv, signum, cwd, wait=2.5, until=None):
     """(status, seconds from the signal to the exit, stdout, stderr) of ``sinktheory
     ARGV`` sent ``signum`` ``wait`` seconds after it started (and, with ``until``, not
-    before that path exists: a loaded machine may take longer to get there)."""
+    before that path exists: a loaded machine may take longer to get there).  The command
+    imports the same sinktheory as this process (PYTHONPATH): an installed copy elsewhere
+    would have compiled nothing yet, and a signal held while numba compiles comes late."""
     proc = subprocess.Popen(
         [sys.executable, "-c", LAUNCH, *argv],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd,
+        env={**os.environ, "PYTHONPATH": str(ROOT)},
     )  # fmt: skip
     try:
         assert proc.stderr.readline() == "ready\n"
