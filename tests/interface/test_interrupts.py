@@ -31,13 +31,19 @@ LAUNCH = (
 )
 
 
+#: The commands' environment: this tree, and numba's machine code in a folder of this
+#: module's own (set by :func:`compiled`), which no other test rewrites while a command
+#: loads it.
+ENV: dict[str, str] = {}
+
+
 @pytest.fixture(scope="module", autouse=True)
 def compiled(tmp_path_factory):
-    """Compile (or load) the kernels the commands use, in this process: a signal that
-    comes while numba compiles is swallowed by LLVM's callbacks, not the command's."""
-    from sinktheory.cli import main
-
+    """Compile the kernels the commands use, into this module's own numba cache: a signal
+    that comes while numba compiles is swallowed by LLVM's callbacks, not the command's,
+    and a cache another test process is rewriting at that moment would be compiled anew."""
     out = tmp_path_factory.mktemp("warm")
+    ENV.update(os.environ, PYTHONPATH=str(ROOT), NUMBA_CACHE_DIR=str(out / "numba"))
     for argv in (
         ["billiard", *WELL, "--runs", "1", "--periods", "1"],
         ["billiard", *WELL, "--runs", "1", "--periods", "1", "--fixed", "--lyapunov"],
@@ -48,19 +54,20 @@ def compiled(tmp_path_factory):
          "--param", "runs=1", "--param", "periods=1", "--workers", "1", "--quiet",
          "--out", str(out / "w.zarr")],
     ):  # fmt: skip
-        assert main(argv) == 0
+        done = subprocess.run([sys.executable, "-c", LAUNCH, *argv], env=ENV, cwd=out,
+                              capture_output=True, text=True, timeout=600)  # fmt: skip
+        assert done.returncode == 0, done.stderr
 
 
 def _interrupt(argv, signum, cwd, wait=2.5, until=None):
     """(status, seconds from the signal to the exit, stdout, stderr) of ``sinktheory
     ARGV`` sent ``signum`` ``wait`` seconds after it started (and, with ``until``, not
     before that path exists: a loaded machine may take longer to get there).  The command
-    imports the same sinktheory as this process (PYTHONPATH): an installed copy elsewhere
-    would have compiled nothing yet, and a signal held while numba compiles comes late."""
+    runs in :data:`ENV`, where :func:`compiled` left its kernels compiled."""
     proc = subprocess.Popen(
         [sys.executable, "-c", LAUNCH, *argv],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd,
-        env={**os.environ, "PYTHONPATH": str(ROOT)},
+        env=ENV,
     )  # fmt: skip
     try:
         assert proc.stderr.readline() == "ready\n"
