@@ -17,8 +17,9 @@ import numpy as np
 from matplotlib.figure import Figure
 
 import sinktheory as st
+from sinktheory.runstats import ensemble_mean
 from sinktheory.simulate import simulate
-from sinktheory.sinkstats import ensemble_mean, equipartition_container_energy
+from sinktheory.sinkstats import equipartition_container_energy
 
 ALPHA, BETA, N, K, MASS, E0, SEED = 1.0, 0.1, 6, 5, 0.2, 0.5, 2016
 

@@ -56,7 +56,7 @@ from .. import validation as val
 from ..errors import ParameterError
 from ..model import RunSettings, Sink, Well
 from ..results import Result
-from ..sinkstats import ensemble_mean
+from ..runstats import ensemble_mean
 from .run import PERIOD, BilliardResult, billiard
 
 __all__ = [

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..results import Result, plain
-from ..sinkstats import ensemble_mean
+from ..runstats import ensemble_mean
 
 __all__ = ["ChaosResult", "PER_RUN_NOTE", "sali_from_gali2", "time_average"]
 
@@ -211,7 +211,7 @@ class ChaosResult(Result):
     # ----------------------------------------------------------------- ensemble
     def mean(self, name: str) -> tuple[np.ndarray, np.ndarray]:
         """Ensemble mean and standard error of a per-run quantity (see
-        :func:`sinktheory.sinkstats.ensemble_mean`): ``name`` is an attribute or property
+        :func:`sinktheory.runstats.ensemble_mean`): ``name`` is an attribute or property
         of shape (R, ...), e.g. "lambda1", "spectrum", "finite_time_lambda1", "gali"."""
         a = getattr(self, name)
         if a is None:

@@ -38,7 +38,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..ensemble import ENERGY_BOUND
-from ..sinkstats import ensemble_mean
+from ..runstats import ensemble_mean
 from .verdicts import threshold
 
 __all__ = ["LOOKS", "looks", "MIN_LOOK", "staged_chaos", "staged_exponent", "StagedExponent"]

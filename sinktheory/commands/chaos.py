@@ -181,7 +181,7 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     the runs started as for a finite n; gamma plays no part."""
     from ..billiard import billiard
     from ..billiard.convergence import lambda_after
-    from ..sinkstats import ensemble_mean
+    from ..runstats import ensemble_mean
     from ..validation import positive
 
     positive("gamma", args.gamma)

@@ -213,8 +213,7 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     """--n inf: the same runs in the rigid billiard (moving container); gamma plays no part."""
     from ..billiard import billiard
     from ..model import RunSettings
-    from ..runstats import plus_minus
-    from ..sinkstats import ensemble_mean
+    from ..runstats import ensemble_mean, plus_minus
     from ..validation import positive
 
     positive("gamma", args.gamma)

@@ -5,7 +5,7 @@ E[r, j] = E(jT) (runs r = 0..R-1, j = 0..P), in the paper's units (container mas
 spring 1, period T = 2 pi), energies relative to the container's initial energy E0:
 
 * **absorbed fraction** at a horizon h: 1 - <E>(hT)/E0, with the standard error of the
-  ensemble mean (:func:`sinktheory.sinkstats.ensemble_mean`);
+  ensemble mean (:func:`sinktheory.runstats.ensemble_mean`);
 * **settling times** t50, t80 (``passage``): the first period j at which <E> falls below
   (1 - a) E0 (a = 50 % and 80 % absorbed) *and stays below* for the ``window`` periods
   that follow, j + 1, ..., j + window (:func:`sustained_crossing`; default window a tenth
@@ -56,8 +56,8 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 from ..results import Result
-from ..runstats import spread
-from ..sinkstats import ensemble_mean, equipartition_container_energy, sink_measures
+from ..runstats import ensemble_mean, spread
+from ..sinkstats import equipartition_container_energy, sink_measures
 
 __all__ = [
     "ABSORBED_LEVELS",

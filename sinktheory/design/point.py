@@ -69,8 +69,7 @@ from .. import validation as v
 from ..ensemble import settings_of, sink_of
 from ..errors import ParameterError
 from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings
-from ..runstats import mean_stderr
-from ..sinkstats import ensemble_mean
+from ..runstats import ensemble_mean, mean_stderr
 from ..stepsize import check_tol, step_of
 from ..worklimit import check_particle_steps, tangent_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of

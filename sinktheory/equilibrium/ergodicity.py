@@ -94,20 +94,13 @@ def fractions_of(text: str) -> np.ndarray:
 
 
 def _sink_settings(p: dict, seed: int):
-    from ..model import RunSettings, Sink, Well
+    """The point's sink and run settings, the model's defaults (:data:`MODEL`) and the
+    start box filled in."""
+    from ..ensemble import settings_of, sink_of
 
-    well = Well(
-        p["alpha"], p["beta"], p["n"], gamma=p.get("gamma", 1.0), shape=p.get("shape", "flat")
-    )
-    sink = Sink(well, particles=p.get("particles", 1), mass=p.get("mass", 0.2))
-    settings = RunSettings(
-        energy=p.get("energy", 0.5),
-        runs=p["runs"],
-        periods=p["periods"],
-        seed=seed,
-        box=p.get("box", 0.01),
-    )
-    return sink, settings
+    given = {name: value for name, value in MODEL.items() if value is not None}
+    point = {**given, "box": DEFAULTS["box"], **p}
+    return sink_of(point), settings_of(point, seed)
 
 
 #: The well's and the sink's parameters a point takes (alpha, beta and n required).

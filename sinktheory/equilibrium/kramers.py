@@ -414,20 +414,7 @@ def check_fluctuation_dissipation(
     means = np.stack([km.drift[:, j] * tau, km.diffusion[:, j] * 2 * tau], axis=-1)
     integrals = np.einsum("mpi,pi->m", a, means)
     cov = np.einsum("mpi,pij,npj->mn", a, km.covariance[:, j], a)
-    chi2 = float(integrals @ np.linalg.solve(cov, integrals))
-    return FluctuationDissipation(
-        lag=int(km.lags[j]),
-        tests=tests,
-        integrals=integrals,
-        stderr=np.sqrt(np.diag(cov)),
-        chi2=chi2,
-        dof=tests,
-        p_value=float(stats.chi2.sf(chi2, tests)),
-        scale=np.array(scale),
-        law_particles=law.particles,
-        law_beta=law.beta,
-        law_mean=law.mean,
-    )
+    return _verdict(km, law, j, integrals, cov, np.array(scale))
 
 
 def _exact_check(km: KramersMoyal, law: EquilibriumLaw, j: int, tests: int):
@@ -452,6 +439,13 @@ def _exact_check(km: KramersMoyal, law: EquilibriumLaw, j: int, tests: int):
     cov_points = np.einsum("mpr,npr->pmn", centred, centred) / (runs - 1) / runs
     integrals = means @ density
     cov = np.einsum("p,pmn->mn", density**2, cov_points)
+    return _verdict(km, law, j, integrals, cov, np.sum(np.abs(means) * density, axis=1))
+
+
+def _verdict(km: KramersMoyal, law: EquilibriumLaw, j: int, integrals, cov, scale):
+    """The chi-square of the test integrals (zero if the law is stationary) against their
+    covariance, as a :class:`FluctuationDissipation` at lag ``km.lags[j]``."""
+    tests = integrals.size
     chi2 = float(integrals @ np.linalg.solve(cov, integrals))
     return FluctuationDissipation(
         lag=int(km.lags[j]),
@@ -461,7 +455,7 @@ def _exact_check(km: KramersMoyal, law: EquilibriumLaw, j: int, tests: int):
         chi2=chi2,
         dof=tests,
         p_value=float(stats.chi2.sf(chi2, tests)),
-        scale=np.sum(np.abs(means) * density, axis=1),
+        scale=scale,
         law_particles=law.particles,
         law_beta=law.beta,
         law_mean=law.mean,

@@ -10,8 +10,9 @@ from ..canonical import FIG8_WELL
 from ..model import RunSettings, Sink, Well
 from ..plot.paper import energy_curves, energy_panels, recurrence_columns, running_and_recurrence
 from ..recurrence import rqa
+from ..runstats import ensemble_mean
 from ..simulate import simulate
-from ..sinkstats import SinkMeasures, ensemble_mean, running_mean, sink_measures
+from ..sinkstats import SinkMeasures, running_mean, sink_measures
 from .base import FAILS, HOLDS, Claim, Scene, SceneResult
 
 __all__ = [

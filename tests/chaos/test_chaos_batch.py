@@ -109,7 +109,7 @@ def test_staged_exponents_stop_settled_betas_and_keep_the_rest_bitwise():
     time; an unsettled one runs to the end with chaos_batch's numbers, bit for bit."""
     from sinktheory.chaos.staged import looks, staged_chaos
     from sinktheory.chaos.verdicts import threshold
-    from sinktheory.sinkstats import ensemble_mean
+    from sinktheory.runstats import ensemble_mean
 
     sinks = [Sink(Well(0.5, b, 2), 1, 0.2) for b in (0.3, -0.3)]
     settings = [RunSettings(runs=4, periods=80, seed=s) for s in (1, 2)]

@@ -27,8 +27,9 @@ from sinktheory.design.measures import (
 from sinktheory.design.ranking import pareto_layers, rank
 from sinktheory.errors import ParameterError
 from sinktheory.recurrence import rqa
+from sinktheory.runstats import ensemble_mean
 from sinktheory.simulate import simulate
-from sinktheory.sinkstats import ensemble_mean, sink_measures
+from sinktheory.sinkstats import sink_measures
 from sinktheory.sweep import kinds
 from sinktheory.sweep.grid import point_seed
 

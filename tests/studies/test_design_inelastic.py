@@ -234,7 +234,7 @@ def test_damping_is_a_design_dimension():
     """A sweep over the contact damping: each point is simulate_inelastic (or simulate
     at c0 = 0) with the point's seed, bitwise; zeta_eq its mean +- s.e. over runs."""
     from sinktheory.design import explore
-    from sinktheory.sinkstats import ensemble_mean
+    from sinktheory.runstats import ensemble_mean
     from sinktheory.sweep.grid import point_seed
 
     params = {"beta": 0.3, "n": 4, "particles": 2, "damping": [0.0, 0.5], "runs": 3,
