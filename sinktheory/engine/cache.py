@@ -119,8 +119,8 @@ def cost_table_path(name: str, coordinates: int) -> Path:
 
 #: Wall seconds to print and compile one engine on its first use (numba compiles its
 #: ``advance`` and every kernel under it), as ``reproduce`` adds it to its estimates:
-#: 22-30 s per engine on a 2-core AVX2 EPYC, 12-16 s on a 2-core AVX-512 Xeon (the quick
-#: Figs. 3, 8, 12 with an empty cache, 2026-11-26).
+#: 22-30 s per engine on a 2-core AVX2 EPYC (an earlier session's measurement), 12-16 s
+#: on a 2-core AVX-512 Xeon (the quick Figs. 3, 8, 12 with an empty cache, 2026-11-26).
 COMPILE_SECONDS = 20.0
 
 
