@@ -1,5 +1,5 @@
-"""Speed-up of the compiled inelastic-contact integrator over its NumPy version, at equal
-accuracy, in one run.
+"""Speed-up of the engine with contact damping over the NumPy version of the same
+splitting, at equal accuracy, in one run.
 
 Usage::
 
@@ -36,8 +36,8 @@ import numba
 import numpy as np
 
 from sinktheory import RunSettings, Sink, Well
-from sinktheory.design.inelastic import simulate_inelastic
-from sinktheory.design.inelastic_reference import simulate_inelastic_reference
+from sinktheory.damped import simulate_inelastic
+from sinktheory.design.inelastic_reference import simulate_inelastic_reference, solve_damped_ivp
 from sinktheory.simulate import simulate
 
 WELL = Well(0.5, 0.3, 4)
@@ -57,16 +57,10 @@ def best(repeat, f, *args, **kw):
 
 def against_solve_ivp() -> tuple[float, float]:
     """|error| of W(T) + |error| of E(T) of both integrators, one run of k = 1, one period,
-    against DOP853 (the reference of tests/studies/test_design_inelastic.py)."""
-    import sys
-    from pathlib import Path
-
-    sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
-    from test_design_inelastic import _damped_reference
-
+    against DOP853 (:func:`sinktheory.design.inelastic_reference.solve_damped_ivp`)."""
     sink = Sink(WELL, particles=1, mass=0.2)
     st = RunSettings(runs=1, periods=1, seed=2)
-    ec, w, _ = _damped_reference(sink, st, DAMPING, 1)
+    ec, w, _ = solve_damped_ivp(sink, st, DAMPING, 1)
     out = []
     for f in (simulate_inelastic, simulate_inelastic_reference):
         r = f(sink, st, damping=DAMPING, tol=TOL)

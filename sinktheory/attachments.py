@@ -8,7 +8,7 @@ model, none with a formula of its own:
   :func:`sinktheory.symbolic.normal_mode_refusal`).  On the line the well is
   V(x, 0) = gamma/(2n) (x / (alpha - beta))^(2n), a force ~ x^(2n - 1): n = 2 is the
   cubic nonlinear energy sink (NES), n = 1 a linear absorber.  Integrated by the full
-  engine (:func:`sinktheory.design.inelastic.simulate_inelastic`), so whether the
+  engine (:func:`sinktheory.damped.simulate_inelastic`), so whether the
   particle stays on the line is the dynamics' verdict, not an assumption
   (:attr:`ImpulseResponse.transverse`).
 * ``"impact"`` -- the rigid limit n -> oo on the line: the vibro-impact NES, a particle
@@ -329,7 +329,7 @@ def impulse_response(
                                res.initial_energy, res.max_audit_error, impacts=res.impacts,
                                integrator="exact flights and impacts (sinktheory.vibroimpact)",
                                **common)  # fmt: skip
-    from .design.inelastic import simulate_inelastic
+    from .damped import simulate_inelastic
 
     res = simulate_inelastic(att.sink, settings, damping=damping / att.particles,
                              damping_kind="viscous", tol=tol, dt=dt, energy_bound=energy_bound,

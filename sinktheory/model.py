@@ -62,7 +62,7 @@ __all__ = [
 #: kernel bundle each in :mod:`sinktheory._generated.shapes`.
 SHAPES = _shapes.NAMES
 #: How the particles of a damped absorber lose energy: a contact weight, or a dashpot to
-#: the container (:func:`sinktheory.design.inelastic.simulate_inelastic`).
+#: the container (:func:`sinktheory.damped.simulate_inelastic`).
 DAMPING_KINDS = ("contact", "viscous")
 #: Largest 2 n E / gamma accepted: the wall ratios' powers s^(2n) = 2 n V / gamma of a
 #: particle of energy E stay far inside float64 range (1.8e308).

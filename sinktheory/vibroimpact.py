@@ -5,7 +5,7 @@ moving freely in a clearance |x| <= D (D = alpha - beta, the wall distance) of t
 container (mass 1, spring 1), meeting its walls in elastic impacts.  A linear dashpot c
 acts on the particle's velocity relative to the container (force -c xdot on the
 particle, +c xdot on the container), as the ``"viscous"`` damping of
-:mod:`sinktheory.design.inelastic`.
+:mod:`sinktheory.damped`.
 
 Between impacts the motion is linear and solved exactly.  With w = xdot = udot - Xdot::
 

@@ -12,8 +12,8 @@ matplotlib imported there only) and reported (:mod:`.report`).
 * :func:`~sinktheory.design.ranking.rank` -- Pareto layers and the ranked table;
 * :func:`~sinktheory.design.report.write_report` -- charts, table and ``report.md``;
 * :func:`~sinktheory.design.cost.estimate` -- the time a grid will take (calibrated);
-* :func:`~sinktheory.design.inelastic.simulate_inelastic` -- inelastic wall contact
-  (compiled integrator, audited dissipation, equivalent damping ratio).
+* :func:`~sinktheory.damped.simulate_inelastic` -- inelastic wall contact
+  (the engine with its damping on, audited dissipation, equivalent damping ratio).
 
 Modules are loaded on first use, so importing the command line stays light.
 """
@@ -30,13 +30,14 @@ _LAZY = {
     "write_report": "report",
     "estimate": "cost",
     "Estimate": "cost",
-    "simulate_inelastic": "inelastic",
+    "simulate_inelastic": "..damped",
 }
 
 
 def __getattr__(name: str):
     if name in _LAZY:
-        return getattr(import_module(f".{_LAZY[name]}", __name__), name)
+        module = _LAZY[name]
+        return getattr(import_module(module if module[0] == "." else f".{module}", __name__), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 

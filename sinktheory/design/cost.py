@@ -11,8 +11,8 @@ process on one thread, and scales it to every point by
 
 with the steps per period from :func:`sinktheory.stepsize.choose` (no integration needed)
 and ``TANGENT`` the measured cost of a chaos step relative to a plain one; a design with
-contact damping (``damping`` > 0) or the 1-D NES attachment runs the inelastic
-integrator instead (:mod:`sinktheory.design.inelastic`, no lambda_1), whose step costs
+contact damping (``damping`` > 0) or the 1-D NES attachment runs the engine with its
+damping on instead (:mod:`sinktheory.damped`, no lambda_1), whose step costs
 ``DISSIPATIVE`` plain steps (measured too when the grid has such designs), and the
 vibro-impact attachment (exact flights) about one unit per run and period, plus a fixed
 overhead per point (the measures on data of the point's size, with their bootstrap and
@@ -53,16 +53,11 @@ COMPILE_SECONDS = 90.0
 #: it again when lambda_1 is asked for.
 TANGENT = 2.4
 
-#: Cost of one step of the inelastic integrator relative to a plain step: measured 1.5,
-#: 2.4 and 2.2 for k = 1, 3, 5 (flat n = 4, 25 runs x 1500 periods, damping 0.5, by
-#: ``benchmarks/bench_inelastic.py``); the calibration measures it again when the grid
-#: has damped designs.
-DISSIPATIVE = 2.2
-
-#: Seconds to compile the inelastic integrator for one engine in one process (numba
-#: cannot cache it: its arguments are the engine's compiled functions); measured 4-7 s
-#: under load.
-DISSIPATIVE_COMPILE_SECONDS = 6.0
+#: Cost of one step of the engine with contact damping relative to a plain step: measured
+#: 2.3, 2.5 and 2.8 for k = 1, 3, 5 (flat n = 4, 25 runs x 150 periods, damping 0.5, by
+#: ``benchmarks/bench_inelastic.py --quick``, 2-core AVX-512 Xeon, load 0.8); the
+#: calibration measures it again when the grid has damped designs.
+DISSIPATIVE = 2.5
 
 
 @dataclass(frozen=True)
@@ -82,9 +77,8 @@ class Estimate:
     overhead : float
         Measured seconds per point besides the integration (measures, step choice).
     compile_seconds : float
-        :data:`COMPILE_SECONDS` for each engine (shape, n) not compiled yet, and
-        :data:`DISSIPATIVE_COMPILE_SECONDS` for each engine of a damped design in each
-        worker (included in ``total_seconds``).
+        :data:`COMPILE_SECONDS` for each engine (shape, n) not compiled yet (included in
+        ``total_seconds``; a damped design runs the same engine).
     tangent : float
         Cost of a chaos step relative to a plain one (measured or :data:`TANGENT`).
     calibration_point : dict
@@ -156,7 +150,7 @@ def _time_simulate(point: dict, runs: int, periods: int) -> tuple[float, float]:
 
 
 def _time_inelastic(point: dict, runs: int, periods: int) -> tuple[float, float]:
-    from .inelastic import simulate_inelastic
+    from ..damped import simulate_inelastic
 
     p = {**point, "runs": runs, "periods": periods}
     start = time.perf_counter()
@@ -264,7 +258,7 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
         dissipative = DISSIPATIVE
         if damped:
             heaviest_damped = {**heaviest, "damping": max(p["damping"] for p in damped)}
-            _time_inelastic(heaviest_damped, 2, 1)  # compiles the integrator for the engine
+            _time_inelastic(heaviest_damped, 2, 1)  # warms the engine's damped path
             td, ud = _time_inelastic(heaviest_damped, runs, periods)
             dissipative = (td / ud) / per_unit
         overhead = _overhead(heaviest)
@@ -275,9 +269,6 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     busy = min(workers, len(points))
     total = max(float(per_point.sum()) / busy, float(per_point.max()))
     compiling = COMPILE_SECONDS * len(uncompiled({(p["shape"], p["n"]) for p in points}))
-    # the inelastic integrator is compiled in every worker process for every engine
-    engines = len({(p["shape"], p["n"]) for p in damped})
-    compiling += DISSIPATIVE_COMPILE_SECONDS * engines * min(busy, len(damped))
     total += compiling
     return Estimate(
         points=len(points),

@@ -2,7 +2,7 @@
 
 :func:`explore` is the Python side of ``sinktheory design``: a grid over shape, alpha,
 beta, n, k (``particles``), m (``mass``), E0 (``energy``), the contact damping c0
-(``damping``: inelastic wall contact, :mod:`sinktheory.design.inelastic`; 0 is the
+(``damping``: inelastic wall contact, :mod:`sinktheory.damped`; 0 is the
 conservative model) and the attachment (``"well"``, the default; ``"nes"`` and
 ``"impact"``, the 1-D absorbers, see :mod:`sinktheory.design.point`) -- each a value or a
 list -- computed on the sweep layer

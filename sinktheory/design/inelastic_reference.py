@@ -2,7 +2,7 @@
 compiled integrator and the baseline of its benchmark.
 
 :func:`simulate_inelastic_reference` integrates the same model with the same splitting
-D(h/2) o S(h) o D(h/2) as :func:`sinktheory.design.inelastic.simulate_inelastic` (see
+D(h/2) o S(h) o D(h/2) as :func:`sinktheory.damped.simulate_inelastic` (see
 there for the model, the exact pair flows and the audit), written independently in NumPy:
 a Python loop over steps, array operations over runs, the contact weight from the well's
 own potential (:meth:`sinktheory.model.Well.potential`) instead of the generated energy
@@ -26,7 +26,7 @@ import numpy as np
 
 from ..integrators import get_scheme
 from ..model import RunSettings, Sink
-from .inelastic import InelasticResult, check_audit, result, setup
+from ..damped import InelasticResult, check_audit, result, setup
 
 
 def contact_weight(sink: Sink, q: np.ndarray) -> np.ndarray:
@@ -80,7 +80,7 @@ def simulate_inelastic_reference(
     energy_bound: float | None = None,
     start=None,
 ) -> InelasticResult:
-    """The NumPy integration of :func:`~sinktheory.design.inelastic.simulate_inelastic`
+    """The NumPy integration of :func:`~sinktheory.damped.simulate_inelastic`
     (same parameters, same start states, same checks; no sampling, no progress bar)."""
     s = setup(sink, settings, damping, method, dt, tol, energy_bound, damping_kind, start)
     settings = RunSettings() if settings is None else settings
@@ -117,4 +117,39 @@ def simulate_inelastic_reference(
     return result(s, e_c, h_t, w_t, integral)
 
 
-__all__ = ["contact_weight", "dissipate", "simulate_inelastic_reference"]
+def solve_damped_ivp(sink: Sink, settings: RunSettings, damping: float, periods: int):
+    """(E_c, W, integral of E_c dt) at t = ``periods`` T for run 0 of ``settings``: the
+    damped equations of motion (contact weight) integrated by ``solve_ivp`` (DOP853, rtol
+    1e-12) with W and the integral appended to the state -- an integrator independent of
+    the splitting, for the tests and the benchmark."""
+    from scipy.integrate import solve_ivp
+
+    from ..ensemble import random_positions, start_state
+    from ..simulate import first_order_rhs
+
+    k, mu, w = sink.particles, sink.mu, sink.well
+    f = first_order_rhs(sink)
+
+    def rhs(t, z):
+        dz = np.concatenate((f(t, z[:-2]), [0.0, 0.0]))
+        X, Xd = z[0], z[1]
+        u, y = z[2 : 2 + k], z[2 + k : 2 + 2 * k]
+        ud, yd = z[2 + 2 * k : 2 + 3 * k], z[2 + 3 * k : 2 + 4 * k]
+        c = damping * 2 * w.n * np.asarray(w.potential(u - X, y), float) / w.gamma
+        rel = ud - Xd
+        dz[2 + 2 * k : 2 + 3 * k] -= c * rel / mu
+        dz[1] += np.sum(c * rel)
+        dz[2 + 3 * k : 2 + 4 * k] -= c * yd / mu
+        dz[-2] = np.sum(c * (rel**2 + yd**2))
+        dz[-1] = 0.5 * (Xd**2 + X**2)
+        return dz
+
+    z0 = start_state(sink, settings.energy, random_positions(settings, k))[0]
+    T = 2 * np.pi * periods
+    sol = solve_ivp(rhs, (0, T), np.concatenate((z0, [0.0, 0.0])), "DOP853",
+                    rtol=1e-12, atol=1e-14)  # fmt: skip
+    z = sol.y[:, -1]
+    return 0.5 * (z[1] ** 2 + z[0] ** 2), z[-2], z[-1]
+
+
+__all__ = ["contact_weight", "dissipate", "simulate_inelastic_reference", "solve_damped_ivp"]

@@ -9,7 +9,7 @@ container energy, the measures are :func:`~sinktheory.design.measures.design_mea
 the growth exponent per period).  ``lyapunov_runs = 0`` leaves it out (NaN).
 
 With a contact damping c0 = ``damping`` > 0 the ensemble is
-:func:`sinktheory.design.inelastic.simulate_inelastic` instead (same start states, same
+:func:`sinktheory.damped.simulate_inelastic` instead (same start states, same
 tolerance; the audit of H + W = H0 is the energy error reported), and the point also gets
 the equivalent damping ratio zeta_eq of the container (mean over runs +- standard error)
 and the share of H0 dissipated by the end.  lambda_1 is then left out (NaN: the chaos
@@ -208,7 +208,7 @@ def ensemble(p: dict, seed: int) -> dict[str, Any]:
     kind = p.get("damping_kind", "contact")
     dashpot = float(kind == "viscous")
     if p["damping"] > 0:
-        from .inelastic import simulate_inelastic
+        from ..damped import simulate_inelastic
 
         c = p["damping"] / p["particles"] if dashpot else p["damping"]
         res = simulate_inelastic(sink, settings, damping=c, damping_kind=kind, tol=p["tol"],

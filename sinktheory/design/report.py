@@ -202,7 +202,7 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
     ]
     if ranked and is_damped(ranked):
         lines += [
-            "- damping > 0 (inelastic wall contact, sinktheory.design.inelastic): a viscous "
+            "- damping > 0 (inelastic wall contact, sinktheory.damped): a viscous "
             "force -c0 s v_rel on each particle's velocity relative to the container, s = "
             "2n V/gamma (about 1 at the wall), integrated by a Strang splitting with exactly "
             "solved dissipative pair flows; the energy error shown is that of the audit "

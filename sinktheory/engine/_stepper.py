@@ -2,8 +2,8 @@
 
 This file is not imported: :mod:`sinktheory.engine.printer` copies the text below the
 ``template starts`` marker after the system's kernels (``accelerations``, ``hessian``,
-``tangent_kick``, ``energies``, ``members_of``, ``hessian_rows`` and the constant
-``SHARED``), so that numba compiles and caches one module per system with every call
+``tangent_kick``, ``energies``, ``shared_energy``, ``damping_factors``, ``dissipate``,
+``members_of``, ``hessian_rows`` and the constants ``SHARED`` and ``MEMBER_COORDS``), so that numba compiles and caches one module per system with every call
 inlinable.  Keeping it a real Python file lets linters and readers see it whole.
 
 Data layout (structure of arrays, runs last and contiguous): ``q[i, r]``, ``v[i, r]`` are
@@ -120,7 +120,8 @@ def _gali(dq, dv, k, out):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, audit, rec):
+def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, audit, rec,
+               damp, diss):  # fmt: skip
     """Advance one block of runs over segments [seg0, seg1); see the module docstring.
 
     scheme = (a, b, dt, steps): drift and kick weights of the splitting method, step,
@@ -128,13 +129,22 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, au
     arrays.  tangent = (mode, renorm, gali_k, megno, t0), t0 the time at which
     the deviation vectors started (for MEGNO).  audit = (h0, bound,
     status, fail_segment, fail_energy, worst).  rec = (shared, members, trajectory, stride,
-    logs, gali, megno), per-segment records indexed [run, segment] (empty when unused).
-    Returns the segment reached (seg1, or the first with a failure in this block).
+    logs, gali, megno, work, work_samples), per-segment records indexed [run, segment]
+    (empty when unused; work_samples at the trajectory's samples).  damp = (on, c0,
+    weighted, integrate): the damping (see below) and whether to integrate the shared
+    energy over time; diss[0, b] is the work the damping has taken from run b, diss[1, b]
+    the integral of the shared energy (both carried between calls).
+
+    With damping on, a step is D(dt/2) S(dt) D(dt/2): S the splitting step, D the damping
+    flow with the positions frozen (``dissipate``), whose factors depend on the positions
+    only and so serve the end of one step and the start of the next.  The energy audit is
+    then of H + W: each exact pair flow removes exactly the kinetic energy it adds to W.
     """
     ah, bh, dt, steps = scheme
     mode, renorm, gali_k, megno, t0 = tangent
     h0, bound, status, fail_segment, fail_energy, worst = audit
-    rec_shared, rec_members, traj, stride, rec_logs, rec_gali, rec_megno = rec
+    rec_shared, rec_members, traj, stride, rec_logs, rec_gali, rec_megno, rec_work, wsamp = rec
+    on, c0, weighted, integrate = damp
     D, B = q.shape
     M = dq.shape[1]
     s = ah.shape[0]
@@ -145,6 +155,15 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, au
     K = members_of(D)
     members = np.empty((K, B))
     work = np.empty(B)
+    f = np.empty((MEMBER_COORDS * K, B))
+    lost = np.empty(B)
+    ec = np.empty(B)
+    ec_prev = np.empty(B)
+    tau = 0.25 * dt  # D(dt/2): the pair flows over dt/4 each way
+    if on:
+        damping_factors(q, P, c0, weighted, tau, f)
+    if integrate:
+        shared_energy(q, v, P, ec_prev)
     # a block of one run takes the kernels *_one, vectorised across the members (the same
     # numbers; pull is their work space).  The branches are written out at every call: behind
     # a helper function, the copy numba caches ran the single run 2x slower (measured).
@@ -164,6 +183,10 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, au
             hessian(q, h, P)
     for seg in range(seg0, seg1):
         for step in range(steps):
+            if on:  # the factors of the positions at the end of the previous step
+                dissipate(v, f, P, lost)
+                for b in range(B):
+                    diss[0, b] += lost[b]
             for stage in range(s):
                 # kick then drift, fused into one pass over the block
                 ck = bh[stage] * dt
@@ -195,6 +218,17 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, au
                     tangent_kick_one(h, dq, dv, ck, P, pull)
                 else:
                     tangent_kick(h, dq, dv, ck, P)
+            if on:
+                if weighted:
+                    damping_factors(q, P, c0, weighted, tau, f)
+                dissipate(v, f, P, lost)
+                for b in range(B):
+                    diss[0, b] += lost[b]
+            if integrate:  # the trapezoid rule over the steps
+                shared_energy(q, v, P, ec)
+                for b in range(B):
+                    diss[1, b] += 0.5 * dt * (ec[b] + ec_prev[b])
+                    ec_prev[b] = ec[b]
             g = seg * steps + step + 1
             if mode != NO_TANGENT and renorm > 0 and g % renorm == 0 and step + 1 < steps:
                 _renormalise(dq, dv, logs, mode == ORTHONORMALISE)
@@ -212,6 +246,8 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, au
                     for i in range(SHARED, D):
                         row[SHARED + i] = q[i, b]
                         row[D + i] = v[i, b]
+                    if wsamp.shape[1] > 0:
+                        wsamp[rows[b], g // stride] = diss[0, b]
         if mode != NO_TANGENT:
             _renormalise(dq, dv, logs, mode == ORTHONORMALISE)
         energies(q, v, P, total, shared, members)
@@ -223,17 +259,20 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, au
             if not math.isfinite(H):
                 status[r] = NONFINITE
             else:
-                err = abs(H - h0[r]) / scale
+                err = abs(H + diss[0, b] - h0[r]) / scale
                 worst[r] = max(worst[r], err)
                 if err > bound:
                     status[r] = DRIFT
             if status[r] != RUNNING:
                 fail_segment[r] = seg + 1
-                fail_energy[r] = H
+                fail_energy[r] = H + diss[0, b]  # H + W with damping
                 failed = True
         if rec_shared.shape[1] > 0:
             for b in range(B):
                 rec_shared[rows[b], seg + 1] = shared[b]
+        if rec_work.shape[1] > 0:
+            for b in range(B):
+                rec_work[rows[b], seg + 1] = diss[0, b]
         if rec_members.shape[1] > 0:
             for b in range(B):
                 for j in range(K):
@@ -256,7 +295,8 @@ def _run_block(q, v, dq, dv, P, scheme, seg0, seg1, rows, tangent, logs, meg, au
 
 
 @numba.njit(cache=True, parallel=True, error_model="numpy")
-def advance(Q, V, DQ, DV, P, weights, seg0, seg1, layout, tangent, logs, meg, audit, rec):
+def advance(Q, V, DQ, DV, P, weights, seg0, seg1, layout, tangent, logs, meg, audit, rec,
+            damp, diss):  # fmt: skip
     """Advance every run (columns of Q, V; P its parameter table, see
     ``parameter_table``) over segments [seg0, seg1); blocks holding a stopped run are
     skipped.
@@ -267,11 +307,12 @@ def advance(Q, V, DQ, DV, P, weights, seg0, seg1, layout, tangent, logs, meg, au
     stride[i] steps; thread part j takes the blocks
     parts[j]:parts[j + 1] (:func:`sinktheory.engine.blocks.layout`); rows[c] is the row of
     column c in the audit and record arrays; rec = (shared, members, trajectory, logs,
-    gali, megno) as for ``_run_block`` without the stride.
+    gali, megno, work, work_samples) as for ``_run_block`` without the stride; damp and
+    diss (2, runs) as for ``_run_block``.
     """
     ah, bh = weights
     parts, bounds, rows, dts, nsteps, strides = layout
-    rec_shared, rec_members, traj, rec_logs, rec_gali, rec_megno = rec
+    rec_shared, rec_members, traj, rec_logs, rec_gali, rec_megno, rec_work, wsamp = rec
     status = audit[2]
     for j in numba.prange(parts.shape[0] - 1):
         for ib in range(parts[j], parts[j + 1]):
@@ -290,16 +331,19 @@ def advance(Q, V, DQ, DV, P, weights, seg0, seg1, layout, tangent, logs, meg, au
             lg = logs[:, r0:r1].copy()
             mg = meg[:, r0:r1].copy()
             p = P[:, r0:r1].copy()
+            ds = diss[:, r0:r1].copy()
             scheme = (ah, bh, dts[ib], nsteps[ib])
-            records = (rec_shared, rec_members, traj, strides[ib], rec_logs, rec_gali, rec_megno)
+            records = (rec_shared, rec_members, traj, strides[ib], rec_logs, rec_gali, rec_megno,
+                       rec_work, wsamp)  # fmt: skip
             _run_block(q, v, dq, dv, p, scheme, seg0, seg1, rows[r0:r1], tangent, lg, mg,
-                       audit, records)  # fmt: skip
+                       audit, records, damp, ds)  # fmt: skip
             Q[:, r0:r1] = q
             V[:, r0:r1] = v
             DQ[:, :, r0:r1] = dq
             DV[:, :, r0:r1] = dv
             logs[:, r0:r1] = lg
             meg[:, r0:r1] = mg
+            diss[:, r0:r1] = ds
 
 
 def table_of(params, runs):

@@ -416,10 +416,11 @@ def _time(module, q, v, table, size, weights, steps) -> list[float]:
         audit = (np.zeros(size), math.inf, status, np.zeros(size, dtype=np.int64),
                  np.zeros(size), np.zeros(size))  # fmt: skip
         rec = (np.zeros((size, 0)), np.zeros((size, 0, 0)), np.zeros((size, 0, 2 * D)),
-               np.zeros((size, 0, 0)), np.zeros((size, 0)), np.zeros((size, 0)))  # fmt: skip
+               np.zeros((size, 0, 0)), np.zeros((size, 0)), np.zeros((size, 0)),
+               np.zeros((size, 0)), np.zeros((size, 0)))  # fmt: skip
         t0 = time.perf_counter()
         module.advance(Qc, Vc, empty3, empty3.copy(), P, weights, 0, 1, one_block,
                        (0, 0, 0, False, 0.0), np.zeros((0, size)), np.zeros((2, size)),
-                       audit, rec)  # fmt: skip
+                       audit, rec, (False, 0.0, False, False), np.zeros((2, size)))  # fmt: skip
         times.append(time.perf_counter() - t0)
     return times

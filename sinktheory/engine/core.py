@@ -29,6 +29,8 @@ import numba
 import numpy as np
 
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
+from ..model import DAMPING_KINDS
+from ..validation import nonnegative
 from ..progress import ProgressBar, chunks
 from . import blocks
 from .cache import cost_table_path, load
@@ -52,7 +54,13 @@ class Records:
     logs : (R, S + 1, M) accumulated log growth of each deviation vector, or None
     gali : (R, S + 1) GALI_k of the first k deviation vectors, or None
     megno : (R, S + 1) MEGNO Y(t) of deviation vector 0, or None
-    worst : (R,) largest relative energy error of each run over the segments
+    worst : (R,) largest relative energy error of each run over the segments (of H + W
+        with damping)
+    work : (R, S + 1) work the damping has taken from each run since the ensemble
+        started, or None
+    work_samples : (R, samples) the same work at the trajectory's samples, or None
+    integral : (R,) the integral of the shared energy over time since the ensemble
+        started (trapezoid rule over the steps), or None
     """
 
     shared: np.ndarray | None
@@ -62,6 +70,9 @@ class Records:
     gali: np.ndarray | None
     megno: np.ndarray | None
     worst: np.ndarray
+    work: np.ndarray | None = None
+    work_samples: np.ndarray | None = None
+    integral: np.ndarray | None = None
 
 
 class Ensemble:
@@ -82,6 +93,11 @@ class Ensemble:
         What happens to the deviation vectors at each renormalisation.
     reference_energy : array (R,), optional
         H0 of the energy audit (default: the energy of the start state).
+    damping : float >= 0
+        c0 of the system's damping (:class:`~sinktheory.engine.systems.Damping`); 0, the
+        default, is the conservative system, bitwise.
+    damping_kind : {"contact", "viscous"}
+        The damping's weight: the members' potential terms (contact) or 1.
     """
 
     def __init__(
@@ -95,6 +111,8 @@ class Ensemble:
         dv=None,
         tangent: str = "none",
         reference_energy=None,
+        damping: float = 0.0,
+        damping_kind: str = "contact",
     ):
         self.module = load(system)
         self.system = system
@@ -125,6 +143,14 @@ class Ensemble:
         if tangent not in TANGENT_MODES:
             raise ParameterError("tangent", tangent, f"one of {tuple(TANGENT_MODES)}")
         self.tangent = tangent
+        damping = nonnegative("damping", damping)
+        if damping and not mod.DAMPED:
+            raise ParameterError("damping", damping, f"0 (system {system} has no damping)")
+        if damping_kind not in DAMPING_KINDS:
+            raise ParameterError("damping_kind", damping_kind, f"one of {DAMPING_KINDS}")
+        self.damping = damping
+        self.weighted = damping_kind == "contact"
+        self.diss = np.zeros((2, R))  # work taken by the damping, integral of E_shared
         M = self.dq.shape[1]
         self.logs = np.zeros((M, R))
         self.meg = np.zeros((2, R))
@@ -156,7 +182,7 @@ class Ensemble:
         time.  Advancing it gives each run bitwise what advancing this one would."""
         new = object.__new__(Ensemble)
         new.__dict__.update(self.__dict__)
-        for name in ("q", "v", "dq", "dv", "logs", "meg", "table", "status", "h0"):
+        for name in ("q", "v", "dq", "dv", "logs", "meg", "table", "status", "h0", "diss"):
             setattr(new, name, np.ascontiguousarray(getattr(self, name)[..., runs]))
         new._seconds = {}  # other runs, other plans
         return new
@@ -199,7 +225,9 @@ class Ensemble:
         continued run only to the rounding of the segment time, which the ensemble counts
         with run 0's dt x steps).
 
-        ``record`` is a subset of {"shared", "members", "trajectory", "logs"}; ``stride``
+        ``record`` is a subset of {"shared", "members", "trajectory", "logs", "work",
+        "integral"} ("work": the damping's work at segment ends, and at the trajectory's
+        samples; "integral": the shared energy integrated over time); ``stride``
         steps between trajectory samples; ``renorm`` steps between renormalisations of the
         deviation vectors inside a segment (0: only at segment ends); ``gali`` = k records
         GALI_k; ``megno`` records MEGNO of vector 0.  A run whose relative energy error
@@ -231,7 +259,9 @@ class Ensemble:
             "logs": np.zeros((Rp, S + 1 if "logs" in record else 0, M)),
             "gali": np.zeros((Rp, S + 1 if gali else 0)),
             "megno": np.zeros((Rp, S + 1 if megno else 0)),
+            "work": np.zeros((Rp, S + 1 if "work" in record else 0)),
         }
+        wsamples = np.zeros((Rp, samples if "work" in record else 0))
         total, shared, members = self.energies()
         if "shared" in record:
             rec["shared"][:R, 0] = shared
@@ -239,6 +269,9 @@ class Ensemble:
             rec["members"][:R, 0] = members.T
         if "logs" in record:
             rec["logs"][:R, 0] = self.logs.T
+        if "work" in record:
+            rec["work"][:R, 0] = self.diss[0]
+            wsamples[:R, : min(1, samples)] = self.diss[0, :, None]
         traj = np.zeros((Rp, samples, 2 * D))
         if samples:
             Sh = self.module.SHARED
@@ -254,7 +287,9 @@ class Ensemble:
             (TANGENT_MODES[self.tangent], int(renorm), int(gali), bool(megno),
              self.time - self.tangent_start),
             float(bound),
-            (rec["shared"], rec["members"], traj, rec["logs"], rec["gali"], rec["megno"]),
+            (rec["shared"], rec["members"], traj, rec["logs"], rec["gali"], rec["megno"],
+             rec["work"], wsamples),
+            (self.damping > 0.0, self.damping, self.weighted, "integral" in record),
         )  # fmt: skip
         fails = (np.zeros(Rp, dtype=np.int64), np.zeros(Rp), np.zeros(Rp))  # segment, H, worst
         chunk = max(1, math.ceil(S / 100))
@@ -281,7 +316,7 @@ class Ensemble:
         self.segments_done += S
         self.time += S * segment_time
         rec = {name: a[:R] for name, a in rec.items()}
-        traj, worst = traj[:R], fails[2][:R]
+        traj, worst, wsamples = traj[:R], fails[2][:R], wsamples[:R]
         return Records(
             shared=rec["shared"] if "shared" in record else None,
             members=rec["members"] if "members" in record else None,
@@ -290,23 +325,26 @@ class Ensemble:
             gali=rec["gali"] if gali else None,
             megno=rec["megno"] if megno else None,
             worst=worst,
+            work=rec["work"] if "work" in record else None,
+            work_samples=wsamples if samples and "work" in record else None,
+            integral=self.diss[1].copy() if "integral" in record else None,
         )
 
     def _advance(self, layout: _Layout, start, stop, fixed, fails) -> None:
         """Segments [start, stop) of every run laid out by ``layout`` (blocks, threads):
         the runs' own arrays, or copies in the layout's columns that are written back."""
-        weights, tangent, bound, rec = fixed
-        own = (self.q, self.v, self.dq, self.dv, self.logs, self.meg, self.table)
+        weights, tangent, bound, rec, damp = fixed
+        own = (self.q, self.v, self.dq, self.dv, self.logs, self.meg, self.diss, self.table)
         state = [layout.gather(a) for a in own]
         h0, status = (layout.by_row(a) for a in (self.h0, self.status))
         rows = layout.rows
         fail_segment, fail_energy, worst = (a[:rows] for a in fails)
-        Q, V, DQ, DV, logs, meg, table = state
+        Q, V, DQ, DV, logs, meg, diss, table = state
         try:
             self.module.advance(
                 Q, V, DQ, DV, table, weights, start, stop, layout.compiled, tangent, logs, meg,
                 (h0, bound, status, fail_segment, fail_energy, worst),
-                tuple(a[:rows] if isinstance(a, np.ndarray) else a for a in rec),
+                tuple(a[:rows] if isinstance(a, np.ndarray) else a for a in rec), damp, diss,
             )  # fmt: skip
         finally:
             for mine, advanced in zip(own[:-1], state[:-1], strict=True):
@@ -347,7 +385,8 @@ class Ensemble:
         where = f"run {r} at t = {t:.6g} ({unit} {seg_base + seg})"
         raise audit_error(where, self.status[r] == _NONFINITE, float(fail_energy[r]),
                           float(self.h0[r]), bound, ("the step is too large for this "
-                          "stiffness", "use a smaller dt or tolerance"))  # fmt: skip
+                          "stiffness", "use a smaller dt or tolerance"),
+                          "H + W" if self.damping else "H")  # fmt: skip
 
 
 def earliest_failure(status: np.ndarray, fail_segment: np.ndarray) -> int | None:
@@ -360,15 +399,19 @@ def earliest_failure(status: np.ndarray, fail_segment: np.ndarray) -> int | None
 
 
 def audit_error(where: str, nonfinite: bool, H: float, H0: float, bound: float,
-                advice: tuple[str, str]) -> Exception:  # fmt: skip
+                advice: tuple[str, str], audited: str = "H") -> Exception:  # fmt: skip
     """The error of a run that failed the energy audit at ``where``: a non-finite state,
-    or a relative total-energy error over ``bound``; ``advice`` = (what to say for each)."""
+    or a relative total-energy error over ``bound``; ``advice`` = (what to say for each).
+    ``audited`` names what is conserved: the energy H, or with damping H + W (the energy
+    plus the work dissipated), whose value ``H`` is then."""
+    what = "total energy" if audited == "H" else "energy plus dissipated work"
     if nonfinite:
-        return NonFiniteStateError(f"{where}: the state became non-finite (total energy "
+        return NonFiniteStateError(f"{where}: the state became non-finite ({what} "
                                    f"{H!r}, started at {H0!r}); {advice[0]}")  # fmt: skip
     err = abs(H - H0) / (abs(H0) or 1.0)
-    return EnergyDriftError(f"{where}: relative total-energy error {err:.3g} > bound "
-                            f"{bound:.3g} (H = {H!r}, H0 = {H0!r}); {advice[1]}")  # fmt: skip
+    error = "total-energy error" if audited == "H" else f"error of {what}"
+    return EnergyDriftError(f"{where}: relative {error} {err:.3g} > bound "
+                            f"{bound:.3g} ({audited} = {H!r}, H0 = {H0!r}); {advice[1]}")  # fmt: skip
 
 
 def _per_run_steps(dt, steps, runs: int, renorm: int):

@@ -120,24 +120,51 @@ def _inverse_masses(system: SeparableSystem) -> tuple[dict[sp.Symbol, sp.Symbol]
     return names, [f"{names[c].name} = {_p(1 / m)}" for c, m in masses.items() if m.is_number]
 
 
+def _damping_shares(system: SeparableSystem) -> dict[str, sp.Expr]:
+    """The mass ratios of the damping's pair flows, by the name a kernel loads them under:
+    for a member coordinate c damped against p, the shares m_p/(m_c + m_p) and
+    m_c/(m_c + m_p) of a change of their relative velocity and the reduced mass; for one
+    damped on its own, its mass."""
+    if system.damping is None:
+        return {}
+    masses, out = _masses(system), {}
+    for c, partner in system.damping.pairs:
+        if partner is None:
+            out[f"dmass_{c.name}"] = masses[c]
+            continue
+        total = masses[c] + masses[partner]
+        out[f"dshare_{c.name}"] = sp.simplify(masses[partner] / total)
+        out[f"dshare_{partner.name}_{c.name}"] = sp.simplify(masses[c] / total)
+        out[f"dreduced_{c.name}"] = sp.simplify(masses[c] * masses[partner] / total)
+    return out
+
+
 def _table_rows(system: SeparableSystem) -> list[tuple[str, sp.Expr]]:
     """Rows of the per-run parameter table: each parameter, then each distinct inverse mass
     that depends on the parameters (1/mu for the sink), so a kernel divides by a mass once
-    per run rather than once per particle and step."""
+    per run rather than once per particle and step, then the damping's mass ratios that
+    depend on the parameters (:func:`_damping_shares`)."""
     rows = [(p.name, p) for p in system.params]
     for m in dict.fromkeys(m for m in _masses(system).values() if not m.is_number):
         rows.append((f"inverse mass {m}", 1 / m))
+    rows += [(name, e) for name, e in _damping_shares(system).items() if not e.is_number]
     return rows
 
 
 def _params(system: SeparableSystem) -> list[str]:
-    """Per-run loads of the table rows, each parameter and im_<coordinate> (put inside a
-    ``for b`` loop by :func:`_loop`, which keeps the ones its body uses)."""
+    """Per-run loads of the table rows, each parameter, im_<coordinate> and the damping's
+    ratios (put inside a ``for b`` loop by :func:`_loop`, which keeps the ones its body
+    uses)."""
     rows = _table_rows(system)
     index = {e: i for i, (_, e) in enumerate(rows)}
+    where = {name: i for i, (name, _) in enumerate(rows)}
     lines = [f"{p.name} = P[{i}, b]" for i, p in enumerate(system.params)]
-    return lines + [
+    lines += [
         f"im_{c.name} = P[{index[1 / m]}, b]" for c, m in _masses(system).items() if not m.is_number
+    ]
+    return lines + [
+        f"{name} = {_p(e) if e.is_number else f'P[{where[name]}, b]'}"
+        for name, e in _damping_shares(system).items()
     ]
 
 
@@ -352,9 +379,94 @@ def _energies(system: SeparableSystem) -> list[str]:
     return body
 
 
+def _shared_energy(system: SeparableSystem) -> list[str]:
+    """Body of ``shared_energy``: the shared coordinates' energy (the container's), kinetic
+    plus shared terms, in the order of the ``energies`` kernel (the same bits)."""
+    body = ["B = q.shape[1]"]
+    kin = " + ".join(
+        f"0.5*({_p(m)})*v[{i}, b]*v[{i}, b]" for i, m in enumerate(system.shared_masses)
+    )
+    body += _loop([f"shared[b] = {kin}"], False, params=_params(system))
+    for term in system.shared_terms:
+        assign, (value,) = _cse([term.value], "t")
+        inner = _load(system, False) + _local_lines(term) + assign + [f"shared[b] += {value}"]
+        body += _loop(inner, False, params=_params(system))
+    return body
+
+
+def _damping_factors(system: SeparableSystem, im) -> list[str]:
+    """Body of ``damping_factors``: the decay factors of the exact pair flows over ``tau``
+    at the positions q (see :class:`~sinktheory.engine.systems.Damping`)."""
+    damping = system.damping
+    if damping is None:
+        return ["return"]
+    if len(system.member_terms) != 1:
+        raise ValueError("damping weights are printed for one member term")
+    (term,) = system.member_terms
+    weight = sp.Symbol("wgt_")
+    outs = [damping.weight * term.value]
+    for c, partner in damping.pairs:
+        rate = im[c] + (im[partner] if partner is not None else 0)
+        outs.append(rate)
+    assign, (scaled, *rates) = _cse(outs, "t")
+    inner = _load(system, True) + _local_lines(term) + assign
+    inner.append(f"{weight} = c0 * ({scaled}) if weighted else c0")
+    for (c, partner), rate in zip(damping.pairs, rates, strict=True):
+        row = f"{system.member.index(c)} * K + j"
+        if partner is None:  # the velocity decays: its factor exp(-c t / m) - 1
+            inner.append(f"decay[{row}, b] = math.expm1(-{weight} * ({rate}) * tau)")
+        else:  # the relative velocity decays: 1 - exp(-c (1/m + 1/M) t)
+            inner.append(f"decay[{row}, b] = -math.expm1(-{weight} * ({rate}) * tau)")
+    return ["B = q.shape[1]", "K = members_of(q.shape[0])"] + _loop(
+        inner, True, params=_params(system)
+    )
+
+
+def _dissipate(system: SeparableSystem) -> list[str]:
+    """Body of ``dissipate``: the damping flow with the positions frozen, the exact pair
+    flows of members 1..K then K..1 (each over half the time of the factors ``decay``), the
+    work each run loses into ``work`` (set, not added).  The mass ratios are rows of the
+    parameter table (:func:`_damping_shares`), so nothing is divided here."""
+    damping = system.damping
+    body = ["B = v.shape[1]", "K = members_of(v.shape[0])", "for b in range(B):",
+            "    work[b] = 0.0"]  # fmt: skip
+    if damping is None:
+        return body
+    inner = []
+    for c, partner in damping.pairs:
+        row = f"{system.member.index(c)} * K + j"
+        mine = f"v[{_index(system, c)}, b]"
+        if partner is None:
+            inner += [
+                f"vd_ = {mine}",
+                f"dv_ = decay[{row}, b] * vd_",
+                f"{mine} = vd_ + dv_",
+                f"work[b] += 0.5 * dmass_{c.name} * (vd_ * vd_ - (vd_ + dv_) * (vd_ + dv_))",
+            ]
+        else:
+            theirs = f"v[{_index(system, partner)}, b]"
+            inner += [
+                f"w_ = {mine} - {theirs}",
+                f"dw_ = -decay[{row}, b] * w_",
+                f"{mine} += dw_ * dshare_{c.name}",
+                f"{theirs} -= dw_ * dshare_{partner.name}_{c.name}",
+                "wn_ = w_ + dw_",
+                f"work[b] += 0.5 * dreduced_{c.name} * (w_ * w_ - wn_ * wn_)",
+            ]
+    loop = _loop(inner, False, params=_params(system))
+    return body + [
+        "for jj in range(2 * K):",
+        "    j = jj if jj < K else 2 * K - 1 - jj",
+        *("    " + s for s in loop),
+    ]
+
+
 #: Names the kernels use for their arguments and loop variables: no coordinate, parameter
 #: or atom of a system may take one (the circular well's atom w met the work array w once).
-RESERVED = frozenset("q v a h P c dq dv pull total shared members D B K M i j b m".split())
+RESERVED = frozenset(
+    "q v a h P c dq dv pull total shared members D B K M i j b m "
+    "decay c0 weighted tau work jj wgt_ vd_ dv_ w_ dw_ wn_".split()
+)
 
 
 def _check_names(system: SeparableSystem) -> None:
@@ -380,6 +492,7 @@ def render(system: SeparableSystem, banner: str) -> str:
         f"SHARED = {len(system.shared)}\nMEMBER_COORDS = {C}\nNPARAMS = {len(system.params)}\n"
         f"NTABLE = {len(_table_rows(system))}\n"
         f"SHARED_HESSIAN = {shared_rows}\nMEMBER_HESSIAN = {member_rows}\n"
+        f"DAMPED = {system.damping is not None}\n"
     )
     sizes = _function(
         "members_of",
@@ -444,6 +557,27 @@ def render(system: SeparableSystem, banner: str) -> str:
             "h, dq, dv, c, P, pull",
             "tangent_kick of a single run, bitwise; pull (SHARED, K) is work space.",
             im_lines + _tangent_kick(system, im, one=True),
+        ),
+        _function(
+            "shared_energy",
+            "q, v, P, shared",
+            "The shared coordinates' energy (kinetic and shared terms) per run.",
+            _shared_energy(system),
+        ),
+        _function(
+            "damping_factors",
+            "q, P, c0, weighted, tau, decay",
+            "Decay factors decay[member coordinate * K + member, run] of the damping's exact "
+            "pair flows over tau at the positions q (coefficient c0, contact-weighted or "
+            "not).",
+            im_lines + _damping_factors(system, im),
+        ),
+        _function(
+            "dissipate",
+            "v, decay, P, work",
+            "The damping flow on the velocities v in place (positions frozen), members 1..K "
+            "then K..1 with the factors decay; the energy each run loses into work.",
+            _dissipate(system),
         ),
         _function(
             "energies",

@@ -29,7 +29,7 @@ import sympy as sp
 
 from .. import symbolic as S
 
-__all__ = ["henon_heiles", "SeparableSystem", "sink_system", "Term", "two_dof_duffing"]
+__all__ = ["Damping", "henon_heiles", "SeparableSystem", "sink_system", "Term", "two_dof_duffing"]
 
 
 @dataclass(frozen=True)
@@ -67,6 +67,27 @@ class Term:
 
 
 @dataclass(frozen=True)
+class Damping:
+    """Linear damping of the members' velocities, which the engine may switch on.
+
+    Each member coordinate in ``pairs`` is damped either relative to a shared coordinate
+    (a dashpot between the member and, say, the container: the pair's momentum is kept) or
+    on its own (``None``: the coordinate's partner does not move along it).  The force on
+    member j's coordinate is -c_j (its velocity minus its partner's), with
+
+        c_j = c0 * weight * (the member's potential terms at its position)   (contact)
+        c_j = c0                                                             (viscous)
+
+    so a contact weight vanishes where the member is far from the walls.  With the
+    positions frozen this field is linear in the velocities and exactly solvable pair by
+    pair, which is how the engine integrates it (:mod:`sinktheory.engine._stepper`).
+    """
+
+    pairs: tuple[tuple[sp.Symbol, sp.Symbol | None], ...]
+    weight: sp.Expr
+
+
+@dataclass(frozen=True)
 class SeparableSystem:
     """H = kinetic + sum of terms, with shared and member coordinates (see module doc).
 
@@ -84,6 +105,7 @@ class SeparableSystem:
     params: tuple[sp.Symbol, ...] = ()
     shared_terms: tuple[Term, ...] = ()
     member_terms: tuple[Term, ...] = field(default=())
+    damping: Damping | None = None
 
 
 def _well_term(shape: str, n: int) -> Term:
@@ -160,6 +182,8 @@ def sink_system(shape: str, n: int) -> SeparableSystem:
         params=(S.alpha, S.beta, S.gamma, S.mu),
         shared_terms=(Term.plain((X,), (X,), X**2 / 2),),
         member_terms=(_well_term(shape, n),),
+        # the wall term 2 n V / gamma: about 1 at the wall, (1/2)^(2n) half-way to it
+        damping=Damping(pairs=((u, X), (S.y, None)), weight=2 * sp.Integer(n) / S.gamma),
     )
 
 

@@ -43,8 +43,8 @@ def test_cycles_are_found_through_any_number_of_modules():
 def test_the_longest_listed_name_places_a_module():
     table = layers.read_table()
     names = [layer.name for layer in table]
-    assert names[layers.place("sinktheory.design.inelastic", table)] == "methods"
-    assert names[layers.place("sinktheory.design.point", table)] == "studies"
+    assert names[layers.place("sinktheory.nnm.agreement", table)] == "studies"
+    assert names[layers.place("sinktheory.nnm.shooting", table)] == "analyses"
     assert layers.place("sinktheory.nowhere", table) is None
 
 

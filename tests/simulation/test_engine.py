@@ -233,6 +233,39 @@ def test_runs_with_their_own_parameters_equal_separate_ensembles():
         assert np.array_equal(together[3][r], alone[3][0])
 
 
+@pytest.mark.parametrize("kind", ["contact", "viscous"])
+def test_damped_runs_are_bitwise_for_any_block_size_and_chunking(kind):
+    """With the damping on, each run's numbers (state, work, the shared energy's integral)
+    are the same bits in any block or thread and whether the segments run in one call or
+    in pieces (the factors and the trapezoid's last value are recomputed, not carried)."""
+    sink, q, v = _fig8_like(5)
+    results = []
+    for block, pieces in [(1, (3,)), (5, (3,)), (2, (1, 2))]:
+        ens = Ensemble(sink_name("flat", 4), q, v, engine_params(sink), damping=0.7,
+                       damping_kind=kind)  # fmt: skip
+        for segments in pieces:
+            rec = ens.run(get_scheme("blanes-moan6"), dt=2 * np.pi / 400, steps=400,
+                          segments=segments, record=("shared", "work", "integral"),
+                          block=block)  # fmt: skip
+        results.append((ens.q, ens.v, rec.work[:, -1], rec.integral))
+    assert np.all(results[0][2] > 0)
+    for other in results[1:]:
+        for a, b in zip(results[0], other, strict=True):
+            assert np.array_equal(a, b)
+
+
+def test_damping_is_refused_where_it_cannot_apply():
+    sink, q, v = _fig8_like(2)
+    with pytest.raises(ParameterError, match="damping"):
+        Ensemble(sink_name("flat", 4), q, v, engine_params(sink), damping=-1.0)
+    with pytest.raises(ParameterError, match="damping_kind"):
+        Ensemble(sink_name("flat", 4), q, v, engine_params(sink), damping=1.0,
+                 damping_kind="magnetic")  # fmt: skip
+    hh = np.array([[0.0], [0.1]]), np.array([[0.3], [0.0]])
+    with pytest.raises(ParameterError, match="has no damping"):
+        Ensemble("henon_heiles", *hh, [], damping=1.0)
+
+
 def test_parameters_of_the_wrong_shape_are_refused():
     sink, q, v = _fig8_like(3)
     with pytest.raises(ValueError, match="params"):

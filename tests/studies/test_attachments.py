@@ -42,7 +42,7 @@ def test_linear_attachment_is_the_damped_two_dof_system():
     with expm of the 4 x 4 first-order system, W from its energy balance H0 - H(t), to the
     splitting's second-order error: below 1.5e-6 at dt = 0.01 (W ~ 0.026), 4x smaller at
     half the step.  The impulsive start (start_rows) is impulse_response's."""
-    from sinktheory.design.inelastic import simulate_inelastic
+    from sinktheory.damped import simulate_inelastic
 
     att = Attachment("nes", alpha=1.2, beta=0.2, n=1, mass=0.2)
     mu, c, E = 0.2, 0.05, 0.1

@@ -139,7 +139,7 @@ def test_damping_kind_viscous_gives_the_well_the_same_dashpot():
     """damping_kind = viscous: the well's particles get the 1-D attachments' dashpot, c
     shared by the k particles (c/k each): the point equals simulate_inelastic with that
     dashpot to round-off; contact stays the wall contact; the NES does not change."""
-    from sinktheory.design.inelastic import simulate_inelastic
+    from sinktheory.damped import simulate_inelastic
     from sinktheory.design.point import compute, settings_of, sink_of
 
     params = {**BASE, "particles": 2, "damping": 0.05, "damping_kind": ["contact", "viscous"]}

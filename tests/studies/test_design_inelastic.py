@@ -12,8 +12,8 @@ import pytest
 
 from sinktheory import RunSettings, Sink, Well
 from sinktheory.canonical import FIG8_WELL
-from sinktheory.design.inelastic import _dissipate, _factors, simulate_inelastic
-from sinktheory.design.inelastic_reference import simulate_inelastic_reference
+from sinktheory.damped import simulate_inelastic
+from sinktheory.design.inelastic_reference import simulate_inelastic_reference, solve_damped_ivp
 from sinktheory.errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from sinktheory.simulate import simulate
 
@@ -101,43 +101,10 @@ def test_compiled_equals_the_numpy_splitting():
     assert fast.max_audit_error == pytest.approx(slow.max_audit_error, rel=1e-3)
 
 
-def _damped_reference(sink, settings, damping, periods):
-    """solve_ivp (DOP853, rtol 1e-12) of the same damped equations, with W and the
-    integral of E_c appended: an independent integrator of the same model."""
-    from scipy.integrate import solve_ivp
-
-    from sinktheory.ensemble import random_positions, start_state
-    from sinktheory.simulate import first_order_rhs
-
-    k, mu, w = sink.particles, sink.mu, sink.well
-    f = first_order_rhs(sink)
-
-    def rhs(t, z):
-        dz = np.concatenate((f(t, z[:-2]), [0.0, 0.0]))
-        X, Xd = z[0], z[1]
-        u, y = z[2 : 2 + k], z[2 + k : 2 + 2 * k]
-        ud, yd = z[2 + 2 * k : 2 + 3 * k], z[2 + 3 * k : 2 + 4 * k]
-        c = damping * 2 * w.n * np.asarray(w.potential(u - X, y), float) / w.gamma
-        rel = ud - Xd
-        dz[2 + 2 * k : 2 + 3 * k] -= c * rel / mu
-        dz[1] += np.sum(c * rel)
-        dz[2 + 3 * k : 2 + 4 * k] -= c * yd / mu
-        dz[-2] = np.sum(c * (rel**2 + yd**2))
-        dz[-1] = 0.5 * (Xd**2 + X**2)
-        return dz
-
-    z0 = start_state(sink, settings.energy, random_positions(settings, k))[0]
-    T = 2 * np.pi * periods
-    sol = solve_ivp(rhs, (0, T), np.concatenate((z0, [0.0, 0.0])), "DOP853",
-                    rtol=1e-12, atol=1e-14)  # fmt: skip
-    z = sol.y[:, -1]
-    return 0.5 * (z[1] ** 2 + z[0] ** 2), z[-2], z[-1]
-
-
 def test_against_solve_ivp_second_order_and_audited():
     sink = Sink(FIG8_WELL, particles=1, mass=0.2)
     settings = RunSettings(runs=1, periods=1, seed=2)
-    ec_ref, w_ref, int_ref = _damped_reference(sink, settings, 2.0, 1)
+    ec_ref, w_ref, int_ref = solve_damped_ivp(sink, settings, 2.0, 1)
     assert w_ref > 1e-3  # the contact dissipates noticeably over one period
     errors = []
     for steps in (200, 400):
@@ -155,8 +122,10 @@ def test_against_solve_ivp_second_order_and_audited():
 
 
 def test_dissipative_stage_removes_exactly_the_work_it_counts():
-    """One D stage, two particles sharing the container: the engine's energy falls by
-    exactly the work W counted (positions frozen); momentum in x is kept."""
+    """One D stage of the engine's printed kernels, two particles sharing the container:
+    the energy falls by exactly the work W counted (positions frozen), momentum in x is
+    kept, and with the viscous weight the relative velocity decays as exp(-c (1+mu)/mu t)
+    (the exact solution, computed here independently)."""
     from sinktheory.engine.cache import load
     from sinktheory.ensemble import engine_name, engine_params
 
@@ -164,29 +133,33 @@ def test_dissipative_stage_removes_exactly_the_work_it_counts():
     params = engine.table_of(engine_params(SINK2), 6)
     rng = np.random.default_rng(0)
     q, vel = rng.uniform(-0.3, 0.3, (5, 6)), rng.uniform(-1, 1, (5, 6))
-    c = rng.uniform(0.5, 3.0, (2, 6))
     mu = SINK2.mu
-    ex, ey = np.empty((2, 6)), np.empty((2, 6))
-    _factors(c, mu, 0.025, ex, ey)
-    after, work = vel.copy(), np.empty(6)
-    _dissipate(after, ex, ey, mu, work)
-    h0, h1 = engine.block_energies(q, vel, params)[0], engine.block_energies(q, after, params)[0]
-    np.testing.assert_allclose(h0 - h1, work, rtol=1e-12, atol=1e-15)
-    assert np.all(work > 0)
+    for weighted in (True, False):
+        f, after, work = np.empty((4, 6)), vel.copy(), np.empty(6)
+        engine.damping_factors(q, params, 2.5, weighted, 0.025, f)
+        engine.dissipate(after, f, params, work)
+        h0 = engine.block_energies(q, vel, params)[0]
+        h1 = engine.block_energies(q, after, params)[0]
+        np.testing.assert_allclose(h0 - h1, work, rtol=1e-12, atol=1e-15)
+        assert np.all(work > 0)
+        np.testing.assert_allclose(
+            vel[0] + mu * vel[1:3].sum(0), after[0] + mu * after[1:3].sum(0), rtol=1e-14
+        )
+    # one particle (a state of 3 coordinates), constant c
+    one, w1, f1 = vel[[0, 1, 3]].copy(), np.empty(6), np.empty((2, 6))
+    q1 = q[[0, 1, 3]].copy()
+    engine.damping_factors(q1, params, 2.5, False, 0.025, f1)
+    engine.dissipate(one, f1, params, w1)
     np.testing.assert_allclose(
-        vel[0] + mu * vel[1:3].sum(0), after[0] + mu * after[1:3].sum(0), rtol=1e-14
+        one[1] - one[0], (vel[1] - vel[0]) * np.exp(-2.5 * (1 + mu) / mu * 0.05), rtol=1e-13
     )
-    # one particle, constant c: the relative velocity decays exactly as exp(-c (1+mu)/mu t)
-    one, w1 = vel[:3].copy(), np.empty(6)
-    _dissipate(one, ex[:1], ey[:1], mu, w1)
-    np.testing.assert_allclose(
-        one[1] - one[0], (vel[1] - vel[0]) * np.exp(-c[0] * (1 + mu) / mu * 0.05), rtol=1e-13
-    )
+    np.testing.assert_allclose(one[2], vel[3] * np.exp(-2.5 / mu * 0.05), rtol=1e-13)
 
 
 def test_audit_names_run_and_time():
     settings = RunSettings(runs=3, periods=2, seed=1)
-    with pytest.raises(EnergyDriftError, match=r"run \d: \|H \+ W - H0\|/H0 = .* at t = 1 T"):
+    with pytest.raises(EnergyDriftError, match=r"run \d at t = 6.28319 \(period 1\): relative "
+                       r"error of energy plus dissipated work .* \(H \+ W = "):  # fmt: skip
         simulate_inelastic(SINK2, settings, damping=1.0, tol=1e-6, energy_bound=1e-14)
 
 
@@ -194,7 +167,7 @@ def test_a_step_too_large_stops_with_the_run_and_time():
     """dt = T/8 cannot resolve the wall of n = 10: the audit (or the finiteness check)
     stops the run and names it, rather than returning numbers."""
     sink = Sink(Well(0.5, 0.3, 10), particles=1, mass=0.2)
-    with pytest.raises((EnergyDriftError, NonFiniteStateError), match=r"run \d: .*t = \d+ T"):
+    with pytest.raises((EnergyDriftError, NonFiniteStateError), match=r"run \d at t = .*period \d"):
         simulate_inelastic(sink, RunSettings(runs=2, periods=3), damping=1.0, dt=2 * np.pi / 8)
 
 

@@ -1,4 +1,4 @@
-"""Damped particles: a compiled integrator with an audited dissipation.
+"""Damped particles: the engine with its damping on, and an audited dissipation.
 
 The paper notes that real absorption is enhanced by inelastic collisions.  Here particle
 j dissipates through a viscous force on its velocity *relative to the container*,
@@ -54,15 +54,14 @@ Equivalent damping ratio of the container: the zeta of a linear dashpot on the c
 (for a lightly damped oscillator <Xdot^2> = E_c, whose dashpot power is 2 zeta omega
 Xdot^2); the integral is the trapezoid rule over the steps.
 
-Implementation: one numba function (``error_model="numpy"``, single-threaded, vectorised
-over runs: state arrays (coordinate, run), runs innermost) that calls the engine's
-generated kernels of the system (``accelerations``, ``energies``, passed in as compiled
-functions).  It is compiled once per process and engine (a few seconds; numba cannot
-cache a function whose arguments are other compiled functions).  Each run's arithmetic
-is independent of the other runs, so a seed gives the same numbers whatever the number
-of runs around it.  :mod:`sinktheory.design.inelastic_reference` is the NumPy version of
-the same splitting: the independent check of this kernel in the tests and the baseline
-of ``benchmarks/bench_inelastic.py``.
+Implementation: the ensemble engine with its damping switched on
+(:class:`sinktheory.engine.core.Ensemble`, ``damping=``): the same compiled stepper,
+blocks and threads as :func:`sinktheory.simulate.simulate`, with the damping flow D and
+the dissipated work printed per system from its declared
+:class:`~sinktheory.engine.systems.Damping`.  Each run's arithmetic is independent of the
+other runs, so a seed gives the same numbers whatever the number of runs around it.
+:mod:`sinktheory.design.inelastic_reference` is the NumPy version of the same splitting:
+the independent check in the tests and the baseline of ``benchmarks/bench_inelastic.py``.
 
 Sampling within a period (``samples_per_period`` = s > 0, for time-frequency maps and
 the time a share of the energy takes to go): the container's X and Xdot, the work W and
@@ -90,15 +89,13 @@ Examples
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
-import numba
 import numpy as np
 
-from .. import validation as v
-from ..engine.cache import load
-from ..ensemble import (
+from . import validation as v
+from .engine.cache import load
+from .ensemble import (
     check_sink,
     default_energy_bound,
     engine_name,
@@ -107,15 +104,13 @@ from ..ensemble import (
     split_values,
     start_state,
 )
-from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
-from ..integrators import get_scheme
-from ..layout import StateLayout
-from ..model import DAMPING_KINDS, RunSettings, Sink
-from ..progress import ProgressBar
-from ..runstats import mean_stderr
-from ..stepsize import PERIOD, check_tol, resolve_step
-
-_RUNNING, _DRIFT, _NONFINITE = 0, 1, 2
+from .errors import EnergyDriftError, NonFiniteStateError, ParameterError
+from .integrators import get_scheme
+from .layout import StateLayout
+from .model import DAMPING_KINDS, RunSettings, Sink
+from .engine.core import Ensemble
+from .runstats import mean_stderr
+from .stepsize import PERIOD, check_tol, resolve_step
 
 
 @dataclass(frozen=True)
@@ -181,7 +176,6 @@ class Setup:
     h0: np.ndarray
     engine: object
     params: np.ndarray
-    scale: float
     damping: float
     bound: float
     method: str
@@ -245,9 +239,8 @@ def setup(
     if samples:
         steps = -(-steps // samples) * samples
         dt, stride = PERIOD / steps, steps // samples
-    w = sink.well
-    return Setup(q, vel, h0, engine, params, 2.0 * w.n / w.gamma, damping, bound, method, dt,
-                 steps, tol, kind, stride)  # fmt: skip
+    return Setup(q, vel, h0, engine, params, damping, bound, method, dt, steps, tol, kind,
+                 stride)  # fmt: skip
 
 
 def check_audit(total, work, h0, bound: float, period: int, dt: float, damping: float):
@@ -300,156 +293,6 @@ def _sampled(s: Setup, samples) -> dict:
     times = s.dt * s.stride * np.arange(xs.shape[1])
     return {"sample_times": times, "container_x": xs, "container_v": vs,
             "sample_dissipated": ws, "transverse": ys}  # fmt: skip
-
-
-# --------------------------------------------------------------------------- compiled kernel
-@numba.njit(error_model="numpy")
-def _factors(c, mu, half, ex, ey):
-    """Decay factors of the exact pair flows over ``half`` for contact coefficients c
-    (K, R): ex = 1 - exp(-c (1 + mu)/mu half) of the relative x velocity, ey =
-    exp(-c/mu half) - 1 of ydot (both exactly 0 for c = 0)."""
-    K, R = c.shape
-    rel = 1.0 + mu
-    for j in range(K):
-        for r in range(R):
-            ex[j, r] = -math.expm1(-c[j, r] * rel / mu * half)
-            ey[j, r] = math.expm1(-c[j, r] / mu * half)
-
-
-@numba.njit(error_model="numpy")
-def _weights(energies, q, zero, P, scale, damping, c, total, shared, members):
-    """c[j, r] = damping * s_j: the contact coefficients at positions q (zero velocities
-    make the members' energies the potential terms exactly)."""
-    energies(q, zero, P, total, shared, members)
-    K, R = members.shape
-    for j in range(K):
-        for r in range(R):
-            c[j, r] = damping * (scale * members[j, r])
-
-
-@numba.njit(error_model="numpy")
-def _dissipate(v, ex, ey, mu, work):
-    """D(tau) on the velocities v (D, R) in place, ex and ey the :func:`_factors` of the
-    positions over tau/2; the work of each run into ``work`` (set, not added).  Exact pair
-    flows, particles 1..K over tau/2 then K..1 over tau/2."""
-    K, R = ex.shape
-    rel = 1.0 + mu
-    reduced = mu / rel
-    for r in range(R):
-        work[r] = 0.0
-    for jj in range(2 * K):
-        j = jj if jj < K else 2 * K - 1 - jj
-        for r in range(R):
-            # x: relative velocity decays, total momentum mu udot + Xdot kept
-            w = v[1 + j, r] - v[0, r]
-            dw = -ex[j, r] * w
-            v[1 + j, r] += dw / rel
-            v[0, r] -= mu * dw / rel
-            w_new = w + dw
-            # y: the container does not move in y
-            yd = v[1 + K + j, r]
-            dy = ey[j, r] * yd
-            v[1 + K + j, r] = yd + dy
-            work[r] += 0.5 * reduced * (w * w - w_new * w_new) + 0.5 * mu * (
-                yd * yd - (yd + dy) ** 2
-            )
-
-
-@numba.njit(error_model="numpy")
-def _advance(accelerations, energies, q, v, P, scheme, dissipation, j0, j1, audit, rec,
-             sampling):  # fmt: skip
-    """Advance every run over periods j0+1..j1 in place; record at each period end.
-
-    scheme = (a, b, dt, steps); dissipation = (on, damping, scale, mu, weighted) (the
-    contact weight when weighted, else the constant coefficient damping); audit = (h0,
-    bound, work, integral, ec_prev) (the last three carried between calls);
-    rec = (e_c, h_t, w_t) indexed [run, period]; sampling = (stride, xs, vs, ws, ys)
-    indexed [run, sample], sample i after i * stride steps (stride 0: none).  Returns
-    (status, period, run) of the first period with a failing run (the worst one), or
-    (0, j1, -1).
-    """
-    ah, bh, dt, steps = scheme
-    on, damping, scale, mu, weighted = dissipation
-    h0, bound, work, integral, ec_prev = audit
-    e_c, h_t, w_t = rec
-    stride, xs, vs, ws, ys = sampling
-    D, R = q.shape
-    K = (D - 1) // 2
-    S = ah.shape[0]
-    acc = np.empty((D, R))
-    zero = np.zeros((D, R))
-    c = np.empty((K, R))
-    total = np.empty(R)
-    shared = np.empty(R)
-    members = np.empty((K, R))
-    ex = np.empty((K, R))
-    ey = np.empty((K, R))
-    local = np.empty(R)
-    half = 0.5 * (0.5 * dt)  # D(dt/2): pair flows over dt/4 each way
-    accelerations(q, acc, P)
-    if on:
-        if weighted:
-            _weights(energies, q, zero, P, scale, damping, c, total, shared, members)
-        else:
-            c[:, :] = damping
-        _factors(c, mu, half, ex, ey)
-    for j in range(j0 + 1, j1 + 1):
-        for i_step in range(steps):
-            if on:  # the factors of the positions at the end of the previous step
-                _dissipate(v, ex, ey, mu, local)
-                for r in range(R):
-                    work[r] += local[r]
-            for stage in range(S):
-                ck = bh[stage] * dt
-                cd = ah[stage] * dt
-                for i in range(D):
-                    for r in range(R):
-                        v[i, r] += ck * acc[i, r]
-                        q[i, r] += cd * v[i, r]
-                accelerations(q, acc, P)
-            ck = bh[S] * dt
-            for i in range(D):
-                for r in range(R):
-                    v[i, r] += ck * acc[i, r]
-            if on:
-                if weighted:
-                    _weights(energies, q, zero, P, scale, damping, c, total, shared, members)
-                    _factors(c, mu, half, ex, ey)
-                _dissipate(v, ex, ey, mu, local)
-                for r in range(R):
-                    work[r] += local[r]
-            for r in range(R):
-                ec = 0.5 * (v[0, r] * v[0, r] + q[0, r] * q[0, r])
-                integral[r] += 0.5 * dt * (ec + ec_prev[r])
-                ec_prev[r] = ec
-            if stride and (i_step + 1) % stride == 0:
-                i = ((j - 1) * steps + i_step + 1) // stride
-                for r in range(R):
-                    xs[r, i] = q[0, r]
-                    vs[r, i] = v[0, r]
-                    ws[r, i] = work[r]
-                    far = 0.0
-                    for m in range(K):
-                        far = max(far, abs(q[1 + K + m, r]))
-                    ys[r, i] = far
-        energies(q, v, P, total, shared, members)
-        worst = -1
-        status = _RUNNING
-        largest = -1.0
-        for r in range(R):
-            e_c[r, j] = shared[r]
-            h_t[r, j] = total[r]
-            w_t[r, j] = work[r]
-            if not math.isfinite(total[r]):
-                if status != _NONFINITE:
-                    status, worst = _NONFINITE, r
-            elif status != _NONFINITE:
-                err = abs(total[r] + work[r] - h0[r]) / h0[r]
-                if err > bound and err > largest:
-                    status, worst, largest = _DRIFT, r, err
-        if status != _RUNNING:
-            return status, j, worst
-    return _RUNNING, j1, -1
 
 
 def simulate_inelastic(
@@ -510,39 +353,25 @@ def simulate_inelastic(
     s = setup(sink, settings, damping, method, dt, tol, energy_bound, damping_kind, start,
               samples_per_period)  # fmt: skip
     settings = RunSettings() if settings is None else settings
-    q, vel, h0 = s.q, s.vel, s.h0
-    runs, periods = q.shape[1], settings.periods
-    count = periods * s.steps // s.stride + 1 if s.stride else 1
-    samples = tuple(np.zeros((runs, count)) for _ in range(4))
-    samples[0][:, 0], samples[1][:, 0] = q[0], vel[0]
-    samples[3][:, 0] = np.abs(q[1 + sink.particles :]).max(axis=0)
-    e_c = np.empty((runs, periods + 1))
-    h_t = np.empty((runs, periods + 1))
-    w_t = np.zeros((runs, periods + 1))
-    total, shared, _ = s.engine.block_energies(q, vel, s.params)
-    e_c[:, 0], h_t[:, 0] = shared, total
-    work, integral = np.zeros(runs), np.zeros(runs)
-    ec_prev = 0.5 * (vel[0] * vel[0] + q[0] * q[0])
-    a, b = get_scheme(s.method).arrays()
-    scheme = (a, b, float(s.dt), int(s.steps))
-    dissipation = (bool(dissipative_stage), s.damping, s.scale, float(sink.mu),
-                   s.kind == "contact")  # fmt: skip
-    audit = (h0, s.bound, work, integral, ec_prev)
-    chunk = max(1, math.ceil(periods / 100))
-    bar = ProgressBar(periods, enabled=bool(progress), label="inelastic ")
-    try:
-        for first in range(0, periods, chunk):
-            stop = min(periods, first + chunk)
-            status, j, r = _advance(
-                s.engine.accelerations, s.engine.energies, q, vel, s.params, scheme,
-                dissipation, first, stop, audit, (e_c, h_t, w_t), (s.stride, *samples),
-            )  # fmt: skip
-            if status != _RUNNING:
-                check_audit(h_t[:, j], w_t[:, j], h0, s.bound, j, s.dt, s.damping)
-            bar.update(stop - first)
-    finally:
-        bar.close()
-    return result(s, e_c, h_t, w_t, integral, samples if s.stride else None)
+    ens = Ensemble(
+        engine_name(sink), s.q, s.vel, engine_params(sink), reference_energy=s.h0,
+        damping=s.damping if dissipative_stage else 0.0, damping_kind=s.kind,
+    )  # fmt: skip
+    out = ens.run(
+        get_scheme(s.method), dt=s.dt, steps=s.steps, segments=settings.periods,
+        record=("shared", "members", "work", "integral") + (("trajectory",) if s.stride else ()),
+        stride=s.stride, bound=s.bound, progress=bool(progress), label="inelastic ",
+        unit="period",
+    )  # fmt: skip
+    total = out.shared.copy()  # H in the order of the engine's energy kernel
+    for j in range(sink.particles):
+        total += out.members[:, :, j]
+    samples = None
+    if s.stride:
+        k, rows = sink.particles, out.trajectory
+        far = np.abs(rows[:, :, 2 + k : 2 + 2 * k]).max(axis=2)
+        samples = (rows[:, :, 0], rows[:, :, 1], out.work_samples, far)
+    return result(s, out.shared, total, out.work, out.integral, samples)
 
 
 __all__ = ["DAMPING_KINDS", "InelasticResult", "simulate_inelastic"]
