@@ -20,7 +20,7 @@ from sympy.printing.pycode import MpmathPrinter, PythonCodePrinter
 
 from . import symbolic as S
 
-__all__ = ["GENERATED_DIR", "GeometryPrinter", "ipow", "KernelPrinter", "render", "write"]
+__all__ = ["chain", "GENERATED_DIR", "GeometryPrinter", "ipow", "KernelPrinter", "render", "write"]
 
 GENERATED_DIR = Path(__file__).parent / "_generated"
 
@@ -31,7 +31,22 @@ _BANNER = (
 
 
 class KernelPrinter(PythonCodePrinter):
-    """Python printer for numba kernels: integer powers by multiplication."""
+    """The one printer of every compiled kernel (the generated modules here, the engine of
+    :mod:`sinktheory.engine.printer`, the adaptive step's wall kernel): integer powers by
+    multiplication, never through a floating-point exponent.  A fixed exponent k >= 3 is
+    written out as a product by repeated squaring with k in the text (straight-line code
+    the compiler vectorises; it merges the repeated squares), a symbolic integer
+    exponent (2n - 1, n a run-time value) becomes a call of the kernel helper ``ipow``,
+    and half-integer powers are products of ``math.sqrt``.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> x = sp.Symbol("x")
+    >>> p = KernelPrinter({"fully_qualified_modules": True, "standard": "python3"})
+    >>> p.doprint(x**5), p.doprint(x ** sp.Rational(-3, 2))
+    ('(((x*x)*(x*x))*x)', '(1.0/((math.sqrt(x)*math.sqrt(x))*math.sqrt(x)))')
+    """
 
     def _print_Pow(self, expr, rational=False):  # noqa: D102 - printer protocol
         base, exp = expr.base, expr.exp
@@ -40,6 +55,9 @@ class KernelPrinter(PythonCodePrinter):
             return f"math.sqrt({self._print(base)})"
         if exp == -sp.S.Half:
             return f"(1.0/math.sqrt({self._print(base)}))"
+        if exp.is_Rational and exp.q == 2:  # b^(k/2) = sqrt(b)^k
+            root = chain(f"math.sqrt({self._print(base)})", abs(int(exp.p)))
+            return f"(1.0/{root})" if exp < 0 else root
         if exp.is_integer:
             if exp.is_number:
                 k = int(exp)
@@ -49,13 +67,28 @@ class KernelPrinter(PythonCodePrinter):
                     return "1.0"
                 if k == 1:
                     return b
-                if k == 2:
-                    return f"({b}*{b})"
-                return f"ipow({self._print(base)}, {k})"
+                return chain(b, k)
         return super()._print_Pow(expr, rational=rational)
 
     def _print_ipow(self, expr):  # noqa: D102 - printer protocol
         return f"ipow({self._print(expr.args[0])}, {self._print(expr.args[1])})"
+
+
+def chain(b: str, k: int) -> str:
+    """The text of b^k (k >= 1, b already parenthesised) as a product by repeated
+    squaring.
+
+    Examples
+    --------
+    >>> chain("s", 7)
+    '((((s*s)*s)*((s*s)*s))*s)'
+    """
+    if k == 1:
+        return b
+    if k % 2 == 0:
+        h = chain(b, k // 2)
+        return f"({h}*{h})"
+    return f"({chain(b, k - 1)}*{b})"
 
 
 class ipow(sp.Function):  # noqa: N801 - printed as the kernel helper of that name

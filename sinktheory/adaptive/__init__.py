@@ -147,10 +147,11 @@ def check_eps(eps: object) -> float:
 def _walls_source(shape: str, n: int) -> str:
     """Source of ``walls(x, y, alpha, beta, gamma)`` -> (V, then r, r_x, r_y, r_xx, r_xy,
     r_yy of each wall ratio r of the shape), straight-line code after common
-    subexpression elimination."""
+    subexpression elimination, in the engine's kernel printer."""
     import sympy as sp
 
     from .. import symbolic as S
+    from ..engine.printer import cse_lines
 
     x, y = S.x, S.y
     exprs = [S.potential(shape).subs(S.n, n)]
@@ -161,9 +162,9 @@ def _walls_source(shape: str, n: int) -> str:
     extra = set().union(*(e.free_symbols for e in exprs)) - allowed
     if extra:
         raise ValueError(f"shape {shape!r}: wall ratios use {extra}, beyond x, y, alpha, beta")
-    pairs, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("c_"))
-    body = [f"    {s} = {sp.pycode(e)}" for s, e in pairs]
-    values = ", ".join(f"float({sp.pycode(e)})" for e in reduced)
+    lines, reduced = cse_lines(exprs, "c_")
+    body = [f"    {s}" for s in lines]
+    values = ", ".join(f"float({e})" for e in reduced)
     return (
         '@numba.njit(cache=True, error_model="numpy")\n'
         "def walls(x, y, alpha, beta, gamma):\n"

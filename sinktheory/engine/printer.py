@@ -21,8 +21,9 @@ innermost, so it vectorises across them; the members' pull on a shared coordinat
 the work rows ``pull`` and is summed after that loop in the order of the block kernel's
 sums, so the numbers are bitwise the same.
 
-followed by the system-independent stepper of :mod:`sinktheory.engine._stepper`.  Integer
-powers are printed as products by repeated squaring with the exponent fixed in the text, so
+followed by the system-independent stepper of :mod:`sinktheory.engine._stepper`.  The
+printer is the project's one kernel printer (:class:`sinktheory.codegen.KernelPrinter`):
+integer powers are products by repeated squaring with the exponent fixed in the text, so
 the compiler sees straight-line code; divisions by the same denominator become one
 reciprocal (SymPy's CSE of x/D and x D^-k).  Build time only: needs SymPy.
 """
@@ -37,43 +38,32 @@ import sympy as sp
 from ..codegen import KernelPrinter
 from .systems import SeparableSystem, Term
 
-__all__ = ["EnginePrinter", "render", "RESERVED", "STEPPER"]
+__all__ = ["cse_lines", "render", "RESERVED", "STEPPER"]
 
 STEPPER = Path(__file__).with_name("_stepper.py")
 
 
-class EnginePrinter(KernelPrinter):
-    """Kernel printer with integer exponents unrolled into products."""
-
-    def _print_Pow(self, expr, rational=False):  # noqa: D102 - printer protocol
-        exp = expr.exp
-        if exp.is_Integer and abs(int(exp)) >= 3:
-            k = int(exp)
-            text = _chain(self.parenthesize(expr.base, 1000), abs(k))
-            return f"(1.0/{text})" if k < 0 else text
-        return super()._print_Pow(expr, rational=rational)
-
-
-def _chain(b: str, k: int) -> str:
-    """b^k as a product by repeated squaring (the compiler merges the repeated squares)."""
-    if k == 1:
-        return b
-    if k % 2 == 0:
-        h = _chain(b, k // 2)
-        return f"({h}*{h})"
-    return f"({_chain(b, k - 1)}*{b})"
-
-
-_printer = EnginePrinter({"fully_qualified_modules": True, "standard": "python3"})
+_printer = KernelPrinter({"fully_qualified_modules": True, "standard": "python3"})
 
 
 def _p(e) -> str:
     return _printer.doprint(sp.sympify(e))
 
 
-def _cse(outputs: list[sp.Expr], prefix: str) -> tuple[list[str], list[str]]:
+def cse_lines(outputs: list[sp.Expr], prefix: str) -> tuple[list[str], list[str]]:
+    """(assignment lines of the common subexpressions, the outputs' texts) of ``outputs``
+    in the kernel printer: straight-line code for any compiled kernel.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> x, y = sp.symbols("x y")
+    >>> cse_lines([(x + y) ** 3, 1 / (x + y)], "t")
+    (['t0 = x + y'], ['((t0*t0)*t0)', '(1.0/t0)'])
+    """
     reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols(prefix), optimizations="basic")
     return [f"{s.name} = {_p(e)}" for s, e in reps], [_p(e) for e in reduced]
+
 
 
 def _local_lines(term: Term) -> list[str]:
@@ -213,7 +203,7 @@ def _forces(system: SeparableSystem, term: Term, member: bool, im):
     for c_i, c in enumerate(coords):
         force = -sum(jac[l_i][c_i] * term.gradient[l_i] for l_i in range(len(term.local)))
         outs.append(im[c] * force)
-    assign, values = _cse(outs, "t")
+    assign, values = cse_lines(outs, "t")
     return coords, assign, values
 
 
@@ -298,7 +288,7 @@ def _hessian(system: SeparableSystem, one: bool = False) -> list[str]:
         ["K = members_of(q.shape[0])"] if one else ["B = q.shape[1]", "K = members_of(q.shape[0])"]
     )
     for term, member, first in _hessian_rows(system)[0]:
-        assign, values = _cse(list(term.hessian), "t")
+        assign, values = cse_lines(list(term.hessian), "t")
         inner = _load(system, member, run=run) + _local_lines(term) + assign
         inner += [
             f"h[{_h_index(system, member, first, e)}, {run}] = {val}"
@@ -333,7 +323,7 @@ def _tangent_kick(system: SeparableSystem, im, one: bool = False) -> list[str]:
             -im[c] * sp.Symbol("c") * sum(jac[i][ci] * df[i] for i in range(L))
             for ci, c in enumerate(coords)
         ]
-        assign, values = _cse(outs, "t")
+        assign, values = cse_lines(outs, "t")
         inner = [f"h{x} = h[{_h_index(system, member, first, x)}, {run}]" for x in range(e)]
         inner += [f"d_{c.name} = dq[{_index(system, c)}, m, {run}]" for c in coords]
         inner += assign
@@ -369,7 +359,7 @@ def _energies(system: SeparableSystem) -> list[str]:
         )
         body += _loop([f"members[j, b] = {kin}"], True, params=_params(system))
     for term, member in _terms(system):
-        assign, (value,) = _cse([term.value], "t")
+        assign, (value,) = cse_lines([term.value], "t")
         inner = _load(system, member) + _local_lines(term) + assign
         inner.append(f"{'members[j, b]' if member else 'shared[b]'} += {value}")
         body += _loop(inner, member, params=_params(system))
@@ -388,7 +378,7 @@ def _shared_energy(system: SeparableSystem) -> list[str]:
     )
     body += _loop([f"shared[b] = {kin}"], False, params=_params(system))
     for term in system.shared_terms:
-        assign, (value,) = _cse([term.value], "t")
+        assign, (value,) = cse_lines([term.value], "t")
         inner = _load(system, False) + _local_lines(term) + assign + [f"shared[b] += {value}"]
         body += _loop(inner, False, params=_params(system))
     return body
@@ -408,7 +398,7 @@ def _damping_factors(system: SeparableSystem, im) -> list[str]:
     for c, partner in damping.pairs:
         rate = im[c] + (im[partner] if partner is not None else 0)
         outs.append(rate)
-    assign, (scaled, *rates) = _cse(outs, "t")
+    assign, (scaled, *rates) = cse_lines(outs, "t")
     inner = _load(system, True) + _local_lines(term) + assign
     inner.append(f"{weight} = c0 * ({scaled}) if weighted else c0")
     for (c, partner), rate in zip(damping.pairs, rates, strict=True):

@@ -54,7 +54,7 @@ def hessian(x, y, alpha, beta, gamma, n):
     t3 = gamma*ipow(w, n - 2)
     t4 = t0*t3
     t5 = t1*(y*y)
-    return t4*(n*t2 - t2 + w), 2*ipow(iL, 4)*t3*x*y*(n - 1), t4*(n*t5 - t5 + w)
+    return t4*(n*t2 - t2 + w), 2*((iL*iL)*(iL*iL))*t3*x*y*(n - 1), t4*(n*t5 - t5 + w)
 
 
 @numba.njit(cache=True)

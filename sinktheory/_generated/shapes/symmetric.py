@@ -78,7 +78,7 @@ def hill_coefficient(x, alpha, beta, n):
     if n == 1:
         t0 = alpha - beta
         t1 = 2*beta*t0*(x*x)
-        t2 = (beta*beta)*(t0*t0)*ipow(x, 4) + t1 + 1
+        t2 = (beta*beta)*(t0*t0)*((x*x)*(x*x)) + t1 + 1
         return -(t1*t2 - 1)/t2
     return -2*beta*(alpha - beta)*ipow(x, 2*n)
 
