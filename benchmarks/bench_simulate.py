@@ -270,7 +270,9 @@ def c_reference(sink):
 
 
 def c_run(fn, sink, settings: RunSettings, method: str, dt: float, steps: int):
-    values = start_state(sink, settings.energy, random_positions(settings, sink.particles))
+    values = start_state(
+        sink, settings.container_energy, random_positions(settings, sink.particles)
+    )
     k = sink.particles
     Q = np.ascontiguousarray(np.concatenate([values[:, :1], values[:, 2 : 2 + 2 * k]], 1))
     V = np.ascontiguousarray(np.concatenate([values[:, 1:2], values[:, 2 + 2 * k :]], 1))

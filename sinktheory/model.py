@@ -33,6 +33,7 @@ import numpy as np
 from . import validation as v
 from ._generated import shapes as _shapes
 from .errors import ParameterError
+from .glossary import old_attribute, renamed
 from .limits import MAX_N, MAX_PERIODS, MAX_RUNS, MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
 from .results import Result
 from .twins import python_kernel
@@ -460,7 +461,7 @@ class Sink:
             self.particles,
             self.mass,
             self.mu,
-            settings.energy,
+            settings.container_energy,
             e_total,
             settings.runs,
             settings.periods,
@@ -469,13 +470,14 @@ class Sink:
         )
 
 
+@renamed(energy="container_energy")
 @dataclass(frozen=True)
 class RunSettings:
     """How an ensemble is started and how long it runs.
 
     Parameters
     ----------
-    energy : float > 0
+    container_energy : float > 0
         Initial energy E0 of the container (0.5: displaced to X = 1 and released).
     runs : int >= 1
         Ensemble size R.
@@ -487,15 +489,17 @@ class RunSettings:
         Half-width of the square (-box, box)^2 around the centre where particles start.
     """
 
-    energy: float = 0.5
+    container_energy: float = 0.5
     runs: int = 25
     periods: int = 1500
     seed: int = 0
     box: float = 0.01
 
+    energy = old_attribute("container_energy")
+
     def __post_init__(self) -> None:
         set_ = object.__setattr__
-        set_(self, "energy", v.positive("energy", self.energy))
+        set_(self, "container_energy", v.positive("container_energy", self.container_energy))
         set_(
             self,
             "runs",
@@ -512,13 +516,22 @@ class RunSettings:
     def total_energy_bound(self, sink: Sink) -> float:
         """Upper bound of the total energy: E0 plus k times V at the box's corner."""
         corner = float(sink.well.potential(self.box, self.box))
-        return self.energy + sink.particles * corner
+        return self.container_energy + sink.particles * corner
 
     def check(self, sink: Sink) -> None:
         """Raise ParameterError unless the particles start inside the walls, every
         particle stays in a regular part of the well, and the ensemble fits in memory."""
         self.check_box(sink.well)
-        sink.well.check_energy(self.total_energy_bound(sink))
+        bound = self.total_energy_bound(sink)
+        try:
+            sink.well.check_energy(bound)
+        except ParameterError as e:  # name what the user gave: E0, not the bound
+            raise ParameterError(
+                "container_energy",
+                self.container_energy,
+                "an energy the well holds",
+                why=f"the total energy bound E0 + k V(box corner) = {bound:.6g} is refused: {e}",
+            ) from None
         self.check_memory(sink)
 
     def check_box(self, well: Well) -> None:
@@ -641,7 +654,7 @@ class SinkSummary(Result):
     particles: int
     mass: float
     mu: float
-    energy: float
+    container_energy: float
     total_energy_bound: float
     runs: int
     periods: int

@@ -313,14 +313,14 @@ class _Point:
     def of(cls, sink, settings, transverse: bool, initial) -> _Point:
         settings = check_sink(sink, settings)
         positions = start_positions(sink, settings, initial)
-        values = start_state(sink, settings.energy, positions)
+        values = start_state(sink, settings.container_energy, positions)
         h0 = total_energy(sink, values)
         top = float(np.max(h0))
         on_plane = None
         if transverse:
             flat = positions.copy()
             flat[:, :, 1] = 0.0
-            tvalues = start_state(sink, settings.energy, flat)
+            tvalues = start_state(sink, settings.container_energy, flat)
             top = max(top, float(np.max(total_energy(sink, tvalues))))
             on_plane = split_values(tvalues)
         sink.well.check_energy(top)
@@ -336,7 +336,7 @@ class _Point:
             "gamma": w.gamma,
             "particles": self.sink.particles,
             "mass": self.sink.mass,
-            "energy": s.energy,
+            "energy": s.container_energy,
             "runs": s.runs,
             "periods": s.periods,
             "period": 2.0 * math.pi,

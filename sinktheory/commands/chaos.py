@@ -101,7 +101,10 @@ def run(args: argparse.Namespace) -> Output:
     from ..chaos import chaos
 
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
-    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=args.runs, periods=args.periods,
+        seed=args.seed,
+    )  # fmt: skip
     result = chaos(
         sink,
         settings,
@@ -185,7 +188,10 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     from ..validation import positive
 
     positive("gamma", args.gamma)
-    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=args.runs, periods=args.periods,
+        seed=args.seed,
+    )  # fmt: skip
     result = billiard(
         args.shape, args.alpha, args.beta, particles=args.particles, mass=args.mass,
         settings=settings, lyapunov=True,

@@ -169,7 +169,9 @@ def run(args: argparse.Namespace) -> Output:
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
     initial = _initial(args.initial, sink)
     runs = args.runs if args.runs is not None else (1 if initial is not None else 25)
-    settings = RunSettings(energy=args.energy, runs=runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=runs, periods=args.periods, seed=args.seed
+    )
     _check_size(args, sink, settings, initial)
     result = simulate(
         sink,
@@ -218,7 +220,9 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
 
     positive("gamma", args.gamma)
     runs = 25 if args.runs is None else args.runs
-    settings = RunSettings(energy=args.energy, runs=runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=runs, periods=args.periods, seed=args.seed
+    )
     result = billiard(args.shape, args.alpha, args.beta, particles=args.particles,
                       mass=args.mass, settings=settings)  # fmt: skip
     mean, stderr = ensemble_mean(result.container_energy)

@@ -196,7 +196,9 @@ def start_rows(sink: Sink, settings: RunSettings, start) -> np.ndarray:
     """The state rows (R, 2 + 4k) to start from: ``start`` checked (finite, the sink's
     width, ``settings.runs`` rows), or simulate's seeded start states when None."""
     if start is None:
-        return start_state(sink, settings.energy, random_positions(settings, sink.particles))
+        return start_state(
+            sink, settings.container_energy, random_positions(settings, sink.particles)
+        )
     k = sink.particles
     allowed = f"state rows of shape ({settings.runs}, {2 + 4 * k}), finite"
     values = v.real_array("start", start, allowed)

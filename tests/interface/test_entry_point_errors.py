@@ -31,8 +31,10 @@ API = {
     "billiard fixed yes": (lambda: _billiard(fixed="yes"), "fixed"),
     # a shadow trajectory 1e-9 away from a container of amplitude 1e-150 measured nothing
     "billiard shadow energy": (
-        lambda: _billiard(settings=RunSettings(energy=1e-300, runs=2, periods=2), lyapunov=True),
-        "energy",
+        lambda: _billiard(
+            settings=RunSettings(container_energy=1e-300, runs=2, periods=2), lyapunov=True
+        ),
+        "container_energy",
     ),
 }
 
@@ -152,7 +154,7 @@ def test_billiard_without_impacts_says_so(fixed):
     """A table far larger than the motion or an E0 too small to reach a wall: no impact
     in the run, so no mean free time (inf per run, null in the ensemble summary) where a
     division by zero warned and the text crashed formatting None."""
-    tiny = RunSettings(energy=1e-300, runs=2, periods=2)
+    tiny = RunSettings(container_energy=1e-300, runs=2, periods=2)
     r = _no_warning_run(
         lambda: _billiard(settings=tiny, fixed=True, lyapunov=True) if fixed else _billiard(1e18)
     )
@@ -191,8 +193,17 @@ def test_cli_refuses_in_one_line(case, capsys):
     "argv",
     [
         ["--alpha", "1e18", "--beta", "0.3"],
-        ["--alpha", "0.5", "--beta", "0.3", "--energy", "1e-300"],
-        ["--alpha", "0.5", "--beta", "0.3", "--energy", "1e-320", "--fixed", "--lyapunov"],
+        ["--alpha", "0.5", "--beta", "0.3", "--container-energy", "1e-300"],
+        [
+            "--alpha",
+            "0.5",
+            "--beta",
+            "0.3",
+            "--container-energy",
+            "1e-320",
+            "--fixed",
+            "--lyapunov",
+        ],
     ],
 )
 def test_billiard_cli_without_impacts(argv, capsys):

@@ -205,7 +205,7 @@ def test_energy_the_well_cannot_hold_is_refused():
     # take enough energy (sqrt(2)^8/8 = 2) to get there, where V is singular
     sink = Sink(Well(0.5, -0.5, 4), particles=1, mass=0.2)
     with pytest.raises(ParameterError) as info:
-        simulate(sink, RunSettings(energy=2.0, runs=1, periods=1), initial=[(0.0, 0.5)])
+        simulate(sink, RunSettings(container_energy=2.0, runs=1, periods=1), initial=[(0.0, 0.5)])
     assert info.value.name == "beta"
 
 

@@ -126,7 +126,7 @@ def _damped_reference(sink, settings, damping, periods):
         dz[-1] = 0.5 * (Xd**2 + X**2)
         return dz
 
-    z0 = start_state(sink, settings.energy, random_positions(settings, k))[0]
+    z0 = start_state(sink, settings.container_energy, random_positions(settings, k))[0]
     T = 2 * np.pi * periods
     sol = solve_ivp(rhs, (0, T), np.concatenate((z0, [0.0, 0.0])), "DOP853",
                     rtol=1e-12, atol=1e-14)  # fmt: skip
