@@ -203,7 +203,7 @@ def sections(
     _check_work(sinks, steps, transient, count)
     values = [start_state(k, energy, np.array([[START]])) for k in sinks]
     for k, z in zip(sinks, values, strict=True):
-        k.well.check_energy(float(total_energy(k, z)[0]))
+        k.well.check_energy(float(total_energy(k, z)[0]), name="total_energy")
     q, vel = split_values(np.concatenate(values))
     params = np.stack([engine_params(k) for k in sinks], axis=1)
     from .engine.core import Ensemble  # numba loads when a section is computed

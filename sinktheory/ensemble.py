@@ -320,11 +320,11 @@ def initial_values(sink, settings, initial, initial_state):
         values = np.array(initial_state.values, dtype=float)
         if not np.all(np.isfinite(values)):
             raise ParameterError("initial_state", "a state with non-finite values", "finite")
-        sink.well.check_energy(float(np.max(total_energy(sink, values))))
+        sink.well.check_energy(float(np.max(total_energy(sink, values))), name="total_energy")
         return values, initial_state.time, np.array(initial_state.reference_energy)
     values = start_state(sink, settings.container_energy, start_positions(sink, settings, initial))
     h0 = total_energy(sink, values)
-    sink.well.check_energy(float(np.max(h0)))
+    sink.well.check_energy(float(np.max(h0)), name="total_energy")
     return values, 0.0, h0
 
 

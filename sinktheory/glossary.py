@@ -167,6 +167,7 @@ RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
         command: {"--energy": "--container-energy"}
         for command in ("sink", "simulate", "chaos", "billiard", "lifetime", "design")
     },
+    "well": {"--energy": "--particle-energy"},
 }
 
 

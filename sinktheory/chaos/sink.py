@@ -323,7 +323,7 @@ class _Point:
             tvalues = start_state(sink, settings.container_energy, flat)
             top = max(top, float(np.max(total_energy(sink, tvalues))))
             on_plane = split_values(tvalues)
-        sink.well.check_energy(top)
+        sink.well.check_energy(top, name="total_energy")
         return cls(sink, settings, *split_values(values), h0, on_plane, top)
 
     def parameters(self) -> dict:

@@ -93,7 +93,7 @@ def test_symmetric_well_refused_above_corner_saddle():
     s = np.linspace(0.01, 3, 3001)
     v_diag = well.potential(s, s)
     assert abs(v_diag.max() - 1 / 6) < 1e-6
-    with pytest.raises(ParameterError, match="^energy = "):
+    with pytest.raises(ParameterError, match="^particle_energy = "):
         well.reach(0.5)
     well.reach(0.1)
 
