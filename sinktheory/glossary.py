@@ -30,6 +30,7 @@ Examples
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import warnings
 from collections.abc import Callable
@@ -40,6 +41,7 @@ __all__ = [
     "RENAMED_OPTIONS",
     "modern_argv",
     "old_attribute",
+    "refusals_named",
     "option_of",
     "renamed",
 ]
@@ -168,6 +170,8 @@ RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
         for command in ("sink", "simulate", "chaos", "billiard", "lifetime", "design")
     },
     "well": {"--energy": "--particle-energy"},
+    "equilibrium": {"--energy": "--total-energy"},
+    "nnm": {"--energy": "--total-energy", "--continue": "--continue-in", "--range": "--interval"},
 }
 
 
@@ -244,6 +248,33 @@ class old_attribute:  # noqa: N801 (used like a property)
             stacklevel=2,
         )
         return getattr(obj, self.new)
+
+
+@contextlib.contextmanager
+def refusals_named(**names: str):
+    """Inside, a ParameterError that names a keyword of a lower-level function (``stop``)
+    names the caller's keyword (``interval``) instead, so the user reads the name they typed.
+
+    Examples
+    --------
+    >>> from sinktheory.errors import ParameterError
+    >>> with refusals_named(stop="interval"):
+    ...     raise ParameterError("stop", (2, 1), "LO < HI")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: interval = (2, 1) is not allowed: must be LO < HI
+    """
+    from .errors import ParameterError
+
+    try:
+        yield
+    except ParameterError as e:
+        new = names.get(e.name)
+        if new is None or not str(e).startswith(f"{e.name} = "):
+            raise
+        error = ParameterError(new, e.value, e.allowed)
+        error.args = (new + str(e)[len(e.name) :],)
+        raise error from None
 
 
 def modern_argv(argv: list[str]) -> tuple[list[str], list[str]]:

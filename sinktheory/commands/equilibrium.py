@@ -36,7 +36,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "on it)",
     )
     g.add_argument(
-        "--energy",
+        "--total-energy",
         type=number,
         default=0.5,
         help="total energy E > 0 (default 0.5; a run's E0 plus the particles' initial "
@@ -55,7 +55,7 @@ def run(args: argparse.Namespace) -> Output:
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
     fractions = check_fractions(args.fraction)
     plot = png_path("plot", args.plot)
-    law = equilibrium_law(sink, args.energy)
+    law = equilibrium_law(sink, args.total_energy)
     s = law.summary(fractions=fractions)
     data = s.as_dict()
     del data["s"], data["pdf"], data["cdf"], data["law"]["log_density"]

@@ -45,11 +45,14 @@ SYM = ["equilibrium", "--alpha", "0.5", "--beta", "0.3", "--n", "2", "--shape", 
         ([*FIG8, "--fraction", "0"], "fraction"),
         ([*FIG8, "--fraction", "0.5", "1"], "fraction"),
         ([*FIG8, "--fraction", "-0.1"], "fraction"),
-        ([*FIG8, "--energy", "0"], "energy"),
-        ([*FIG8, "--energy", "nan"], "energy"),
+        ([*FIG8, "--total-energy", "0"], "total_energy"),
+        ([*FIG8, "--total-energy", "nan"], "total_energy"),
         ([*FIG8, "--mass", "-1"], "mass"),
-        ([*SYM, "--energy", "10"], "energy"),  # above the corner saddle 8.68
-        (["equilibrium", "--alpha", "0.5", "--beta", "-0.3", "--n", "4", "--energy", "50"], "beta"),
+        ([*SYM, "--total-energy", "10"], "total_energy"),  # above the corner saddle 8.68
+        (
+            ["equilibrium", "--alpha", "0.5", "--beta", "-0.3", "--n", "4", "--total-energy", "50"],
+            "beta",
+        ),
         (["equilibrium", "--alpha", "0.5", "--beta", "0.5", "--n", "4"], "beta"),
     ],
 )

@@ -78,7 +78,7 @@ API.update(
         "scaled_energy -1": (lambda: _area("scaled_energy", -1), "energy"),  # complex
         "area_ratio nan": (lambda: _area("area_ratio", math.nan), "t"),  # NaN
         # 0.0027 % below the corner saddle the area's series cannot converge
-        "law near the saddle": (lambda: _symmetric_law(75.35), "energy"),
+        "law near the saddle": (lambda: _symmetric_law(75.35), "total_energy"),
         "compare damping 1e308": (lambda: _compare(1e308), "damping"),  # LinAlgError
         "compare attachments None": (lambda: _compare(0.1, [None]), "attachments"),  # raw
         "compare attachments str": (lambda: _compare(0.1, "nes"), "attachments"),
@@ -117,7 +117,7 @@ def _continue_orbits(**kw):
 def _continue_both(**kw):
     from sinktheory.nnm.continuation import continue_both
 
-    return continue_both(_sink_mode(), "container", energy=0.5, points=3, steps=100, **kw)
+    return continue_both(_sink_mode(), "container", total_energy=0.5, points=3, steps=100, **kw)
 
 
 API.update(
@@ -128,7 +128,10 @@ API.update(
         "floquet free out of range": (lambda: _floquet(free=[0, 7]), "free"),  # IndexError
         "floquet free 0.5": (lambda: _floquet(free=[0.5]), "free"),  # cast to 0
         "continue_orbits ds_max < ds": (lambda: _continue_orbits(ds=0.1, ds_max=0.01), "ds_max"),
-        "continue_both stop excludes start": (lambda: _continue_both(stop=(1, 2)), "stop"),
+        "continue_both interval excludes start": (
+            lambda: _continue_both(interval=(1, 2)),
+            "interval",
+        ),
     }
 )
 
