@@ -163,15 +163,23 @@ MARKS: dict[str, str] = {
     "stepper": "adaptive",
 }
 
+
+def _stepper_or_scheme(value: str) -> str:
+    """Where an old ``--method`` went: ``adaptive`` is a stepper, the rest are schemes."""
+    return "--stepper" if value == "adaptive" else "--scheme"
+
+
 #: command -> old option -> its new name, or a function of the option's value giving it.
 RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
     **{
         command: {"--energy": "--container-energy"}
-        for command in ("sink", "simulate", "chaos", "billiard", "lifetime", "design")
+        for command in ("sink", "billiard", "lifetime", "design")
     },
+    "simulate": {"--energy": "--container-energy", "--method": _stepper_or_scheme},
     "well": {"--energy": "--particle-energy"},
     "equilibrium": {"--energy": "--total-energy"},
     "nnm": {"--energy": "--total-energy", "--continue": "--continue-in", "--range": "--interval"},
+    "chaos": {"--energy": "--container-energy", "--method": "--scheme"},
 }
 
 

@@ -43,6 +43,7 @@ from ..ensemble import (
     total_energy,
 )
 from ..errors import ParameterError
+from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..model import RunSettings, Sink
 from ..stepsize import aligned_step, step_of
@@ -134,6 +135,7 @@ def check_tangent_work(
     check(name, vectors)
 
 
+@renamed(method="scheme")
 def chaos(
     sink: Sink,
     settings: RunSettings | None = None,
@@ -142,7 +144,7 @@ def chaos(
     gali: int = 0,
     megno: bool = False,
     transverse: bool = False,
-    method: str = DEFAULT_SCHEME,
+    scheme: str = DEFAULT_SCHEME,
     dt: float | None = None,
     tol: float | None = None,
     renorm: int = 0,
@@ -170,10 +172,11 @@ def chaos(
         MEGNO Y(t) and its time average.
     transverse : bool
         Transverse exponent of y = 0 (runs restarted with y_j = 0, see module docstring).
-    method, dt, energy_bound
-        Integrator and energy audit, as for ``simulate`` (dt aligned to T / steps).
+    scheme, dt, energy_bound
+        Splitting scheme, step and energy audit, as for ``simulate`` (dt aligned to
+        T / steps; the stepper is the fixed one).
     tol : float, optional
-        Relative energy error the step of ``method`` is chosen for (default 1e-8, see
+        Relative energy error the step of ``scheme`` is chosen for (default 1e-8, see
         :mod:`sinktheory.stepsize`); ``dt`` overrides it.
     renorm : int >= 0
         Steps between extra renormalisations inside a period (0: once per period).
@@ -193,7 +196,7 @@ def chaos(
         ``times`` are t_j = j T, exponents per unit time.
     """
     settings = RunSettings() if settings is None else settings
-    scheme = get_scheme(method)
+    scheme = get_scheme(scheme)
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     options = _options(sink, spectrum, gali, megno, transverse, renorm, energy_bound, progress)

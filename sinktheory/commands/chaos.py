@@ -62,9 +62,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     i = parser.add_argument_group("integrator")
     i.add_argument(
-        "--method",
+        "--scheme",
         default=DEFAULT_SCHEME,
-        help=f"one of {', '.join(SCHEMES)} (default {DEFAULT_SCHEME})",
+        help=f"splitting scheme: one of {', '.join(SCHEMES)} (default {DEFAULT_SCHEME})",
     )
     i.add_argument(
         "--tol",
@@ -94,7 +94,7 @@ def run(args: argparse.Namespace) -> Output:
     unsupported = {
         "--spectrum": args.spectrum, "--gali": args.gali, "--megno": args.megno,
         "--transverse": args.transverse, "--tol": args.tol, "--dt": args.dt,
-        "--renorm": args.renorm, "--method": None if args.method == DEFAULT_SCHEME else args.method,
+        "--renorm": args.renorm, "--scheme": None if args.scheme == DEFAULT_SCHEME else args.scheme,
     }  # fmt: skip
     if rigid_limit(args, unsupported):
         return _rigid(args, plot)
@@ -112,7 +112,7 @@ def run(args: argparse.Namespace) -> Output:
         gali=args.gali,
         megno=args.megno,
         transverse=args.transverse,
-        method=args.method,
+        scheme=args.scheme,
         dt=args.dt,
         tol=args.tol,
         renorm=args.renorm,

@@ -108,6 +108,7 @@ from ..ensemble import (
     start_state,
 )
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
+from ..glossary import renamed
 from ..integrators import get_scheme
 from ..layout import StateLayout
 from ..model import DAMPING_KINDS, RunSettings, Sink
@@ -454,13 +455,14 @@ def _advance(accelerations, energies, q, v, P, scheme, dissipation, j0, j1, audi
     return _RUNNING, j1, -1
 
 
+@renamed(method="scheme")
 def simulate_inelastic(
     sink: Sink,
     settings: RunSettings | None = None,
     *,
     damping: float = 0.0,
     damping_kind: str = "contact",
-    method: str | None = None,
+    scheme: str | None = None,
     dt: float | None = None,
     tol: float | None = None,
     dissipative_stage: bool = True,
@@ -481,10 +483,10 @@ def simulate_inelastic(
     damping_kind : {"contact", "viscous"}
         The weight of the damping force: the wall term (inelastic contact) or 1 (a
         dashpot between each particle and the container).
-    method, dt, tol
+    scheme, dt, tol
         The conservative stage S, as for :func:`sinktheory.simulate.simulate`: the
         scheme and step for the energy tolerance ``tol`` (default 1e-8), or ``dt`` (and
-        ``method``) directly.  The splitting is of order 2 whatever S is.
+        ``scheme``) directly.  The splitting is of order 2 whatever S is.
     dissipative_stage : bool
         False leaves D out altogether (the conservative integrator itself).
     energy_bound : float > 0, optional
@@ -505,11 +507,11 @@ def simulate_inelastic(
     Raises
     ------
     ParameterError
-        Bad input (damping < 0, unknown method, dt <= 0, both dt and tol, ...).
+        Bad input (damping < 0, unknown scheme, dt <= 0, both dt and tol, ...).
     EnergyDriftError, NonFiniteStateError
         The audit failed: the message names the run and the period.
     """
-    s = setup(sink, settings, damping, method, dt, tol, energy_bound, damping_kind, start,
+    s = setup(sink, settings, damping, scheme, dt, tol, energy_bound, damping_kind, start,
               samples_per_period)  # fmt: skip
     settings = RunSettings() if settings is None else settings
     q, vel, h0 = s.q, s.vel, s.h0

@@ -179,8 +179,8 @@ SIMULATE = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--runs",
 CLI = {
     "billiard alpha 1e308": (["billiard", "--alpha", "1e308", "--beta", "0.3"], "alpha"),
     # an overflow at 1e-320; 1e-300 was refused naming --runs
-    "adaptive eps 1e-320": ([*SIMULATE, "--method", "adaptive", "--eps", "1e-320"], "--eps"),
-    "adaptive eps 1e-300": ([*SIMULATE, "--method", "adaptive", "--eps", "1e-300"], "--eps"),
+    "adaptive eps 1e-320": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-320"], "--eps"),
+    "adaptive eps 1e-300": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-300"], "--eps"),
 }
 
 

@@ -58,7 +58,7 @@ def test_linear_attachment_is_the_damped_two_dof_system():
     for dt in (0.01, 0.005):
         res = simulate_inelastic(
             att.sink, settings, damping=c, damping_kind="viscous", dt=dt,
-            method="blanes-moan6", start=rows, samples_per_period=16,
+            scheme="blanes-moan6", start=rows, samples_per_period=16,
         )  # fmt: skip
         worst = 0.0
         for r in range(2):
