@@ -354,8 +354,8 @@ def _compiled_loop():
 
 def _run_loop(method, q, n, amplitude, alpha, params, q_end, rtol, max_steps):
     """Run the loop as ``method`` (the implementation) says; "auto" interprets a single
-    value while the compiled loop is not loaded, for the first :data:`PYTHON_CALLS` such calls and at most
-    :data:`PYTHON_STEPS` steps (then the compiled loop redoes it)."""
+    value while the compiled loop is not loaded, for the first :data:`PYTHON_CALLS` such
+    calls and at most :data:`PYTHON_STEPS` steps (then the compiled loop redoes it)."""
     scale = 1.0 / python_kernel(ipow)(amplitude, 2 * n - 2)  # A0^(2-2n) q(A0 x)
     args = (n, amplitude, scale, float(alpha), params, q_end, rtol)
     if method == "auto":
