@@ -107,7 +107,8 @@ GLOSSARY: dict[str, str] = {
     "transverse": "the transverse exponent of the invariant plane y = 0",
     "lyapunov": "the largest Lyapunov exponent lambda_1",
     "fixed": "a fixed container (only the particles move)",
-    "fraction": "fractions f in (0, 1) of the total energy E selecting sets {E_c >= f E}",
+    "fractions": "fractions f in (0, 1) of the total energy E selecting the sets {E_c >= f E}",
+    "fraction": "f: the relative distance from the target that counts as settled",
     "amplitude": "A0: the amplitude of the oscillator x(t)",
     "order": "the highest order i of the successive approximations",
     "lam": "Lam: the coefficient of the pure Hill equation",
@@ -173,11 +174,12 @@ def _stepper_or_scheme(value: str) -> str:
 RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
     **{
         command: {"--energy": "--container-energy"}
-        for command in ("sink", "billiard", "lifetime", "design")
+        for command in ("sink", "billiard", "design")
     },
+    "lifetime": {"--energy": "--container-energy", "--fraction": "--fractions"},
     "simulate": {"--energy": "--container-energy", "--method": _stepper_or_scheme},
     "well": {"--energy": "--particle-energy"},
-    "equilibrium": {"--energy": "--total-energy"},
+    "equilibrium": {"--energy": "--total-energy", "--fraction": "--fractions"},
     "nnm": {"--energy": "--total-energy", "--continue": "--continue-in", "--range": "--interval"},
     "chaos": {"--energy": "--container-energy", "--method": "--scheme"},
 }

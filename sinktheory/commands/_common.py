@@ -362,11 +362,11 @@ def write_outputs(writers: dict[Path, Callable[[Path], None]]) -> None:
                 tmp.unlink()
 
 
-def add_fraction_argument(group, default, what: str) -> None:
-    """``--fraction F ...``: fractions f in (0, 1) of the total energy (``what`` says what
+def add_fractions_argument(group, default, what: str) -> None:
+    """``--fractions F ...``: fractions f in (0, 1) of the total energy (``what`` says what
     they select), checked by the equilibrium law."""
     group.add_argument(
-        "--fraction",
+        "--fractions",
         type=number,
         nargs="+",
         default=list(default),

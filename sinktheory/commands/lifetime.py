@@ -8,7 +8,7 @@ import argparse
 from . import HELP as HELPS
 from ._common import (
     Output,
-    add_fraction_argument,
+    add_fractions_argument,
     add_json,
     add_sink_arguments,
     add_well_arguments,
@@ -36,7 +36,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=None,
         help="periods skipped before sampling (default: a third of --periods)",
     )
-    add_fraction_argument(g, FRACTIONS, "of the sets {E_c >= f E}")
+    add_fractions_argument(g, FRACTIONS, "of the sets {E_c >= f E}")
     g.add_argument(
         "--tol",
         type=number,
@@ -88,7 +88,7 @@ def run(args: argparse.Namespace) -> Output:
     periods = settings.periods
     transient = periods // 3 if args.transient is None else args.transient
     v.positive_int("transient", transient, minimum=0, maximum=periods - 4)
-    fractions = check_fractions(args.fraction)
+    fractions = check_fractions(args.fractions)
     plot = png_path("plot", args.plot)
     settings.check(sink)
     c, sim = measure_lifetimes(

@@ -367,13 +367,13 @@ class EquilibriumLaw(Result):
 
 def check_fractions(fractions) -> np.ndarray:
     """Fractions f as a 1-D array, each in the open interval (0, 1) (ParameterError naming
-    ``fraction`` otherwise)."""
-    fs = np.atleast_1d(v.real_array("fraction", fractions)).ravel()
+    ``fractions`` otherwise)."""
+    fs = np.atleast_1d(v.real_array("fractions", fractions)).ravel()
     if not fs.size:
-        raise ParameterError("fraction", fractions, "one or more numbers in (0, 1)")
+        raise ParameterError("fractions", fractions, "one or more numbers in (0, 1)")
     for f in fs:
         if not (0 < f < 1):
-            raise ParameterError("fraction", float(f), "a number in (0, 1)")
+            raise ParameterError("fractions", float(f), "each a number in (0, 1)")
     return fs
 
 
