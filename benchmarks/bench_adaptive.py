@@ -53,7 +53,7 @@ def _adaptive(n, eps, args, periods, repeat=1):
         lambda: simulate(
             _sink(n, args.shape),
             settings,
-            method="adaptive",
+            stepper="adaptive",
             eps=eps,
             energy_bound=1.0,
             progress=False,

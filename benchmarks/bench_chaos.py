@@ -51,7 +51,7 @@ def part1(periods: int, repeat: int) -> None:
     simulate(sink, RunSettings(runs=1, periods=1), progress=False)
     t_l1, res = best(lambda: chaos(sink, st, progress=False), repeat)
     t_sim, sim = best(lambda: simulate(sink, st, progress=False), repeat)
-    q, v = split_values(start_state(sink, st.energy, start_positions(sink, st)))
+    q, v = split_values(start_state(sink, st.container_energy, start_positions(sink, st)))
     p = res.parameters
     t_two, logs = best(
         lambda: two_orbit_exponent(

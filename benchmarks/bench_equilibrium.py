@@ -99,7 +99,7 @@ def law_costs() -> None:
 
 def fig8_against_law(k: int, transient: int, periods: int, seed: int):
     sink = Sink(FIG8, particles=k, mass=0.2)
-    settings = RunSettings(energy=0.5, runs=8, periods=transient + periods, seed=seed)
+    settings = RunSettings(container_energy=0.5, runs=8, periods=transient + periods, seed=seed)
     t = time.perf_counter()
     sim = simulate(sink, settings, progress=False)
     seconds = time.perf_counter() - t
@@ -153,7 +153,9 @@ def relaxation_table(periods_scale: float, seed: int) -> None:
         sink = Sink(well, particles=k, mass=mass)
         t = time.perf_counter()
         sim = simulate(
-            sink, RunSettings(energy=0.5, runs=16, periods=periods, seed=seed), progress=False
+            sink,
+            RunSettings(container_energy=0.5, runs=16, periods=periods, seed=seed),
+            progress=False,
         )
         seconds = time.perf_counter() - t
         law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))

@@ -97,7 +97,10 @@ def fig8(runs: int, tol: float, seed: int) -> None:
     sink = Sink(FIG8, particles=5, mass=0.2)
     t = time.perf_counter()
     sim = simulate(
-        sink, RunSettings(energy=0.5, runs=runs, periods=8000, seed=seed), tol=tol, progress=False
+        sink,
+        RunSettings(container_energy=0.5, runs=runs, periods=8000, seed=seed),
+        tol=tol,
+        progress=False,
     )
     print(f"\n2. Fig. 8, k = 5: {sim.message} ({time.perf_counter() - t:.0f} s)")
     law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
@@ -123,7 +126,7 @@ def kac(runs: int, seed: int) -> None:
     sink = Sink(FIG8, particles=1, mass=0.2)
     t = time.perf_counter()
     sim = simulate(
-        sink, RunSettings(energy=0.5, runs=runs, periods=3500, seed=seed), progress=False
+        sink, RunSettings(container_energy=0.5, runs=runs, periods=3500, seed=seed), progress=False
     )
     law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
     c = compare_with_law(

@@ -101,7 +101,7 @@ def ours(sink, full: RunSettings, sweep: RunSettings | None) -> tuple[list[Point
             try:
                 wall, res = _timed(
                     lambda m=method, t=tol: simulate(
-                        sink, sweep, method=m, tol=t, energy_bound=1.0, progress=False
+                        sink, sweep, scheme=m, tol=t, energy_bound=1.0, progress=False
                     )
                 )
             except NumericalError:
@@ -270,7 +270,9 @@ def c_reference(sink):
 
 
 def c_run(fn, sink, settings: RunSettings, method: str, dt: float, steps: int):
-    values = start_state(sink, settings.energy, random_positions(settings, sink.particles))
+    values = start_state(
+        sink, settings.container_energy, random_positions(settings, sink.particles)
+    )
     k = sink.particles
     Q = np.ascontiguousarray(np.concatenate([values[:, :1], values[:, 2 : 2 + 2 * k]], 1))
     V = np.ascontiguousarray(np.concatenate([values[:, 1:2], values[:, 2 + 2 * k :]], 1))
@@ -311,7 +313,7 @@ def scaling(sink, counts, periods: int, cfn, baseline: str | None) -> dict[str, 
     for R in counts:
         st = RunSettings(runs=R, periods=periods, seed=2)
         wall, _ = _timed(
-            lambda st=st: simulate(sink, st, dt=choice.dt, method=choice.method, progress=False)
+            lambda st=st: simulate(sink, st, dt=choice.dt, scheme=choice.method, progress=False)
         )
         out["ours"].append(wall / R)
         if cfn is not None:
@@ -344,7 +346,7 @@ def _baseline_time(rev: str, runs: int, periods: int, choice) -> float:
         from sinktheory import RunSettings, Sink, Well
         from sinktheory.simulate import simulate
         sink = Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2)
-        kw = dict(method={choice.method!r}, dt={choice.dt!r}, progress=False)
+        kw = dict(scheme={choice.method!r}, dt={choice.dt!r}, progress=False)
         simulate(sink, RunSettings(runs=1, periods=1), **kw)
         t = time.perf_counter()
         simulate(sink, RunSettings(runs={runs}, periods={periods}, seed=2), **kw)

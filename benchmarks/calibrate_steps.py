@@ -60,7 +60,7 @@ def measure(periods: int) -> dict[str, list[tuple[float, float]]]:
                         res = simulate(
                             sink,
                             RunSettings(runs=2, periods=periods, seed=3),
-                            method=name,
+                            scheme=name,
                             dt=dt,
                             energy_bound=1e-2,
                             progress=False,
@@ -101,7 +101,7 @@ def tail(scheme: str, products: list[float], seeds: int) -> None:
                 res = simulate(
                     sink,
                     RunSettings(runs=25, periods=1500, seed=seed),
-                    method=scheme,
+                    scheme=scheme,
                     dt=dt,
                     energy_bound=1.0,
                     progress=False,

@@ -28,7 +28,9 @@ def hero(runs: int, periods: int) -> Figure:
     well = st.Well(alpha=ALPHA, beta=BETA, n=N, shape="symmetric")
     sink = st.Sink(well, particles=K, mass=MASS)
     res = simulate(
-        sink, st.RunSettings(energy=E0, runs=runs, periods=periods, seed=SEED), progress=False
+        sink,
+        st.RunSettings(container_energy=E0, runs=runs, periods=periods, seed=SEED),
+        progress=False,
     )
     e = res.container_energy  # (runs, periods + 1): E(jT)
     mean, stderr = ensemble_mean(e)

@@ -251,7 +251,7 @@ def start_rows(att: Attachment, settings: RunSettings) -> np.ndarray:
     if att.kind in LINE_KINDS:
         positions[:, :, 1] = 0.0
     rows = StateLayout(att.particles).start(0.0, positions)
-    rows[:, StateLayout.XDOT] = math.sqrt(2.0 * settings.energy)
+    rows[:, StateLayout.XDOT] = math.sqrt(2.0 * settings.container_energy)
     return rows
 
 
@@ -309,13 +309,13 @@ def impulse_response(
     samples = v.positive_int("samples_per_period", samples_per_period, maximum=100_000)
     energy = v.positive("energy", energy)
     box = v.positive("box", box) * math.sqrt(2.0 * energy)
-    settings = RunSettings(energy=energy, runs=runs, periods=periods, seed=seed, box=box)
+    settings = RunSettings(container_energy=energy, runs=runs, periods=periods, seed=seed, box=box)
     offset = v.nonnegative("line_offset", line_offset)
     if offset and att.kind != "nes":
         raise ParameterError("line_offset", offset, "0 unless the attachment is an 'nes'")
     rows = start_rows(att, settings)
     rows[:, StateLayout(att.particles).y] += offset
-    common = {"attachment": att, "damping": damping, "energy": settings.energy}
+    common = {"attachment": att, "damping": damping, "energy": settings.container_energy}
     if att.kind == "impact":
         from .vibroimpact import simulate_vibroimpact
 

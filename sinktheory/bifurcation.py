@@ -135,7 +135,7 @@ def section_step(sink: Sink, energy: float = 0.5) -> tuple[float, int]:
     """(dt, steps per period) of a section run: the default scheme's step for the default
     tolerance at the start's energy, taken down to the ladder of
     :func:`sinktheory.stepsize.ladder_step` so that neighbouring betas share it."""
-    bound = RunSettings(energy=energy, runs=1, periods=1).total_energy_bound(sink)
+    bound = RunSettings(container_energy=energy, runs=1, periods=1).total_energy_bound(sink)
     return ladder_step(default_step(sink, bound)[0])
 
 
@@ -203,7 +203,7 @@ def sections(
     _check_work(sinks, steps, transient, count)
     values = [start_state(k, energy, np.array([[START]])) for k in sinks]
     for k, z in zip(sinks, values, strict=True):
-        k.well.check_energy(float(total_energy(k, z)[0]))
+        k.well.check_energy(float(total_energy(k, z)[0]), name="total_energy")
     q, vel = split_values(np.concatenate(values))
     params = np.stack([engine_params(k) for k in sinks], axis=1)
     from .engine.core import Ensemble  # numba loads when a section is computed
@@ -247,7 +247,7 @@ def bifurcation(
         raise ParameterError("betas", f"array of shape {betas.shape}", "a non-empty 1-D array")
     sinks = [Sink(Well(alpha, b, n, gamma=gamma, shape=shape), 1, mass) for b in betas]
     for s in sinks:  # refuse bad input before any long computation
-        RunSettings(energy=energy, runs=1, periods=1).check(s)
+        RunSettings(container_energy=energy, runs=1, periods=1).check(s)
     rows = sections(sinks, transient=transient, count=count, quantity=quantity, energy=energy)
     w = sinks[0].well
     return BifurcationDiagram(
@@ -275,7 +275,9 @@ def check_point(p: dict) -> None:
     v.positive_int("transient", p["transient"], minimum=0, maximum=MAX_PERIODS)
     v.positive_int("count", p["count"], maximum=MAX_PERIODS)
     v.choice("quantity", p["quantity"], QUANTITIES)
-    settings = RunSettings(energy=p["energy"], runs=1, periods=p["transient"] + p["count"])
+    settings = RunSettings(
+        container_energy=p["energy"], runs=1, periods=p["transient"] + p["count"]
+    )
     settings.check(sink)
     # a well too stiff to integrate names the parameter responsible, and the section's
     # periods are checked against the work limit

@@ -16,6 +16,7 @@ import sys
 from . import commands
 from .commands._common import interruptible, settle_zarr, write_outputs
 from .errors import NumericalError, ParameterError
+from .glossary import modern_argv
 
 __all__ = ["build_parser", "main", "NEGATIVE_NUMBER", "UsageError"]
 
@@ -89,6 +90,10 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _main(argv: list[str], command: str | None) -> int:
+    argv, notes = modern_argv(argv)
+    for note in notes:  # an old option name: works for one more release
+        print(f"sinktheory {command}: note: {note} (the old name goes in the next release)",
+              file=sys.stderr)  # fmt: skip
     parser = build_parser(command or "")
     try:
         args = parser.parse_args(argv)

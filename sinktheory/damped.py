@@ -105,6 +105,7 @@ from .ensemble import (
     start_state,
 )
 from .errors import EnergyDriftError, NonFiniteStateError, ParameterError
+from .glossary import renamed
 from .integrators import get_scheme
 from .layout import StateLayout
 from .model import DAMPING_KINDS, RunSettings, Sink
@@ -190,7 +191,9 @@ def start_rows(sink: Sink, settings: RunSettings, start) -> np.ndarray:
     """The state rows (R, 2 + 4k) to start from: ``start`` checked (finite, the sink's
     width, ``settings.runs`` rows), or simulate's seeded start states when None."""
     if start is None:
-        return start_state(sink, settings.energy, random_positions(settings, sink.particles))
+        return start_state(
+            sink, settings.container_energy, random_positions(settings, sink.particles)
+        )
     k = sink.particles
     allowed = f"state rows of shape ({settings.runs}, {2 + 4 * k}), finite"
     values = v.real_array("start", start, allowed)
@@ -233,7 +236,7 @@ def setup(
     engine = load(engine_name(sink))
     params = engine.table_of(engine_params(sink), q.shape[1])
     h0 = engine.block_energies(q, vel, params)[0]
-    sink.well.check_energy(float(np.max(h0)))
+    sink.well.check_energy(float(np.max(h0)), name="total_energy")
     method, dt, steps, tol = resolve_step(sink, float(np.max(h0)), method=method, dt=dt, tol=tol)
     stride = 0
     if samples:
@@ -295,13 +298,14 @@ def _sampled(s: Setup, samples) -> dict:
             "sample_dissipated": ws, "transverse": ys}  # fmt: skip
 
 
+@renamed(method="scheme")
 def simulate_inelastic(
     sink: Sink,
     settings: RunSettings | None = None,
     *,
     damping: float = 0.0,
     damping_kind: str = "contact",
-    method: str | None = None,
+    scheme: str | None = None,
     dt: float | None = None,
     tol: float | None = None,
     dissipative_stage: bool = True,
@@ -322,10 +326,10 @@ def simulate_inelastic(
     damping_kind : {"contact", "viscous"}
         The weight of the damping force: the wall term (inelastic contact) or 1 (a
         dashpot between each particle and the container).
-    method, dt, tol
+    scheme, dt, tol
         The conservative stage S, as for :func:`sinktheory.simulate.simulate`: the
         scheme and step for the energy tolerance ``tol`` (default 1e-8), or ``dt`` (and
-        ``method``) directly.  The splitting is of order 2 whatever S is.
+        ``scheme``) directly.  The splitting is of order 2 whatever S is.
     dissipative_stage : bool
         False leaves D out altogether (the conservative integrator itself).
     energy_bound : float > 0, optional
@@ -346,11 +350,11 @@ def simulate_inelastic(
     Raises
     ------
     ParameterError
-        Bad input (damping < 0, unknown method, dt <= 0, both dt and tol, ...).
+        Bad input (damping < 0, unknown scheme, dt <= 0, both dt and tol, ...).
     EnergyDriftError, NonFiniteStateError
         The audit failed: the message names the run and the period.
     """
-    s = setup(sink, settings, damping, method, dt, tol, energy_bound, damping_kind, start,
+    s = setup(sink, settings, damping, scheme, dt, tol, energy_bound, damping_kind, start,
               samples_per_period)  # fmt: skip
     settings = RunSettings() if settings is None else settings
     ens = Ensemble(

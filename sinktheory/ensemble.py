@@ -258,7 +258,7 @@ def run_parameters(sink: Sink, settings: RunSettings, runs: int) -> dict:
     w = sink.well
     return {
         "shape": w.shape, "alpha": w.alpha, "beta": w.beta, "n": w.n, "gamma": w.gamma,
-        "particles": sink.particles, "mass": sink.mass, "energy": settings.energy,
+        "particles": sink.particles, "mass": sink.mass, "energy": settings.container_energy,
         "runs": runs, "periods": settings.periods, "seed": settings.seed, "box": settings.box,
     }  # fmt: skip
 
@@ -320,11 +320,11 @@ def initial_values(sink, settings, initial, initial_state):
         values = np.array(initial_state.values, dtype=float)
         if not np.all(np.isfinite(values)):
             raise ParameterError("initial_state", "a state with non-finite values", "finite")
-        sink.well.check_energy(float(np.max(total_energy(sink, values))))
+        sink.well.check_energy(float(np.max(total_energy(sink, values))), name="total_energy")
         return values, initial_state.time, np.array(initial_state.reference_energy)
-    values = start_state(sink, settings.energy, start_positions(sink, settings, initial))
+    values = start_state(sink, settings.container_energy, start_positions(sink, settings, initial))
     h0 = total_energy(sink, values)
-    sink.well.check_energy(float(np.max(h0)))
+    sink.well.check_energy(float(np.max(h0)), name="total_energy")
     return values, 0.0, h0
 
 
@@ -411,5 +411,5 @@ def settings_of(p: Mapping, seed: int) -> RunSettings:
     """The :class:`~sinktheory.model.RunSettings` of a sweep point's ensemble (energy,
     runs, periods, box), seeded with the point's seed."""
     return RunSettings(
-        energy=p["energy"], runs=p["runs"], periods=p["periods"], seed=seed, box=p["box"]
+        container_energy=p["energy"], runs=p["runs"], periods=p["periods"], seed=seed, box=p["box"]
     )

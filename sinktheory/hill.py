@@ -33,7 +33,7 @@ Compiled by numba it is fast, but its first use in a process costs about 0.5 s (
 loads its registry and LLVM, even from the on-disk cache).  Interpreted, with
 pure-Python twins of the generated kernels (:func:`python_kernel`), it takes about 25 ms
 for one parameter value and gives bitwise the compiled result (tested).
-``method="auto"`` interprets the first few single-value integrations of a process, so a
+``implementation="auto"`` interprets the first few single-value integrations of a process, so a
 one-point ``sinktheory floquet`` never loads numba's compiler; charts, scans and their
 root finding run compiled.
 
@@ -68,11 +68,13 @@ from ._generated._support import ipow
 from ._generated.oscillator import oscillator_acceleration
 from .dop853 import DEFAULT_RTOL
 from .errors import HillIntegrationError, NonFiniteStateError, ParameterError
+from .glossary import renamed
 from .twins import python_kernel
 
 __all__ = [
     "check_amplitude",
     "integrate_quarter_period",
+    "IMPLEMENTATIONS",
     "METHODS",
     "monodromy_solve_ivp",
     "PURE",
@@ -88,9 +90,11 @@ __all__ = [
 RENORM_BITS = 400
 
 
-#: Integration methods of :func:`integrate_quarter_period`.
-METHODS = ("auto", "compiled", "python")
-#: ``method="auto"`` interprets at most this many single-value integrations per process
+#: What runs the loop of :func:`integrate_quarter_period` (its ``implementation``).
+IMPLEMENTATIONS = ("auto", "compiled", "python")
+#: The old name of IMPLEMENTATIONS, kept for one release.
+METHODS = IMPLEMENTATIONS
+#: ``implementation="auto"`` interprets at most this many single-value integrations per process
 #: (about 25 ms each) before it loads the compiled loop (about 0.5 s once).
 PYTHON_CALLS = 8
 #: Step budget of an interpreted ``auto`` run (about 0.2 s); beyond it the integration
@@ -102,7 +106,7 @@ _E3 = np.ascontiguousarray(dop853.E3)
 _E5 = np.ascontiguousarray(dop853.E5)
 #: The coefficient of the pure Hill equation, Lam x^(2n).
 PURE = _osc.pure_hill_coefficient
-_python_calls = [0]  # single-value integrations interpreted by method="auto" so far
+_python_calls = [0]  # single-value integrations interpreted by implementation="auto" so far
 
 
 @functools.cache
@@ -349,9 +353,9 @@ def _compiled_loop():
 
 
 def _run_loop(method, q, n, amplitude, alpha, params, q_end, rtol, max_steps):
-    """Run the loop as ``method`` says; "auto" interprets a single value while the compiled
-    loop is not loaded, for the first :data:`PYTHON_CALLS` such calls and at most
-    :data:`PYTHON_STEPS` steps (then the compiled loop redoes it)."""
+    """Run the loop as ``method`` (the implementation) says; "auto" interprets a single
+    value while the compiled loop is not loaded, for the first :data:`PYTHON_CALLS` such
+    calls and at most :data:`PYTHON_STEPS` steps (then the compiled loop redoes it)."""
     scale = 1.0 / python_kernel(ipow)(amplitude, 2 * n - 2)  # A0^(2-2n) q(A0 x)
     args = (n, amplitude, scale, float(alpha), params, q_end, rtol)
     if method == "auto":
@@ -381,6 +385,7 @@ def _label(coefficient) -> str:
     return f"{coefficient.__module__.rsplit('.', 1)[-1]}.{coefficient.__name__}"
 
 
+@renamed(method="implementation")
 def integrate_quarter_period(
     n: int,
     params: np.ndarray,
@@ -390,7 +395,7 @@ def integrate_quarter_period(
     alpha: float = 0.0,
     rtol: float = DEFAULT_RTOL,
     max_steps: int = 1_000_000,
-    method: str = "auto",
+    implementation: str = "auto",
 ) -> QuarterPeriod:
     """Integrate X and the fundamental solutions of Hill's equation over [0, Q].
 
@@ -412,10 +417,11 @@ def integrate_quarter_period(
         Per-step relative tolerance of every solution pair (y, y') and of X.
     max_steps : int
         Budget of steps (accepted plus rejected).
-    method : {"auto", "compiled", "python"}
-        "compiled": the numba loop; "python": the same loop interpreted (about 25 ms per
-        value, bitwise the compiled result); "auto" (default): interpreted for a single
-        value until the compiled loop is loaded (see the module docstring), else compiled.
+    implementation : {"auto", "compiled", "python"}
+        What runs the loop.  "compiled": the numba loop; "python": the same loop
+        interpreted (about 25 ms per value, bitwise the compiled result); "auto" (default):
+        interpreted for a single value until the compiled loop is loaded (see the module
+        docstring), else compiled.
 
     Returns
     -------
@@ -446,8 +452,9 @@ def integrate_quarter_period(
     if params.ndim != 1 or not np.all(np.isfinite(params)):
         raise ParameterError("params", params, "a 1-d array of finite numbers")
     max_steps = v.positive_int("max_steps", max_steps)
-    if method not in METHODS:
-        raise ParameterError("method", method, f"one of {', '.join(METHODS)}")
+    method = implementation
+    if method not in IMPLEMENTATIONS:
+        raise ParameterError("implementation", method, f"one of {', '.join(IMPLEMENTATIONS)}")
     q_end = quarter_period_length(n)
     y, expo, steps, rejected, status = _run_loop(
         method, coefficient, n, amplitude, alpha, params, q_end, rtol, max_steps

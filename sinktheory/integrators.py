@@ -198,5 +198,5 @@ SCHEMES: dict[str, SplittingScheme] = {
 
 
 def get_scheme(name: str) -> SplittingScheme:
-    """The scheme registered under ``name`` (ParameterError naming ``method`` otherwise)."""
-    return SCHEMES[v.choice("method", name, tuple(SCHEMES))]
+    """The scheme registered under ``name`` (ParameterError naming ``scheme`` otherwise)."""
+    return SCHEMES[v.choice("scheme", name, tuple(SCHEMES))]

@@ -33,6 +33,7 @@ import numpy as np
 from . import validation as v
 from ._generated import shapes as _shapes
 from .errors import ParameterError
+from .glossary import old_attribute, renamed
 from .limits import MAX_N, MAX_PERIODS, MAX_RUNS, MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
 from .results import Result
 from .twins import python_kernel
@@ -234,20 +235,25 @@ class Well:
         return out.reshape(x.shape)
 
     # --- what a particle of energy E can reach -----------------------------------------
-    def reach(self, energy: float) -> tuple[float, float]:
-        """Bounds (x_max, y_max) on |x| and |y| over the basin V <= energy around the centre.
+    @renamed(energy="particle_energy")
+    def reach(
+        self, particle_energy: float, *, name: str = "particle_energy"
+    ) -> tuple[float, float]:
+        """Bounds (x_max, y_max) on |x| and |y| over the basin V <= E around the centre of
+        a particle of energy E = ``particle_energy``.
 
         Checks that the well confines that energy (below the shape's escape energy, such
         as the corner saddle of the symmetric well) with positive wall denominators
-        everywhere in the basin (see :meth:`check_energy`).  The bounds are the shape's
-        generated ``reach``.
+        everywhere in the basin (see :meth:`check_energy`); a refusal names ``name``, the
+        parameter the energy came from.  The bounds are the shape's generated ``reach``.
 
         Examples
         --------
         >>> Well(alpha=0.5, beta=0.3, n=2).reach(0.5)  # doctest: +ELLIPSIS
         (0.5..., 1.189...)
         """
-        e = v.positive("energy", energy)
+        energy = particle_energy
+        e = v.positive(name, energy)
         # 2 n E / gamma = c^(2n): bounded by float range and by the reach c (log10 scale)
         exponents = (math.log10(MAX_SCALED_ENERGY), 2 * self.n * math.log10(MAX_REACH))
         if math.log10(2 * self.n) + math.log10(e) - math.log10(self.gamma) > min(exponents):
@@ -259,7 +265,7 @@ class Well:
                 "far beyond the wall y^(2n) = 1, where the reach is not resolved"
             )
             raise ParameterError(
-                "energy",
+                name,
                 energy,
                 f"a finite number in (0, {top * self.gamma / (2 * self.n):.6g}] "
                 f"(2 n E / gamma <= {top:.6g})",
@@ -271,7 +277,7 @@ class Well:
             v_escape = float(python_kernel(k.escape_energy)(*args))
             if e >= v_escape:
                 raise ParameterError(
-                    "energy",
+                    name,
                     e,
                     f"< {v_escape:.6g}, the height of {k.ESCAPE_NAME} of this {self.shape} well",
                     why="above it a particle escapes through it",
@@ -308,12 +314,14 @@ point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
         """Largest wall ratio of the shape at (x, y): < 1 strictly inside the walls."""
         return self.kernels.wall_ratio(float(x), float(y), self.alpha, self.beta)
 
-    def check_energy(self, energy: float) -> None:
-        """Raise ParameterError unless a particle with ``energy`` stays in a regular well."""
-        self.reach(energy)
+    def check_energy(self, energy: float, *, name: str = "particle_energy") -> None:
+        """Raise ParameterError naming ``name`` unless a particle holding all of ``energy``
+        stays in a regular well."""
+        self.reach(energy, name=name)
 
-    def summary(self, energy: float = 0.5) -> WellSummary:
-        """The well's parameters, walls and the reach of a particle of ``energy``.
+    @renamed(energy="particle_energy")
+    def summary(self, particle_energy: float = 0.5) -> WellSummary:
+        """The well's parameters, walls and the reach of a particle of ``particle_energy``.
 
         Examples
         --------
@@ -321,7 +329,7 @@ point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
         >>> s.walls, round(s.wall_distance, 12), s.curvature_at_centre
         ('scattering (Sinai-like)', 0.2, 0.6)
         """
-        x_max, y_max = self.reach(energy)
+        x_max, y_max = self.reach(particle_energy)
         curvature = self.curvature_at_centre
         walls = "straight"
         if curvature != 0:
@@ -335,7 +343,7 @@ point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
             self.wall_distance,
             curvature,
             walls,
-            float(energy),
+            float(particle_energy),
             Reach(x_max, y_max),
         )
 
@@ -460,7 +468,7 @@ class Sink:
             self.particles,
             self.mass,
             self.mu,
-            settings.energy,
+            settings.container_energy,
             e_total,
             settings.runs,
             settings.periods,
@@ -469,13 +477,14 @@ class Sink:
         )
 
 
+@renamed(energy="container_energy")
 @dataclass(frozen=True)
 class RunSettings:
     """How an ensemble is started and how long it runs.
 
     Parameters
     ----------
-    energy : float > 0
+    container_energy : float > 0
         Initial energy E0 of the container (0.5: displaced to X = 1 and released).
     runs : int >= 1
         Ensemble size R.
@@ -487,15 +496,17 @@ class RunSettings:
         Half-width of the square (-box, box)^2 around the centre where particles start.
     """
 
-    energy: float = 0.5
+    container_energy: float = 0.5
     runs: int = 25
     periods: int = 1500
     seed: int = 0
     box: float = 0.01
 
+    energy = old_attribute("container_energy")
+
     def __post_init__(self) -> None:
         set_ = object.__setattr__
-        set_(self, "energy", v.positive("energy", self.energy))
+        set_(self, "container_energy", v.positive("container_energy", self.container_energy))
         set_(
             self,
             "runs",
@@ -512,13 +523,22 @@ class RunSettings:
     def total_energy_bound(self, sink: Sink) -> float:
         """Upper bound of the total energy: E0 plus k times V at the box's corner."""
         corner = float(sink.well.potential(self.box, self.box))
-        return self.energy + sink.particles * corner
+        return self.container_energy + sink.particles * corner
 
     def check(self, sink: Sink) -> None:
         """Raise ParameterError unless the particles start inside the walls, every
         particle stays in a regular part of the well, and the ensemble fits in memory."""
         self.check_box(sink.well)
-        sink.well.check_energy(self.total_energy_bound(sink))
+        bound = self.total_energy_bound(sink)
+        try:
+            sink.well.check_energy(bound)
+        except ParameterError as e:  # name what the user gave: E0, not the bound
+            raise ParameterError(
+                "container_energy",
+                self.container_energy,
+                "an energy the well holds",
+                why=f"the total energy bound E0 + k V(box corner) = {bound:.6g} is refused: {e}",
+            ) from None
         self.check_memory(sink)
 
     def check_box(self, well: Well) -> None:
@@ -619,7 +639,7 @@ class Reach(Result):
 class WellSummary(Result):
     """What :meth:`Well.summary` reports: the parameters, the wall distance alpha - beta,
     the rigid wall's curvature at y = 0 and its kind (``walls``: scattering, focusing or
-    straight, from the curvature's sign) and the reach at ``energy``."""
+    straight, from the curvature's sign) and the reach of a particle of ``particle_energy``."""
 
     shape: str
     alpha: float
@@ -629,7 +649,7 @@ class WellSummary(Result):
     wall_distance: float
     curvature_at_centre: float
     walls: str
-    energy: float
+    particle_energy: float
     reach: Reach
 
 
@@ -641,7 +661,7 @@ class SinkSummary(Result):
     particles: int
     mass: float
     mu: float
-    energy: float
+    container_energy: float
     total_energy_bound: float
     runs: int
     periods: int

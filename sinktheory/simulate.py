@@ -24,7 +24,7 @@ when the state overflows) instead of returning numbers.  Individual trajectories
 differences (round-off included) grow by a factor ~10-100 per period once the particles are
 energised, so beyond a few periods a single trajectory is not reproducible by any other
 integrator or step; ensemble means, the energy audit and the bitwise results for a given
-seed, method and dt are.
+seed, scheme and dt are.
 
 Examples
 --------
@@ -61,6 +61,7 @@ from .ensemble import (
     split_values,
 )
 from .errors import ParameterError
+from .glossary import renamed
 from .integrators import get_scheme
 from .layout import StateLayout
 from .model import RunSettings, Sink
@@ -76,6 +77,7 @@ __all__ = [
     "simulate",
     "SimulationResult",
     "SimulationState",
+    "STEPPERS",
 ]
 
 
@@ -110,11 +112,17 @@ def first_order_rhs(sink: Sink):
     return f
 
 
+#: How steps are taken (``stepper``): one step for the whole ensemble, or each run its own.
+STEPPERS = ("fixed", "adaptive")
+
+
+@renamed(method=lambda value: "stepper" if value == "adaptive" else "scheme")
 def simulate(
     sink: Sink,
     settings: RunSettings | None = None,
     *,
-    method: str | None = None,
+    stepper: str | None = None,
+    scheme: str | None = None,
     dt: float | None = None,
     tol: float | None = None,
     record: Sequence[str] = ("container",),
@@ -133,11 +141,15 @@ def simulate(
         Well, number of particles k and their total mass m.
     settings : RunSettings, default RunSettings()
         Container energy E0 (X(0) = sqrt(2 E0), at rest), runs R, periods P, seed, box.
-    method : str, optional
-        Scheme name from :data:`sinktheory.integrators.SCHEMES`.  Default: the cheapest
-        scheme for ``tol`` (with ``dt``: :data:`~sinktheory.integrators.DEFAULT_SCHEME`).
-        ``"adaptive"``: each run takes its own steps (:func:`sinktheory.adaptive.
-        simulate_adaptive`; cheaper than a fixed step for stiff walls, n >~ 10).
+    stepper : {"fixed", "adaptive"}, optional
+        ``"fixed"`` (the default; with ``initial_state`` the state's own): one step for the
+        whole ensemble, from ``tol`` or ``dt``.  ``"adaptive"``: each run takes its own
+        steps, set by ``eps`` (:func:`sinktheory.adaptive.simulate_adaptive`; cheaper than a
+        fixed step for stiff walls, n >~ 10).
+    scheme : str, optional
+        Splitting scheme of the fixed stepper, from :data:`sinktheory.integrators.SCHEMES`.
+        Default: the cheapest scheme for ``tol`` (with ``dt``:
+        :data:`~sinktheory.integrators.DEFAULT_SCHEME`).
     dt : float > 0, optional
         Step, overriding ``tol``.  Always shortened to T / ceil(T / dt) so a period is a
         whole number of steps (the result reports the step used).
@@ -161,7 +173,7 @@ def simulate(
     progress : bool, optional
         Progress bar on stderr (only on a terminal, after 2 s); default on.
     eps : float in (0, 0.5], optional
-        The adaptive method's step factor (default 0.25; dt, tol and stride do not apply
+        The adaptive stepper's step factor (default 0.25; dt, tol and stride do not apply
         to it).
 
     Returns
@@ -171,7 +183,7 @@ def simulate(
     Raises
     ------
     ParameterError
-        Bad input (unknown method, dt <= 0, wrong shapes, energy the well cannot hold).
+        Bad input (unknown stepper or scheme, dt <= 0, wrong shapes, energy the well cannot hold).
     EnergyDriftError, NonFiniteStateError
         A run's energy error exceeded ``energy_bound`` or its state became non-finite; the
         message names the run, the time and the values.
@@ -186,11 +198,14 @@ def simulate(
     ((1, 6), True)
     """
     settings = check_sink(sink, settings)
+    if stepper is not None:
+        v.choice("stepper", stepper, STEPPERS)
     continues = isinstance(initial_state, SimulationState) and initial_state.method == "adaptive"
-    if method == "adaptive" or (method is None and dt is None and tol is None and continues):
-        for name, value in (("dt", dt), ("tol", tol), ("stride", stride)):
+    fixed_given = scheme is not None or dt is not None or tol is not None
+    if stepper == "adaptive" or (stepper is None and not fixed_given and continues):
+        for name, value in (("scheme", scheme), ("dt", dt), ("tol", tol), ("stride", stride)):
             if value is not None:
-                raise ParameterError(name, value, "None with method 'adaptive' (eps sets it)")
+                raise ParameterError(name, value, "None with stepper 'adaptive' (eps sets it)")
         from .adaptive import DEFAULT_EPS, simulate_adaptive
 
         eps = DEFAULT_EPS if eps is None else eps
@@ -198,9 +213,8 @@ def simulate(
                                  initial=initial, initial_state=initial_state,
                                  energy_bound=energy_bound, progress=progress)  # fmt: skip
     if eps is not None:
-        raise ParameterError("eps", eps, "None unless method is 'adaptive'")
-    if method is not None:
-        method = get_scheme(method).name
+        raise ParameterError("eps", eps, "None unless stepper is 'adaptive'")
+    method = None if scheme is None else get_scheme(scheme).name
     if tol is not None:
         tol = check_tol(tol)
     begun = prepare(sink, settings, record, initial=initial, initial_state=initial_state,

@@ -310,7 +310,7 @@ that the well can be integrated ... (with gamma = 1 it can)
         error = e
     limit = tol if tol is not None else DEFAULT_TOL
     w = sink.well
-    e0 = energy if settings is None else settings.energy
+    e0 = energy if settings is None else settings.container_energy
     for name, default in _SUSPECTS:
         given = {"gamma": w.gamma, "mass": sink.mass, "energy": e0}[name]
         if given == default:
@@ -320,7 +320,7 @@ that the well can be integrated ... (with gamma = 1 it can)
         trial = Sink(well, particles=sink.particles, mass=values["mass"])
         total = values["energy"]
         if settings is not None:
-            total = replace(settings, energy=total).total_energy_bound(trial)
+            total = replace(settings, container_energy=total).total_energy_bound(trial)
         try:
             well.check_energy(total)
             resolve_step(trial, total, method=method, tol=limit)

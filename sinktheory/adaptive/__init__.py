@@ -1,4 +1,4 @@
-"""An adaptive, time-reversible step for stiff walls (large n): opt-in, ``method="adaptive"``.
+"""An adaptive, time-reversible step for stiff walls (large n): opt-in, ``stepper="adaptive"``.
 
 The fixed step of :func:`sinktheory.simulate.simulate` must resolve every wall contact,
 whose duration shrinks like 1/n, in every step, so its steps per period grow like n.
@@ -293,7 +293,7 @@ def simulate_adaptive(
     energy_bound: float | None = None,
     progress: bool | None = None,
 ):
-    """:func:`sinktheory.simulate.simulate` with the adaptive step (``method="adaptive"``
+    """:func:`sinktheory.simulate.simulate` with the adaptive step (``stepper="adaptive"``
     there calls this).
 
     Parameters as in ``simulate``, and:

@@ -409,7 +409,7 @@ def convergence(
         rigid.energy_average,
         rigid.container_energy.mean(axis=0),
         {"shape": shape, "alpha": alpha, "beta": beta, "gamma": gamma, "particles": particles,
-         "mass": mass, "energy": settings.energy, "runs": settings.runs,
+         "mass": mass, "energy": settings.container_energy, "runs": settings.runs,
          "periods": settings.periods, "seed": settings.seed, "transient": transient,
          "tol": tol, "hit_fraction": HIT_FRACTION},
     )  # fmt: skip
@@ -508,6 +508,6 @@ def lyapunov_chart(
         np.array(soft), grid, lam, lam_se,
         np.array([r["mean"] for r in rigid]), np.array([r["stderr"] for r in rigid]),
         {"shape": shape, "alpha": alpha, "particles": particles, "mass": mass,
-         "energy": settings.energy, "runs": settings.runs, "periods": settings.periods,
+         "energy": settings.container_energy, "runs": settings.runs, "periods": settings.periods,
          "seed": settings.seed, "transient": transient},
     )  # fmt: skip

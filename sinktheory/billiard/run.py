@@ -343,11 +343,12 @@ def billiard(
         raise ParameterError("settings", settings, "a RunSettings")
     fixed, lyapunov = flag("fixed", fixed), flag("lyapunov", lyapunov)
     sink = Sink(Well(alpha, beta, 1, shape=shape), particles=particles, mass=mass)
-    if lyapunov and not fixed and not settings.energy >= MIN_SHADOW_ENERGY:
+    if lyapunov and not fixed and not settings.container_energy >= MIN_SHADOW_ENERGY:
         raise ParameterError(
-            "energy", settings.energy, f">= {MIN_SHADOW_ENERGY:g} for lambda_1 of a moving "
-            "container", why=f"its shadow trajectory starts {SHADOW_DISTANCE:g} away, which "
-            "must be small next to the container's amplitude sqrt(2 E0)",
+            "container_energy", settings.container_energy,
+            f">= {MIN_SHADOW_ENERGY:g} for lambda_1 of a moving container",
+            why=f"its shadow trajectory starts {SHADOW_DISTANCE:g} away, which must be small "
+            "next to the container's amplitude sqrt(2 E0)",
         )  # fmt: skip
     settings.check_box(sink.well)
     settings.check_memory(sink, ("container", "container", "container"))  # E_c, E, logs
@@ -356,17 +357,17 @@ def billiard(
     pos = random_positions(settings, k)
     params = {
         "shape": shape, "alpha": sink.well.alpha, "beta": sink.well.beta, "particles": k,
-        "mass": sink.mass, "energy": settings.energy, "runs": settings.runs,
+        "mass": sink.mass, "energy": settings.container_energy, "runs": settings.runs,
         "periods": settings.periods, "seed": settings.seed, "fixed": fixed,
     }  # fmt: skip
     if fixed:
-        speed = math.sqrt(2.0 * settings.energy / sink.mass)  # E0 / k per particle
+        speed = math.sqrt(2.0 * settings.container_energy / sink.mass)  # E0 / k per particle
         vel = speed * start_directions(settings, k)
         container = None
     else:
         vel = np.zeros_like(pos)
         container = np.zeros((settings.runs, 2))
-        container[:, 0] = math.sqrt(2.0 * settings.energy)
+        container[:, 0] = math.sqrt(2.0 * settings.container_energy)
     return simulate_billiard(
         table, pos, vel, mu=sink.mu, container=container, periods=settings.periods,
         lyapunov=lyapunov, seed=settings.seed, parameters=params,

@@ -43,6 +43,7 @@ from ..ensemble import (
     total_energy,
 )
 from ..errors import ParameterError
+from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..model import RunSettings, Sink
 from ..stepsize import aligned_step, step_of
@@ -134,6 +135,7 @@ def check_tangent_work(
     check(name, vectors)
 
 
+@renamed(method="scheme")
 def chaos(
     sink: Sink,
     settings: RunSettings | None = None,
@@ -142,7 +144,7 @@ def chaos(
     gali: int = 0,
     megno: bool = False,
     transverse: bool = False,
-    method: str = DEFAULT_SCHEME,
+    scheme: str = DEFAULT_SCHEME,
     dt: float | None = None,
     tol: float | None = None,
     renorm: int = 0,
@@ -170,10 +172,11 @@ def chaos(
         MEGNO Y(t) and its time average.
     transverse : bool
         Transverse exponent of y = 0 (runs restarted with y_j = 0, see module docstring).
-    method, dt, energy_bound
-        Integrator and energy audit, as for ``simulate`` (dt aligned to T / steps).
+    scheme, dt, energy_bound
+        Splitting scheme, step and energy audit, as for ``simulate`` (dt aligned to
+        T / steps; the stepper is the fixed one).
     tol : float, optional
-        Relative energy error the step of ``method`` is chosen for (default 1e-8, see
+        Relative energy error the step of ``scheme`` is chosen for (default 1e-8, see
         :mod:`sinktheory.stepsize`); ``dt`` overrides it.
     renorm : int >= 0
         Steps between extra renormalisations inside a period (0: once per period).
@@ -193,7 +196,7 @@ def chaos(
         ``times`` are t_j = j T, exponents per unit time.
     """
     settings = RunSettings() if settings is None else settings
-    scheme = get_scheme(method)
+    scheme = get_scheme(scheme)
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     options = _options(sink, spectrum, gali, megno, transverse, renorm, energy_bound, progress)
@@ -313,17 +316,17 @@ class _Point:
     def of(cls, sink, settings, transverse: bool, initial) -> _Point:
         settings = check_sink(sink, settings)
         positions = start_positions(sink, settings, initial)
-        values = start_state(sink, settings.energy, positions)
+        values = start_state(sink, settings.container_energy, positions)
         h0 = total_energy(sink, values)
         top = float(np.max(h0))
         on_plane = None
         if transverse:
             flat = positions.copy()
             flat[:, :, 1] = 0.0
-            tvalues = start_state(sink, settings.energy, flat)
+            tvalues = start_state(sink, settings.container_energy, flat)
             top = max(top, float(np.max(total_energy(sink, tvalues))))
             on_plane = split_values(tvalues)
-        sink.well.check_energy(top)
+        sink.well.check_energy(top, name="total_energy")
         return cls(sink, settings, *split_values(values), h0, on_plane, top)
 
     def parameters(self) -> dict:
@@ -336,7 +339,7 @@ class _Point:
             "gamma": w.gamma,
             "particles": self.sink.particles,
             "mass": self.sink.mass,
-            "energy": s.energy,
+            "energy": s.container_energy,
             "runs": s.runs,
             "periods": s.periods,
             "period": 2.0 * math.pi,

@@ -208,7 +208,8 @@ def add_sink_arguments(
     runs_default: int | None = 25,
     runs_help: str = "ensemble size, integer >= 1 (default 25)",
 ):
-    """Options of the particles and the run: particles, mass, energy, runs, periods, seed.
+    """Options of the particles and the run: particles, mass, container energy, runs,
+    periods, seed.
 
     Returns the argument group, so a command can add options of its own to it.
     """
@@ -218,7 +219,10 @@ def add_sink_arguments(
         "--mass", type=number, default=0.2, help="total particle mass m > 0 (default 0.2)"
     )
     g.add_argument(
-        "--energy", type=number, default=0.5, help="container energy E0 > 0 (default 0.5)"
+        "--container-energy",
+        type=number,
+        default=0.5,
+        help="the container's initial energy E0 > 0 (default 0.5)",
     )
     g.add_argument("--runs", type=number, default=runs_default, help=runs_help)
     g.add_argument(
@@ -358,11 +362,11 @@ def write_outputs(writers: dict[Path, Callable[[Path], None]]) -> None:
                 tmp.unlink()
 
 
-def add_fraction_argument(group, default, what: str) -> None:
-    """``--fraction F ...``: fractions f in (0, 1) of the total energy (``what`` says what
+def add_fractions_argument(group, default, what: str) -> None:
+    """``--fractions F ...``: fractions f in (0, 1) of the total energy (``what`` says what
     they select), checked by the equilibrium law."""
     group.add_argument(
-        "--fraction",
+        "--fractions",
         type=number,
         nargs="+",
         default=list(default),

@@ -60,7 +60,10 @@ def run(args: argparse.Namespace) -> Output:
     from ..model import RunSettings
 
     plot = png_path("--plot", args.plot)
-    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=args.runs, periods=args.periods,
+        seed=args.seed,
+    )  # fmt: skip
     result = billiard(
         args.shape,
         args.alpha,

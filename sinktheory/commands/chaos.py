@@ -62,9 +62,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     i = parser.add_argument_group("integrator")
     i.add_argument(
-        "--method",
+        "--scheme",
         default=DEFAULT_SCHEME,
-        help=f"one of {', '.join(SCHEMES)} (default {DEFAULT_SCHEME})",
+        help=f"splitting scheme: one of {', '.join(SCHEMES)} (default {DEFAULT_SCHEME})",
     )
     i.add_argument(
         "--tol",
@@ -94,14 +94,17 @@ def run(args: argparse.Namespace) -> Output:
     unsupported = {
         "--spectrum": args.spectrum, "--gali": args.gali, "--megno": args.megno,
         "--transverse": args.transverse, "--tol": args.tol, "--dt": args.dt,
-        "--renorm": args.renorm, "--method": None if args.method == DEFAULT_SCHEME else args.method,
+        "--renorm": args.renorm, "--scheme": None if args.scheme == DEFAULT_SCHEME else args.scheme,
     }  # fmt: skip
     if rigid_limit(args, unsupported):
         return _rigid(args, plot)
     from ..chaos import chaos
 
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
-    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=args.runs, periods=args.periods,
+        seed=args.seed,
+    )  # fmt: skip
     result = chaos(
         sink,
         settings,
@@ -109,7 +112,7 @@ def run(args: argparse.Namespace) -> Output:
         gali=args.gali,
         megno=args.megno,
         transverse=args.transverse,
-        method=args.method,
+        scheme=args.scheme,
         dt=args.dt,
         tol=args.tol,
         renorm=args.renorm,
@@ -185,7 +188,10 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     from ..validation import positive
 
     positive("gamma", args.gamma)
-    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=args.runs, periods=args.periods,
+        seed=args.seed,
+    )  # fmt: skip
     result = billiard(
         args.shape, args.alpha, args.beta, particles=args.particles, mass=args.mass,
         settings=settings, lyapunov=True,

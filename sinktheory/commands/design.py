@@ -61,7 +61,7 @@ GRID = {
     "gamma": "gamma",
     "particles": "particles",
     "mass": "mass",
-    "energy": "energy",
+    "container_energy": "energy",
     "damping": "damping",
     "attachment": "attachment",
     "damping_kind": "damping_kind",
@@ -104,7 +104,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--gamma", default="1.0", help="well strength > 0 (default 1)")
     g.add_argument("--particles", default="1", help="k, integers >= 1 (default 1)")
     g.add_argument("--mass", default="0.2", help="total particle mass m > 0 (default 0.2)")
-    g.add_argument("--energy", default="0.5", help="container energy E0 > 0 (default 0.5)")
+    g.add_argument(
+        "--container-energy",
+        default="0.5",
+        help="the container's initial energy E0 > 0 (default 0.5)",
+    )
     g.add_argument(
         "--damping",
         default="0",

@@ -7,7 +7,7 @@ import argparse
 from . import HELP as HELPS
 from ._common import (
     Output,
-    add_fraction_argument,
+    add_fractions_argument,
     add_json,
     add_well_arguments,
     number,
@@ -36,13 +36,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "on it)",
     )
     g.add_argument(
-        "--energy",
+        "--total-energy",
         type=number,
         default=0.5,
         help="total energy E > 0 (default 0.5; a run's E0 plus the particles' initial "
         "potential energy)",
     )
-    add_fraction_argument(g, FRACTIONS, "for the tails P(E_c >= f E) and Kac's return times")
+    add_fractions_argument(g, FRACTIONS, "for the tails P(E_c >= f E) and Kac's return times")
     parser.add_argument("--plot", metavar="FILE.png", help="draw the density of E_c / E")
     add_json(parser)
 
@@ -53,9 +53,9 @@ def run(args: argparse.Namespace) -> Output:
     from ..model import Sink
 
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
-    fractions = check_fractions(args.fraction)
+    fractions = check_fractions(args.fractions)
     plot = png_path("plot", args.plot)
-    law = equilibrium_law(sink, args.energy)
+    law = equilibrium_law(sink, args.total_energy)
     s = law.summary(fractions=fractions)
     data = s.as_dict()
     del data["s"], data["pdf"], data["cdf"], data["law"]["log_density"]

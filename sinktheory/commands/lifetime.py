@@ -8,7 +8,7 @@ import argparse
 from . import HELP as HELPS
 from ._common import (
     Output,
-    add_fraction_argument,
+    add_fractions_argument,
     add_json,
     add_sink_arguments,
     add_well_arguments,
@@ -36,7 +36,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=None,
         help="periods skipped before sampling (default: a third of --periods)",
     )
-    add_fraction_argument(g, FRACTIONS, "of the sets {E_c >= f E}")
+    add_fractions_argument(g, FRACTIONS, "of the sets {E_c >= f E}")
     g.add_argument(
         "--tol",
         type=number,
@@ -80,12 +80,15 @@ def run(args: argparse.Namespace) -> Output:
     from ..model import RunSettings, Sink
 
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
-    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=args.runs, periods=args.periods,
+        seed=args.seed,
+    )  # fmt: skip
     v.positive_int("runs", settings.runs, minimum=2)
     periods = settings.periods
     transient = periods // 3 if args.transient is None else args.transient
     v.positive_int("transient", transient, minimum=0, maximum=periods - 4)
-    fractions = check_fractions(args.fraction)
+    fractions = check_fractions(args.fractions)
     plot = png_path("plot", args.plot)
     settings.check(sink)
     c, sim = measure_lifetimes(
@@ -97,7 +100,8 @@ def run(args: argparse.Namespace) -> Output:
     data["simulation"] = sim.message
     lines = [
         f"{sink.well.shape} well alpha={law.alpha:g} beta={law.beta:g} n={law.n}, "
-        f"k={law.particles}, m={sink.mass:g}, E0={settings.energy:g} (total E={law.energy:.6g})",
+        f"k={law.particles}, m={sink.mass:g}, E0={settings.container_energy:g} "
+        f"(total E={law.energy:.6g})",
         f"  {sim.message}",
         f"  kept {c.runs} runs x {c.samples} periods after {c.transient}; "
         + _autocorrelation(c.autocorrelation_time, c.effective_samples),

@@ -5,16 +5,16 @@ y_j = 0 (both shapes) by shooting on the engine's exact tangent map, with all Fl
 multipliers (in-plane and transverse) and located folds, period doublings and
 symmetry-breaking points.
 
-* ``--continue energy``: the branch through ``--energy`` in both directions over
-  ``--range LO HI`` (energies); ``--plot`` draws the frequency-energy plot with stability.
-* ``--continue beta``: at fixed total energy (default gamma/(2n) per particle, the
+* ``--continue-in energy``: the branch through ``--total-energy`` in both directions over
+  ``--interval LO HI`` (energies); ``--plot`` draws the frequency-energy plot with stability.
+* ``--continue-in beta``: at fixed total energy (default gamma/(2n) per particle, the
   amplitude A0 = 1 of the paper's fixed-container mode), from ``--beta`` over
-  ``--range LO HI`` (betas); each point carries the transverse half-period half-trace
+  ``--interval LO HI`` (betas); each point carries the transverse half-period half-trace
   phi_T/2; ``--plot`` draws it beside the paper's fixed-container phi_T/2(beta) (Fig. 7).
-* ``--continue beta --agreement POINTS``: the chaos map's setting instead (total energy
+* ``--continue-in beta --agreement POINTS``: the chaos map's setting instead (total energy
   default 0.5, the container started at X = 1): the mode reached from the container's
   low-energy mode (:mod:`sinktheory.nnm.agreement`), corrected on POINTS betas of
-  ``--range``, a chaos map (``--runs``, ``--periods``) on the same betas, and the share of
+  ``--interval``, a chaos map (``--runs``, ``--periods``) on the same betas, and the share of
   betas where the coupled mode's transverse stability and the fixed-container Floquet
   theory each predict the chaos map's verdict; ``--plot`` adds lambda_1(beta) below.
 """
@@ -48,14 +48,18 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "particle for beta)",
     )
     g.add_argument(
-        "--continue",
-        dest="continue_in",
+        "--continue-in",
         required=True,
-        help="energy or beta (or alpha, gamma: any well parameter at fixed energy)",
+        help="energy (the total energy) or beta (or alpha, gamma: any well parameter at "
+        "fixed total energy)",
     )
-    g.add_argument("--energy", type=number, help="total energy H of the start orbit")
+    g.add_argument("--total-energy", type=number, help="total energy H of the start orbit")
     g.add_argument(
-        "--range", nargs=2, type=number, metavar=("LO", "HI"), help="continuation interval"
+        "--interval",
+        nargs=2,
+        type=number,
+        metavar=("LO", "HI"),
+        help="the continuation stays in [LO, HI]",
     )
     g.add_argument("--steps", type=number, default=400, help="steps per period, even (400)")
     g.add_argument("--points", type=number, default=120, help="points per direction (120)")
@@ -65,7 +69,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--agreement",
         type=number,
         metavar="POINTS",
-        help="with --continue beta: score the transverse stability on POINTS betas against "
+        help="with --continue-in beta: score the transverse stability on POINTS betas against "
         "a chaos map (energy default 0.5)",
     )
     g.add_argument("--runs", type=number, default=8, help="chaos map runs per beta (8)")
@@ -75,7 +79,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def _check(args) -> None:
     if args.continue_in not in ("energy", "alpha", "beta", "gamma"):
-        raise ParameterError("continue", args.continue_in, "energy, beta, alpha or gamma")
+        raise ParameterError("continue_in", args.continue_in, "energy, beta, alpha or gamma")
     if args.mode not in (None, "container", "particle"):
         raise ParameterError("mode", args.mode, "container or particle")
     from ..nnm.continuation import check_ds
@@ -89,21 +93,23 @@ def _check(args) -> None:
     check_ds(args.ds)
     if args.agreement is not None:
         if args.continue_in != "beta":
-            raise ParameterError("agreement", args.agreement, "only with --continue beta")
+            raise ParameterError("agreement", args.agreement, "only with --continue-in beta")
         if not isinstance(args.agreement, int) or not 2 <= args.agreement <= 1000:
             raise ParameterError("agreement", args.agreement, "an integer in [2, 1000]")
     for name in ("runs", "periods"):
         v = getattr(args, name)
         if not isinstance(v, int) or not 2 <= v <= 100_000:
             raise ParameterError(name, v, "an integer in [2, 100000]")
-    if args.energy is not None and not (math.isfinite(args.energy) and args.energy > 0):
-        raise ParameterError("energy", args.energy, "a finite positive energy")
-    if args.range is not None:
-        lo, hi = args.range
+    if args.total_energy is not None and not (
+        math.isfinite(args.total_energy) and args.total_energy > 0
+    ):
+        raise ParameterError("total_energy", args.total_energy, "a finite positive energy")
+    if args.interval is not None:
+        lo, hi = args.interval
         if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-            raise ParameterError("range", args.range, "two finite numbers LO < HI")
+            raise ParameterError("interval", args.interval, "two finite numbers LO < HI")
         if args.continue_in == "energy" and lo <= 0:
-            raise ParameterError("range", args.range, "positive energies")
+            raise ParameterError("interval", args.interval, "positive energies")
 
 
 def run(args: argparse.Namespace) -> Output:
@@ -116,18 +122,18 @@ def run(args: argparse.Namespace) -> Output:
     param = args.continue_in
     mode = args.mode or ("container" if param == "energy" else "particle")
     if param == "energy":
-        energy = args.energy if args.energy is not None else 1e-3
-        lo, hi = args.range if args.range is not None else (1e-4, 10.0)
+        energy = args.total_energy if args.total_energy is not None else 1e-3
+        lo, hi = args.interval if args.interval is not None else (1e-4, 10.0)
         if not lo <= energy <= hi:
-            raise ParameterError("energy", energy, f"inside --range [{lo:g}, {hi:g}]")
+            raise ParameterError("total_energy", energy, f"inside --interval [{lo:g}, {hi:g}]")
     else:
         default_energy = 0.5 if args.agreement else sink.particles * well.gamma / (2 * well.n)
-        energy = args.energy if args.energy is not None else default_energy
+        energy = args.total_energy if args.total_energy is not None else default_energy
         start = getattr(well, param)
         default = {"beta": (-1.0, well.alpha - 0.02), "alpha": (well.beta + 0.02, 2.0)}
-        lo, hi = args.range if args.range is not None else default.get(param, (0.1, 10.0))
+        lo, hi = args.interval if args.interval is not None else default.get(param, (0.1, 10.0))
         if not lo <= start <= hi:
-            raise ParameterError(param, start, f"inside --range [{lo:g}, {hi:g}]")
+            raise ParameterError(param, start, f"inside --interval [{lo:g}, {hi:g}]")
     if args.agreement:
         return _agreement(args, sink, energy, lo, hi, plot)
     from ..nnm.continuation import continue_both
@@ -135,9 +141,9 @@ def run(args: argparse.Namespace) -> Output:
     result = continue_both(
         sink,
         mode,
-        parameter=param,
-        energy=energy,
-        stop=(lo, hi),
+        continue_in=param,
+        total_energy=energy,
+        interval=(lo, hi),
         steps=args.steps,
         points=args.points,
         ds=args.ds,
@@ -174,7 +180,7 @@ def _agreement(args, sink, energy, lo, hi, plot) -> Output:
     betas = beta_grid([(lo, hi)], args.agreement)
     chart = transverse_chart(sink, energy, betas, steps=args.steps, ds=args.ds)
     chaos = chaos_map(well.alpha, well.n, betas, shape=well.shape, particles=sink.particles,
-                      mass=sink.mass, energy=energy, runs=args.runs,
+                      mass=sink.mass, container_energy=energy, runs=args.runs,
                       periods=args.periods)  # fmt: skip
     report = agreement_report(sink, energy, betas, chaos=chaos, chart=chart)
     out = _report(chart.branch, sink, "coupled", "beta")

@@ -66,17 +66,22 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     i = parser.add_argument_group("integrator")
     i.add_argument(
-        "--method",
+        "--stepper",
         default=None,
-        help=f"one of {', '.join(QUOTED['schemes'])} (default: the cheapest for --tol; "
-        f"{QUOTED['default_scheme']} with --dt), or adaptive: each run its own steps, "
-        "cheaper for stiff walls (n >~ 10)",
+        help="fixed (the default: one step for the whole ensemble, from --tol or --dt) or "
+        "adaptive: each run its own steps, cheaper for stiff walls (n >~ 10)",
+    )
+    i.add_argument(
+        "--scheme",
+        default=None,
+        help=f"splitting scheme of the fixed stepper: one of {', '.join(QUOTED['schemes'])} "
+        f"(default: the cheapest for --tol; {QUOTED['default_scheme']} with --dt)",
     )
     i.add_argument(
         "--eps",
         type=number,
         default=None,
-        help="step factor of --method adaptive, in (0, 0.5] (default 0.25: |dH|/H0 about "
+        help="step factor of --stepper adaptive, in (0, 0.5] (default 0.25: |dH|/H0 about "
         "1e-8 on Fig. 8's ensemble, 0.15: about 1e-10)",
     )
     i.add_argument(
@@ -134,12 +139,12 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
     settings.check_memory(sink, ("container",))
     if args.dt is not None:
         time_step("--dt", args.dt)
-    if args.method == "adaptive":
+    if args.stepper == "adaptive":
         from ..adaptive import MAX_EPS, MAX_STEPS, check_eps, estimated_steps
 
-        for name, value in (("--dt", args.dt), ("--tol", args.tol)):
+        for name, value in (("--scheme", args.scheme), ("--dt", args.dt), ("--tol", args.tol)):
             if value is not None:
-                raise ParameterError(name, value, "absent with --method adaptive (--eps sets "
+                raise ParameterError(name, value, "absent with --stepper adaptive (--eps sets "
                                      "its steps)")  # fmt: skip
         if args.eps is not None:
             # the estimate grows like 1 / eps: the smallest eps within the steps a period
@@ -151,15 +156,16 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
                                      f"energy", why=f"the adaptive step would take over "
                                      f"{MAX_STEPS} steps a period (estimated)")  # fmt: skip
     elif args.eps is not None:
-        raise ParameterError("--eps", args.eps, "absent unless --method adaptive")
+        raise ParameterError("--eps", args.eps, "absent unless --stepper adaptive")
 
 
 def run(args: argparse.Namespace) -> Output:
     plot = png_path("--plot", args.plot)
     out = _npz_path(args.out)
     unsupported = {
-        "--initial": args.initial, "--method": args.method, "--tol": args.tol, "--dt": args.dt,
-        "--energy-bound": args.energy_bound, "--out": args.out, "--eps": args.eps,
+        "--initial": args.initial, "--stepper": args.stepper, "--scheme": args.scheme,
+        "--tol": args.tol, "--dt": args.dt, "--energy-bound": args.energy_bound,
+        "--out": args.out, "--eps": args.eps,
     }  # fmt: skip
     if rigid_limit(args, unsupported):
         return _rigid(args, plot)
@@ -169,12 +175,15 @@ def run(args: argparse.Namespace) -> Output:
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
     initial = _initial(args.initial, sink)
     runs = args.runs if args.runs is not None else (1 if initial is not None else 25)
-    settings = RunSettings(energy=args.energy, runs=runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=runs, periods=args.periods, seed=args.seed
+    )
     _check_size(args, sink, settings, initial)
     result = simulate(
         sink,
         settings,
-        method=args.method,
+        stepper=args.stepper,
+        scheme=args.scheme,
         dt=args.dt,
         tol=args.tol,
         initial=initial,
@@ -218,7 +227,9 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
 
     positive("gamma", args.gamma)
     runs = 25 if args.runs is None else args.runs
-    settings = RunSettings(energy=args.energy, runs=runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=runs, periods=args.periods, seed=args.seed
+    )
     result = billiard(args.shape, args.alpha, args.beta, particles=args.particles,
                       mass=args.mass, settings=settings)  # fmt: skip
     mean, stderr = ensemble_mean(result.container_energy)

@@ -23,14 +23,18 @@ def run(args: argparse.Namespace) -> Output:
     from ..model import RunSettings, Sink
 
     sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
-    settings = RunSettings(energy=args.energy, runs=args.runs, periods=args.periods, seed=args.seed)
+    settings = RunSettings(
+        container_energy=args.container_energy, runs=args.runs, periods=args.periods,
+        seed=args.seed,
+    )  # fmt: skip
     s = sink.summary(settings)
     text = "\n".join(
         [
             f"{s.particles} particle(s) of mass mu = {s.mu:.6g} (total m = {s.mass:g})",
             f"  {sink.well.shape} well alpha={sink.well.alpha:g} beta={sink.well.beta:g} "
             f"n={sink.well.n} gamma={sink.well.gamma:g}",
-            f"  container energy E0 = {s.energy:g}; total energy <= {s.total_energy_bound:.10g}",
+            f"  container energy E0 = {s.container_energy:g}; "
+            f"total energy <= {s.total_energy_bound:.10g}",
             f"  particles stay within |x| <= {s.reach.x:.6g}, |y| <= {s.reach.y:.6g}",
             f"  {s.runs} run(s) x {s.periods} period(s), seed {s.seed}",
         ]

@@ -17,7 +17,10 @@ HELP = HELPS[NAME]
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_well_arguments(parser)
     parser.add_argument(
-        "--energy", type=number, default=0.5, help="particle energy for the reach (default 0.5)"
+        "--particle-energy",
+        type=number,
+        default=0.5,
+        help="the particle energy E whose reach is shown (default 0.5)",
     )
     parser.add_argument("--plot", metavar="FILE.png", help="draw level lines of V")
     add_json(parser)
@@ -25,7 +28,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> Output:
     well = well_from_args(args)
-    energy = positive("energy", args.energy)
+    energy = positive("particle_energy", args.particle_energy)
     plot = png_path("plot", args.plot)
     s = well.summary(energy)
     data = s.as_dict()
@@ -42,7 +45,7 @@ def run(args: argparse.Namespace) -> Output:
     if plot is not None:
         from ..plot.well import plot_well
 
-        fig = plot_well(well, energy=energy)
+        fig = plot_well(well, particle_energy=energy)
         out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
         data["plot"] = str(plot)
     return out

@@ -203,7 +203,7 @@ def steps_per_period(att, energy: float, *, runs: int, periods: int, tol=None) -
 
     if att.kind == "impact":
         return 0
-    settings = RunSettings(energy=energy, runs=runs, periods=periods)
+    settings = RunSettings(container_energy=energy, runs=runs, periods=periods)
     settings.check(att.sink)
     return step_of(att.sink, settings.total_energy_bound(att.sink), tol=tol, settings=settings)[2]
 

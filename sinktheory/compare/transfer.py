@@ -184,8 +184,8 @@ def backbone(att, lo: float, hi: float, *, points: int = BACKBONE_POINTS) -> tup
                 b = continue_both(
                     att.sink,
                     mode,
-                    energy=float(start),
-                    stop=(lo, hi),
+                    total_energy=float(start),
+                    interval=(lo, hi),
                     steps=BACKBONE_STEPS,
                     points=points,
                     ds=0.5,

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..glossary import renamed
 from ..integrators import get_scheme
 from ..model import RunSettings, Sink
 from ..damped import InelasticResult, check_audit, result, setup
@@ -67,13 +68,14 @@ def dissipate(sink: Sink, q, vel, damping: float, tau: float, kind: str = "conta
     return work
 
 
+@renamed(method="scheme")
 def simulate_inelastic_reference(
     sink: Sink,
     settings: RunSettings | None = None,
     *,
     damping: float = 0.0,
     damping_kind: str = "contact",
-    method: str | None = None,
+    scheme: str | None = None,
     dt: float | None = None,
     tol: float | None = None,
     dissipative_stage: bool = True,
@@ -82,7 +84,7 @@ def simulate_inelastic_reference(
 ) -> InelasticResult:
     """The NumPy integration of :func:`~sinktheory.damped.simulate_inelastic`
     (same parameters, same start states, same checks; no sampling, no progress bar)."""
-    s = setup(sink, settings, damping, method, dt, tol, energy_bound, damping_kind, start)
+    s = setup(sink, settings, damping, scheme, dt, tol, energy_bound, damping_kind, start)
     settings = RunSettings() if settings is None else settings
     q, vel, h0, engine, params = s.q, s.vel, s.h0, s.engine, s.params
     dt, steps = s.dt, s.steps
@@ -144,7 +146,7 @@ def solve_damped_ivp(sink: Sink, settings: RunSettings, damping: float, periods:
         dz[-1] = 0.5 * (Xd**2 + X**2)
         return dz
 
-    z0 = start_state(sink, settings.energy, random_positions(settings, k))[0]
+    z0 = start_state(sink, settings.container_energy, random_positions(settings, k))[0]
     T = 2 * np.pi * periods
     sol = solve_ivp(rhs, (0, T), np.concatenate((z0, [0.0, 0.0])), "DOP853",
                     rtol=1e-12, atol=1e-14)  # fmt: skip

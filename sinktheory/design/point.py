@@ -154,7 +154,7 @@ def check(p: dict) -> None:
     v.positive_int("lyapunov_runs", p["lyapunov_runs"], minimum=0, maximum=p["runs"])
     if p["lyapunov_runs"]:
         RunSettings(
-            energy=p["energy"], runs=p["lyapunov_runs"], periods=p["lyapunov_periods"]
+            container_energy=p["energy"], runs=p["lyapunov_runs"], periods=p["lyapunov_periods"]
         ).check(sink)
     v.nonnegative("damping", p["damping"])
     v.choice("damping_kind", p.get("damping_kind", "contact"), DAMPING_KINDS)
@@ -186,7 +186,7 @@ def lyapunov(p: dict, seed: int) -> tuple[float, float]:
     except ImportError:  # the chaos capability is optional for the explorer
         return math.nan, math.nan
     settings = RunSettings(
-        energy=p["energy"],
+        container_energy=p["energy"],
         runs=p["lyapunov_runs"],
         periods=p["lyapunov_periods"],
         seed=seed,

@@ -309,7 +309,7 @@ def measure_kramers_moyal(
     state = SimulationState(rows, 0.0, h0, 0.0, "")
     res = simulate(
         sink,
-        RunSettings(energy=e, runs=rows.shape[0], periods=int(lags.max()), seed=seed),
+        RunSettings(container_energy=e, runs=rows.shape[0], periods=int(lags.max()), seed=seed),
         tol=tol,
         initial_state=state,
         progress=False,

@@ -38,7 +38,7 @@ and <E_c> / E = \\int_0^1 (1 - w^n) w^p exp(h_k(w)) dw / I(p, 1).
 Examples
 --------
 >>> from sinktheory.model import Sink, Well
->>> law = equilibrium_law(Sink(Well(0.5, 0.0, 4), particles=2), energy=0.5)
+>>> law = equilibrium_law(Sink(Well(0.5, 0.0, 4), particles=2), total_energy=0.5)
 >>> round(law.mean_fraction * (1 + 2 * (1 + 1 / 4)), 12)  # Beta(1, 2.5): mean 1/3.5
 1.0
 >>> round(law.tail(0.5), 12) == round(0.5**2.5, 12)
@@ -55,6 +55,7 @@ from numpy.polynomial import chebyshev as C
 
 from .. import validation as v
 from ..errors import NumericalError, ParameterError
+from ..glossary import renamed
 from ..model import Sink
 from ..results import Result
 from ..sinkstats import equipartition_container_energy
@@ -366,13 +367,13 @@ class EquilibriumLaw(Result):
 
 def check_fractions(fractions) -> np.ndarray:
     """Fractions f as a 1-D array, each in the open interval (0, 1) (ParameterError naming
-    ``fraction`` otherwise)."""
-    fs = np.atleast_1d(v.real_array("fraction", fractions)).ravel()
+    ``fractions`` otherwise)."""
+    fs = np.atleast_1d(v.real_array("fractions", fractions)).ravel()
     if not fs.size:
-        raise ParameterError("fraction", fractions, "one or more numbers in (0, 1)")
+        raise ParameterError("fractions", fractions, "one or more numbers in (0, 1)")
     for f in fs:
         if not (0 < f < 1):
-            raise ParameterError("fraction", float(f), "a number in (0, 1)")
+            raise ParameterError("fractions", float(f), "each a number in (0, 1)")
     return fs
 
 
@@ -411,26 +412,27 @@ def _near_escape(well, e: float, error: NumericalError) -> Exception:
     """The error to raise when the one-particle series failed: at an energy just below the
     shape's escape saddle, where the basin's area is singular (its derivative grows like
     log(E_s - e)) and no series of degree 128 converges, a ParameterError naming the
-    energy; else ``error`` itself."""
+    total energy; else ``error`` itself."""
     k = well.kernels
     if not k.ESCAPE_NAME:
         return error
     escape = float(python_kernel(k.escape_energy)(well.alpha, well.beta, well.gamma, well.n))
     return ParameterError(
-        "energy", e, f"< {escape:.6g}, the height of {k.ESCAPE_NAME} of this {well.shape} well, "
-        "and far enough below it for the law's series to converge",
+        "total_energy", e, f"< {escape:.6g}, the height of {k.ESCAPE_NAME} of this "
+        f"{well.shape} well, and far enough below it for the law's series to converge",
         why=f"{100 * (1 - e / escape):.2g} % below it: the basin's area is singular at the "
         f"saddle, and {error}",
     )  # fmt: skip
 
 
-def equilibrium_law(sink: Sink, energy: float) -> EquilibriumLaw:
+@renamed(energy="total_energy")
+def equilibrium_law(sink: Sink, total_energy: float) -> EquilibriumLaw:
     """The law of E_c for ``sink`` (well and k; the mass cancels) at total energy E.
 
     Parameters
     ----------
     sink : Sink
-    energy : float
+    total_energy : float
         Total energy E > 0 (in a run: E0 plus the particles' initial potential energy),
         below the escape energy of one particle holding all of it.
 
@@ -444,8 +446,8 @@ def equilibrium_law(sink: Sink, energy: float) -> EquilibriumLaw:
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     well, k = sink.well, sink.particles
-    e = v.positive("energy", energy)
-    well.check_energy(e)
+    e = v.positive("total_energy", total_energy)
+    well.check_energy(e, name="total_energy")
     n = well.n
     t_e = scaled_energy(well, e)
 

@@ -115,7 +115,7 @@ def particle_energies(
     total = v.positive("total", total)
     size = v.positive_int("size", size)
     rng = _check_rng(rng)
-    well.check_energy(total)
+    well.check_energy(total, name="total_energy")
     if k == 1:
         return np.full((size, 1), total)
     ratio = _ratio_function(well, total)
@@ -195,7 +195,7 @@ def shell_states(
     runs = v.positive_int("runs", runs)
     rng = _check_rng(rng)
     well, k = sink.well, sink.particles
-    well.check_energy(e)
+    well.check_energy(e, name="total_energy")
     phase = rng.uniform(0.0, 2 * math.pi, size=runs)
     amplitude = math.sqrt(2 * ec)
     es = particle_energies(well, k, e - ec, runs, rng)

@@ -42,6 +42,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import renamed
 from ..model import Sink
 from .continuation import continue_orbits, merge
 from .modes import mode_guess, sink_flow
@@ -124,9 +125,10 @@ class TransverseChart:
         return out
 
 
+@renamed(energy="total_energy")
 def transverse_chart(
     sink: Sink,
-    energy: float,
+    total_energy: float,
     betas,
     *,
     start: Orbit | None = None,
@@ -134,13 +136,13 @@ def transverse_chart(
     ds: float = 0.05,
     points: int = 400,
 ) -> TransverseChart:
-    """The coupled normal mode at total ``energy`` on the grid ``betas``.
+    """The coupled normal mode at ``total_energy`` on the grid ``betas``.
 
     Parameters
     ----------
     sink : Sink
         Its well's beta is where the branch starts (inside the grid's range).
-    energy : float
+    total_energy : float
         Total energy H, fixed along the branch.
     betas : sequence of float, increasing
     start : Orbit, optional
@@ -154,6 +156,7 @@ def transverse_chart(
     lo, hi = float(betas[0]), float(betas[-1])
     if not lo <= sink.well.beta <= hi:
         raise ParameterError("beta", sink.well.beta, f"inside the grid [{lo:g}, {hi:g}]")
+    energy = total_energy
     orbit = reach_energy(sink, energy, steps=steps) if start is None else start
     system = orbit.system
     kw = dict(steps=orbit.steps, parameter="beta", energy=energy, stop=(lo, hi), ds=ds,
@@ -190,9 +193,10 @@ def _bracket(values: np.ndarray, b: float) -> int:
     return int(np.argmax(inside))
 
 
+@renamed(energy="total_energy")
 def agreement_report(
     sink: Sink,
-    energy: float,
+    total_energy: float,
     betas,
     *,
     chaos=None,
@@ -208,8 +212,10 @@ def agreement_report(
 
     Parameters
     ----------
-    sink, energy, betas : as for :func:`transverse_chart` (the chaos map uses the same
-        well, particles, mass and energy).
+    sink, total_energy, betas : as for :func:`transverse_chart` (the chaos map uses the
+        same well, particles and mass, and container energy E0 = ``total_energy``: its
+        particles start at rest in a small box at the centre, so E exceeds E0 only by their
+        potential energy there).
     chaos : xarray.Dataset, optional
         A chaos map over exactly ``betas`` (:func:`sinktheory.sweep.chaosmap.chaos_map`);
         computed with ``runs``, ``periods``, ``dt``, ``seed``, ``workers`` otherwise.
@@ -235,13 +241,14 @@ def agreement_report(
     w = sink.well
     if chaos is None:
         chaos = chaos_map(w.alpha, w.n, betas, shape=w.shape, particles=sink.particles,
-                          mass=sink.mass, energy=energy, runs=runs, periods=periods, dt=dt,
+                          mass=sink.mass, container_energy=total_energy, runs=runs,
+                          periods=periods, dt=dt,
                           seed=seed, workers=workers)  # fmt: skip
     grid = np.asarray(chaos.beta.values, dtype=float)
     if grid.shape != betas.shape or not np.allclose(grid, betas, rtol=0, atol=1e-12):
         raise ParameterError("chaos", grid.tolist(), f"a chaos map over the betas {betas.tolist()}")
     if chart is None:
-        chart = transverse_chart(sink, energy, betas, steps=steps)
+        chart = transverse_chart(sink, total_energy, betas, steps=steps)
     elif chart.beta.shape != betas.shape or not np.allclose(chart.beta, betas, rtol=0, atol=0):
         raise ParameterError("chart", chart.beta.tolist(), f"a chart over {betas.tolist()}")
     fixed = model_problem(w.alpha, w.n, gamma=w.gamma, shape=w.shape).evaluate(betas)

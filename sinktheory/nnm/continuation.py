@@ -58,6 +58,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import refusals_named, renamed
 from ..worklimit import check_particle_steps, tangent_steps
 from .shooting import (
     Orbit,
@@ -603,22 +604,23 @@ def merge(backward: Branch, forward: Branch) -> Branch:
     return out
 
 
+@renamed(parameter="continue_in", energy="total_energy", stop="interval")
 def continue_both(
     sink,
     mode: str,
     *,
-    parameter: str = "energy",
-    energy: float,
-    stop: tuple[float, float],
+    continue_in: str = "energy",
+    total_energy: float,
+    interval: tuple[float, float],
     steps: int = 400,
     points: int = 120,
     ds: float = 0.1,
     half_traces: bool = False,
     subspace: str = "plane",
 ):
-    """The sink's normal mode ``mode`` through ``energy`` continued both ways in
-    ``parameter`` (see :func:`continue_orbits`), as a
-    :class:`~sinktheory.nnm.result.BranchResult`.
+    """The sink's normal mode ``mode`` at ``total_energy`` continued both ways in
+    ``continue_in`` inside ``interval`` (see :func:`continue_orbits`: its ``parameter`` and
+    ``stop``), as a :class:`~sinktheory.nnm.result.BranchResult`.
 
     Parameters
     ----------
@@ -626,16 +628,24 @@ def continue_both(
         Container, particles and well (the start value of a well parameter).
     mode : "container" or "particle"
         Start guess (:func:`sinktheory.nnm.modes.mode_guess`).
+    continue_in : "energy" (the total energy) or a well parameter ("alpha", "beta", ...)
+    total_energy : float > 0
+        The total energy H of the start orbit (kept along a branch in a well parameter).
+    interval : (LO, HI)
+        The continuation stops where ``continue_in`` leaves it.
     half_traces : bool
         Also compute the transverse half-period half-traces phi_T/2 at every point.
     """
     from .modes import mode_guess, sink_flow
 
-    system = sink_flow(sink)
-    z0, T = mode_guess(sink, mode, energy)
-    kw = dict(steps=steps, parameter=parameter, energy=energy, stop=stop, ds=ds)
-    back = continue_orbits(system, z0, T, direction=-1, max_points=points, subspace=subspace, **kw)
-    fwd = continue_orbits(system, z0, T, direction=1, max_points=points, subspace=subspace, **kw)
+    kw = dict(steps=steps, parameter=continue_in, energy=total_energy, stop=interval, ds=ds)
+    with refusals_named(parameter="continue_in", energy="total_energy", stop="interval"):
+        system = sink_flow(sink)
+        z0, T = mode_guess(sink, mode, total_energy)
+        back = continue_orbits(system, z0, T, direction=-1, max_points=points,
+                               subspace=subspace, **kw)  # fmt: skip
+        fwd = continue_orbits(system, z0, T, direction=1, max_points=points,
+                              subspace=subspace, **kw)  # fmt: skip
     branch = merge(back, fwd)
     w = sink.well
     return branch.result(

@@ -74,7 +74,7 @@ def mode_guess(sink: Sink, mode: str, energy: float) -> tuple[np.ndarray, float]
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     v.choice("mode", mode, MODES)
     energy = v.positive("energy", energy)
-    sink.well.check_energy(energy)  # no particle can hold more than the total
+    sink.well.check_energy(energy, name="energy")  # no particle can hold more than the total
     w, k = sink.well, sink.particles
     L = w.alpha - w.beta
     z0 = np.zeros(2 * (1 + 2 * k))

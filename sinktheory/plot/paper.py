@@ -47,7 +47,7 @@ def well_panels(wells, ncols: int, energy: float, title: str):
     fig = _figure((4.2 * ncols, 4.0 * nrows))
     axes = fig.subplots(nrows, ncols, squeeze=False).ravel()
     for ax, (label, well) in zip(axes, wells, strict=False):
-        plot_well(well, energy=energy, ax=ax, points=201)
+        plot_well(well, particle_energy=energy, ax=ax, points=201)
         ax.set_title(f"{label}  $n$={well.n}, $\\beta$={well.beta:g}", fontsize=10)
     fig.suptitle(title)
     return fig

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from ..glossary import renamed
 from ..model import Well
 
 __all__ = ["LEVEL_FRACTIONS", "plot_well"]
@@ -13,13 +14,15 @@ __all__ = ["LEVEL_FRACTIONS", "plot_well"]
 LEVEL_FRACTIONS = (1e-3, 1e-2, 0.05, 0.15, 0.35, 0.65, 1.0)
 
 
-def plot_well(well: Well, energy: float = 0.5, ax=None, points: int = 301):
+@renamed(energy="particle_energy")
+def plot_well(well: Well, particle_energy: float = 0.5, ax=None, points: int = 301):
     """Draw level lines V = f E of ``well`` over the basin a particle of energy E reaches.
 
     Parameters
     ----------
     well : Well
-    energy : float > 0
+    particle_energy : float > 0
+        E, the energy of one particle.
         The outermost level line; the plot covers the region it encloses.
     ax : matplotlib Axes, optional
         Draw into it; a new Figure is made otherwise.
@@ -36,6 +39,7 @@ def plot_well(well: Well, energy: float = 0.5, ax=None, points: int = 301):
     >>> fig.axes[0].get_xlabel()
     '$x$'
     """
+    energy = particle_energy
     x_max, y_max = well.reach(energy)
     half = 1.15 * max(x_max, y_max)
     xs = np.linspace(-half, half, points)

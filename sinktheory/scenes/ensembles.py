@@ -42,7 +42,7 @@ def ensemble(
     does not integrate it twice.
     """
     sink = Sink(Well(alpha, beta, n, shape=shape), particles=k, mass=MASS)
-    settings = RunSettings(energy=E0, runs=runs, periods=periods, seed=SEED)
+    settings = RunSettings(container_energy=E0, runs=runs, periods=periods, seed=SEED)
     res = simulate(sink, settings, progress=False)
     return res.container_energy, res.max_relative_energy_error, float(res.initial_energy.mean())
 

@@ -21,11 +21,13 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import renamed
 from .grid import MAX_POINTS
 
 __all__ = ["beta_grid", "chaos_map"]
 
 
+@renamed(energy="container_energy")
 def chaos_map(
     alpha: float,
     n: int,
@@ -34,7 +36,7 @@ def chaos_map(
     shape: str = "flat",
     particles: int = 1,
     mass: float = 0.2,
-    energy: float = 0.5,
+    container_energy: float = 0.5,
     runs: int = 8,
     periods: int = 300,
     transverse: bool = True,
@@ -63,7 +65,7 @@ def chaos_map(
         "shape": shape,
         "particles": particles,
         "mass": mass,
-        "energy": energy,
+        "energy": container_energy,
         "runs": runs,
         "periods": periods,
         "transverse": int(v.flag("transverse", transverse)),

@@ -146,7 +146,7 @@ def test_simulate_n_inf_is_the_rigid_billiard(capsys):
     [
         (["chaos", *BASE, "--dt", "0.01"], "--dt"),
         (["chaos", *BASE, "--spectrum"], "--spectrum"),
-        (["chaos", *BASE, "--method", "verlet"], "--method"),
+        (["chaos", *BASE, "--scheme", "verlet"], "--scheme"),
         (["simulate", *BASE, "--tol", "1e-6"], "--tol"),
         (["simulate", *BASE, "--initial", "0", "0"], "--initial"),
         (["chaos", *BASE[:5], "-inf", *BASE[6:]], "n"),

@@ -373,8 +373,8 @@ def test_tol_sets_the_step_and_is_refused_with_dt():
     sink = Sink(FIG8_WELL, particles=1, mass=0.2)
     settings = RunSettings(runs=1, periods=2, seed=3)
     for tol in (1e-6, 1e-10):
-        res = chaos(sink, settings, tol=tol, method="blanes-moan6")
-        plain = simulate(sink, settings, tol=tol, method="blanes-moan6", progress=False)
+        res = chaos(sink, settings, tol=tol, scheme="blanes-moan6")
+        plain = simulate(sink, settings, tol=tol, scheme="blanes-moan6", progress=False)
         assert res.parameters["steps_per_segment"] == plain.steps_per_period
     with pytest.raises(ParameterError, match="^tol = "):
         chaos(sink, settings, tol=1e-6, dt=0.01)

@@ -56,7 +56,7 @@ def test_all_indicators_text_and_plot(capsys, tmp_path):
         (["--gali", "99"], "gali"),
         (["--renorm", "-3"], "renorm"),
         (["--runs", "0"], "runs"),
-        (["--method", "euler"], "method"),
+        (["--scheme", "euler"], "scheme"),
         (["--plot", "out.txt"], "--plot"),
     ],
 )

@@ -28,7 +28,7 @@ def test_cli_equals_api_for_the_fig8_wells(k, capsys):
 def test_text_and_plot(tmp_path, capsys):
     png = tmp_path / "law.png"
     code, out, err = run(
-        [*FIG8, "--particles", "2", "--fraction", "0.5", "--plot", str(png)], capsys
+        [*FIG8, "--particles", "2", "--fractions", "0.5", "--plot", str(png)], capsys
     )
     assert code == 0, err
     assert "<E_c>" in out and "Kac" in out
@@ -42,14 +42,17 @@ SYM = ["equilibrium", "--alpha", "0.5", "--beta", "0.3", "--n", "2", "--shape", 
     "argv,name",
     [
         ([*FIG8, "--particles", "0"], "particles"),
-        ([*FIG8, "--fraction", "0"], "fraction"),
-        ([*FIG8, "--fraction", "0.5", "1"], "fraction"),
-        ([*FIG8, "--fraction", "-0.1"], "fraction"),
-        ([*FIG8, "--energy", "0"], "energy"),
-        ([*FIG8, "--energy", "nan"], "energy"),
+        ([*FIG8, "--fractions", "0"], "fractions"),
+        ([*FIG8, "--fractions", "0.5", "1"], "fractions"),
+        ([*FIG8, "--fractions", "-0.1"], "fractions"),
+        ([*FIG8, "--total-energy", "0"], "total_energy"),
+        ([*FIG8, "--total-energy", "nan"], "total_energy"),
         ([*FIG8, "--mass", "-1"], "mass"),
-        ([*SYM, "--energy", "10"], "energy"),  # above the corner saddle 8.68
-        (["equilibrium", "--alpha", "0.5", "--beta", "-0.3", "--n", "4", "--energy", "50"], "beta"),
+        ([*SYM, "--total-energy", "10"], "total_energy"),  # above the corner saddle 8.68
+        (
+            ["equilibrium", "--alpha", "0.5", "--beta", "-0.3", "--n", "4", "--total-energy", "50"],
+            "beta",
+        ),
         (["equilibrium", "--alpha", "0.5", "--beta", "0.5", "--n", "4"], "beta"),
     ],
 )
@@ -69,7 +72,7 @@ def test_lifetime_cli_equals_api(tmp_path, capsys):
     from sinktheory.equilibrium.lifetime import measure_lifetimes
 
     png = tmp_path / "life.png"
-    argv = [*LIFE, "--runs", "2", "--periods", "60", "--transient", "20", "--fraction", "0.5"]
+    argv = [*LIFE, "--runs", "2", "--periods", "60", "--transient", "20", "--fractions", "0.5"]
     code, out, err = run([*argv, "--json", "--plot", str(png)], capsys)
     assert code == 0, err
     data = json.loads(out)
@@ -86,7 +89,7 @@ def test_lifetime_cli_equals_api(tmp_path, capsys):
     [
         ([*LIFE, "--runs", "1"], "runs"),
         ([*LIFE, "--periods", "50", "--transient", "50"], "transient"),
-        ([*LIFE, "--fraction", "1.0"], "fraction"),
+        ([*LIFE, "--fractions", "1.0"], "fractions"),
         ([*LIFE, "--particles", "0"], "particles"),
     ],
 )

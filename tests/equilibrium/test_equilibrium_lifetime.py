@@ -125,7 +125,7 @@ def test_fig8_late_distribution_and_returns_agree_with_the_law(k, transient):
     # errors (runs as batches), and the mean return times to {E_c >= f E} agree with
     # Kac's 1/P within 3 jackknife errors.  Seed 1, as benchmarks/bench_equilibrium.py.
     sink = Sink(FIG8_WELL, particles=k, mass=0.2)
-    settings = RunSettings(energy=0.5, runs=8, periods=transient + 3000, seed=1)
+    settings = RunSettings(container_energy=0.5, runs=8, periods=transient + 3000, seed=1)
     c, sim = measure_lifetimes(sink, settings, transient=transient, fractions=[0.2, 0.5, 0.8])
     assert sim.max_relative_energy_error < 1e-6
     assert c.samples == 3001 and c.runs == 8

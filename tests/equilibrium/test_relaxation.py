@@ -105,7 +105,10 @@ def test_fig8_k5_settling_is_stable_in_ensemble_size():
     # an extrapolation, and the late mean agrees with the law's, computed independently.
     sink = FIG8_SINK
     sim = simulate(
-        sink, RunSettings(energy=0.5, runs=64, periods=8000, seed=1), tol=1e-6, progress=False
+        sink,
+        RunSettings(container_energy=0.5, runs=64, periods=8000, seed=1),
+        tol=1e-6,
+        progress=False,
     )
     assert sim.max_relative_energy_error < 1e-5
     law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))

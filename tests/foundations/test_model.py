@@ -61,8 +61,8 @@ def test_bad_sink_is_refused(kwargs, name):
         (dict(runs=2.5), "runs"),
         (dict(periods=0), "periods"),
         (dict(periods=-10), "periods"),
-        (dict(energy=0.0), "energy"),
-        (dict(energy=math.nan), "energy"),
+        (dict(container_energy=0.0), "container_energy"),
+        (dict(container_energy=math.nan), "container_energy"),
         (dict(seed=-1), "seed"),
         (dict(box=0.0), "box"),
     ],
@@ -93,7 +93,7 @@ def test_symmetric_well_refused_above_corner_saddle():
     s = np.linspace(0.01, 3, 3001)
     v_diag = well.potential(s, s)
     assert abs(v_diag.max() - 1 / 6) < 1e-6
-    with pytest.raises(ParameterError, match="^energy = "):
+    with pytest.raises(ParameterError, match="^particle_energy = "):
         well.reach(0.5)
     well.reach(0.1)
 
@@ -147,7 +147,7 @@ def test_models_are_immutable():
 def test_sink_mu_and_energy_bound():
     sink = FIG8_SINK
     assert sink.mu == pytest.approx(0.04)
-    settings = RunSettings(energy=0.5, box=0.01)
+    settings = RunSettings(container_energy=0.5, box=0.01)
     bound = settings.total_energy_bound(sink)
     # V(0.01, 0.01) = (1/8) [(0.01/0.2)^8 + 0.01^8]: independent hand evaluation
     assert bound == pytest.approx(0.5 + 5 * ((0.01 / 0.2) ** 8 + 0.01**8) / 8, rel=1e-14)

@@ -145,9 +145,9 @@ def test_period_well_sink_cli_json_is_the_api_as_dict(capsys):
 def test_nnm_branch_follows_the_protocol(capsys):
     from sinktheory.nnm.continuation import continue_both
 
-    # what `sinktheory nnm --continue beta` runs: particle mode, E = k gamma / (2n)
-    res = continue_both(Sink(Well(0.5, -0.2, 4), 1, 0.2), "particle", parameter="beta",
-                        energy=0.125, stop=(-0.3, -0.1), steps=100, points=4, ds=0.1,
+    # what `sinktheory nnm --continue-in beta` runs: particle mode, E = k gamma / (2n)
+    res = continue_both(Sink(Well(0.5, -0.2, 4), 1, 0.2), "particle", continue_in="beta",
+                        total_energy=0.125, interval=(-0.3, -0.1), steps=100, points=4, ds=0.1,
                         half_traces=True)  # fmt: skip
     assert isinstance(res, Result)
     d = res.as_dict()
@@ -162,8 +162,8 @@ def test_nnm_branch_follows_the_protocol(capsys):
     # orbit's symmetry makes it exact for the discrete maps too: 1e-14 measured)
     trace = ds.transverse.sum("transverse_multiplier").real
     np.testing.assert_allclose(trace, 2 * (2 * ds.phi_half[:, 0] ** 2 - 1), atol=1e-10)
-    argv = ["nnm", "--alpha", "0.5", "--beta", "-0.2", "--n", "4", "--continue", "beta"]
-    argv += ["--range", "-0.3", "-0.1", "--points", "4", "--steps", "100"]
+    argv = ["nnm", "--alpha", "0.5", "--beta", "-0.2", "--n", "4", "--continue-in", "beta"]
+    argv += ["--interval", "-0.3", "-0.1", "--points", "4", "--steps", "100"]
     assert cli_json(argv, capsys) == d
 
 

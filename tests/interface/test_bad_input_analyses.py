@@ -14,7 +14,7 @@ from sinktheory.canonical import FIG8_WELL
 
 WELL = ["--alpha", "0.5", "--beta", "0.3", "--n", "4"]
 CHAOS = ["chaos", *WELL, "--runs", "2", "--periods", "2", "--quiet"]
-NNM = ["nnm", *WELL, "--continue", "energy"]
+NNM = ["nnm", *WELL, "--continue-in", "energy"]
 DESIGN = ["design", "--beta", "0.3", "--n", "4", "--out", "d.zarr", "--quiet"]
 SWEEP_CHAOS = ["sweep", "chaos", "--param", "alpha=0.5", "--param", "beta=0.3", "--param", "n=4"]
 SWEEP_DESIGN = ["sweep", "design", "--param", "beta=0.3", "--param", "n=4"]
@@ -42,7 +42,7 @@ CASES = [
     ([*DESIGN, "--gamma", "1e308"], "gamma", "with gamma = 1 it can"),
     ([*CHAOS, "--gamma", "1e308"], "gamma", "with gamma = 1 it can"),
     # item 3: absurd sizes refused up front, with the estimate
-    (["nnm", *WELL, "--continue", "energy", "--steps", "1000000000"], "steps", "1000000]"),
+    (["nnm", *WELL, "--continue-in", "energy", "--steps", "1000000000"], "steps", "1000000]"),
     ([*NNM, "--points", "10000", "--ds", "1e-300"], "ds", "[1e-06, 10]"),
     ([*DESIGN, "--bootstrap", "1000000000"], "bootstrap", "[2, 100000]"),
     (["chaos", *WELL, "--particles", "1000", "--spectrum", "--quiet"], "spectrum", "4002"),
@@ -370,7 +370,7 @@ def test_nnm_prints_sigma_at_its_precision(capsys):
 
     from _cli import run_cli
 
-    argv = ["nnm", *WELL, "--continue", "energy", "--points", "3"]
+    argv = ["nnm", *WELL, "--continue-in", "energy", "--points", "3"]
     code, out, err = run_cli(argv, capsys)
     assert code == 0, err
     assert "sigma = 0 (to the Newton tolerance 1e-11)" in out and "e-16" not in out

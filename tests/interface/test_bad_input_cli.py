@@ -245,6 +245,7 @@ LIGHT = {
     "sinktheory.commands._common",
     "sinktheory.errors",
     "sinktheory.limits",  # plain numbers, imports nothing
+    "sinktheory.glossary",  # the names of the options; functools and warnings only
     "sinktheory.progress",  # signal holding for Ctrl-C; tqdm only, no numerics
     "sinktheory.validation",
 }
@@ -268,12 +269,12 @@ def test_light_commands_import_no_plotting_or_arrays(args):
 
 # --------------------------------------------------------------------------- sizes
 SIZES = [
-    ([*SIM, "--energy", "1e308"], "energy", "(0, 1.25e+23]"),
+    ([*SIM, "--container-energy", "1e308"], "container_energy", "(0, 1.25e+23]"),
     ([*SIM, "--mass", "1e-320"], "mass", ">= 1e-12"),
     ([*SIM, "--mass", "5e-12", "--particles", "10"], "mass", "1e-11"),
     (["sink", *WELL, "--mass", "1e-320"], "mass", ">= 1e-12"),
-    (["well", *WELL, "--energy", "1e308"], "energy", "reach c"),
-    (["well", *WELL[:-1], "1000", "--energy", "1e308"], "energy", "overflow"),
+    (["well", *WELL, "--particle-energy", "1e308"], "particle_energy", "reach c"),
+    (["well", *WELL[:-1], "1000", "--particle-energy", "1e308"], "particle_energy", "overflow"),
     ([*SIM[:-5], "--periods", "2", "--initial", "1e308", "0", "--quiet"], "--initial", "walls"),
     ([*SIM[:-5], "--periods", "2", "--initial", "0.21", "0", "--quiet"], "--initial", "walls"),
     ([*SIM[:-5], "--periods", "2", "--initial", "0", "nan", "--quiet"], "--initial", "walls"),
@@ -343,7 +344,7 @@ def test_bools_are_not_numbers():
         (lambda: Sink(FIG8_WELL, particles=True), "particles"),
         (lambda: Sink(FIG8_WELL, mass=True), "mass"),
         (lambda: RunSettings(runs=True), "runs"),
-        (lambda: RunSettings(energy=np.bool_(True)), "energy"),
+        (lambda: RunSettings(container_energy=np.bool_(True)), "container_energy"),
     ]
     for make, name in cases:
         with pytest.raises(ParameterError) as info:

@@ -69,7 +69,7 @@ BAD = [
     (["sink", *WELL, "--runs", "0"], "runs"),
     (["sink", *WELL, "--periods", "0"], "periods"),
     (["sink", *WELL, "--periods", "-5"], "periods"),
-    (["sink", *WELL, "--energy", "inf"], "energy"),
+    (["sink", *WELL, "--container-energy", "inf"], "container_energy"),
 ]
 
 

@@ -31,8 +31,10 @@ API = {
     "billiard fixed yes": (lambda: _billiard(fixed="yes"), "fixed"),
     # a shadow trajectory 1e-9 away from a container of amplitude 1e-150 measured nothing
     "billiard shadow energy": (
-        lambda: _billiard(settings=RunSettings(energy=1e-300, runs=2, periods=2), lyapunov=True),
-        "energy",
+        lambda: _billiard(
+            settings=RunSettings(container_energy=1e-300, runs=2, periods=2), lyapunov=True
+        ),
+        "container_energy",
     ),
 }
 
@@ -76,7 +78,7 @@ API.update(
         "scaled_energy -1": (lambda: _area("scaled_energy", -1), "energy"),  # complex
         "area_ratio nan": (lambda: _area("area_ratio", math.nan), "t"),  # NaN
         # 0.0027 % below the corner saddle the area's series cannot converge
-        "law near the saddle": (lambda: _symmetric_law(75.35), "energy"),
+        "law near the saddle": (lambda: _symmetric_law(75.35), "total_energy"),
         "compare damping 1e308": (lambda: _compare(1e308), "damping"),  # LinAlgError
         "compare attachments None": (lambda: _compare(0.1, [None]), "attachments"),  # raw
         "compare attachments str": (lambda: _compare(0.1, "nes"), "attachments"),
@@ -115,7 +117,7 @@ def _continue_orbits(**kw):
 def _continue_both(**kw):
     from sinktheory.nnm.continuation import continue_both
 
-    return continue_both(_sink_mode(), "container", energy=0.5, points=3, steps=100, **kw)
+    return continue_both(_sink_mode(), "container", total_energy=0.5, points=3, steps=100, **kw)
 
 
 API.update(
@@ -126,7 +128,10 @@ API.update(
         "floquet free out of range": (lambda: _floquet(free=[0, 7]), "free"),  # IndexError
         "floquet free 0.5": (lambda: _floquet(free=[0.5]), "free"),  # cast to 0
         "continue_orbits ds_max < ds": (lambda: _continue_orbits(ds=0.1, ds_max=0.01), "ds_max"),
-        "continue_both stop excludes start": (lambda: _continue_both(stop=(1, 2)), "stop"),
+        "continue_both interval excludes start": (
+            lambda: _continue_both(interval=(1, 2)),
+            "interval",
+        ),
     }
 )
 
@@ -152,7 +157,7 @@ def test_billiard_without_impacts_says_so(fixed):
     """A table far larger than the motion or an E0 too small to reach a wall: no impact
     in the run, so no mean free time (inf per run, null in the ensemble summary) where a
     division by zero warned and the text crashed formatting None."""
-    tiny = RunSettings(energy=1e-300, runs=2, periods=2)
+    tiny = RunSettings(container_energy=1e-300, runs=2, periods=2)
     r = _no_warning_run(
         lambda: _billiard(settings=tiny, fixed=True, lyapunov=True) if fixed else _billiard(1e18)
     )
@@ -174,8 +179,8 @@ SIMULATE = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--runs",
 CLI = {
     "billiard alpha 1e308": (["billiard", "--alpha", "1e308", "--beta", "0.3"], "alpha"),
     # an overflow at 1e-320; 1e-300 was refused naming --runs
-    "adaptive eps 1e-320": ([*SIMULATE, "--method", "adaptive", "--eps", "1e-320"], "--eps"),
-    "adaptive eps 1e-300": ([*SIMULATE, "--method", "adaptive", "--eps", "1e-300"], "--eps"),
+    "adaptive eps 1e-320": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-320"], "--eps"),
+    "adaptive eps 1e-300": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-300"], "--eps"),
 }
 
 
@@ -191,8 +196,17 @@ def test_cli_refuses_in_one_line(case, capsys):
     "argv",
     [
         ["--alpha", "1e18", "--beta", "0.3"],
-        ["--alpha", "0.5", "--beta", "0.3", "--energy", "1e-300"],
-        ["--alpha", "0.5", "--beta", "0.3", "--energy", "1e-320", "--fixed", "--lyapunov"],
+        ["--alpha", "0.5", "--beta", "0.3", "--container-energy", "1e-300"],
+        [
+            "--alpha",
+            "0.5",
+            "--beta",
+            "0.3",
+            "--container-energy",
+            "1e-320",
+            "--fixed",
+            "--lyapunov",
+        ],
     ],
 )
 def test_billiard_cli_without_impacts(argv, capsys):

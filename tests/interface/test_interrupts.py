@@ -98,7 +98,7 @@ CASES = {
     # one period of ~1e10 impacts: the compiled call does not return for minutes, so the
     # signal's watcher ends the process (SIGTERM could not stop it, not even timeout's)
     "billiard-one-long-period": (["billiard", *WELL, "--runs", "1", "--periods", "1",
-                                  "--fixed", "--energy", "1e18"], signal.SIGTERM, None),
+                                  "--fixed", "--container-energy", "1e18"], signal.SIGTERM, None),
     "sweep": (SWEEP.split(), signal.SIGTERM, "--resume continues"),
 }  # fmt: skip
 

@@ -10,7 +10,7 @@ BASE = ["nnm", "--alpha", "0.5", "--n", "4"]
 
 def test_energy_continuation_json_and_plot(tmp_path, capsys):
     png = tmp_path / "fep.png"
-    argv = BASE + ["--beta", "-0.2", "--continue", "energy", "--range", "1e-3", "0.2"]
+    argv = BASE + ["--beta", "-0.2", "--continue-in", "energy", "--interval", "1e-3", "0.2"]
     code, out, err = run_cli(argv + ["--points", "60", "--plot", str(png), "--json"], capsys)
     assert code == 0, err
     data = json.loads(out)
@@ -23,12 +23,12 @@ def test_energy_continuation_json_and_plot(tmp_path, capsys):
 @pytest.mark.parametrize(
     "extra, name",
     [
-        (["--beta", "0.2", "--continue", "mass"], "continue"),
-        (["--beta", "0.2", "--continue", "energy", "--steps", "7"], "steps"),
-        (["--beta", "0.2", "--continue", "energy", "--range", "1", "0.1"], "range"),
-        (["--beta", "0.6", "--continue", "energy"], "beta"),
-        (["--beta", "0.2", "--continue", "beta", "--range", "0.3", "0.4"], "beta"),
-        (["--beta", "0.2", "--continue", "energy", "--agreement", "8"], "agreement"),
+        (["--beta", "0.2", "--continue-in", "mass"], "continue_in"),
+        (["--beta", "0.2", "--continue-in", "energy", "--steps", "7"], "steps"),
+        (["--beta", "0.2", "--continue-in", "energy", "--interval", "1", "0.1"], "interval"),
+        (["--beta", "0.6", "--continue-in", "energy"], "beta"),
+        (["--beta", "0.2", "--continue-in", "beta", "--interval", "0.3", "0.4"], "beta"),
+        (["--beta", "0.2", "--continue-in", "energy", "--agreement", "8"], "agreement"),
     ],
 )
 def test_bad_input_is_one_line_exit_2_no_file(tmp_path, capsys, extra, name):
@@ -42,7 +42,7 @@ def test_agreement_with_a_small_chaos_map(tmp_path, capsys):
     """--agreement on 4 betas (2 runs x 20 periods: a smoke-size chaos map): the shares
     are recomputed here from the JSON's own verdict and stability arrays."""
     png = tmp_path / "agree.png"
-    argv = BASE + ["--beta", "-0.2", "--continue", "beta", "--range", "-0.6", "0.2",
+    argv = BASE + ["--beta", "-0.2", "--continue-in", "beta", "--interval", "-0.6", "0.2",
                    "--agreement", "4", "--runs", "2", "--periods", "20"]  # fmt: skip
     code, out, err = run_cli(argv + ["--plot", str(png), "--json"], capsys)
     assert code == 0, err

@@ -342,7 +342,7 @@ def test_read_only_parameter_arrays_are_accepted(method):
     beta = np.array([0.05, 0.1, 0.2])
     frozen = beta.copy()
     frozen.setflags(write=False)
-    kw = {"coefficient": FLAT.hill_coefficient, "alpha": 0.5, "method": method}
+    kw = {"coefficient": FLAT.hill_coefficient, "alpha": 0.5, "implementation": method}
     a = integrate_quarter_period(4, frozen, **kw)
     b = integrate_quarter_period(4, beta, **kw)
     np.testing.assert_array_equal(a.y1, b.y1)

@@ -34,7 +34,7 @@ def test_growth_of_y_matches_the_floquet_exponent():
     per_period = 40_000
     rows = sampled_run(
         sink,
-        RunSettings(energy=1e-12, runs=1, periods=1),
+        RunSettings(container_energy=1e-12, runs=1, periods=1),
         (L * (1 - 1e-13), 1e-250),
         per_period=per_period,
     )

@@ -11,7 +11,7 @@ without loading numba's compiler.  Checked here:
 - the interpreted run against independent references: mpmath's Taylor solver at 30
   digits (1e-10, the accuracy the chart promises), scipy's solve_ivp over whole half
   periods (1e-9), and the exact phi_half = -1 of the circular well;
-- the choice ``method="auto"`` makes in a fresh process: one value interpreted without
+- the choice ``implementation="auto"`` makes in a fresh process: one value interpreted without
   importing numba's array support or scipy.linalg, a chart compiled, a long single
   integration handed to the compiled loop, with the same numbers.
 """
@@ -62,7 +62,7 @@ def quarter(problem, value, method):
         coefficient=problem.coefficient,
         amplitude=1.0 if pure else problem.amplitude,
         alpha=problem.alpha,
-        method=method,
+        implementation=method,
     )
 
 
@@ -100,7 +100,7 @@ def test_interpreted_run_certified_by_mpmath(n, lam):
     """phi_half = y1 y2' + y2 y1' at Q to 1e-10 relative to max(1, |phi_half|)."""
     y1, dy1, y2, dy2, _ = quarter_period_mpmath(n, lam, dps=30)
     ref = float(y1 * dy2 + y2 * dy1)
-    qp = integrate_quarter_period(n, np.array([lam]), method="python")
+    qp = integrate_quarter_period(n, np.array([lam]), implementation="python")
     got = qp.y1[0] * qp.dy2[0] + qp.y2[0] * qp.dy1[0]
     assert abs(got - ref) <= 1e-10 * max(1.0, abs(ref))
 
@@ -109,7 +109,7 @@ def test_interpreted_model_run_agrees_with_solve_ivp():
     """Flat well, n = 4, beta = 0.1: M(T/2) from the quarter-period formulas vs solve_ivp
     over a whole half period (rtol 1e-13 gives ~1e-11; 1e-9 has margin)."""
     q = bundle("flat").hill_coefficient
-    qp = integrate_quarter_period(4, [0.1], coefficient=q, alpha=0.5, method="python")
+    qp = integrate_quarter_period(4, [0.1], coefficient=q, alpha=0.5, implementation="python")
     y1, dy1, y2, dy2 = qp.y1[0], qp.dy1[0], qp.y2[0], qp.dy2[0]
     predicted = np.array([[y1 * dy2 + y2 * dy1, 2 * y2 * dy2], [2 * y1 * dy1, y1 * dy2 + y2 * dy1]])
     half = monodromy_solve_ivp(4, 0.1, coefficient=q, alpha=0.5)
@@ -125,11 +125,12 @@ def test_interpreted_circular_well_is_neutral():
 
 def test_interpreted_run_raises_like_the_compiled_one():
     with pytest.raises(HillIntegrationError, match="quarter period"):
-        integrate_quarter_period(10, np.array([1e6]), max_steps=50, method="python")
+        integrate_quarter_period(10, np.array([1e6]), max_steps=50, implementation="python")
 
 
 @pytest.mark.parametrize(
-    ("kwargs", "name"), [({"method": "numba"}, "method"), ({"max_steps": 0}, "max_steps")]
+    ("kwargs", "name"),
+    [({"implementation": "numba"}, "implementation"), ({"max_steps": 0}, "max_steps")],
 )
 def test_bad_options_name_the_parameter(kwargs, name):
     with pytest.raises(ParameterError) as info:

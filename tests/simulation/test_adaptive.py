@@ -32,7 +32,7 @@ def test_container_energy_agrees_with_the_fixed_step(n, tolerance):
     # n = 20 agreed to 6e-10 but cost CI 30 s of compilation)
     sink, settings = _fig8(n), RunSettings(runs=4, periods=3, seed=3)
     fixed = simulate(sink, settings, tol=1e-12, progress=False)
-    adaptive = simulate(sink, settings, method="adaptive", eps=0.05, progress=False)
+    adaptive = simulate(sink, settings, stepper="adaptive", eps=0.05, progress=False)
     assert adaptive.method == "adaptive"
     assert adaptive.max_relative_energy_error < 1e-12
     np.testing.assert_allclose(adaptive.times, fixed.times)
@@ -130,7 +130,7 @@ def test_energy_audit_names_run_and_time():
 )
 def test_bad_input_is_refused(kwargs, name):
     with pytest.raises(ParameterError, match=f"^{name} = "):
-        simulate(_fig8(4, 1), RunSettings(runs=1, periods=1), method="adaptive", **kwargs)
+        simulate(_fig8(4, 1), RunSettings(runs=1, periods=1), stepper="adaptive", **kwargs)
 
 
 def test_eps_without_the_adaptive_method_is_refused():
@@ -141,11 +141,12 @@ def test_eps_without_the_adaptive_method_is_refused():
 def test_cli(tmp_path, capsys):
     common = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--particles", "2",
               "--runs", "2", "--periods", "2", "--quiet"]  # fmt: skip
-    code, out, _ = run_cli(common + ["--method", "adaptive", "--eps", "0.2"], capsys)
+    code, out, _ = run_cli(common + ["--stepper", "adaptive", "--eps", "0.2"], capsys)
     assert code == 0 and "adaptive blanes-moan6, eps = 0.2" in out
-    for bad in (["--method", "adaptive", "--eps", "0"], ["--eps", "0.2"],
-                ["--method", "adaptive", "--dt", "0.01"], ["--method", "adaptive", "--tol", "1e-9"],
-                ["--method", "adaptive", "--n", "inf"]):  # fmt: skip
+    adaptive = ["--stepper", "adaptive"]
+    for bad in ([*adaptive, "--eps", "0"], ["--eps", "0.2"], [*adaptive, "--dt", "0.01"],
+                [*adaptive, "--tol", "1e-9"], [*adaptive, "--scheme", "verlet"],
+                [*adaptive, "--n", "inf"]):  # fmt: skip
         npz = tmp_path / "x.npz"
         code, out, err = run_cli(common + bad + ["--out", str(npz)], capsys)
         assert code == 2 and err.count("\n") == 1 and not npz.exists()
@@ -161,5 +162,5 @@ def test_work_beyond_the_limit_is_refused_before_any_step():
     t0 = time.perf_counter()
     with pytest.raises(ParameterError, match=r"periods = 20000000 .* x 767 step"):
         settings = RunSettings(runs=25, periods=2 * 10**7)
-        simulate(sink, settings, method="adaptive", record=("final",))
+        simulate(sink, settings, stepper="adaptive", record=("final",))
     assert time.perf_counter() - t0 < 5

@@ -143,7 +143,7 @@ def test_on_the_line_y_0_equals_the_flat_well():
     for shape in ("flat", "circular"):
         sink = Sink(Well(0.5, 0.1, 4, shape=shape), particles=1, mass=0.2)
         out[shape] = simulate(
-            sink, settings, method="blanes-moan6", dt=0.01, initial=start, progress=False
+            sink, settings, scheme="blanes-moan6", dt=0.01, initial=start, progress=False
         )
     assert out["flat"].container_energy.min() < 0.45  # the particle did take energy
     np.testing.assert_allclose(

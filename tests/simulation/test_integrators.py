@@ -29,11 +29,11 @@ def test_coefficients_are_consistent_and_symmetric(name):
     assert s.reference
 
 
-def test_default_and_unknown_method():
+def test_default_and_unknown_scheme():
     assert DEFAULT_SCHEME in SCHEMES
     with pytest.raises(ParameterError) as info:
         get_scheme("rk4")
-    assert info.value.name == "method"
+    assert info.value.name == "scheme"
 
 
 # A smooth (n = 2) two-particle problem started with substantial particle energy, so every
@@ -69,7 +69,7 @@ def test_convergence_order(name, reference):
             SINK,
             RunSettings(runs=1, periods=1),
             initial=START,
-            method=name,
+            scheme=name,
             dt=2 * math.pi / steps,
             record=("final",),
             energy_bound=1.0,

@@ -205,7 +205,7 @@ def test_energy_the_well_cannot_hold_is_refused():
     # take enough energy (sqrt(2)^8/8 = 2) to get there, where V is singular
     sink = Sink(Well(0.5, -0.5, 4), particles=1, mass=0.2)
     with pytest.raises(ParameterError) as info:
-        simulate(sink, RunSettings(energy=2.0, runs=1, periods=1), initial=[(0.0, 0.5)])
+        simulate(sink, RunSettings(container_energy=2.0, runs=1, periods=1), initial=[(0.0, 0.5)])
     assert info.value.name == "beta"
 
 
@@ -236,7 +236,9 @@ def test_non_finite_continuation_state_is_refused():
     [
         ({"dt": 0.0}, "dt"),
         ({"dt": -1e-3}, "dt"),
-        ({"method": "euler"}, "method"),
+        ({"scheme": "euler"}, "scheme"),
+        ({"stepper": "rk45"}, "stepper"),
+        ({"stepper": "adaptive", "scheme": "verlet"}, "scheme"),
         ({"record": ("energy",)}, "record"),
         ({"energy_bound": 0}, "energy_bound"),
         ({"initial": np.zeros((4, 2))}, "initial"),
@@ -289,7 +291,8 @@ def test_cli_single_run_from_initial_positions(capsys):
         ["--initial", "0", "0.01", "0.0"],  # odd count
         ["--particles", "2", "--initial", "0", "0.01"],  # count != 2 k
         ["--dt", "0"],
-        ["--method", "rk45"],
+        ["--scheme", "rk45"],
+        ["--stepper", "rk45"],
         ["--out", "x.csv"],
     ],
 )

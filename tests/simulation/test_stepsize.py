@@ -77,7 +77,7 @@ def test_tol_and_dt_together_are_refused():
 
 
 def test_forced_method_gets_its_own_step_for_the_tolerance():
-    res = simulate(UNSEEN[0], RunSettings(runs=1, periods=20, seed=1), method="yoshida4", tol=1e-7)
+    res = simulate(UNSEEN[0], RunSettings(runs=1, periods=20, seed=1), scheme="yoshida4", tol=1e-7)
     assert res.method == "yoshida4"
     assert res.max_relative_energy_error <= 1e-7
 

@@ -46,7 +46,9 @@ def test_linear_attachment_is_the_damped_two_dof_system():
 
     att = Attachment("nes", alpha=1.2, beta=0.2, n=1, mass=0.2)
     mu, c, E = 0.2, 0.05, 0.1
-    settings = RunSettings(energy=E, runs=2, periods=6, seed=3, box=0.01 * math.sqrt(2 * E))
+    settings = RunSettings(
+        container_energy=E, runs=2, periods=6, seed=3, box=0.01 * math.sqrt(2 * E)
+    )
     rows = start_rows(att, settings)
     Minv = np.diag([1.0, 1.0 / mu])
     K = np.array([[2.0, -1.0], [-1.0, 1.0]])  # container spring 1 + absorber 1
@@ -56,7 +58,7 @@ def test_linear_attachment_is_the_damped_two_dof_system():
     for dt in (0.01, 0.005):
         res = simulate_inelastic(
             att.sink, settings, damping=c, damping_kind="viscous", dt=dt,
-            method="blanes-moan6", start=rows, samples_per_period=16,
+            scheme="blanes-moan6", start=rows, samples_per_period=16,
         )  # fmt: skip
         worst = 0.0
         for r in range(2):
@@ -190,7 +192,7 @@ def test_leaving_the_line_follows_the_transverse_exponent():
     E, P = 0.05, 24
     for beta in (0.3, -0.6):
         att = Attachment("nes", beta=beta, n=2)
-        st = RunSettings(energy=E, runs=2, periods=P, box=0.01 * math.sqrt(2 * E))
+        st = RunSettings(container_energy=E, runs=2, periods=P, box=0.01 * math.sqrt(2 * E))
         q, v = split_values(start_rows(att, st))
         m, dt, steps, _ = resolve_step(att.sink, E, tol=1e-8)
         lam = indicators(engine_name(att.sink), q, v, engine_params(att.sink), dt=dt,

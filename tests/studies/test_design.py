@@ -183,7 +183,10 @@ def test_explorer_equals_simulate_and_sinkstats_at_fig8():
         seed = point_seed(7, i)
         sink = Sink(FIG8_WELL, particles=k, mass=0.2)
         res = simulate(
-            sink, RunSettings(energy=0.5, runs=3, periods=40, seed=seed), tol=1e-6, progress=False
+            sink,
+            RunSettings(container_energy=0.5, runs=3, periods=40, seed=seed),
+            tol=1e-6,
+            progress=False,
         )
         e = res.container_energy
         mean, se = ensemble_mean(e)
@@ -205,7 +208,7 @@ def test_explorer_equals_simulate_and_sinkstats_at_fig8():
         assert float(p.equipartition) == s.equipartition == total / (1 + k * 1.25)
         det = rqa(mean, eps=0.005).determinism
         assert float(p.rqa_determinism) == det or (np.isnan(det) and np.isnan(p.rqa_determinism))
-        lam = chaos(sink, RunSettings(energy=0.5, runs=2, periods=5, seed=seed)).lambda1
+        lam = chaos(sink, RunSettings(container_energy=0.5, runs=2, periods=5, seed=seed)).lambda1
         assert float(p.lambda1) == lam.mean()
     # the ranked table carries the same numbers
     by_k = {r["particles"]: r for r in run.ranked}

@@ -109,7 +109,7 @@ def test_against_solve_ivp_second_order_and_audited():
     errors = []
     for steps in (200, 400):
         res = simulate_inelastic(sink, settings, damping=2.0, dt=2 * np.pi / steps,
-                                 method="blanes-moan6")  # fmt: skip
+                                 scheme="blanes-moan6")  # fmt: skip
         assert res.steps_per_period == steps
         assert res.max_audit_error < 1e-8  # H + W = H0 up to the conservative stage
         assert np.all(np.diff(res.dissipated, axis=1) >= 0)
@@ -189,7 +189,7 @@ def test_seeded_and_independent_of_the_other_runs():
         ({"damping": -0.1}, "damping"),
         ({"damping": float("nan")}, "damping"),
         ({"dt": 0.01, "tol": 1e-6}, "tol"),
-        ({"method": "euler"}, "method"),
+        ({"scheme": "euler"}, "scheme"),
         ({"energy_bound": 0.0}, "energy_bound"),
         ({"damping_kind": "coulomb"}, "damping_kind"),
         ({"samples_per_period": -1}, "samples_per_period"),

@@ -1,0 +1,308 @@
+"""One meaning for each parameter name, on the command line and in Python alike.
+
+:data:`GLOSSARY` maps every name a user passes -- an option ``--foo-bar`` of a command,
+the keyword ``foo_bar`` of a public function, a sweep parameter ``foo_bar=...`` -- to its
+one meaning.  An option and the keyword it feeds have the same name (``-`` for ``_``).
+tests/interface/test_names.py walks every command's parser, the public entry points'
+signatures and the sweep kinds, and fails on a name that is not here, on an option whose
+keyword is named differently, and on an option whose help does not say what the glossary
+says (its :data:`MARKS`).
+
+Names that changed keep working for one release: :func:`renamed` accepts an old keyword
+with a DeprecationWarning that names the new one, and :func:`modern_argv` rewrites an old
+option of a command (:data:`RENAMED_OPTIONS`) with a one-line note on stderr.
+
+Examples
+--------
+>>> GLOSSARY["container_energy"].split(":")[0]
+'E0'
+>>> @renamed(energy="container_energy")
+... def f(*, container_energy=0.5):
+...     return container_energy
+>>> import warnings
+>>> with warnings.catch_warnings(record=True) as caught:
+...     warnings.simplefilter("always")
+...     f(energy=2.0), str(caught[0].message).split(" (")[0]
+(2.0, "f: the keyword 'energy' is now 'container_energy'")
+>>> modern_argv(["simulate", "--alpha", "0.5", "--energy=2"])
+(['simulate', '--alpha', '0.5', '--container-energy=2'], ['--energy is now --container-energy'])
+"""
+
+from __future__ import annotations
+
+import contextlib
+import functools
+import warnings
+from collections.abc import Callable
+
+__all__ = [
+    "GLOSSARY",
+    "MARKS",
+    "RENAMED_OPTIONS",
+    "modern_argv",
+    "old_attribute",
+    "refusals_named",
+    "option_of",
+    "renamed",
+]
+
+#: name -> its one meaning.  The part before the first colon, where there is one, is the
+#: symbol of the paper or the short form the help texts use.
+GLOSSARY: dict[str, str] = {
+    # --- energies: each says whose energy it is
+    "container_energy": "E0: the container's energy at the start of a run (displaced to "
+    "X = sqrt(2 E0) and released at rest; the particles start at rest near the centre)",
+    "total_energy": "E: the total energy H of container and particles, conserved by the "
+    "dynamics (in a run E0 plus the particles' initial potential energy)",
+    "particle_energy": "the energy of one particle in the well (kinetic plus potential)",
+    "energy": "E_n = A0^(2n)/(2n): the energy of the power-law oscillator x'' + x^(2n-1) = 0 "
+    "(no container, no particles)",
+    "energies": "E0 grid: initial container energies (impulse energies) LO, HI, COUNT log-spaced",
+    "wavelet_energy": "E0 of the wavelet maps: the impulse energy of one run",
+    "energy_bound": "bound: the largest relative total-energy error |H - H0|/H0 tolerated",
+    # --- how the equations are integrated
+    "stepper": "fixed (one step for the whole ensemble, from tol or dt) or adaptive (each run "
+    "its own steps, set by eps)",
+    "scheme": "splitting scheme of the fixed-step integrator (verlet, yoshida4, blanes-moan4, "
+    "yoshida6, blanes-moan6, suzuki-umeno8)",
+    "implementation": "which code runs a loop: compiled (numba), python, or auto (python for "
+    "the first few single values, compiled after)",
+    "dt": "step: the time step (shortened so a period is a whole number of steps)",
+    "tol": "relative energy error wanted, from which the scheme and step are chosen",
+    "eps": "step factor of the adaptive stepper",
+    "steps": "steps per period",
+    "renorm": "steps between renormalisations of the tangent vectors",
+    "rtol": "per-step relative tolerance of an error-controlled integration",
+    "dps": "decimal digits of working precision",
+    "digits": "significant digits printed",
+    # --- the well
+    "alpha": "alpha: the wall parameter (alpha - beta is the wall distance on y = 0)",
+    "beta": "beta: the curvature parameter of the walls (curvature/2)",
+    "n": "n: the wall stiffness (exponent of the walls; inf is the rigid limit)",
+    "gamma": "gamma: the well strength",
+    "shape": "the well's shape (flat, symmetric, circular)",
+    "nes_n": "the wall exponent of the 1-D NES",
+    # --- particles and runs
+    "particles": "k: the number of particles",
+    "mass": "m: the particles' total mass",
+    "runs": "ensemble size: the number of runs",
+    "periods": "periods T = 2 pi of the container",
+    "seed": "random seed of the initial positions (the same seed gives the same runs)",
+    "box": "half-width of the square around the centre where particles start",
+    "initial": "particle positions relative to the container at the start, at rest",
+    "initial_state": "a previous result's final state to continue from",
+    "record": "what a run keeps (container, particles, trajectory, final)",
+    "stride": "steps between trajectory samples",
+    "samples": "samples per period of the records",
+    "transient": "periods left out at the start before measuring",
+    "progress": "progress bar on stderr",
+    "quiet": "no progress bar (and no estimate line)",
+    "settings": "RunSettings: container energy E0, runs, periods, seed, box",
+    "sink": "Sink: the well, the particles and their mass",
+    "well": "Well: alpha, beta, n, gamma, shape",
+    # --- analyses
+    "spectrum": "the Lyapunov spectrum (QR): all exponents or the D largest",
+    "gali": "GALI_K order K",
+    "megno": "MEGNO Y(t) and its time average",
+    "transverse": "the transverse exponent of the invariant plane y = 0",
+    "lyapunov": "the largest Lyapunov exponent lambda_1",
+    "fixed": "a fixed container (only the particles move)",
+    "fractions": "fractions f in (0, 1) of the total energy E selecting the sets {E_c >= f E}",
+    "fraction": "f: the relative distance from the target that counts as settled",
+    "amplitude": "A0: the amplitude of the oscillator x(t)",
+    "order": "the highest order i of the successive approximations",
+    "lam": "Lam: the coefficient of the pure Hill equation",
+    "beta_range": "beta grid LO HI COUNT",
+    "lam_range": "Lam grid LO HI COUNT",
+    "mode": "the normal mode a branch starts from (container or particle)",
+    "continue_in": "the parameter a branch is continued in (energy: the total energy, or a "
+    "well parameter)",
+    "interval": "[LO, HI]: the interval a continuation stays in",
+    "points": "points per direction of a continuation",
+    "ds": "the first arclength step of a continuation",
+    "agreement": "betas scored against a chaos map",
+    "damping": "damping coefficient (what it acts on: damping_kind)",
+    "damping_kind": "what damping of the 2-D well is (contact or dashpot)",
+    "attachment": "the absorber attached (well, nes, impact)",
+    "attachments": "the absorbers compared (well, nes, impact)",
+    "wavelet": "wavelet maps over the normal modes",
+    "horizons": "periods at which the absorbed fraction is measured",
+    "sigmas": "verdict threshold in standard errors",
+    "risk_level": "absorbed level whose risk is measured",
+    "rqa_eps": "RQA recurrence threshold eps / E0",
+    "bootstrap": "bootstrap resamples",
+    "lyapunov_runs": "runs for lambda_1",
+    "lyapunov_periods": "periods for lambda_1",
+    "top": "designs in the report",
+    # --- commands and their outputs
+    "plot": "FILE.png: a chart",
+    "out": "where results are written (a file or a store)",
+    "report": "directory of the design report",
+    "json": "one JSON object on stdout",
+    "latex": "LaTeX instead of text",
+    "fresh": "derive again instead of reading the cache",
+    "figure": "the paper's figures to draw",
+    "quick": "a low-fidelity preview",
+    "kind": "the analysis a sweep runs",
+    "param": "a swept parameter NAME=LO:HI:COUNT, NAME=V1,V2,... or NAME=VALUE",
+    "resume": "continue the sweep in a store",
+    "repair": "recompute the points of damaged chunks",
+    "scheduler": "Dask scheduler",
+    "workers": "local processes",
+    "no_estimate": "skip the cost calibration",
+}
+
+#: name -> what the help text of its option must say (default: the glossary's symbol,
+#: the part before the first colon, when there is one).
+MARKS: dict[str, str] = {
+    "container_energy": "E0",
+    "total_energy": "total energy",
+    "particle_energy": "particle energy",
+    "energy": "E_n",
+    "energies": "container energies",
+    "scheme": "verlet",
+    "stepper": "adaptive",
+}
+
+
+def _stepper_or_scheme(value: str) -> str:
+    """Where an old ``--method`` went: ``adaptive`` is a stepper, the rest are schemes."""
+    return "--stepper" if value == "adaptive" else "--scheme"
+
+
+#: command -> old option -> its new name, or a function of the option's value giving it.
+RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
+    **{
+        command: {"--energy": "--container-energy"}
+        for command in ("sink", "billiard", "design")
+    },
+    "lifetime": {"--energy": "--container-energy", "--fraction": "--fractions"},
+    "simulate": {"--energy": "--container-energy", "--method": _stepper_or_scheme},
+    "well": {"--energy": "--particle-energy"},
+    "equilibrium": {"--energy": "--total-energy", "--fraction": "--fractions"},
+    "nnm": {"--energy": "--total-energy", "--continue": "--continue-in", "--range": "--interval"},
+    "chaos": {"--energy": "--container-energy", "--method": "--scheme"},
+}
+
+
+def option_of(name: str) -> str:
+    """The option of a keyword: ``container_energy`` -> ``--container-energy``."""
+    return "--" + name.replace("_", "-")
+
+
+def renamed(**renames: str | Callable[[object], str]):
+    """Decorator: accept the old keywords of a function (or a class's constructor) for one
+    more release, each with a DeprecationWarning naming its new name (or the name the
+    value decides: ``method="adaptive"`` -> ``stepper``).  The signature shows the new
+    names only."""
+
+    def wrap(obj):
+        target = obj.__init__ if isinstance(obj, type) else obj
+        owner = obj.__qualname__
+
+        @functools.wraps(target)
+        def modern(*args, **kwargs):
+            for old, new in renames.items():
+                if old in kwargs:
+                    value = kwargs.pop(old)
+                    name = new(value) if callable(new) else new
+                    warnings.warn(
+                        f"{owner}: the keyword {old!r} is now {name!r} (the old name goes in "
+                        "the next release)",
+                        DeprecationWarning,
+                        stacklevel=2,
+                    )
+                    if name in kwargs:
+                        from .errors import ParameterError
+
+                        raise ParameterError(old, value, f"left out: {name} is given too")
+                    kwargs[name] = value
+            return target(*args, **kwargs)
+
+        if isinstance(obj, type):
+            obj.__init__ = modern
+            return obj
+        return modern
+
+    return wrap
+
+
+class old_attribute:  # noqa: N801 (used like a property)
+    """A read-only attribute kept under its old name for one release: reading it gives the
+    attribute ``new`` with a DeprecationWarning naming it.
+
+    Examples
+    --------
+    >>> class Settings:
+    ...     container_energy = 0.5
+    ...     energy = old_attribute("container_energy")
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     Settings().energy, str(caught[0].message).split(" (")[0]
+    (0.5, "Settings: the attribute 'energy' is now 'container_energy'")
+    """
+
+    def __init__(self, new: str) -> None:
+        self.new = new
+
+    def __set_name__(self, owner, name: str) -> None:
+        self.old, self.owner = name, owner.__qualname__
+
+    def __get__(self, obj, objtype=None):
+        if obj is None:
+            return self
+        warnings.warn(
+            f"{self.owner}: the attribute {self.old!r} is now {self.new!r} (the old name goes "
+            "in the next release)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return getattr(obj, self.new)
+
+
+@contextlib.contextmanager
+def refusals_named(**names: str):
+    """Inside, a ParameterError that names a keyword of a lower-level function (``stop``)
+    names the caller's keyword (``interval``) instead, so the user reads the name they typed.
+
+    Examples
+    --------
+    >>> from sinktheory.errors import ParameterError
+    >>> with refusals_named(stop="interval"):
+    ...     raise ParameterError("stop", (2, 1), "LO < HI")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: interval = (2, 1) is not allowed: must be LO < HI
+    """
+    from .errors import ParameterError
+
+    try:
+        yield
+    except ParameterError as e:
+        new = names.get(e.name)
+        if new is None or not str(e).startswith(f"{e.name} = "):
+            raise
+        error = ParameterError(new, e.value, e.allowed)
+        error.args = (new + str(e)[len(e.name) :],)
+        raise error from None
+
+
+def modern_argv(argv: list[str]) -> tuple[list[str], list[str]]:
+    """``argv`` with the old options of its command (:data:`RENAMED_OPTIONS`) renamed, and
+    one note ``--old is now --new`` for each; other words are left as they are."""
+    at = next((i for i, w in enumerate(argv) if not w.startswith("-")), len(argv))
+    table = RENAMED_OPTIONS.get(argv[at] if at < len(argv) else "", {})
+    out, notes = [], []
+    for i, word in enumerate(argv):
+        option, sep, value = word.partition("=")
+        if i > at and option in table and word.startswith("--"):
+            new = table[option]
+            if callable(new):
+                given = value if sep else (argv[i + 1] if i + 1 < len(argv) else "")
+                new = new(given)
+            note = f"{option} is now {new}"
+            if note not in notes:
+                notes.append(note)
+            word = new + sep + value
+        out.append(word)
+    return out, notes

@@ -1,0 +1,188 @@
+"""One meaning for each parameter name: the inventory of every name a user passes.
+
+Walks every command's parser, the signatures of the public entry points (the top-level
+``st.*`` callables and what each command calls) and the sweep kinds' parameters, and
+checks them against :data:`sinktheory.glossary.GLOSSARY`: every name is defined there;
+an option ``--foo-bar`` is stored as ``foo_bar`` and feeds the keyword ``foo_bar`` of
+its command's entry points; the help of an option says what the glossary's mark says;
+the renamed options and keywords still work, with a note naming the new one.
+"""
+
+import argparse
+import importlib
+import inspect
+import warnings
+
+import pytest
+from _cli import run_cli
+
+import sinktheory as st
+from sinktheory.cli import build_parser
+from sinktheory.glossary import GLOSSARY, MARKS, RENAMED_OPTIONS, option_of
+
+#: command -> "module:callable" of the entry points its options feed (classes: their
+#: constructor; "Class.method": a method).
+ENTRY_POINTS = {
+    "well": ["model:Well", "model:Well.summary"],
+    "sink": ["model:Well", "model:Sink", "model:RunSettings"],
+    "derive": [],
+    "simulate": ["model:Well", "model:Sink", "model:RunSettings", "simulate:simulate"],
+    "period": ["oscillator:oscillator"],
+    "series": ["series:accuracy"],
+    "reproduce": [],
+    "floquet": ["floquet:model_problem", "floquet:pure_problem", "model:Well"],
+    "nnm": ["model:Well", "model:Sink", "nnm.continuation:continue_both",
+            "nnm.agreement:agreement_report"],  # fmt: skip
+    "chaos": ["model:Well", "model:Sink", "model:RunSettings", "chaos:chaos"],
+    "design": ["model:Well", "model:Sink", "model:RunSettings", "sweep.runner:run_sweep"],
+    "billiard": ["billiard:billiard", "model:RunSettings"],
+    "equilibrium": ["model:Well", "model:Sink", "equilibrium.law:equilibrium_law"],
+    "lifetime": ["model:Well", "model:Sink", "model:RunSettings",
+                 "equilibrium.lifetime:measure_lifetimes"],  # fmt: skip
+    "compare": ["compare.efficiency:attachments_of", "compare.efficiency:compare",
+                "compare.transfer:transfer_map"],  # fmt: skip
+    "sweep": ["sweep.runner:run_sweep"],
+}
+#: Options that shape the command's output or its run and feed no keyword.
+COMMAND_ONLY = {"json", "plot", "out", "quiet", "report", "latex", "fresh", "figure", "quick",
+                "param", "top", "no_estimate", "digits"}  # fmt: skip
+#: command -> options whose keyword is still named differently (each entry must still be
+#: needed: the test fails when one is fixed, so the list only shrinks).
+KNOWN_DISAGREEMENTS = {
+    "floquet": {"beta", "lam", "beta_range", "lam_range"},  # scan(problem, lo, hi, count)
+    "compare": {"attachments", "shape", "samples", "energies", "wavelet", "wavelet_energy"},
+    "design": {"shape", "alpha", "beta", "n", "gamma", "particles", "mass", "container_energy",
+               "damping", "damping_kind", "attachment", "horizons", "tol", "transient",
+               "sigmas", "risk_level", "rqa_eps", "bootstrap", "lyapunov_runs",
+               "lyapunov_periods", "box", "runs", "periods"},  # fmt: skip  # sweep params
+    "nnm": {"agreement", "interval", "continue_in"},
+    "chaos": {"n"},
+}
+
+
+def subparsers() -> dict[str, argparse.ArgumentParser]:
+    parser = build_parser()
+    action = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    return dict(action.choices)
+
+
+def options(parser: argparse.ArgumentParser):
+    """(option string, dest, help) of every option of ``parser``."""
+    for a in parser._actions:
+        if a.option_strings and a.dest != "help":
+            long = [o for o in a.option_strings if o.startswith("--")]
+            yield long[0], a.dest, a.help or ""
+
+
+def resolve(spec: str):
+    module, _, name = spec.partition(":")
+    obj = importlib.import_module(f"sinktheory.{module}")
+    for part in name.split("."):
+        obj = getattr(obj, part)
+    return obj
+
+
+def keywords(obj) -> set[str]:
+    fn = obj.__init__ if isinstance(obj, type) else obj
+    fn = getattr(type(obj), "__call__", fn) if isinstance(obj, type(st)) else fn
+    skip = (inspect.Parameter.VAR_POSITIONAL, inspect.Parameter.VAR_KEYWORD)
+    return {
+        name
+        for name, p in inspect.signature(fn).parameters.items()
+        if p.kind not in skip and name not in ("self", "cls")
+    }
+
+
+def top_level_callables():
+    for name in st.__all__:
+        obj = getattr(st, name)
+        if isinstance(obj, type) and (issubclass(obj, BaseException) or name not in
+                                      ("Well", "Sink", "RunSettings")):  # fmt: skip
+            continue  # errors and result types are not called by users
+        yield name, obj
+
+
+PARSERS = subparsers()
+
+
+def test_every_command_is_inventoried():
+    assert set(ENTRY_POINTS) == set(PARSERS)
+
+
+@pytest.mark.parametrize("command", sorted(PARSERS))
+def test_options_are_stored_under_their_own_name(command):
+    for option, dest, _ in options(PARSERS[command]):
+        assert option == option_of(dest), f"{command} {option} is stored as {dest!r}"
+
+
+@pytest.mark.parametrize("command", sorted(PARSERS))
+def test_every_option_is_in_the_glossary_and_its_help_says_so(command):
+    for option, dest, text in options(PARSERS[command]):
+        assert dest in GLOSSARY, f"{command} {option}: add its one meaning to the glossary"
+        mark = MARKS.get(dest)
+        assert mark is None or mark in text, f"{command} {option}: help must say {mark!r}"
+
+
+@pytest.mark.parametrize("command", sorted(PARSERS))
+def test_options_feed_keywords_of_the_same_name(command):
+    fed = set().union(*(keywords(resolve(s)) for s in ENTRY_POINTS[command]))
+    known = KNOWN_DISAGREEMENTS.get(command, set())
+    names = {dest for _, dest, _ in options(PARSERS[command])} - COMMAND_ONLY
+    differ = names - fed
+    assert differ <= known, f"{command}: {sorted(differ - known)} feed no keyword of that name"
+    assert known <= differ, f"{command}: {sorted(known - differ)} agree now; drop them"
+
+
+def test_every_keyword_of_the_entry_points_is_in_the_glossary():
+    specs = {s for specs in ENTRY_POINTS.values() for s in specs}
+    objs = [(s, resolve(s)) for s in sorted(specs)] + list(top_level_callables())
+    missing = {f"{where}({name})" for where, obj in objs for name in keywords(obj)
+               if name not in GLOSSARY}  # fmt: skip
+    assert not missing, f"keywords with no meaning in the glossary: {sorted(missing)}"
+
+
+def test_every_sweep_parameter_is_in_the_glossary():
+    from sinktheory.sweep.kinds import KINDS
+
+    missing = {f"{k}:{p}" for k, kind in KINDS.items() for p in kind.params if p not in GLOSSARY}
+    assert not missing, f"sweep parameters with no meaning in the glossary: {sorted(missing)}"
+
+
+def test_a_second_meaning_fails():
+    """The checks above see a name used for something else: an option whose help does not
+    say the glossary's mark."""
+    marked = [(dest, text) for p in PARSERS.values() for _, dest, text in options(p)
+              if dest in MARKS]  # fmt: skip
+    assert {dest for dest, _ in marked} >= {"container_energy", "total_energy", "energy"}
+    assert MARKS["container_energy"] not in "total energy E > 0"
+
+
+@pytest.mark.parametrize(
+    "command, old", [(c, o) for c, table in sorted(RENAMED_OPTIONS.items()) for o in table]
+)
+def test_renamed_options_are_gone_from_the_parser(command, old):
+    assert old not in {o for o, _, _ in options(PARSERS[command])}
+    new = RENAMED_OPTIONS[command][old]
+    new = new("") if callable(new) else new
+    assert new in {o for o, _, _ in options(PARSERS[command])}
+
+
+def test_an_old_option_still_works_with_a_note(capsys):
+    new = run_cli(["sink", "--alpha", "0.5", "--beta", "0.3", "--n", "4",
+                   "--container-energy", "0.7", "--json"], capsys)  # fmt: skip
+    old = run_cli(["sink", "--alpha", "0.5", "--beta", "0.3", "--n", "4",
+                   "--energy=0.7", "--json"], capsys)  # fmt: skip
+    assert new[0] == old[0] == 0 and new[1] == old[1] and new[2] == ""
+    assert old[2].strip() == (
+        "sinktheory sink: note: --energy is now --container-energy (the old name goes in "
+        "the next release)"
+    )
+
+
+def test_an_old_keyword_still_works_with_a_warning():
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
+        old = st.RunSettings(energy=0.7)
+    assert old == st.RunSettings(container_energy=0.7)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        st.RunSettings(container_energy=0.7)
