@@ -39,8 +39,8 @@ True
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from dataclasses import replace
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -77,6 +77,7 @@ __all__ = [
     "simulate",
     "SimulationResult",
     "SimulationState",
+    "Stepper",
     "STEPPERS",
 ]
 
@@ -112,8 +113,30 @@ def first_order_rhs(sink: Sink):
     return f
 
 
-#: How steps are taken (``stepper``): one step for the whole ensemble, or each run its own.
-STEPPERS = ("fixed", "adaptive")
+@dataclass(frozen=True)
+class Stepper:
+    """One way of taking the steps of :func:`simulate` (an entry of :data:`STEPPERS`).
+
+    Attributes
+    ----------
+    name : the ``stepper`` value that picks it
+    options : the keywords of :func:`simulate` only this stepper takes (given to another
+        stepper they are refused, naming the keyword)
+    run : ``run(sink, settings, *, record, initial, initial_state, energy_bound, progress,
+        **options)`` -> :class:`SimulationResult`
+    summary : one line for help texts
+    """
+
+    name: str
+    options: tuple[str, ...]
+    run: Callable[..., SimulationResult]
+    summary: str
+
+
+def _run_adaptive(sink, settings, *, eps=None, **common) -> SimulationResult:
+    from .adaptive import DEFAULT_EPS, simulate_adaptive  # SymPy-printed kernels: load late
+
+    return simulate_adaptive(sink, settings, eps=DEFAULT_EPS if eps is None else eps, **common)
 
 
 @renamed(method=lambda value: "stepper" if value == "adaptive" else "scheme")
@@ -142,10 +165,11 @@ def simulate(
     settings : RunSettings, default RunSettings()
         Container energy E0 (X(0) = sqrt(2 E0), at rest), runs R, periods P, seed, box.
     stepper : {"fixed", "adaptive"}, optional
-        ``"fixed"`` (the default; with ``initial_state`` the state's own): one step for the
-        whole ensemble, from ``tol`` or ``dt``.  ``"adaptive"``: each run takes its own
-        steps, set by ``eps`` (:func:`sinktheory.adaptive.simulate_adaptive`; cheaper than a
-        fixed step for stiff walls, n >~ 10).
+        A key of :data:`STEPPERS`, the registry of ways to take steps.  ``"fixed"`` (the
+        default; with ``initial_state`` the state's own): one step for the whole ensemble,
+        from ``tol`` or ``dt``.  ``"adaptive"``: each run takes its own steps, set by
+        ``eps`` (:func:`sinktheory.adaptive.simulate_adaptive`; cheaper than a fixed step
+        for stiff walls, n >~ 10).  A keyword that only another stepper takes is refused.
     scheme : str, optional
         Splitting scheme of the fixed stepper, from :data:`sinktheory.integrators.SCHEMES`.
         Default: the cheapest scheme for ``tol`` (with ``dt``:
@@ -198,22 +222,26 @@ def simulate(
     ((1, 6), True)
     """
     settings = check_sink(sink, settings)
-    if stepper is not None:
-        v.choice("stepper", stepper, STEPPERS)
-    continues = isinstance(initial_state, SimulationState) and initial_state.method == "adaptive"
-    fixed_given = scheme is not None or dt is not None or tol is not None
-    if stepper == "adaptive" or (stepper is None and not fixed_given and continues):
-        for name, value in (("scheme", scheme), ("dt", dt), ("tol", tol), ("stride", stride)):
-            if value is not None:
-                raise ParameterError(name, value, "None with stepper 'adaptive' (eps sets it)")
-        from .adaptive import DEFAULT_EPS, simulate_adaptive
+    given = {"scheme": scheme, "dt": dt, "tol": tol, "stride": stride, "eps": eps}
+    if stepper is None:  # a continued adaptive run stays adaptive unless told otherwise
+        continues = isinstance(initial_state, SimulationState) and initial_state.method == "adaptive"
+        fixed_given = any(given[name] is not None for name in STEPPERS["fixed"].options)
+        stepper = "adaptive" if continues and not fixed_given else "fixed"
+    chosen = STEPPERS[v.choice("stepper", stepper, tuple(STEPPERS))]
+    for name, value in given.items():
+        if value is not None and name not in chosen.options:
+            raise ParameterError(name, value, f"None with stepper {chosen.name!r} (it takes "
+                                 f"{', '.join(chosen.options)})")  # fmt: skip
+    options = {name: given[name] for name in chosen.options}
+    return chosen.run(sink, settings, record=record, initial=initial,
+                      initial_state=initial_state, energy_bound=energy_bound,
+                      progress=progress, **options)  # fmt: skip
 
-        eps = DEFAULT_EPS if eps is None else eps
-        return simulate_adaptive(sink, settings, eps=eps, record=record,
-                                 initial=initial, initial_state=initial_state,
-                                 energy_bound=energy_bound, progress=progress)  # fmt: skip
-    if eps is not None:
-        raise ParameterError("eps", eps, "None unless stepper is 'adaptive'")
+
+def _run_fixed(sink, settings, *, scheme, dt, tol, stride, record, initial, initial_state,
+               energy_bound, progress) -> SimulationResult:  # fmt: skip
+    """The fixed stepper: the compiled engine, one step (from ``tol`` or ``dt``) for the
+    whole ensemble."""
     method = None if scheme is None else get_scheme(scheme).name
     if tol is not None:
         tol = check_tol(tol)
@@ -288,6 +316,20 @@ def simulate(
         tol=tol,
         parameters=run_parameters(sink, settings, runs),
     )
+
+
+#: The steppers of :func:`simulate`, by name, as scipy's ``solve_ivp`` keeps its METHODS:
+#: one entry per way of taking steps, with the keywords only it takes.
+STEPPERS: dict[str, Stepper] = {
+    "fixed": Stepper(
+        "fixed", ("scheme", "dt", "tol", "stride"), _run_fixed,
+        "one step for the whole ensemble, from tol or dt (the compiled engine)",
+    ),
+    "adaptive": Stepper(
+        "adaptive", ("eps",), _run_adaptive,
+        "each run its own step, time-reversibly controlled (stiff walls, n >~ 10)",
+    ),
+}  # fmt: skip
 
 
 # ----------------------------------------------------------------- sweep points

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..errors import ParameterError
-from ..validation import time_step
+from ..validation import choice, time_step
 from . import HELP as HELPS
 from ._common import (
     Output,
@@ -139,13 +139,17 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
     settings.check_memory(sink, ("container",))
     if args.dt is not None:
         time_step("--dt", args.dt)
-    if args.stepper == "adaptive":
+    from ..simulate import STEPPERS
+
+    chosen = STEPPERS[choice("--stepper", args.stepper or "fixed", tuple(STEPPERS))]
+    for name in ("scheme", "dt", "tol", "eps"):
+        value = getattr(args, name)
+        if value is not None and name not in chosen.options:
+            raise ParameterError(f"--{name}", value, f"absent with --stepper {chosen.name} (it "
+                                 f"takes {', '.join('--' + o for o in chosen.options if hasattr(args, o))})")  # fmt: skip
+    if chosen.name == "adaptive":
         from ..adaptive import MAX_EPS, MAX_STEPS, check_eps, estimated_steps
 
-        for name, value in (("--scheme", args.scheme), ("--dt", args.dt), ("--tol", args.tol)):
-            if value is not None:
-                raise ParameterError(name, value, "absent with --stepper adaptive (--eps sets "
-                                     "its steps)")  # fmt: skip
         if args.eps is not None:
             # the estimate grows like 1 / eps: the smallest eps within the steps a period
             # may take (1e-320 overflowed it; 1e-300 was refused naming --runs)
@@ -155,8 +159,6 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
                 raise ParameterError("--eps", args.eps, f">= {smallest:.3g} for this well and "
                                      f"energy", why=f"the adaptive step would take over "
                                      f"{MAX_STEPS} steps a period (estimated)")  # fmt: skip
-    elif args.eps is not None:
-        raise ParameterError("--eps", args.eps, "absent unless --stepper adaptive")
 
 
 def run(args: argparse.Namespace) -> Output:

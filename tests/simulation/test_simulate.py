@@ -317,3 +317,24 @@ def test_api_refuses_bad_starts_and_steps_naming_the_parameter(kwargs, name):
     sink = Sink(FIG8_WELL, particles=1, mass=0.2)
     with pytest.raises(ParameterError, match=rf"^{name} = "):
         simulate(sink, RunSettings(runs=1, periods=1), progress=False, **kwargs)
+
+
+def test_the_steppers_registry_is_what_simulate_dispatches_on():
+    """Every stepper of STEPPERS runs under its own name, its options are keywords of
+    simulate, and an option of another stepper is refused naming the keyword."""
+    import inspect
+
+    from sinktheory.simulate import STEPPERS
+
+    keywords = set(inspect.signature(simulate).parameters)
+    sink, settings = Sink(FIG8_WELL, particles=1, mass=0.2), RunSettings(runs=1, periods=1)
+    assert set(STEPPERS) == {"fixed", "adaptive"}
+    for name, stepper in STEPPERS.items():
+        assert stepper.name == name and set(stepper.options) <= keywords
+        res = simulate(sink, settings, stepper=name, progress=False)
+        assert (res.method == "adaptive") == (name == "adaptive")
+        foreign = {o for other in STEPPERS.values() for o in other.options} - set(stepper.options)
+        for option in sorted(foreign):
+            with pytest.raises(ParameterError, match=f"^{option} = .*stepper {name!r}"):
+                simulate(sink, settings, stepper=name, **{option: 0.2 if option != "stride"
+                                                          else 2})  # fmt: skip
