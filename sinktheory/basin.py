@@ -41,11 +41,13 @@ centre than FIRST_BOX x ``radius`` / GRID, can be missed.
 Reach (:func:`reach`) and area (:func:`star_area`)
 --------------------------------------------------
 The reach at energy e < e* is found on the smallest box (R doubled from a small one)
-whose grid component of {V <= e} stays off the box's edge; the extreme node in each
-direction is refined by Newton's method on {V = e, dV/dy = 0} (for x; {V = e,
-dV/dx = 0} for y) from the middle of the extreme nodes, which must stay within four
-cells of it and within one cell beyond it in that direction; otherwise the node's
-coordinate plus one cell is returned as the bound.  The area is the ray quadrature
+whose grid component of {V <= e} stays off the box's edge.  From the extreme nodes in
+each direction (+-x, +-y) the bound is refined: the largest u (the coordinate) at which
+the lowest V over the other coordinate, within two cells of those nodes, is <= e, by
+bisection in u to rounding (the lowest V by Brent's bounded method, which also handles
+the flat-topped edges of the wall powers 2n >= 4).  When the extreme does not lie within
+one cell beyond the nodes, the node plus one cell is returned as the bound (``refined``
+False).  The area is the ray quadrature
 A = 1/2 \\int r*(theta)^2 d theta over the first crossing r*(theta) of V = e along each
 ray (bisection to rounding, a scan that checks the basin is star-shaped from the
 centre), the trapezoid rule with the rays doubled until two sums agree to
@@ -68,7 +70,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
-from scipy import ndimage
+from scipy import ndimage, optimize
 
 from .errors import NumericalError, WellDefinitionError
 from .symbolic import x, y
@@ -411,30 +413,41 @@ class Reach:
 
 
 def _extreme(well: NumericWell, e: float, X, Y, comp, axis: int, h: float):
-    """Largest |coordinate ``axis``| over the component, refined by Newton's method on
-    {V = e, dV/d(other) = 0} from each side's extreme node (module docstring)."""
-    coord = (X, Y)[axis]
-    other = 1 - axis
+    """Largest |coordinate ``axis``| over the component (module docstring): from each
+    side's extreme nodes, the largest u (that coordinate, times the side) at which the
+    lowest V over the other coordinate near those nodes is <= e, by bisection in u, the
+    lowest V by Brent's bounded method (a degenerate, flat-topped edge included)."""
+    coord, other = (X, Y)[axis], (X, Y)[1 - axis]
     best, refined = 0.0, True
-
-    def func(px, py):
-        return np.array([float(well.f(px, py)) - e, well.gradient(px, py)[other]])
-
-    def jac(px, py):
-        g, H = well.gradient(px, py), well.hessian(px, py)
-        return np.array([g, H[other]])
-
     for side in (1.0, -1.0):
-        node = np.max(np.where(comp, side * coord, -np.inf))
-        ties = np.argwhere(comp & (side * coord == node))
-        i = tuple(ties[len(ties) // 2])  # the middle of a run of extreme nodes
-        q = _newton(func, jac, (X[i], Y[i]), 4 * h)
-        if q is not None and node - 1e-12 * h <= side * q[axis] <= node + h:
-            value, ok = side * float(q[axis]), True
-        else:
-            value, ok = float(node + h), False
+        node = float(np.max(np.where(comp, side * coord, -np.inf)))
+        ties = other[comp & (side * coord == node)]
+        lo_o, hi_o = float(ties.min()) - 2 * h, float(ties.max()) + 2 * h
+
+        def lowest(u, side=side, lo_o=lo_o, hi_o=hi_o):
+            def v(o):
+                p = (side * u, o) if axis == 0 else (o, side * u)
+                return float(well.f(*p))
+
+            found = optimize.minimize_scalar(
+                v, bounds=(lo_o, hi_o), method="bounded", options={"xatol": 1e-12 * h}
+            )
+            return min(found.fun, v(lo_o), v(hi_o))
+
+        lo, hi = node, node + h
+        ok = bool(lowest(hi) > e and lowest(lo) <= e)
+        if ok:
+            while True:
+                mid = 0.5 * (lo + hi)
+                if mid <= lo or mid >= hi:
+                    break
+                if lowest(mid) <= e:
+                    lo = mid
+                else:
+                    hi = mid
+        value = hi if ok else node + h
         if value > best:
-            best, refined = value, ok
+            best, refined = float(value), ok
     return best, refined
 
 

@@ -399,9 +399,13 @@ def _atom_derivative(atom: sp.Symbol, var: sp.Symbol, shape: str | WellDefinitio
     return (dnum - atom * ratio_derivative(den, var, shape, expand=False)) / den
 
 
-def ratio_derivative(expr: sp.Expr, var: sp.Symbol, shape: str | WellDefinition, *, expand: bool = True) -> sp.Expr:
+def ratio_derivative(
+    expr: sp.Expr, var: sp.Symbol, shape: str | WellDefinition, *, expand: bool = True
+) -> sp.Expr:
     """d(expr)/d(var) for an expression in x, y and the shape's atoms (chain rule)."""
     total = sp.diff(expr, var)
+    if not atom_values(shape):  # a user's well: no atoms, nothing to gather
+        return total
     for atom in atom_values(shape):
         if expr.has(atom):
             total += sp.diff(expr, atom) * _atom_derivative(atom, var, shape)
@@ -536,7 +540,9 @@ def hamiltonian(k: int = 1, shape: str | WellDefinition = "flat") -> sp.Expr:
     return sp.expand(sp.simplify(H - potential_part)) + potential_part
 
 
-def equations_of_motion(k: int = 1, shape: str | WellDefinition = "flat") -> dict[sp.Symbol, sp.Expr]:
+def equations_of_motion(
+    k: int = 1, shape: str | WellDefinition = "flat"
+) -> dict[sp.Symbol, sp.Expr]:
     """Euler-Lagrange equations solved for the accelerations, in relative coordinates.
 
     L = q'^T M q'/2 - U(q) with a constant mass matrix M, so M q'' = -grad U.  Returns
@@ -618,10 +624,13 @@ def y_invariance(V: sp.Expr) -> tuple[bool, str]:
     """
     d = _on_axis(sp.diff(V, y))
     if d is sp.nan:
-        return False, "dV/dy(x, 0) could not be decided (NaN at y = 0)"
+        return False, "dV/dy(x, 0) could not be decided" + _UNDECIDED
     if d == 0 or sp.simplify(sp.expand(d)) == 0:
         return True, "dV/dy(x, 0) = 0"
     return False, f"dV/dy(x, 0) = {sp.simplify(d)}, not identically 0"
+
+
+_UNDECIDED = " (NaN at y = 0 for general parameters)"
 
 
 def _on_axis(expr: sp.Expr) -> sp.Expr:
@@ -662,10 +671,16 @@ class NormalMode:
     hill_coefficient: sp.Expr | None = None
 
 
-def normal_mode(shape: str | WellDefinition) -> NormalMode:
+def normal_mode(
+    shape: str | WellDefinition, values: Mapping[sp.Symbol, sp.Expr] | None = None
+) -> NormalMode:
     """The normal mode y = 0 of ``shape`` (a name or a :class:`WellDefinition`), from the
     equations of motion: invariant when ydd vanishes on y = 0 for every x (symbolically),
     then the accelerations there and Hill's coefficient (see :class:`NormalMode`).
+
+    Where SymPy cannot decide it for general parameters (y^(2n - 1) at y = 0 when nothing
+    says n >= 1, as for a user's parameter n), it is decided at ``values`` (parameter
+    symbol -> number), and the reason says so; without values it is refused.
 
     Examples
     --------
@@ -675,18 +690,27 @@ def normal_mode(shape: str | WellDefinition) -> NormalMode:
     (True, (2*x**2 + 1)/mu)
     >>> normal_mode(UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})).reason
     'dV/dy(x, 0) = x**2, not identically 0'
+    >>> power = UserWell("power", "x**2 + y**(2*n)", {"n": 2})
+    >>> normal_mode(power, power.values()).reason
+    'dV/dy(x, 0) = 0 at n = 2'
     """
     V = potential(shape)
     invariant, reason = y_invariance(V)
+    at = {}
+    if not invariant and reason.endswith(_UNDECIDED) and values:
+        at = dict(values)
+        V = V.subs(at)
+        invariant, reason = y_invariance(V)
+        reason += " at " + ", ".join(f"{k} = {v}" for k, v in at.items())
     if not invariant:
         return NormalMode(False, reason)
     acc = {q: substitute_ratios(a, shape) for q, a in equations_of_motion(1, shape).items()}
     # the equations of motion give mu ydd = -dV/dy, so -d(ydd)/dy = V_yy / mu, taken from
     # V (whose powers of y merge where those of the expanded accelerations do not)
-    if sp.simplify(mu * acc[y] + sp.diff(V, y)) != 0:
+    if sp.simplify(mu * acc[y] + sp.diff(potential(shape), y)) != 0:
         raise AssertionError("the y equation of motion is not mu ydd = -dV/dy")
     q = sp.factor(sp.simplify(_on_axis(sp.diff(V, y, 2)) / mu))
-    on_line = {c: sp.simplify(_on_axis(acc[c])) for c in (x, X)}
+    on_line = {c: sp.simplify(_on_axis(acc[c].subs(at))) for c in (x, X)}
     return NormalMode(True, reason, on_line[x], on_line[X], q)
 
 
@@ -741,10 +765,13 @@ class WellLadder:
         return out
 
 
-def ladder(shape: str | WellDefinition) -> WellLadder:
+def ladder(
+    shape: str | WellDefinition, values: Mapping[sp.Symbol, sp.Expr] | None = None
+) -> WellLadder:
     """The :class:`WellLadder` of a registered shape or a user's well, one interface for
     both: the equations of motion, force and Hessian are written in x, y (the atoms of a
-    registered shape substituted).
+    registered shape substituted), for general parameters; ``values`` decide the normal
+    mode where general parameters cannot (:func:`normal_mode`).
 
     Examples
     --------
@@ -756,6 +783,7 @@ def ladder(shape: str | WellDefinition) -> WellLadder:
     definition = shape_definition(shape)
     L, _ = lagrangian(1, shape)
     eom = equations_of_motion(1, shape)
+    values = None if values is None else dict(values)
     V = potential(shape)
     return WellLadder(
         name=definition.name,
@@ -767,7 +795,7 @@ def ladder(shape: str | WellDefinition) -> WellLadder:
         separable=separable_hamiltonian(1, shape),
         force=(-sp.diff(V, x), -sp.diff(V, y)),
         hessian=(sp.diff(V, x, 2), sp.diff(V, x, y), sp.diff(V, y, 2)),
-        normal_mode=normal_mode(shape),
+        normal_mode=normal_mode(shape, values),
     )
 
 

@@ -628,6 +628,8 @@ def load_well(path: str | Path) -> UserWell:
 #: Number of directions of the polar grids (angles 2 pi j / DIRECTIONS, a multiple of 8:
 #: the axes and the diagonals are among them, exactly).
 DIRECTIONS = 64
+
+
 def _directions() -> tuple[np.ndarray, np.ndarray]:
     """cos and sin of the angles 2 pi j / DIRECTIONS, built from the first octant by the
     symmetries of the square, so that the axes are exactly (+-1, 0), (0, +-1) and the
@@ -789,7 +791,9 @@ def check_well(well: UserWell, radius: float = 1.0, **given: float) -> WellCheck
     >>> check_well(UserWell("valley", "x**2", {}))  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    sinktheory.errors.WellDefinitionError: well valley: 'V(0, 0) = 0' is refused: not confining: at every energy above V(0, 0) the basin reaches (0, -1.04858e+06) on the edge of the box |x|, |y| <= 1.04858e+06
+    sinktheory.errors.WellDefinitionError: well valley: 'V(0, 0) = 0' is refused: not \
+confining: at every energy above V(0, 0) the basin reaches (0, -1.04858e+06) on the edge of \
+the box |x|, |y| <= 1.04858e+06
     """
     radius = _number("radius", radius)
     if radius <= 0:

@@ -62,6 +62,7 @@ __all__ = [
     "SCAN_POINTS",
 ]
 
+
 def scaled_energy(well: Well, energy: float) -> float:
     """t = c^2 = (2 n e / gamma)^(1/n), the squared reach of energy e in units of the wall.
 
