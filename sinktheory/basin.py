@@ -43,15 +43,15 @@ Reach (:func:`reach`) and area (:func:`star_area`)
 The reach at energy e < e* is found on the smallest box (R doubled from a small one)
 whose grid component of {V <= e} stays off the box's edge.  From the extreme nodes in
 each direction (+-x, +-y) the bound is refined: the largest u (the coordinate) at which
-the lowest V over the other coordinate, within two cells of those nodes, is <= e, by
-bisection in u to rounding (the lowest V by Brent's bounded method, which also handles
-the flat-topped edges of the wall powers 2n >= 4).  When the extreme does not lie within
-one cell beyond the nodes, the node plus one cell is returned as the bound (``refined``
-False).  The area is the ray quadrature
-A = 1/2 \\int r*(theta)^2 d theta over the first crossing r*(theta) of V = e along each
-ray (bisection to rounding, a scan that checks the basin is star-shaped from the
-centre), the trapezoid rule with the rays doubled until two sums agree to
-:data:`AREA_RTOL`; :mod:`sinktheory.equilibrium.area` uses the same quadrature.
+the lowest V over the other coordinate, within four cells of those nodes, is <= e,
+stepping out a cell at a time (a spike thinner than a cell) and then by bisection in u
+to rounding; the lowest V by a scan and Brent's bounded method, which also handles the
+flat-topped edges of the wall powers 2n >= 4.  When no such bracket is found, the last
+step plus one cell is returned (``refined`` False: an estimate, not a proven bound).
+The area is the ray quadrature A = 1/2 \\int r*(theta)^2 d theta over the first crossing
+r*(theta) of V = e along each ray (bisection to rounding, a scan that checks the basin is
+star-shaped from the centre), the trapezoid rule with the rays doubled until two sums
+agree to :data:`AREA_RTOL`; :mod:`sinktheory.equilibrium.area` uses the same quadrature.
 
 Examples
 --------
@@ -109,6 +109,8 @@ MAX_RAYS = 2**16
 #: Points of the scan along each ray that brackets the edge and checks V grows.
 SCAN_POINTS = 48
 _EIGHT = np.ones((3, 3), dtype=bool)
+#: Points of the scan across an extreme of the reach, and most cells it steps outwards.
+_SCAN, _REACH_STEPS = 65, 16
 #: Most pass nodes of one grid from which Newton's method looks for the saddle.
 _NEWTON_TRIES = 64
 
@@ -415,27 +417,38 @@ class Reach:
 def _extreme(well: NumericWell, e: float, X, Y, comp, axis: int, h: float):
     """Largest |coordinate ``axis``| over the component (module docstring): from each
     side's extreme nodes, the largest u (that coordinate, times the side) at which the
-    lowest V over the other coordinate near those nodes is <= e, by bisection in u, the
-    lowest V by Brent's bounded method (a degenerate, flat-topped edge included)."""
+    lowest V over the other coordinate near those nodes is <= e, by bisection in u; the
+    lowest V by a scan of :data:`_SCAN` points and Brent's bounded method around the best
+    (a degenerate, flat-topped edge and a spike thinner than a cell included)."""
     coord, other = (X, Y)[axis], (X, Y)[1 - axis]
     best, refined = 0.0, True
     for side in (1.0, -1.0):
         node = float(np.max(np.where(comp, side * coord, -np.inf)))
         ties = other[comp & (side * coord == node)]
-        lo_o, hi_o = float(ties.min()) - 2 * h, float(ties.max()) + 2 * h
+        lo_o, hi_o = float(ties.min()) - 4 * h, float(ties.max()) + 4 * h
+        scan = np.linspace(lo_o, hi_o, _SCAN)
+        step = scan[1] - scan[0]
 
-        def lowest(u, side=side, lo_o=lo_o, hi_o=hi_o):
+        def lowest(u, side=side, scan=scan, step=step):
             def v(o):
                 p = (side * u, o) if axis == 0 else (o, side * u)
-                return float(well.f(*p))
+                return well.f(*p)
 
+            values = v(scan)
+            j = int(np.argmin(values))
             found = optimize.minimize_scalar(
-                v, bounds=(lo_o, hi_o), method="bounded", options={"xatol": 1e-12 * h}
-            )
-            return min(found.fun, v(lo_o), v(hi_o))
+                lambda o: float(v(o)), method="bounded", options={"xatol": 1e-12 * h},
+                bounds=(scan[j] - step, scan[j] + step),
+            )  # fmt: skip
+            return min(float(found.fun), float(values[j]))
 
         lo, hi = node, node + h
-        ok = bool(lowest(hi) > e and lowest(lo) <= e)
+        ok = lowest(lo) <= e
+        for _ in range(_REACH_STEPS):  # a spike between the nodes reaches further out
+            if not ok or lowest(hi) > e:
+                break
+            lo, hi = hi, hi + h
+        ok = ok and lowest(hi) > e
         if ok:
             while True:
                 mid = 0.5 * (lo + hi)
@@ -445,7 +458,7 @@ def _extreme(well: NumericWell, e: float, X, Y, comp, axis: int, h: float):
                     lo = mid
                 else:
                     hi = mid
-        value = hi if ok else node + h
+        value = hi if ok else hi + h
         if value > best:
             best, refined = float(value), ok
     return best, refined

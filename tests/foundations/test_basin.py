@@ -73,12 +73,12 @@ def test_wells_that_confine_every_energy_are_bounded_up_to_the_search_box(shape,
 
 # --- reach ----------------------------------------------------------------------------------
 @pytest.mark.parametrize(
-    "shape,beta,n",
-    [("flat", 0.3, 4), ("flat", -0.7, 3), ("circular", 0.3, 2), ("symmetric", -0.7, 4),
-     ("flat", 0.3, 1)],
+    "shape,beta,n,e",
+    [("flat", 0.3, 4, 0.05), ("flat", -0.7, 3, 0.05), ("circular", 0.3, 2, 0.05),
+     ("symmetric", -0.7, 4, 0.05), ("flat", 0.3, 1, 0.05),
+     ("flat", 0.3, 10, 0.01)],  # its widest point: a spike thinner than a grid cell
 )  # fmt: skip
-def test_the_reach_is_the_registry_reach_where_that_is_exact(shape, beta, n):
-    e = 0.05
+def test_the_reach_is_the_registry_reach_where_that_is_exact(shape, beta, n, e):
     reach = basin_of(shape, beta, n).reach(e)
     registry = Well(0.5, beta, n, shape=shape).reach(e)  # c L, c, or a golden-section max
     assert reach.refined == (True, True)
