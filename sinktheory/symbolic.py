@@ -62,6 +62,7 @@ __all__ = [
     "hessian_in_ratios",
     "hill_shape",
     "iL",
+    "kernel_form",
     "ladder",
     "lagrangian",
     "lambda_coefficient",
@@ -404,12 +405,76 @@ def ratio_derivative(
 ) -> sp.Expr:
     """d(expr)/d(var) for an expression in x, y and the shape's atoms (chain rule)."""
     total = sp.diff(expr, var)
-    if not atom_values(shape):  # a user's well: no atoms, nothing to gather
-        return total
     for atom in atom_values(shape):
         if expr.has(atom):
             total += sp.diff(expr, atom) * _atom_derivative(atom, var, shape)
-    return sp.powsimp(sp.expand(total), force=True) if expand else total
+    if not expand or not atom_values(shape):  # a user's well as written: SymPy's form
+        return total
+    if isinstance(shape_definition(shape), Shape):
+        return sp.powsimp(sp.expand(total), force=True)
+    # a user's well in atoms (kernel_form): only powers of one base are merged
+    # (w^(2n) / w -> w^(2n - 1), finite at w = 0), nothing expanded or split
+    return sp.powsimp(total, combine="exp", force=True)
+
+
+@dataclass(frozen=True)
+class _AtomForm:
+    """A user's well with the compound bases of its powers lifted into atoms (see
+    :func:`kernel_form`); a :class:`WellDefinition`."""
+
+    name: str
+    atoms: tuple[tuple[sp.Symbol, sp.Expr], ...]
+    potential: sp.Expr
+    wall_ratios: tuple[sp.Expr, ...]
+    parameter_symbols: tuple[sp.Symbol, ...]
+
+
+def _lift(expr: sp.Expr, atoms: dict[sp.Expr, sp.Symbol]) -> sp.Expr:
+    """expr with the base of every power that depends on x or y (and is not x or y)
+    replaced by an atom, innermost first; ``atoms`` maps each base to its symbol."""
+    if expr.is_Atom:
+        return expr
+    args = [_lift(a, atoms) for a in expr.args]
+    if expr.is_Pow:
+        base, exp = args
+        if base.free_symbols & {x, y, *atoms.values()} and not base.is_Symbol:
+            if base not in atoms:
+                atoms[base] = sp.Symbol(f"_w{len(atoms) + 1}", real=True)
+            base = atoms[base]
+        return sp.Pow(base, exp)
+    return expr.func(*args)
+
+
+def kernel_form(shape: str | WellDefinition) -> WellDefinition:
+    """The definition a kernel printer differentiates: a registered :class:`Shape` as it
+    is; a user's well with the base of each power of x, y lifted into an atom (``_w1``,
+    ``_w2``, ... defined in x, y, the parameters and earlier atoms), as the registered
+    shapes are written in their wall ratios.  :func:`gradient_in_ratios` and
+    :func:`hessian_in_ratios` then differentiate by the chain rule through the atoms:
+    d(w^n) = n w^(n - 1) dw keeps the numbers of order one and is finite where w = 0,
+    where SymPy's d((y/b)^2) = 2 (y/b)^2 / y is 0/0 (NaN at the centre).
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> form = kernel_form(UserWell("e", "((x/a)**2 + (y/b)**2)**n", {"a": 1, "b": 2, "n": 3}))
+    >>> form.atoms, form.potential
+    (((_w1, x/a), (_w2, y/b), (_w3, _w1**2 + _w2**2)), _w3**n)
+    >>> gradient_in_ratios(form)[1]
+    2*_w2*_w3**(n - 1)*n/b
+    """
+    definition = shape_definition(shape)
+    if isinstance(definition, Shape):
+        return definition
+    atoms: dict[sp.Expr, sp.Symbol] = {}
+    lifted = _lift(definition.potential, atoms)
+    return _AtomForm(
+        definition.name,
+        tuple((symbol, base) for base, symbol in atoms.items()),
+        lifted,
+        tuple(definition.wall_ratios),
+        tuple(definition.parameter_symbols),
+    )
 
 
 def gradient_in_ratios(shape: str | WellDefinition) -> tuple[sp.Expr, sp.Expr]:

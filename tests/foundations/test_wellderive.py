@@ -2,7 +2,9 @@
 shapes) and `sinktheory derive --well FILE`."""
 
 import json
+import math
 
+import numpy as np
 import pytest
 import sympy as sp
 from _cli import run_cli, snapshot
@@ -88,6 +90,54 @@ def test_the_elliptic_well_ladder_in_closed_form():
     V = gamma / (2 * n) * ((x / a) ** 2 + (y / b) ** 2) ** n
     assert sp.simplify(steps.force[1] + sp.diff(V, y)) == 0
     assert sp.simplify(mu * steps.equations_of_motion[y] + sp.diff(V, y)) == 0
+
+
+def _at_point(form, expr, values, point):
+    """expr (in the atoms of ``form``) at a point: the atoms computed in order."""
+    at = dict(values) | point
+    for atom, definition in form.atoms:
+        at[atom] = definition.subs(at)
+    return expr.subs(at)
+
+
+@pytest.mark.parametrize("text", [ELLIPTIC, FLAT, HH + " + (x**2 + y**2)**2"])
+def test_the_kernel_form_differentiates_through_atoms_to_the_plain_derivatives(text):
+    well = UserWell("w", text, PAPER if "alpha" in text else {"a": 0.3, "b": 0.2,
+                    "gamma": 1, "n": 3} if "a)" in text else {})  # fmt: skip
+    form = S.kernel_form(well)
+    V = well.potential
+    plain = (sp.diff(V, x), sp.diff(V, y), sp.diff(V, x, 2), sp.diff(V, x, y), sp.diff(V, y, 2))
+    mine = (*S.gradient_in_ratios(form), *S.hessian_in_ratios(form))
+    values = well.values()
+    for point in ({x: sp.Rational(1, 7), y: sp.Rational(-1, 9)}, {x: sp.Rational(-1, 5), y: 0}):
+        for a, b in zip(mine, plain, strict=True):
+            va, vb = _at_point(form, a, values, point), b.subs(values | point)
+            assert abs(sp.N(va - vb, 40)) <= 1e-30 * (1 + abs(sp.N(vb, 40))), (a, b)
+
+
+def test_the_kernel_form_is_finite_at_the_centre_where_sympy_gives_nan():
+    well = UserWell("ellipse", ELLIPTIC, {"a": 0.3, "b": 0.2, "gamma": 1, "n": 3})
+    values = {s.name: float(v) for s, v in well.values().items()}
+
+    def in_floats(expr, atoms=()):
+        """expr at (0.0, 0.0) in float64, the atoms computed in order, as a kernel would."""
+        at = {"x": 0.0, "y": 0.0, **values}
+        for atom, definition in atoms:
+            at[atom.name] = float(sp.lambdify(list(definition.free_symbols), definition)(
+                *(at[s.name] for s in definition.free_symbols)))  # fmt: skip
+        names = sorted(expr.free_symbols, key=str)
+        with np.errstate(all="ignore"):
+            return float(
+                sp.lambdify(names, expr, "numpy")(*(np.float64(at[s.name]) for s in names))
+            )
+
+    assert math.isnan(in_floats(sp.diff(well.potential, y)))  # 0/0 as SymPy writes it
+    form = S.kernel_form(well)
+    assert [in_floats(g, form.atoms) for g in S.gradient_in_ratios(form)] == [0.0, 0.0]
+    # the registry's flat shape written by a user gets the registry's atoms: D(y), x / D(y)
+    flat = S.kernel_form(UserWell("flat_user", FLAT, PAPER))
+    alpha, beta = flat.parameter_symbols[:2]
+    assert [d for _, d in flat.atoms] == [alpha + beta * (y**2 - 1), x / flat.atoms[0][0]]
 
 
 def test_a_well_without_the_normal_mode_says_why():
