@@ -162,3 +162,11 @@ def test_a_basin_of_a_well_built_directly():
     # Basin.of without a well file: V = x^2 + y^2 - x^4 has its saddles at (+-1/sqrt 2, 0)
     basin = Basin.of(parse_potential("x**2 + y**2 - x**4", ()))
     assert basin.escape.kind == "saddle" and abs(basin.escape.energy - 0.25) <= 1e-15
+
+
+def test_a_registered_shape_has_the_same_basin_interface():
+    # Basin.of takes any V: the registry's own expression at its own symbols' values
+    values = {S.alpha: sp.Rational(1, 2), S.beta: sp.Rational(3, 10), S.gamma: 1, S.n: 4}
+    basin = Basin.of(S.potential("symmetric"), values, "symmetric")
+    exact = float(S.symmetric_corner_saddle()[1].subs(values))
+    assert basin.escape.kind == "saddle" and abs(basin.escape.energy / exact - 1) <= 1e-12
