@@ -73,7 +73,7 @@ import sympy as sp
 from scipy import ndimage, optimize
 
 from .errors import NumericalError, WellDefinitionError
-from .symbolic import x, y
+from .symbolic import AtomForm, gradient_in_ratios, hessian_in_ratios, lift_powers, x, y
 
 __all__ = [
     "AREA_RTOL",
@@ -166,14 +166,30 @@ class NumericWell:
         self.expr = V
         self.values = dict(values or {})
         self.f = numeric(V, self.values)
-        # derivatives of V at the values, its powers rebuilt: SymPy differentiates an
-        # unevaluated (y/b)**2 as (y/b)**2 * (1/b) * 2 / (y/b), NaN at y = 0
-        plain = V.subs(self.values).replace(lambda e: e.is_Pow, lambda e: sp.Pow(*e.args))
-        gx, gy = sp.diff(plain, x), sp.diff(plain, y)
-        self._grad = [numeric(g) for g in (gx, gy)]
+        # derivatives at the values by the chain rule through the bases of the powers
+        # (symbolic.lift_powers): numbers of order one, finite where a base vanishes
+        # (SymPy's own d((y/b)^2) is 2 (y/b)^2 / y, NaN at y = 0)
+        atoms, lifted = lift_powers(V.subs(self.values))
+        form = AtomForm(name, atoms, lifted, (), ())
         # |x|'' = 2 DiracDelta(x): zero away from the kink, where Newton's method works
-        hess = (sp.diff(gx, x), sp.diff(gx, y), sp.diff(gy, y))
-        self._hess = [numeric(h.replace(sp.DiracDelta, lambda *a: sp.S.Zero)) for h in hess]
+        derivatives = [
+            d.replace(sp.DiracDelta, lambda *a: sp.S.Zero)
+            for d in (*gradient_in_ratios(form), *hessian_in_ratios(form))
+        ]
+        names = (x, y, *(a for a, _ in atoms))
+        steps = [sp.lambdify(names[: 2 + i], d, "math") for i, (_, d) in enumerate(atoms)]
+        outputs = sp.lambdify(names, derivatives, "math")
+
+        def derivative_values(px: float, py: float) -> list[float]:
+            args = [float(px), float(py)]
+            try:
+                for step in steps:
+                    args.append(float(step(*args)))
+                return [float(v) for v in outputs(*args)]
+            except (ArithmeticError, ValueError):  # a pole or a root of a negative number
+                return [math.nan] * 5
+
+        self._derivatives = derivative_values
         self.guards = []
         # the exponents' values decide which powers need a guard ((x/D)^(2n) none)
         for guard, rule in guards(V.subs(self.values)):
@@ -183,10 +199,10 @@ class NumericWell:
         self.v0 = float(self.f(0.0, 0.0))
 
     def gradient(self, px: float, py: float) -> np.ndarray:
-        return np.array([float(g(px, py)) for g in self._grad])
+        return np.array(self._derivatives(px, py)[:2])
 
     def hessian(self, px: float, py: float) -> np.ndarray:
-        hxx, hxy, hyy = (float(h(px, py)) for h in self._hess)
+        hxx, hxy, hyy = self._derivatives(px, py)[2:]
         return np.array([[hxx, hxy], [hxy, hyy]])
 
     def valid(self, xs, ys, values=None) -> np.ndarray:

@@ -48,6 +48,7 @@ __all__ = [
     "alpha",
     "amplitude_of_energy",
     "atom_values",
+    "AtomForm",
     "axis_reach_factor",
     "beta",
     "c",
@@ -66,6 +67,7 @@ __all__ = [
     "ladder",
     "lagrangian",
     "lambda_coefficient",
+    "lift_powers",
     "mass_matrix",
     "Maximum",
     "Mechanics",
@@ -418,9 +420,9 @@ def ratio_derivative(
 
 
 @dataclass(frozen=True)
-class _AtomForm:
-    """A user's well with the compound bases of its powers lifted into atoms (see
-    :func:`kernel_form`); a :class:`WellDefinition`."""
+class AtomForm:
+    """A well with the compound bases of its powers lifted into atoms (see
+    :func:`kernel_form`, :func:`lift_powers`); a :class:`WellDefinition`."""
 
     name: str
     atoms: tuple[tuple[sp.Symbol, sp.Expr], ...]
@@ -445,6 +447,21 @@ def _lift(expr: sp.Expr, atoms: dict[sp.Expr, sp.Symbol]) -> sp.Expr:
     return expr.func(*args)
 
 
+def lift_powers(V: sp.Expr) -> tuple[tuple[tuple[sp.Symbol, sp.Expr], ...], sp.Expr]:
+    """(atoms, V in the atoms): the base of every power of x, y in ``V`` (innermost first)
+    becomes an atom ``_w1``, ``_w2``, ... (see :func:`kernel_form`).
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import parse_potential  # keeps the power as written
+    >>> lift_powers(parse_potential("(x/(1 + y**2))**8", ()))
+    (((_w1, y**2 + 1), (_w2, x/_w1)), _w2**8)
+    """
+    atoms: dict[sp.Expr, sp.Symbol] = {}
+    lifted = _lift(V, atoms)
+    return tuple((symbol, base) for base, symbol in atoms.items()), lifted
+
+
 def kernel_form(shape: str | WellDefinition) -> WellDefinition:
     """The definition a kernel printer differentiates: a registered :class:`Shape` as it
     is; a user's well with the base of each power of x, y lifted into an atom (``_w1``,
@@ -466,11 +483,10 @@ def kernel_form(shape: str | WellDefinition) -> WellDefinition:
     definition = shape_definition(shape)
     if isinstance(definition, Shape):
         return definition
-    atoms: dict[sp.Expr, sp.Symbol] = {}
-    lifted = _lift(definition.potential, atoms)
-    return _AtomForm(
+    atoms, lifted = lift_powers(definition.potential)
+    return AtomForm(
         definition.name,
-        tuple((symbol, base) for base, symbol in atoms.items()),
+        atoms,
         lifted,
         tuple(definition.wall_ratios),
         tuple(definition.parameter_symbols),
