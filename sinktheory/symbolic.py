@@ -39,6 +39,7 @@ from __future__ import annotations
 import functools
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Protocol, runtime_checkable
 
 import sympy as sp
 
@@ -47,6 +48,7 @@ __all__ = [
     "alpha",
     "amplitude_of_energy",
     "atom_values",
+    "AtomForm",
     "axis_reach_factor",
     "beta",
     "c",
@@ -61,15 +63,20 @@ __all__ = [
     "hessian_in_ratios",
     "hill_shape",
     "iL",
+    "kernel_form",
+    "ladder",
     "lagrangian",
     "lambda_coefficient",
+    "lift_powers",
     "mass_matrix",
     "Maximum",
     "Mechanics",
     "mechanics",
     "mu",
     "n",
+    "normal_mode",
     "normal_mode_refusal",
+    "NormalMode",
     "oscillator_acceleration",
     "oscillator_energy",
     "period_closed_form",
@@ -92,6 +99,9 @@ __all__ = [
     "w",
     "wall_distance",
     "wall_ratios",
+    "WellDefinition",
+    "WellLadder",
+    "y_invariance",
 ]
 
 # --- symbols shared by the whole package -------------------------------------------
@@ -144,6 +154,35 @@ class Maximum(sp.Function):
 
 
 # --- the well shapes ----------------------------------------------------------------
+@runtime_checkable
+class WellDefinition(Protocol):
+    """What the derivation ladder needs of a well: a registered :class:`Shape` and a
+    user's :class:`sinktheory.userwell.UserWell` both have it, so every function below
+    that takes ``shape`` takes either a registered name or such an object.
+
+    Attributes
+    ----------
+    name : str
+    atoms : tuple of (Symbol, Expr)
+        Intermediate quantities (numerator / denominator) in the order a kernel computes
+        them; empty for a user's well, whose derivatives SymPy takes directly.
+    potential : Expr
+        V in the atoms, x, y and the parameters.
+    wall_ratios : tuple of Expr
+        Ratios in x, y whose level 1 is the rigid wall (may be empty).
+    parameter_symbols : tuple of Symbol
+        The well's parameters, in the order kernels take them.
+    """
+
+    name: str
+    atoms: tuple[tuple[sp.Symbol, sp.Expr], ...]
+    potential: sp.Expr
+    wall_ratios: tuple[sp.Expr, ...]
+
+    @property
+    def parameter_symbols(self) -> tuple[sp.Symbol, ...]: ...  # pragma: no cover
+
+
 @dataclass(frozen=True)
 class Shape:
     """One well shape: everything the package knows about it, declared once.
@@ -191,6 +230,11 @@ class Shape:
     y_reach: sp.Expr
     escape: sp.Expr = sp.oo
     escape_name: str = ""
+
+    @property
+    def parameter_symbols(self) -> tuple[sp.Symbol, ...]:
+        """(alpha, beta, gamma, n): the parameters of every registered shape."""
+        return (alpha, beta, gamma, n)
 
     @property
     def denominators(self) -> tuple[sp.Expr, ...]:
@@ -313,14 +357,17 @@ class _Shapes(Mapping):
 SHAPES = _Shapes()
 
 
-def shape_definition(shape: str) -> Shape:
-    """The :class:`Shape` called ``shape`` (ValueError naming the allowed ones)."""
+def shape_definition(shape: str | WellDefinition) -> Shape | WellDefinition:
+    """The :class:`Shape` called ``shape`` (ValueError naming the allowed ones), or
+    ``shape`` itself when it is a :class:`WellDefinition` (a user's well)."""
+    if not isinstance(shape, str) and isinstance(shape, WellDefinition):
+        return shape
     if shape not in SHAPES:
         raise ValueError(f"shape = {shape!r} is not allowed: must be one of {tuple(SHAPES)}")
     return SHAPES[shape]
 
 
-def wall_ratios(shape: str) -> tuple[sp.Expr, ...]:
+def wall_ratios(shape: str | WellDefinition) -> tuple[sp.Expr, ...]:
     """The shape's wall ratios in x, y (all < 1 strictly inside the walls).
 
     ``"flat"``: (x / D(y), y); ``"symmetric"``: (x / D(y), y / D(x)); ``"circular"``:
@@ -329,24 +376,24 @@ def wall_ratios(shape: str) -> tuple[sp.Expr, ...]:
     return shape_definition(shape).wall_ratios
 
 
-def atom_values(shape: str) -> dict[sp.Symbol, sp.Expr]:
+def atom_values(shape: str | WellDefinition) -> dict[sp.Symbol, sp.Expr]:
     """Definitions of the atoms in x, y, in the order a kernel computes them."""
     return dict(shape_definition(shape).atoms)
 
 
-def potential_of_ratios(shape: str) -> sp.Expr:
+def potential_of_ratios(shape: str | WellDefinition) -> sp.Expr:
     """V in the shape's atoms (gamma/(2n) (s1^(2n) + s2^(2n)) for the paper's wells)."""
     return shape_definition(shape).potential
 
 
-def potential(shape: str, xs: sp.Expr = x, ys: sp.Expr = y) -> sp.Expr:
+def potential(shape: str | WellDefinition, xs: sp.Expr = x, ys: sp.Expr = y) -> sp.Expr:
     """The well V(x, y): paper eqs. (V definition), (V definition2), or another shape."""
     V = substitute_ratios(potential_of_ratios(shape), shape)
     return V.subs({x: xs, y: ys}, simultaneous=True)
 
 
 # --- derivatives in atom form ------------------------------------------------------
-def _atom_derivative(atom: sp.Symbol, var: sp.Symbol, shape: str) -> sp.Expr:
+def _atom_derivative(atom: sp.Symbol, var: sp.Symbol, shape: str | WellDefinition) -> sp.Expr:
     """d(atom)/d(var), written in atoms: d(num/den) = (d num - atom d den) / den."""
     num, den = sp.fraction(atom_values(shape)[atom])
     dnum = ratio_derivative(num, var, shape, expand=False)
@@ -355,22 +402,104 @@ def _atom_derivative(atom: sp.Symbol, var: sp.Symbol, shape: str) -> sp.Expr:
     return (dnum - atom * ratio_derivative(den, var, shape, expand=False)) / den
 
 
-def ratio_derivative(expr: sp.Expr, var: sp.Symbol, shape: str, *, expand: bool = True) -> sp.Expr:
+def ratio_derivative(
+    expr: sp.Expr, var: sp.Symbol, shape: str | WellDefinition, *, expand: bool = True
+) -> sp.Expr:
     """d(expr)/d(var) for an expression in x, y and the shape's atoms (chain rule)."""
     total = sp.diff(expr, var)
     for atom in atom_values(shape):
         if expr.has(atom):
             total += sp.diff(expr, atom) * _atom_derivative(atom, var, shape)
-    return sp.powsimp(sp.expand(total), force=True) if expand else total
+    if not expand or not atom_values(shape):  # a user's well as written: SymPy's form
+        return total
+    if isinstance(shape_definition(shape), Shape):
+        return sp.powsimp(sp.expand(total), force=True)
+    # a user's well in atoms (kernel_form): only powers of one base are merged
+    # (w^(2n) / w -> w^(2n - 1), finite at w = 0), nothing expanded or split
+    return sp.powsimp(total, combine="exp", force=True)
 
 
-def gradient_in_ratios(shape: str) -> tuple[sp.Expr, sp.Expr]:
+@dataclass(frozen=True)
+class AtomForm:
+    """A well with the compound bases of its powers lifted into atoms (see
+    :func:`kernel_form`, :func:`lift_powers`); a :class:`WellDefinition`."""
+
+    name: str
+    atoms: tuple[tuple[sp.Symbol, sp.Expr], ...]
+    potential: sp.Expr
+    wall_ratios: tuple[sp.Expr, ...]
+    parameter_symbols: tuple[sp.Symbol, ...]
+
+
+def _lift(expr: sp.Expr, atoms: dict[sp.Expr, sp.Symbol]) -> sp.Expr:
+    """expr with the base of every power that depends on x or y (and is not x or y)
+    replaced by an atom, innermost first; ``atoms`` maps each base to its symbol."""
+    if expr.is_Atom:
+        return expr
+    args = [_lift(a, atoms) for a in expr.args]
+    if expr.is_Pow:
+        base, exp = args
+        if base.free_symbols & {x, y, *atoms.values()} and not base.is_Symbol:
+            if base not in atoms:
+                atoms[base] = sp.Symbol(f"_w{len(atoms) + 1}", real=True)
+            base = atoms[base]
+        return sp.Pow(base, exp)
+    return expr.func(*args)
+
+
+def lift_powers(V: sp.Expr) -> tuple[tuple[tuple[sp.Symbol, sp.Expr], ...], sp.Expr]:
+    """(atoms, V in the atoms): the base of every power of x, y in ``V`` (innermost first)
+    becomes an atom ``_w1``, ``_w2``, ... (see :func:`kernel_form`).
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import parse_potential  # keeps the power as written
+    >>> lift_powers(parse_potential("(x/(1 + y**2))**8", ()))
+    (((_w1, y**2 + 1), (_w2, x/_w1)), _w2**8)
+    """
+    atoms: dict[sp.Expr, sp.Symbol] = {}
+    lifted = _lift(V, atoms)
+    return tuple((symbol, base) for base, symbol in atoms.items()), lifted
+
+
+def kernel_form(shape: str | WellDefinition) -> WellDefinition:
+    """The definition a kernel printer differentiates: a registered :class:`Shape` as it
+    is; a user's well with the base of each power of x, y lifted into an atom (``_w1``,
+    ``_w2``, ... defined in x, y, the parameters and earlier atoms), as the registered
+    shapes are written in their wall ratios.  :func:`gradient_in_ratios` and
+    :func:`hessian_in_ratios` then differentiate by the chain rule through the atoms:
+    d(w^n) = n w^(n - 1) dw keeps the numbers of order one and is finite where w = 0,
+    where SymPy's d((y/b)^2) = 2 (y/b)^2 / y is 0/0 (NaN at the centre).
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> form = kernel_form(UserWell("e", "((x/a)**2 + (y/b)**2)**n", {"a": 1, "b": 2, "n": 3}))
+    >>> form.atoms, form.potential
+    (((_w1, x/a), (_w2, y/b), (_w3, _w1**2 + _w2**2)), _w3**n)
+    >>> gradient_in_ratios(form)[1]
+    2*_w2*_w3**(n - 1)*n/b
+    """
+    definition = shape_definition(shape)
+    if isinstance(definition, Shape):
+        return definition
+    atoms, lifted = lift_powers(definition.potential)
+    return AtomForm(
+        definition.name,
+        atoms,
+        lifted,
+        tuple(definition.wall_ratios),
+        tuple(definition.parameter_symbols),
+    )
+
+
+def gradient_in_ratios(shape: str | WellDefinition) -> tuple[sp.Expr, sp.Expr]:
     """(dV/dx, dV/dy) in the atoms and x, y."""
     V = potential_of_ratios(shape)
     return ratio_derivative(V, x, shape), ratio_derivative(V, y, shape)
 
 
-def hessian_in_ratios(shape: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
+def hessian_in_ratios(shape: str | WellDefinition) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """(V_xx, V_xy, V_yy) in the atoms (for variational equations)."""
     Vx, Vy = gradient_in_ratios(shape)
     return (
@@ -380,7 +509,7 @@ def hessian_in_ratios(shape: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     )
 
 
-def substitute_ratios(expr: sp.Expr, shape: str) -> sp.Expr:
+def substitute_ratios(expr: sp.Expr, shape: str | WellDefinition) -> sp.Expr:
     """Replace the atoms by their definitions in x, y."""
     values = atom_values(shape)
     for atom in reversed(list(values)):
@@ -454,7 +583,7 @@ def mechanics(k: int) -> Mechanics:
     return Mechanics(k, q, qd, (P, *pxs, *pys))
 
 
-def lagrangian(k: int = 1, shape: str = "flat") -> tuple[sp.Expr, Mechanics]:
+def lagrangian(k: int = 1, shape: str | WellDefinition = "flat") -> tuple[sp.Expr, Mechanics]:
     """Paper eq. (Lagr): L = X'^2/2 - X^2/2 + sum_j [mu/2((X' + x_j')^2 + y_j'^2) - V_j]."""
     m = mechanics(k)
     Xd = m.velocities[0]
@@ -465,7 +594,7 @@ def lagrangian(k: int = 1, shape: str = "flat") -> tuple[sp.Expr, Mechanics]:
     return L, m
 
 
-def mass_matrix(k: int = 1, shape: str = "flat") -> sp.Matrix:
+def mass_matrix(k: int = 1, shape: str | WellDefinition = "flat") -> sp.Matrix:
     """The (constant) mass matrix d^2 L / dq' dq' in relative coordinates."""
     L, m = lagrangian(k, shape)
     M = sp.hessian(L, m.velocities)
@@ -474,7 +603,7 @@ def mass_matrix(k: int = 1, shape: str = "flat") -> sp.Matrix:
     return M
 
 
-def hamiltonian(k: int = 1, shape: str = "flat") -> sp.Expr:
+def hamiltonian(k: int = 1, shape: str | WellDefinition = "flat") -> sp.Expr:
     """Legendre transform H = sum p q' - L, paper eq. (Hamiltonian), in (q, p).
 
     The paper's sum lists only p_j x_j'; the y-momenta enter the transform too.
@@ -492,7 +621,9 @@ def hamiltonian(k: int = 1, shape: str = "flat") -> sp.Expr:
     return sp.expand(sp.simplify(H - potential_part)) + potential_part
 
 
-def equations_of_motion(k: int = 1, shape: str = "flat") -> dict[sp.Symbol, sp.Expr]:
+def equations_of_motion(
+    k: int = 1, shape: str | WellDefinition = "flat"
+) -> dict[sp.Symbol, sp.Expr]:
     """Euler-Lagrange equations solved for the accelerations, in relative coordinates.
 
     L = q'^T M q'/2 - U(q) with a constant mass matrix M, so M q'' = -grad U.  Returns
@@ -530,7 +661,7 @@ class SeparableHamiltonian:
     masses: tuple[sp.Expr, ...]
 
 
-def separable_hamiltonian(k: int = 1, shape: str = "flat") -> SeparableHamiltonian:
+def separable_hamiltonian(k: int = 1, shape: str | WellDefinition = "flat") -> SeparableHamiltonian:
     """Canonical change u_j = X + x_j (type-2 generating function) separating H.
 
     F2 = X Pi + sum_j [(X + x_j) pi_j + y_j pi_y_j] gives P = Pi + sum pi_j, p_j = pi_j,
@@ -558,6 +689,195 @@ def separable_hamiltonian(k: int = 1, shape: str = "flat") -> SeparableHamiltoni
         raise AssertionError("kinetic part still depends on coordinates: H does not separate")
     masses = tuple(sp.simplify(1 / sp.diff(kinetic, p, 2)) for p in new_p)
     return SeparableHamiltonian(coords, new_p, kinetic, pot, masses)
+
+
+# --- the normal mode y = 0 and the whole ladder -------------------------------------
+def y_invariance(V: sp.Expr) -> tuple[bool, str]:
+    """Whether y = 0 is invariant for the well ``V``: dV/dy(x, 0) == 0 identically,
+    decided symbolically (:func:`sympy.simplify` after :func:`sympy.expand`).
+
+    Examples
+    --------
+    >>> y_invariance(x**4 + x**2 * y**2)
+    (True, 'dV/dy(x, 0) = 0')
+    >>> y_invariance(x**2 + y**2 + x**2 * y)
+    (False, 'dV/dy(x, 0) = x**2, not identically 0')
+    """
+    d = _on_axis(sp.diff(V, y))
+    if d is sp.nan:
+        return False, "dV/dy(x, 0) could not be decided" + _UNDECIDED
+    if d == 0 or sp.simplify(sp.expand(d)) == 0:
+        return True, "dV/dy(x, 0) = 0"
+    return False, f"dV/dy(x, 0) = {sp.simplify(d)}, not identically 0"
+
+
+_UNDECIDED = " (NaN at y = 0 for general parameters)"
+
+
+def _on_axis(expr: sp.Expr) -> sp.Expr:
+    """expr at y = 0.  Where plain substitution meets 0^k / 0 (y^(2n) / y from the chain
+    rule, NaN to SymPy) the powers of y are split off and merged first: a symbolic n
+    leaves terms 0^(2n - 2), which are 1 at n = 1 and 0 above (the n = 1 well's extra
+    linear term).  NaN is returned if that does not settle it."""
+    value = expr.subs(y, 0)
+    if value.has(sp.nan, sp.zoo):
+        merged = sp.powsimp(sp.expand(sp.expand_power_base(expr, force=True)), force=True)
+        value = merged.subs(y, 0)
+    return sp.nan if value.has(sp.nan, sp.zoo) else value
+
+
+@dataclass(frozen=True)
+class NormalMode:
+    """The motion on y = 0 of one particle (k = 1) and its transverse linearisation, in
+    the well's own variables (no rescaling).
+
+    Attributes
+    ----------
+    invariant : bool
+        y = 0 is invariant (dV/dy(x, 0) == 0, decided symbolically).
+    reason : str
+        How that was decided, or why the line is not invariant: Floquet multipliers,
+        nonlinear normal modes and transverse exponents refuse a well with this reason.
+    x_acceleration, X_acceleration : Expr or None
+        xdd and Xdd on y = 0 (the container and the particle along the line).
+    hill_coefficient : Expr or None
+        q(x) of y'' + q(x) y = 0, the y-equation linearised about y = 0:
+        -d(ydd)/dy at y = 0, which is V_yy(x, 0) / mu.
+    """
+
+    invariant: bool
+    reason: str
+    x_acceleration: sp.Expr | None = None
+    X_acceleration: sp.Expr | None = None
+    hill_coefficient: sp.Expr | None = None
+
+
+def normal_mode(
+    shape: str | WellDefinition, values: Mapping[sp.Symbol, sp.Expr] | None = None
+) -> NormalMode:
+    """The normal mode y = 0 of ``shape`` (a name or a :class:`WellDefinition`), from the
+    equations of motion: invariant when ydd vanishes on y = 0 for every x (symbolically),
+    then the accelerations there and Hill's coefficient (see :class:`NormalMode`).
+
+    Where SymPy cannot decide it for general parameters (y^(2n - 1) at y = 0 when nothing
+    says n >= 1, as for a user's parameter n), it is decided at ``values`` (parameter
+    symbol -> number), and the reason says so; without values it is refused.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> mode = normal_mode(UserWell("quartic", "x**4/4 + y**2/2 + x**2*y**2", {}))
+    >>> mode.invariant, mode.hill_coefficient
+    (True, (2*x**2 + 1)/mu)
+    >>> normal_mode(UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})).reason
+    'dV/dy(x, 0) = x**2, not identically 0'
+    >>> power = UserWell("power", "x**2 + y**(2*n)", {"n": 2})
+    >>> normal_mode(power, power.values()).reason
+    'dV/dy(x, 0) = 0 at n = 2'
+    """
+    V = potential(shape)
+    invariant, reason = y_invariance(V)
+    at = {}
+    if not invariant and reason.endswith(_UNDECIDED) and values:
+        at = dict(values)
+        V = V.subs(at)
+        invariant, reason = y_invariance(V)
+        reason += " at " + ", ".join(f"{k} = {v}" for k, v in at.items())
+    if not invariant:
+        return NormalMode(False, reason)
+    acc = {q: substitute_ratios(a, shape) for q, a in equations_of_motion(1, shape).items()}
+    # the equations of motion give mu ydd = -dV/dy, so -d(ydd)/dy = V_yy / mu, taken from
+    # V (whose powers of y merge where those of the expanded accelerations do not)
+    if sp.simplify(mu * acc[y] + sp.diff(potential(shape), y)) != 0:
+        raise AssertionError("the y equation of motion is not mu ydd = -dV/dy")
+    q = sp.factor(sp.simplify(_on_axis(sp.diff(V, y, 2)) / mu))
+    on_line = {c: sp.simplify(_on_axis(acc[c].subs(at))) for c in (x, X)}
+    return NormalMode(True, reason, on_line[x], on_line[X], q)
+
+
+@dataclass(frozen=True)
+class WellLadder:
+    """The derivation ladder of one well, k = 1 particle (every entry derived here from
+    the Lagrangian, nothing retyped): what ``sinktheory derive --well FILE`` prints and
+    what a printer of kernels consumes.
+
+    Attributes
+    ----------
+    name : str
+    parameters : the well's parameter symbols
+    potential : V(x, y)
+    lagrangian, hamiltonian : L(q, q'), H(q, p) in coordinates relative to the container
+    equations_of_motion : {X: Xdd, x: xdd, y: ydd}
+    separable : the canonical form H = T(momenta) + U(coordinates)
+    force : (-dV/dx, -dV/dy)
+    hessian : (V_xx, V_xy, V_yy)
+    normal_mode : the line y = 0 (:class:`NormalMode`)
+    """
+
+    name: str
+    parameters: tuple[sp.Symbol, ...]
+    potential: sp.Expr
+    lagrangian: sp.Expr
+    hamiltonian: sp.Expr
+    equations_of_motion: dict[sp.Symbol, sp.Expr]
+    separable: SeparableHamiltonian
+    force: tuple[sp.Expr, sp.Expr]
+    hessian: tuple[sp.Expr, sp.Expr, sp.Expr]
+    normal_mode: NormalMode
+
+    def items(self) -> dict[str, sp.Expr]:
+        """The ladder as named expressions, in order (for printing)."""
+        out = {
+            "potential": self.potential,
+            "lagrangian": self.lagrangian,
+            "hamiltonian": self.hamiltonian,
+            **{f"{q.name}dd": a for q, a in self.equations_of_motion.items()},
+            "separable_kinetic": self.separable.kinetic,
+            "separable_potential": self.separable.potential,
+            "force_x": self.force[0],
+            "force_y": self.force[1],
+            "hessian_xx": self.hessian[0],
+            "hessian_xy": self.hessian[1],
+            "hessian_yy": self.hessian[2],
+        }
+        mode = self.normal_mode
+        if mode.invariant:
+            out["hill_coefficient"] = mode.hill_coefficient
+        return out
+
+
+def ladder(
+    shape: str | WellDefinition, values: Mapping[sp.Symbol, sp.Expr] | None = None
+) -> WellLadder:
+    """The :class:`WellLadder` of a registered shape or a user's well, one interface for
+    both: the equations of motion, force and Hessian are written in x, y (the atoms of a
+    registered shape substituted), for general parameters; ``values`` decide the normal
+    mode where general parameters cannot (:func:`normal_mode`).
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> steps = ladder(UserWell("round", "k*(x**2 + y**2)/2", {"k": 2}))
+    >>> steps.force, steps.equations_of_motion[y]
+    ((-k*x, -k*y), -k*y/mu)
+    """
+    definition = shape_definition(shape)
+    L, _ = lagrangian(1, shape)
+    eom = equations_of_motion(1, shape)
+    values = None if values is None else dict(values)
+    V = potential(shape)
+    return WellLadder(
+        name=definition.name,
+        parameters=tuple(definition.parameter_symbols),
+        potential=V,
+        lagrangian=L,
+        hamiltonian=hamiltonian(1, shape),
+        equations_of_motion={q: substitute_ratios(a, shape) for q, a in eom.items()},
+        separable=separable_hamiltonian(1, shape),
+        force=(-sp.diff(V, x), -sp.diff(V, y)),
+        hessian=(sp.diff(V, x, 2), sp.diff(V, x, y), sp.diff(V, y, 2)),
+        normal_mode=normal_mode(shape, values),
+    )
 
 
 # --- rescaled single-particle system --------------------------------------------------
@@ -607,7 +927,11 @@ def rescaled_equations(shape: str = "flat", n_value: int | None = None) -> Resca
     n_value : None for general n >= 2 (where y^(2n) adds nothing linear), or a specific
         integer, e.g. 1, where the y-term of the well adds a linear restoring force.
     """
-    shape_definition(shape)
+    if not isinstance(shape_definition(shape), Shape):
+        raise ValueError(
+            "rescaled_equations: the paper's rescaling (by alpha - beta) applies to the "
+            "registered shapes only; a user's well has normal_mode(well)"
+        )
     if n_value is None:
         m = sp.Symbol("m", integer=True, nonnegative=True)  # n = m + 2 >= 2
         nv = m + 2

@@ -39,13 +39,12 @@ Checks (:func:`check_well`), at given parameter values
   non-zero gradient: refused); otherwise (singular Hessian, as for every n >= 2 wall, or
   derivatives undefined at the centre) numerically: V(0, 0) <= V on the rings of
   :func:`ring_grid`;
-* **confinement** (numerical): on each of :data:`DIRECTIONS` directions e, V(R e) - V(0)
-  at R = :data:`FAR_RADIUS` exceeds :data:`GROWTH` times the largest rise of V along e
-  over r <= ``radius``, and V increases over the last :data:`TAIL` radii of
-  :func:`ray_radii` (overflow to +inf counts as growth).  V grows without bound along
-  the grid's rays at least like r^(1/3); slower growth (log r) is refused.  A well
-  closed by a pole of V (a denominator's zero, as the symmetric shape's D(x) = 0 for
-  beta < 0) is refused too: between the grid radii nothing is seen.
+* **confinement** (numerical): the basin around the centre -- the component of
+  {V <= e} holding it -- must be bounded and regular for some e above V(0, 0).  Its
+  escape energy e* (a saddle, a singular point of V such as a pole, or the edge of the
+  largest search box) is found with a certificate by :func:`sinktheory.basin.escape`,
+  and energies at or above it are refused later; a well whose basin is open at every
+  energy (a valley where V stays at V(0, 0)) is refused here.
 * **wall ratios**, if given: below 1 in size at the centre (numerical);
 * **y = 0 invariant** (symbolic, reported, not required): dV/dy(x, 0) == 0 identically,
   decided with :func:`sympy.simplify` after substituting the values.
@@ -83,17 +82,16 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
+from .basin import Basin, guards, numeric
 from .errors import WellDefinitionError
 from .limits import MAX_N
-from .symbolic import SHAPES, x, y
+from .symbolic import SHAPES, x, y, y_invariance
 
 __all__ = [
     "check_well",
     "DIRECTIONS",
     "disc_grid",
-    "FAR_RADIUS",
     "FUNCTIONS",
-    "GROWTH",
     "load_well",
     "MAX_DEPTH",
     "MAX_DIGITS",
@@ -102,9 +100,7 @@ __all__ = [
     "MAX_TEXT_LENGTH",
     "parse_potential",
     "Parameter",
-    "ray_radii",
     "ring_grid",
-    "TAIL",
     "UserWell",
     "WellCheck",
     "y_invariant",
@@ -124,7 +120,14 @@ FUNCTIONS = {
     "Abs": sp.Abs,
 }
 _CONSTANTS = {"pi": sp.pi}
-_RESERVED = {"x", "y", *FUNCTIONS, *_CONSTANTS}
+#: Names of the derivation ladder's own symbols (container X, P; mass mu; momenta,
+#: velocities, accelerations, the separable coordinate u): a parameter so named would
+#: print as, and be confused with, one of them.
+_MECHANICS = {
+    "X", "P", "mu", "u", "p_x", "p_y", "Xdot", "xdot", "ydot", "xdd", "ydd", "pi_P", "pi_p_x",
+    "pi_p_y",
+}  # fmt: skip
+_RESERVED = {"x", "y", *FUNCTIONS, *_CONSTANTS, *_MECHANICS}
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
 
 #: Longest text of one expression (the paper's wells take under 100 characters).
@@ -270,7 +273,10 @@ def _declared(parameters: Iterable[str], where: str = "parameters") -> dict[str,
                 "digits or _",
             )  # fmt: skip
         if name in _RESERVED:
-            raise WellDefinitionError(where, name, "a reserved name (x, y, pi, a function)")
+            raise WellDefinitionError(
+                where, name, "a reserved name (x, y, pi, a function, or a symbol of the "
+                f"mechanics: {', '.join(sorted(_MECHANICS))})",
+            )  # fmt: skip
         symbols[name] = sp.Symbol(name, real=True)
     return symbols
 
@@ -489,6 +495,17 @@ class UserWell:
     def parameter_names(self) -> tuple[str, ...]:
         return tuple(p.name for p in self.parameters)
 
+    @property
+    def parameter_symbols(self) -> tuple[sp.Symbol, ...]:
+        """The parameters' real SymPy symbols, in declaration order."""
+        return tuple(p.symbol for p in self.parameters)
+
+    @property
+    def atoms(self) -> tuple:
+        """No intermediate atoms: SymPy differentiates V directly (the
+        :class:`~sinktheory.symbolic.WellDefinition` protocol)."""
+        return ()
+
     def values(self, **given: float) -> dict[sp.Symbol, sp.Rational]:
         """Parameter symbol -> exact value: the defaults, replaced by ``given`` (each
         checked against its range; unknown names refused)."""
@@ -611,14 +628,6 @@ def load_well(path: str | Path) -> UserWell:
 #: Number of directions of the polar grids (angles 2 pi j / DIRECTIONS, a multiple of 8:
 #: the axes and the diagonals are among them, exactly).
 DIRECTIONS = 64
-#: The confinement check's outermost radius and its growth factor: along each direction
-#: e, V(FAR_RADIUS e) - V(0) must exceed GROWTH times the largest rise of V along e over
-#: r <= radius.  Over 2^20 in radius, linear growth gives ~1e6 and r^(1/2) ~1e3 (both
-#: pass); log(1 + r^2) gives 40 and fails: a logarithmic well is refused.
-FAR_RADIUS = 2.0**20
-GROWTH = 100.0
-#: V must not fall over the last TAIL radii of :func:`ray_radii` (factor 2 apart).
-TAIL = 8
 
 
 def _directions() -> tuple[np.ndarray, np.ndarray]:
@@ -658,11 +667,6 @@ def ring_grid(radius: float) -> tuple[np.ndarray, np.ndarray]:
     return np.outer(r, cos), np.outer(r, sin)
 
 
-def ray_radii() -> np.ndarray:
-    """Radii 2^k, k = -4..20, of the confinement check (up to :data:`FAR_RADIUS`)."""
-    return 2.0 ** np.arange(-4, 21)
-
-
 @dataclass(frozen=True)
 class WellCheck:
     """What :func:`check_well` found: each field says how it was decided."""
@@ -674,42 +678,8 @@ class WellCheck:
     confinement: str
     y_invariant: bool
     y_invariant_reason: str
-
-
-def _numeric(expr: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None):
-    """A NumPy function of real (x, y) arrays in float64, the parameters passed as
-    ``values`` at call time so that a power is computed as written ((x/D)^(2n), not
-    x^(2n) / D^(2n), whose parts overflow).  The expression is one built by this module,
-    so printing it runs nothing of the user's.  A value that is complex or undefined
-    comes out NaN; one beyond float64 range comes out +-inf."""
-    values = dict(values or {})
-    f = sp.lambdify((x, y, *values), expr, modules="numpy")
-    args = [float(v) for v in values.values()]
-
-    def call(xs, ys):
-        xs = np.asarray(xs, dtype=float)
-        ys = np.asarray(ys, dtype=float)
-        with np.errstate(all="ignore"):
-            value = np.asarray(f(xs, ys, *args), dtype=float)
-        return np.broadcast_to(value, np.broadcast(xs, ys).shape)
-
-    return call
-
-
-def _guards(expr: sp.Expr) -> list[tuple[sp.Expr, str]]:
-    """Subexpressions that must keep a sign: denominators, log arguments, bases of
-    non-integer powers."""
-    guards = []
-    for node in sp.preorder_traversal(expr):
-        if isinstance(node, sp.Pow) and node.base.free_symbols:
-            e = node.exp
-            if not (e.is_Number and e.is_integer):
-                guards.append((node.base, "the base of a non-integer power, >= 0"))
-            elif e.is_Number and e < 0:
-                guards.append((node.base, "a denominator, non-zero and of one sign"))
-        elif isinstance(node, sp.log) and node.args[0].free_symbols:
-            guards.append((node.args[0], "the argument of log, > 0"))
-    return guards
+    #: the basin around the centre: escape energy (with its certificate), reach, area
+    basin: Basin
 
 
 def _where(xs, ys, i) -> str:
@@ -729,8 +699,8 @@ def _check_centre(V: sp.Expr, f, where: str, radius: float) -> None:
             where, f"V = {values[i]:.6g}", f"not real and finite at {_where(xs, ys, i)} "
             f"(the disc r <= {radius:g} around the centre; NaN: complex or undefined)",
         )  # fmt: skip
-    for guard, rule in _guards(V):
-        g = _numeric(guard)(xs, ys)
+    for guard, rule in guards(V):
+        g = numeric(guard)(xs, ys)
         if "log" in rule:
             bad = ~(g > 0)
         elif "non-integer" in rule:
@@ -792,36 +762,6 @@ def _check_minimum(V: sp.Expr, f, where: str, radius: float) -> str:
     return f"V(0, 0) <= V on the rings ({why})"
 
 
-def _check_confinement(f, where: str, radius: float) -> str:
-    """V rises without bound along every ray of the grid (see the module docstring)."""
-    v0 = float(f(0.0, 0.0))
-    cos, sin = _directions()
-    near = radius * np.arange(1, 17) / 16
-    rise = np.max(f(np.outer(cos, near), np.outer(sin, near)), axis=1) - v0
-    r = ray_radii()
-    tail = f(np.outer(cos, r), np.outer(sin, r))[:, -TAIL:]
-    with np.errstate(invalid="ignore"):
-        # inf - inf (overflow on consecutive radii) is NaN, not a fall
-        falls = np.any(np.diff(tail, axis=1) < 0, axis=1) | np.any(np.isnan(tail), axis=1)
-        far = tail[:, -1] - v0
-        short = ~(far >= GROWTH * np.maximum(rise, 0)) | ~(far > 0)
-    bad = falls | short
-    if bad.any():
-        j = int(np.argmax(np.where(bad, -np.nan_to_num(tail[:, -1], nan=-np.inf), -np.inf)))
-        angle = 360 * j / DIRECTIONS
-        direction = f"({round(cos[j], 3) + 0:g}, {round(sin[j], 3) + 0:g})"
-        raise WellDefinitionError(
-            where, f"V({FAR_RADIUS:.6g} e) = {tail[j, -1]:.6g}",
-            f"not confining: along the direction e = {direction} (angle {angle:g} deg) V does "
-            f"not rise without bound (V on radii 2^{21 - TAIL}..2^20 must increase to more "
-            f"than V(0) + {GROWTH:g} x its rise {rise[j]:.3g} on r <= {radius:g})",
-        )  # fmt: skip
-    return (
-        f"V increases on radii 2^{21 - TAIL}..2^20 along {DIRECTIONS} directions, to more "
-        f"than V(0) + {GROWTH:g} x its rise on r <= {radius:g} along each (numerical)"
-    )
-
-
 def y_invariant(V: sp.Expr) -> tuple[bool, str]:
     """Whether y = 0 is invariant: dV/dy(x, 0) == 0 identically (symbolic).
 
@@ -832,30 +772,28 @@ def y_invariant(V: sp.Expr) -> tuple[bool, str]:
     >>> y_invariant(parse_potential("x**2 + y**2 + x**2*y", ()))
     (False, 'dV/dy(x, 0) = x**2, not identically 0')
     """
-    d = sp.diff(V, y).subs(y, 0)
-    if d == 0 or sp.simplify(sp.expand(d)) == 0:
-        return True, "dV/dy(x, 0) = 0"
-    return False, f"dV/dy(x, 0) = {sp.simplify(d)}, not identically 0"
+    return y_invariance(V)
 
 
 def check_well(well: UserWell, radius: float = 1.0, **given: float) -> WellCheck:
     """Check ``well`` at its parameter values (defaults unless ``given``).
 
-    Real and finite on the disc r <= ``radius``, a minimum at the centre, confinement in
-    every direction (each raises :class:`~sinktheory.errors.WellDefinitionError` with one
+    Real and finite on the disc r <= ``radius``, a minimum at the centre, a bounded basin
+    above V(0, 0) (each raises :class:`~sinktheory.errors.WellDefinitionError` with one
     line saying what is wrong), and whether y = 0 is invariant (reported).  How each is
     decided, and its certificate, is in the module docstring.
 
     Examples
     --------
     >>> hh = UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})
-    >>> check_well(hh)
+    >>> round(check_well(hh).basin.escape.energy * 6, 15)  # the saddles' height 1/6
+    1.0
+    >>> check_well(UserWell("valley", "x**2", {}))  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    sinktheory.errors.WellDefinitionError: well hh: 'V(1.04858e+06 e) = -3.84307e+17' is \
-refused: not confining: along the direction e = (0, 1) (angle 90 deg) V does not rise \
-without bound (V on radii 2^13..2^20 must increase to more than V(0) + 100 x its rise 0.167 \
-on r <= 1)
+    sinktheory.errors.WellDefinitionError: well valley: 'V(0, 0) = 0' is refused: not \
+confining: at every energy above V(0, 0) the basin reaches (0, -1.04858e+06) on the edge of \
+the box |x|, |y| <= 1.04858e+06
     """
     radius = _number("radius", radius)
     if radius <= 0:
@@ -863,24 +801,25 @@ on r <= 1)
     values = well.values(**given)
     V = well.potential.subs(values)
     where = f"well {well.name}"
-    f = _numeric(well.potential, values)
+    f = numeric(well.potential, values)
     _check_centre(V, f, where, radius)
     for i, ratio in enumerate(well.wall_ratios):
-        level = float(_numeric(ratio, values)(0.0, 0.0))
+        level = float(numeric(ratio, values)(0.0, 0.0))
         if not abs(level) < 1:
             raise WellDefinitionError(
                 f"{where}: wall_ratios[{i}]", f"{level:.6g} at (0, 0)",
                 "a wall ratio must be below 1 at the centre (its level 1 is the rigid wall)",
             )  # fmt: skip
     minimum = _check_minimum(V, f, where, radius)
-    confinement = _check_confinement(f, where, radius)
+    basin = Basin.of(well.potential, values, well.name, radius)
     invariant, reason = y_invariant(V)
     return WellCheck(
         well.name,
         {s.name: v for s, v in values.items()},
         radius,
         minimum,
-        confinement,
+        basin.escape.describe(),
         invariant,
         reason,
+        basin,
     )

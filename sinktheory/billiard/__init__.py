@@ -8,7 +8,15 @@ ensembles and their :class:`~sinktheory.results.Result`.
 """
 
 from .run import BilliardResult, RigidLimit, billiard, rigid_limit, simulate_billiard
-from .table import Piece, Table, polynomial_table, rigid_table, sinai_table, stadium_table
+from .table import (
+    Piece,
+    Table,
+    polynomial_table,
+    rigid_table,
+    sinai_table,
+    stadium_table,
+    well_table,
+)
 
 __all__ = [
     "BilliardResult",
@@ -19,6 +27,7 @@ __all__ = [
     "polynomial_table",
     "rigid_limit",
     "rigid_table",
+    "well_table",
     "simulate_billiard",
     "sinai_table",
     "stadium_table",

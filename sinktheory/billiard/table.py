@@ -36,7 +36,7 @@ import numpy as np
 import sympy as sp
 
 from .. import symbolic as S
-from ..errors import ParameterError
+from ..errors import ParameterError, WellDefinitionError
 from ..model import Well
 from ..results import Result
 from ..validation import positive
@@ -52,6 +52,7 @@ __all__ = [
     "sinai_table",
     "stadium_table",
     "Table",
+    "well_table",
 ]
 
 _s = sp.Symbol("s", real=True)
@@ -359,11 +360,25 @@ def rigid_table(shape: str, alpha: float, beta: float) -> Table:
     walls, denominators = _shape_walls(shape)
     at = {S.alpha: alpha, S.beta: beta}
     coefs = [_coef_array(m, lam(alpha, beta)) for m, lam, _, _ in walls]
-    extent = SCAN_EXTENT * max(alpha, abs(beta), 1.0)
+    graphs = [(axis, graph.subs(at)) for _, _, axis, graph in walls]
     allowed = f"a value for which the rigid walls of the {shape} well close around the centre"
+
+    def refuse(why: str) -> None:
+        raise ParameterError("beta", beta, allowed, why=why)
+
+    extent = SCAN_EXTENT * max(alpha, abs(beta), 1.0)
+    dens = [d.subs(at) for d in denominators]
+    return _walled_table(shape, {"alpha": alpha, "beta": beta}, graphs, coefs, dens, extent,
+                         refuse)  # fmt: skip
+
+
+def _walled_table(name, parameters, graphs, coefs, denominators, extent, refuse) -> Table:
+    """The table bounded by the walls f_i = coefs[i] >= 0, each drawn as the graph
+    (axis, W(s)) of ``graphs`` from its axis to where it meets another wall, checked to
+    close with every denominator (SymPy in x, y) > 0 on it; ``refuse(why)`` raises."""
     pieces = []
-    for i, (_, _, axis, graph) in enumerate(walls):
-        W = sp.lambdify(_s, graph.subs(at), "numpy")
+    for i, (axis, graph) in enumerate(graphs):
+        W = sp.lambdify(_s, graph, "numpy")
 
         def point(s, W=W, axis=axis):
             with np.errstate(invalid="ignore"):
@@ -381,27 +396,84 @@ def rigid_table(shape: str, alpha: float, beta: float) -> Table:
 
         end = _first_failure(ok, extent)
         if end is None:
-            raise ParameterError(
-                "beta", beta, allowed, why=f"the wall {axis} = {graph} meets no other wall"
-            )
-        expr = graph.subs(at)
-        pieces += [Piece(axis, sign, expr, -end, end) for sign in (1, -1)]
+            refuse(f"the wall {axis} = {graph} meets no other wall")
+        pieces += [Piece(axis, sign, graph, -end, end) for sign in (1, -1)]
     table = _assemble(
-        shape, {"alpha": alpha, "beta": beta}, pieces, [POLYNOMIAL] * len(coefs), coefs,
-        np.zeros((len(coefs), 2)),
-    )  # fmt: skip
-    _check_closed(table, "beta", beta, allowed)
-    dens = [sp.lambdify((S.x, S.y), d.subs(at), "numpy") for d in denominators]
+        name, parameters, pieces, [POLYNOMIAL] * len(coefs), coefs, np.zeros((len(coefs), 2))
+    )
+    _check_closed(table, refuse)
+    dens = [sp.lambdify((S.x, S.y), d, "numpy") for d in denominators]
     pts = np.concatenate([p.points(801) for p in pieces])
     for d in dens:
         if not np.all(np.asarray(d(pts[:, 0], pts[:, 1])) > 0):
-            raise ParameterError(
-                "beta", beta, allowed, why="a wall denominator D vanishes on the rigid table"
-            )
+            refuse("a wall denominator D vanishes on the rigid table")
     return table
 
 
-def _check_closed(table: Table, name: str, value, allowed: str) -> None:
+def well_table(well, **given: float) -> Table:
+    """The rigid table of a user's well (:class:`sinktheory.userwell.UserWell`) at its
+    parameter values (defaults unless ``given``): the region where every wall ratio is
+    below 1 in size, each ratio num/den giving the wall function den^2 - num^2, which must
+    be a polynomial in x, y at those values, and its graph solved by SymPy as for the
+    registered shapes.  A well without wall ratios, a wall that is not polynomial, or
+    walls that do not close around the centre are refused
+    (:class:`~sinktheory.errors.WellDefinitionError`).
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> ellipse = UserWell("ellipse", "((x/a)**2 + (y/b)**2)**4", {"a": 0.3, "b": 0.2},
+    ...                    wall_ratios=["sqrt((x/a)**2 + (y/b)**2)"])
+    >>> round(well_table(ellipse).area / (math.pi * 0.3 * 0.2), 12)
+    1.0
+    """
+    from ..userwell import UserWell
+
+    if not isinstance(well, UserWell):
+        raise ParameterError("well", well, "a sinktheory.userwell.UserWell")
+    values = well.values(**given)
+    where = f"well {well.name}: wall_ratios"
+    if not well.wall_ratios:
+        raise WellDefinitionError(where, "[]", "a rigid table needs the wall ratios")
+
+    def refuse(why: str) -> None:
+        raise WellDefinitionError(where, values_text, f"the rigid walls do not close ({why})")
+
+    values_text = ", ".join(f"{k} = {v}" for k, v in values.items()) or "no parameters"
+    graphs, coefs, dens = [], [], []
+    for i, ratio in enumerate(well.wall_ratios):
+        num, den = sp.fraction(sp.together(ratio.subs(values)))
+        f = sp.expand(den**2 - num**2)
+        try:
+            monoms, coeffs = _coefficients(f)
+        except sp.PolynomialError:
+            raise WellDefinitionError(
+                f"{where}[{i}]", str(ratio), "its wall den^2 - num^2 is not a polynomial in x, y"
+            ) from None
+        coefs.append(_coef_array(monoms, coeffs))
+        options = []
+        for var, other in ((S.x, S.y), (S.y, S.x)):
+            if f.has(var):
+                for sol in sp.solve(sp.Eq(num**2, den**2), var):
+                    at_axis = sp.N(sol.subs(other, 0))
+                    if at_axis.is_real and at_axis.is_positive:
+                        options.append((sp.count_ops(sol), var.name, sol.subs(other, _s)))
+        if not options:
+            raise WellDefinitionError(
+                f"{where}[{i}]", str(ratio), "its level 1 crosses no axis on the positive side"
+            )
+        _, axis, graph = min(options, key=lambda o: o[0])
+        graphs.append((axis, graph))
+        if den.free_symbols:
+            dens.append(den)
+    # the walls' distances from the centre on their axes set the scale scanned for corners
+    crossings = [abs(float(graph.subs(_s, 0))) for _, graph in graphs]
+    extent = SCAN_EXTENT * max(1.0, *crossings)
+    parameters = {k.name: float(v) for k, v in values.items()}
+    return _walled_table(well.name, parameters, graphs, coefs, dens, extent, refuse)
+
+
+def _check_closed(table: Table, refuse) -> None:
     """Every piece's end must meet another piece's end: the boundary closes."""
     ends = []
     for p in table.pieces:
@@ -414,7 +486,7 @@ def _check_closed(table: Table, name: str, value, allowed: str) -> None:
         d[i] = np.inf
         d[i ^ 1] = np.inf  # the other end of the same piece
         if d.min() > tol:
-            raise ParameterError(name, value, allowed, why=f"the boundary is open at {e.round(6)}")
+            refuse(f"the boundary is open at {e.round(6)}")
 
 
 def sinai_table(radius: float) -> Table:
@@ -465,7 +537,11 @@ def polynomial_table(
         name, parameters or {}, pieces, [POLYNOMIAL] * len(coefs), coefs,
         np.zeros((len(coefs), 2)),
     )  # fmt: skip
-    _check_closed(table, "pieces", f"{len(pieces)} pieces", "a closed boundary")
+
+    def refuse(why: str) -> None:
+        raise ParameterError("pieces", f"{len(pieces)} pieces", "a closed boundary", why=why)
+
+    _check_closed(table, refuse)
     return table
 
 

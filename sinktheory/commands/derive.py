@@ -8,6 +8,14 @@ digest of what produces them (:data:`SOURCES`, the sinktheory and SymPy versions
 engine's cache directory (:func:`sinktheory.engine.cache.cache_dir`); a later call reads
 that file without importing SymPy.  Editing any source changes the digest, so a stale
 file is never read; ``--fresh`` derives again and rewrites it.
+
+``--well FILE`` derives the ladder of a user's well file instead
+(:func:`sinktheory.symbolic.ladder`: potential, Lagrangian, Hamiltonian, equations of
+motion, the separable form, force, Hessian, and Hill's coefficient on y = 0 where y = 0
+is invariant), after the file and the well at its default parameters pass
+:func:`sinktheory.userwell.check_well`; the escape energy found there is printed with
+how it was found.  A refused well is one line on stderr, exit status 2; nothing is
+written (no cache: the file is read each time).
 """
 
 from __future__ import annotations
@@ -15,6 +23,7 @@ from __future__ import annotations
 import argparse
 import hashlib
 import json
+import math
 import os
 import tempfile
 from importlib.metadata import PackageNotFoundError, version
@@ -30,6 +39,7 @@ __all__ = [
     "cached_renderings",
     "digest",
     "equations",
+    "well_renderings",
     "HELP",
     "NAME",
     "renderings",
@@ -52,6 +62,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--latex", action="store_true", help="print LaTeX instead of text")
     parser.add_argument(
         "--fresh", action="store_true", help="derive again instead of reading the cached result"
+    )
+    parser.add_argument(
+        "--well",
+        metavar="FILE",
+        help="derive the ladder of the well in this TOML well file instead (parsed without "
+        "running code; see docs/guide/user_wells.rst)",
     )
     add_json(parser)
 
@@ -124,6 +140,51 @@ def renderings() -> dict[str, dict[str, str] | str]:
     }
 
 
+def well_renderings(path: str) -> dict:
+    """The ladder of the well file ``path`` rendered as :func:`renderings` renders the
+    paper's equations, plus ``escape_energy``, ``escape`` (how it was found) and
+    ``normal_mode`` (why y = 0 is or is not a normal mode) in the JSON.
+
+    Raises WellDefinitionError (a ParameterError) for a file or a well that is refused.
+    """
+    import sympy as sp
+
+    from .. import symbolic as S
+    from ..userwell import check_well, load_well
+
+    well = load_well(path)
+    report = check_well(well)
+    steps = S.ladder(well, well.values())
+    eqs = steps.items()
+    escape = report.basin.escape
+    mode = steps.normal_mode
+    why = (
+        f"y = 0 is a normal mode ({mode.reason})"
+        if mode.invariant
+        else f"y = 0 is not invariant ({mode.reason}): Floquet multipliers, normal modes "
+        "and transverse exponents do not apply"
+    )
+    given = ", ".join(f"{k} = {v}" for k, v in report.values.items()) or "none"
+    notes = [f"well {well.name}; parameters at their defaults: {given}",
+             f"at the defaults, {escape.describe()}", why]  # fmt: skip
+    text = "\n\n".join(
+        f"{key}:\n{sp.pretty(expr, use_unicode=True, wrap_line=False)}" for key, expr in eqs.items()
+    )
+    latex = "\n".join(f"% {key}\n{sp.latex(expr)}" for key, expr in eqs.items())
+    data = {key: sympifiable(expr) for key, expr in eqs.items()}
+    data |= {
+        "well": well.name,
+        "escape_energy": escape.energy if math.isfinite(escape.energy) else None,
+        "escape": escape.describe(),
+        "normal_mode": why,
+    }
+    return {
+        "json": data,
+        "text": "\n".join(notes) + "\n\n" + text,
+        "latex": "\n".join(f"% {line}" for line in notes) + "\n" + latex,
+    }
+
+
 def digest() -> str:
     """Digest of :data:`SOURCES` and the sinktheory and SymPy versions (12 hex digits)."""
     h = hashlib.sha256()
@@ -170,5 +231,8 @@ def cached_renderings(*, fresh: bool = False) -> dict:
 
 
 def run(args: argparse.Namespace) -> Output:
-    out = cached_renderings(fresh=args.fresh)
+    if args.well is not None:
+        out = well_renderings(args.well)
+    else:
+        out = cached_renderings(fresh=args.fresh)
     return Output(out["json"], out["latex"] if args.latex else out["text"])

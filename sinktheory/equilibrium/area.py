@@ -14,8 +14,8 @@ Closed forms (c = (2 n e / gamma)^(1/(2n)), t = c^2, L = alpha - beta)
   J_m = \\int_{-1}^{1} s^m (1 - s^(2n))^(1/(2n)) ds = B((m + 1)/(2n), 1 + 1/(2n)) / n;
   for beta = 0 it is the area 4 L t Gamma(1 + 1/(2n))^2 / Gamma(1 + 1/n) of a superellipse.
 
-Quadrature (any shape)
-----------------------
+Quadrature (any shape; :func:`sinktheory.basin.star_area`)
+-----------------------------------------------------------
 Along each ray from the centre at angle theta the edge of the basin is the first radius
 r*(theta) where V reaches e; A = 2 \\int_0^{pi/2} r*(theta)^2 d theta for a basin symmetric
 under x -> -x and y -> -y (every registered shape is).  r* is found by bisection to
@@ -47,7 +47,7 @@ import math
 import numpy as np
 
 from .. import validation as v
-from ..errors import NumericalError
+from ..basin import AREA_RTOL, MAX_RAYS, SCAN_POINTS, star_area
 from ..model import Well
 from ..twins import python_kernel
 
@@ -61,14 +61,6 @@ __all__ = [
     "scaled_energy",
     "SCAN_POINTS",
 ]
-
-#: Relative agreement of two successive trapezoid sums (rays doubled) that ends the
-#: quadrature; the error of the last sum is far below it (geometric convergence).
-AREA_RTOL = 1e-13
-#: Most rays over a quarter turn before the quadrature gives up.
-MAX_RAYS = 2**16
-#: Points of the scan along each ray that brackets the edge and checks V grows.
-SCAN_POINTS = 48
 
 
 def scaled_energy(well: Well, energy: float) -> float:
@@ -192,50 +184,8 @@ def area_quadrature(well: Well, energy: float) -> float:
 
 
 def _quadrature(well: Well, e: float) -> float:
-    potential = python_kernel(well.kernels.potential)
+    kernel = python_kernel(well.kernels.potential)
     args = (well.alpha, well.beta, well.gamma, well.n)
     x_max, y_max = well.reach(e)
     r_max = 1.000001 * math.hypot(x_max, y_max)
-
-    def edge(theta: np.ndarray) -> np.ndarray:
-        cos, sin = np.cos(theta), np.sin(theta)
-        scan = np.linspace(0.0, r_max, SCAN_POINTS)[:, None]
-        values = potential(scan * cos, scan * sin, *args)
-        above = values >= e
-        if not np.all(above.any(axis=0)):
-            bad = float(theta[~above.any(axis=0)][0])
-            raise NumericalError(f"area: V < e = {e:.6g} up to the reach along theta = {bad:.6g}")
-        first = above.argmax(axis=0)
-        inside = np.arange(SCAN_POINTS)[:, None] < first
-        falls = (np.diff(values, axis=0) <= 0) & inside[1:]
-        if falls.any():
-            bad = float(theta[falls.any(axis=0)][0])
-            raise NumericalError(
-                f"area: the basin of e = {e:.6g} is not star-shaped from the centre "
-                f"(V falls along theta = {bad:.6g})"
-            )
-        lo, hi = scan[first - 1, 0], scan[first, 0]
-        while True:
-            mid = 0.5 * (lo + hi)
-            done = (mid <= lo) | (mid >= hi)
-            if done.all():
-                return hi
-            out = potential(mid * cos, mid * sin, *args) >= e
-            hi = np.where(out & ~done, mid, hi)
-            lo = np.where(~out & ~done, mid, lo)
-
-    rays = 16
-    r2 = edge(np.linspace(0.0, math.pi / 2, rays + 1)) ** 2
-    total = 2 * (math.pi / 2 / rays) * (r2.sum() - 0.5 * (r2[0] + r2[-1]))
-    while rays < MAX_RAYS:
-        rays *= 2
-        mid = edge(np.linspace(0.0, math.pi / 2, rays + 1)[1::2]) ** 2
-        r2 = np.concatenate([r2, mid])
-        new = 0.5 * total + 2 * (math.pi / 2 / rays) * mid.sum()
-        if abs(new - total) <= AREA_RTOL * new:
-            return float(new)
-        total = new
-    raise NumericalError(
-        f"area: the quadrature of the {well.shape} basin at e = {e:.6g} did not converge to "
-        f"{AREA_RTOL:g} with {MAX_RAYS} rays per quarter turn"
-    )
+    return star_area(lambda x, y: kernel(x, y, *args), e, r_max, well.shape, quarter=True)

@@ -23,12 +23,14 @@ from sinktheory.billiard import (
     simulate_billiard,
     sinai_table,
     stadium_table,
+    well_table,
 )
 from sinktheory.billiard import kernels as K
 from sinktheory.billiard.impact import V, impulse_expression, mu, n_x, n_y, v_x, v_y
 from sinktheory.billiard.run import _outputs
-from sinktheory.errors import ParameterError
+from sinktheory.errors import ParameterError, WellDefinitionError
 from sinktheory.model import RunSettings
+from sinktheory.userwell import UserWell
 
 
 def _unit_directions(runs, seed=0):
@@ -61,6 +63,44 @@ def test_circular_and_symmetric_tables():
     s = (-1 + math.sqrt(1 + 4 * -b * (a - b))) / (2 * -b)
     area = 8 * ((a - b) * s + b * s**3 / 3 - s**2 / 2)
     assert rigid_table("symmetric", a, b).area == pytest.approx(area, rel=1e-10)
+
+
+USER_RATIOS = {
+    "flat": ["x/(alpha + beta*(y**2 - 1))", "y"],
+    "symmetric": ["x/(alpha + beta*(y**2 - 1))", "y/(alpha + beta*(x**2 - 1))"],
+    "circular": ["sqrt(x**2 + y**2)/(alpha - beta)"],
+}
+
+
+@pytest.mark.parametrize("shape,beta", [("flat", 0.3), ("flat", -0.3), ("symmetric", -0.3),
+                                        ("circular", 0.3)])  # fmt: skip
+def test_a_user_well_with_the_registry_walls_has_the_registry_table(shape, beta):
+    well = UserWell("mine", "x**2 + y**2", {"alpha": 0.5, "beta": beta},
+                    wall_ratios=USER_RATIOS[shape])  # fmt: skip
+    mine, registry = well_table(well), rigid_table(shape, 0.5, beta)
+    assert mine.area == pytest.approx(registry.area, rel=1e-12)
+    assert mine.perimeter == pytest.approx(registry.perimeter, rel=1e-12)
+
+
+def test_an_elliptic_user_table_is_the_ellipse():
+    well = UserWell("ellipse", "((x/a)**2 + (y/b)**2)**4", {"a": 0.3, "b": 0.2},
+                    wall_ratios=["sqrt((x/a)**2 + (y/b)**2)"])  # fmt: skip
+    assert well_table(well).area == pytest.approx(math.pi * 0.3 * 0.2, rel=1e-12)
+    assert well_table(well, a=0.2).area == pytest.approx(math.pi * 0.2 * 0.2, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "ratios,reason",
+    [
+        ([], "a rigid table needs the wall ratios"),
+        (["x"], "the rigid walls do not close"),  # a strip
+        (["exp(x)/2 + y**2"], "not a polynomial in x, y"),
+    ],
+)
+def test_a_user_table_that_cannot_be_built_is_refused(ratios, reason):
+    well = UserWell("w", "x**2 + y**2", {}, wall_ratios=ratios)
+    with pytest.raises(WellDefinitionError, match=reason):
+        well_table(well)
 
 
 def test_wall_curvature_matches_symbolic():
