@@ -38,12 +38,14 @@ from collections.abc import Callable
 __all__ = [
     "GLOSSARY",
     "MARKS",
+    "RENAMED_KEYWORDS",
     "RENAMED_OPTIONS",
     "modern_argv",
     "old_attribute",
     "refusals_named",
     "option_of",
     "renamed",
+    "stepper_or_scheme",
 ]
 
 #: name -> its one meaning.  The part before the first colon, where there is one, is the
@@ -198,8 +200,13 @@ MARKS: dict[str, str] = {
 
 
 def _stepper_or_scheme(value: str) -> str:
-    """Where an old ``--method`` went: ``adaptive`` is a stepper, the rest are schemes."""
+    """--stepper (for adaptive) or --scheme (any other value)"""
     return "--stepper" if value == "adaptive" else "--scheme"
+
+
+def stepper_or_scheme(value: object) -> str:
+    """stepper (for "adaptive") or scheme (any other value)"""
+    return "stepper" if value == "adaptive" else "scheme"
 
 
 #: command -> old option -> its new name, or a function of the option's value giving it.
@@ -212,6 +219,11 @@ RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
     "nnm": {"--energy": "--total-energy", "--continue": "--continue-in", "--range": "--interval"},
     "chaos": {"--energy": "--container-energy", "--method": "--scheme"},
 }
+
+
+#: "module.function" -> old keyword -> its new name (or a function of the value giving
+#: it), filled by :func:`renamed` as the modules that use it are imported.
+RENAMED_KEYWORDS: dict[str, dict[str, str | Callable[[object], str]]] = {}
 
 
 def option_of(name: str) -> str:
@@ -228,6 +240,7 @@ def renamed(**renames: str | Callable[[object], str]):
     def wrap(obj):
         target = obj.__init__ if isinstance(obj, type) else obj
         owner = obj.__qualname__
+        RENAMED_KEYWORDS[f"{obj.__module__}.{owner}"] = dict(renames)
 
         @functools.wraps(target)
         def modern(*args, **kwargs):

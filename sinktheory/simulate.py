@@ -61,7 +61,7 @@ from .ensemble import (
     split_values,
 )
 from .errors import ParameterError
-from .glossary import renamed
+from .glossary import renamed, stepper_or_scheme
 from .integrators import get_scheme
 from .layout import StateLayout
 from .model import RunSettings, Sink
@@ -116,7 +116,7 @@ def first_order_rhs(sink: Sink):
 STEPPERS = ("fixed", "adaptive")
 
 
-@renamed(method=lambda value: "stepper" if value == "adaptive" else "scheme")
+@renamed(method=stepper_or_scheme)
 def simulate(
     sink: Sink,
     settings: RunSettings | None = None,
@@ -313,7 +313,7 @@ def point(p: dict, seed: int) -> dict:
     res = simulate(
         sink_of(p),
         settings_of(p, seed),
-        method=p["method"],
+        scheme=p["method"],
         dt=p["dt"],
         record=("container",),
         energy_bound=p["energy_bound"],
