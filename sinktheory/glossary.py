@@ -213,6 +213,7 @@ def stepper_or_scheme(value: object) -> str:
 RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
     **{command: {"--energy": "--container-energy"} for command in ("sink", "billiard", "design")},
     "lifetime": {"--energy": "--container-energy", "--fraction": "--fractions"},
+    "compare": {"--shape": "--shapes", "--samples": "--samples-per-period"},
     "simulate": {"--energy": "--container-energy", "--method": _stepper_or_scheme},
     "well": {"--energy": "--particle-energy"},
     "equilibrium": {"--energy": "--total-energy", "--fraction": "--fractions"},
