@@ -60,6 +60,7 @@ import numpy as np
 from . import validation as v
 from .ensemble import random_positions
 from .errors import ParameterError
+from .glossary import renamed
 from .layout import StateLayout
 from .model import SHAPES, RunSettings, Sink, Well
 from .results import Result
@@ -255,9 +256,10 @@ def start_rows(att: Attachment, settings: RunSettings) -> np.ndarray:
     return rows
 
 
+@renamed(energy="container_energy")
 def impulse_response(
     att: Attachment,
-    energy: float,
+    container_energy: float,
     *,
     damping: float,
     periods: int,
@@ -270,19 +272,20 @@ def impulse_response(
     energy_bound: float | None = None,
     line_offset: float = 0.0,
 ) -> ImpulseResponse:
-    """The container's response to an impulse of energy ``energy`` (module docstring).
+    """The container's response to an impulse of energy E0 = ``container_energy`` (module
+    docstring).
 
     Parameters
     ----------
     att : Attachment
-    energy : float > 0
-        E, the container's energy given by the impulse (Xdot(0) = sqrt(2 E)).
+    container_energy : float > 0
+        E0, the container's energy given by the impulse (Xdot(0) = sqrt(2 E0)).
     damping : float >= 0
         c, the total dashpot coefficient (c / k per particle).
     periods, runs, seed
         As :class:`sinktheory.model.RunSettings`.
     box : float > 0
-        Half-width of the particles' start box relative to sqrt(2 E) (module docstring).
+        Half-width of the particles' start box relative to sqrt(2 E0) (module docstring).
     samples_per_period : int >= 1
         Samples per period T = 2 pi of the records.
     tol : float, optional
@@ -307,7 +310,7 @@ def impulse_response(
         raise ParameterError("att", att, "a sinktheory.attachments.Attachment")
     damping = v.nonnegative("damping", damping)
     samples = v.positive_int("samples_per_period", samples_per_period, maximum=100_000)
-    energy = v.positive("energy", energy)
+    energy = v.positive("container_energy", container_energy)
     box = v.positive("box", box) * math.sqrt(2.0 * energy)
     settings = RunSettings(container_energy=energy, runs=runs, periods=periods, seed=seed, box=box)
     offset = v.nonnegative("line_offset", line_offset)

@@ -35,6 +35,7 @@ from .ensemble import (
     total_energy,
 )
 from .errors import ParameterError
+from .glossary import renamed
 from .integrators import DEFAULT_SCHEME, get_scheme
 from .layout import StateLayout
 from .limits import MAX_PERIODS
@@ -224,6 +225,7 @@ def sections(
     return rec.trajectory[:, transient + 1 :, StateLayout(1).y][:, :, 0]
 
 
+@renamed(energy="container_energy")
 def bifurcation(
     betas,
     *,
@@ -232,13 +234,14 @@ def bifurcation(
     gamma: float = 1.0,
     shape: str = "flat",
     mass: float = 0.2,
-    energy: float = 0.5,
+    container_energy: float = 0.5,
     transient: int = 200,
     count: int = 200,
     quantity: str = "y",
 ) -> BifurcationDiagram:
     """Sections for each beta in ``betas`` (one ensemble; see :mod:`sinktheory.sweep` for
-    parallel and resumable sweeps).
+    parallel and resumable sweeps), each run started with the container's energy
+    ``container_energy`` (E0).
 
     Raises ParameterError naming ``beta`` if a value gives an invalid well.
     """
@@ -246,6 +249,7 @@ def bifurcation(
     if betas.ndim != 1 or betas.size == 0:
         raise ParameterError("betas", f"array of shape {betas.shape}", "a non-empty 1-D array")
     sinks = [Sink(Well(alpha, b, n, gamma=gamma, shape=shape), 1, mass) for b in betas]
+    energy = container_energy
     for s in sinks:  # refuse bad input before any long computation
         RunSettings(container_energy=energy, runs=1, periods=1).check(s)
     rows = sections(sinks, transient=transient, count=count, quantity=quantity, energy=energy)

@@ -38,12 +38,14 @@ from collections.abc import Callable
 __all__ = [
     "GLOSSARY",
     "MARKS",
+    "RENAMED_KEYWORDS",
     "RENAMED_OPTIONS",
     "modern_argv",
     "old_attribute",
     "refusals_named",
     "option_of",
     "renamed",
+    "stepper_or_scheme",
 ]
 
 #: name -> its one meaning.  The part before the first colon, where there is one, is the
@@ -109,6 +111,38 @@ GLOSSARY: dict[str, str] = {
     "fixed": "a fixed container (only the particles move)",
     "fractions": "fractions f in (0, 1) of the total energy E selecting the sets {E_c >= f E}",
     "fraction": "f: the relative distance from the target that counts as settled",
+    "target": "the level a relaxation approaches (the law's mean <E_c>)",
+    "tail": "the relative excess below which an approach is fitted by one exponential",
+    "window": "periods per window",
+    "level": "confidence level of an interval",
+    "resamples": "bootstrap resamples",
+    "energy_runs": "E(jT) of independent runs: the container energy records (runs x periods)",
+    "series": "a 1-D series (such as the container energy E_k at t = kT)",
+    "theiler": "Theiler window: points with |i - j| below it are left out",
+    "l_min": "the shortest diagonal line counted",
+    "v_min": "the shortest vertical line counted",
+    "quantity": "what a section records (y, or energy: the container energy E(jT))",
+    "count": "how many values (sections, grid points)",
+    "levels": "probability levels of quantiles",
+    "lo": "the low end of an interval",
+    "hi": "the high end of an interval",
+    "problem": "a HillProblem: Hill's equation of the normal mode y = 0",
+    "betas": "a grid of betas",
+    "chaos": "a chaos map over the same betas",
+    "chart": "a transverse chart over the same betas",
+    "half_traces": "the transverse half-period half-traces phi_T/2 at every point",
+    "subspace": "the invariant subspace an orbit is kept in",
+    "block": "engine runs per block (the numbers do not depend on it)",
+    "stop_early": "stop a point's runs once they are settled chaotic",
+    "replica": "index of a repetition with its own seed",
+    "store": "a Zarr store of the results",
+    "params": "a sweep's parameters: NAME -> a value or a list of values",
+    "kinds": "the absorbers compared (well, nes, impact)",
+    "shapes": "the well shapes compared",
+    "samples_per_period": "samples per period of the records",
+    "att": "an Attachment: the absorber",
+    "omega": "the frequency grid (LO, HI, COUNT) of a wavelet map",
+    "run": "which run",
     "amplitude": "A0: the amplitude of the oscillator x(t)",
     "order": "the highest order i of the successive approximations",
     "lam": "Lam: the coefficient of the pure Hill equation",
@@ -166,23 +200,31 @@ MARKS: dict[str, str] = {
 
 
 def _stepper_or_scheme(value: str) -> str:
-    """Where an old ``--method`` went: ``adaptive`` is a stepper, the rest are schemes."""
+    """--stepper (for adaptive) or --scheme (any other value)"""
     return "--stepper" if value == "adaptive" else "--scheme"
+
+
+def stepper_or_scheme(value: object) -> str:
+    """stepper (for "adaptive") or scheme (any other value)"""
+    return "stepper" if value == "adaptive" else "scheme"
 
 
 #: command -> old option -> its new name, or a function of the option's value giving it.
 RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
-    **{
-        command: {"--energy": "--container-energy"}
-        for command in ("sink", "billiard", "design")
-    },
+    **{command: {"--energy": "--container-energy"} for command in ("sink", "billiard", "design")},
     "lifetime": {"--energy": "--container-energy", "--fraction": "--fractions"},
+    "compare": {"--shape": "--shapes", "--samples": "--samples-per-period"},
     "simulate": {"--energy": "--container-energy", "--method": _stepper_or_scheme},
     "well": {"--energy": "--particle-energy"},
     "equilibrium": {"--energy": "--total-energy", "--fraction": "--fractions"},
     "nnm": {"--energy": "--total-energy", "--continue": "--continue-in", "--range": "--interval"},
     "chaos": {"--energy": "--container-energy", "--method": "--scheme"},
 }
+
+
+#: "module.function" -> old keyword -> its new name (or a function of the value giving
+#: it), filled by :func:`renamed` as the modules that use it are imported.
+RENAMED_KEYWORDS: dict[str, dict[str, str | Callable[[object], str]]] = {}
 
 
 def option_of(name: str) -> str:
@@ -199,6 +241,7 @@ def renamed(**renames: str | Callable[[object], str]):
     def wrap(obj):
         target = obj.__init__ if isinstance(obj, type) else obj
         owner = obj.__qualname__
+        RENAMED_KEYWORDS[f"{obj.__module__}.{owner}"] = dict(renames)
 
         @functools.wraps(target)
         def modern(*args, **kwargs):

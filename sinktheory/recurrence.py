@@ -39,6 +39,7 @@ import numpy as np
 
 from . import validation as v
 from .errors import ParameterError
+from .glossary import renamed
 from .results import Result, plain
 
 __all__ = [
@@ -55,12 +56,12 @@ __all__ = [
 DEFAULT_RATE = 0.05
 
 
-def _series(energy) -> np.ndarray:
-    e = v.real_array("energy", energy, "a 1-D series of length >= 2")
+def _series(energy, name: str = "energy") -> np.ndarray:
+    e = v.real_array(name, energy, "a 1-D series of length >= 2")
     if e.ndim != 1 or e.size < 2:
-        raise ParameterError("energy", f"array of shape {e.shape}", "a 1-D series of length >= 2")
+        raise ParameterError(name, f"array of shape {e.shape}", "a 1-D series of length >= 2")
     if not np.all(np.isfinite(e)):
-        raise ParameterError("energy", "a series with NaN or inf", "finite values")
+        raise ParameterError(name, "a series with NaN or inf", "finite values")
     return e
 
 
@@ -262,14 +263,16 @@ def _settings(n: int, theiler, l_min, v_min) -> tuple[int, int, int]:
     )
 
 
+@renamed(energy="series")
 def rqa(
-    energy, eps: float | None = None, *, theiler: int = 1, l_min: int = 2, v_min: int = 2
+    series, eps: float | None = None, *, theiler: int = 1, l_min: int = 2, v_min: int = 2
 ) -> RQA:
-    """Recurrence quantification of ``energy`` (E_k at t = kT), without an N x N matrix.
+    """Recurrence quantification of ``series`` (such as the container energy E_k at
+    t = kT), without an N x N matrix.
 
     Parameters
     ----------
-    energy : 1-D array, finite
+    series : 1-D array, finite
     eps : float >= 0, optional
         Neighbourhood size; by default :func:`epsilon_for_rate` at 5 %.
     theiler : int >= 0
@@ -286,7 +289,7 @@ def rqa(
     >>> r.recurrence_rate, r.determinism, r.laminarity, r.mean_recurrence_time
     (0.4, 1.0, 0.0, 2.0)
     """
-    e = _series(energy)
+    e = _series(series, "series")
     eps = epsilon_for_rate(e) if eps is None else v.nonnegative("eps", eps)
     theiler, l_min, v_min = _settings(e.size, theiler, l_min, v_min)
     dummy = np.zeros((1, 1), np.bool_)

@@ -61,7 +61,7 @@ from .ensemble import (
     split_values,
 )
 from .errors import ParameterError
-from .glossary import renamed
+from .glossary import renamed, stepper_or_scheme
 from .integrators import get_scheme
 from .layout import StateLayout
 from .model import RunSettings, Sink
@@ -139,7 +139,7 @@ def _run_adaptive(sink, settings, *, eps=None, **common) -> SimulationResult:
     return simulate_adaptive(sink, settings, eps=DEFAULT_EPS if eps is None else eps, **common)
 
 
-@renamed(method=lambda value: "stepper" if value == "adaptive" else "scheme")
+@renamed(method=stepper_or_scheme)
 def simulate(
     sink: Sink,
     settings: RunSettings | None = None,
@@ -355,7 +355,7 @@ def point(p: dict, seed: int) -> dict:
     res = simulate(
         sink_of(p),
         settings_of(p, seed),
-        method=p["method"],
+        scheme=p["method"],
         dt=p["dt"],
         record=("container",),
         energy_bound=p["energy_bound"],

@@ -236,6 +236,43 @@ class CliReference(SphinxDirective):
         return out
 
 
+def _target(new) -> str:
+    """A rename's new name, or what its function says for one that depends on the value."""
+    return new if isinstance(new, str) else inspect.getdoc(new).splitlines()[0]
+
+
+class NamesGlossary(SphinxDirective):
+    """The glossary of :mod:`sinktheory.glossary`: every name with its option and its one
+    meaning, then the names that changed (options per command, keywords per function)."""
+
+    has_content = False
+
+    def run(self):
+        import importlib
+        import pkgutil
+
+        import sinktheory
+        from sinktheory import glossary as g
+
+        for info in pkgutil.walk_packages(sinktheory.__path__, "sinktheory."):
+            importlib.import_module(info.name)  # each renamed() registers its keywords
+        rows = [[f"``{name}``", g.option_of(name), meaning]
+                for name, meaning in sorted(g.GLOSSARY.items())]  # fmt: skip
+        names = _section(self, "Names and their meanings", "glossary-names")
+        names += _table(["keyword", "option", "meaning"], rows, [20, 22, 58])
+        options = _section(self, "Renamed options", "glossary-renamed-options")
+        rows = [[f"sinktheory {command}", old, _target(new)]
+                for command, table in sorted(g.RENAMED_OPTIONS.items())
+                for old, new in table.items()]  # fmt: skip
+        options += _table(["command", "old option", "now"], rows, [30, 30, 40])
+        keywords = _section(self, "Renamed keywords", "glossary-renamed-keywords")
+        rows = [[where, old, _target(new)]
+                for where, table in sorted(g.RENAMED_KEYWORDS.items())
+                for old, new in table.items()]  # fmt: skip
+        keywords += _table(["function", "old keyword", "now"], rows, [50, 20, 30])
+        return [names, options, keywords]
+
+
 # --- gallery of the paper's figures -----------------------------------------------------
 def _start_reproduce(app, env, docnames) -> None:
     """Start ``sinktheory reproduce --quick`` if the gallery page is about to be read."""
@@ -438,6 +475,7 @@ def _copy_notebooks(app) -> None:
 def setup(app):
     app.add_directive("symbolic", SymbolicMath)
     app.add_directive("cli-reference", CliReference)
+    app.add_directive("names-glossary", NamesGlossary)
     app.add_directive("paper-gallery", PaperGallery)
     app.connect("builder-inited", _clean_api_stubs, priority=100)  # before autosummary
     app.connect("builder-inited", _copy_notebooks)  # before the sources are listed

@@ -196,7 +196,7 @@ def _soft(sink, settings, lyapunov, transient, tol) -> Measurement:
     while done < periods:
         part = min(chunk, periods - done)
         res = simulate(
-            sink, replace(settings, periods=part), method=method, dt=dt, energy_bound=bound,
+            sink, replace(settings, periods=part), scheme=method, dt=dt, energy_bound=bound,
             record=("container", "trajectory", "final"), stride=1, initial_state=state,
             progress=False,
         )  # fmt: skip

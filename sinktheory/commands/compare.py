@@ -64,7 +64,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--nes-n", type=number, default=2, help="wall exponent of the NES (default 2: cubic)"
     )
     g.add_argument(
-        "--shape", default="flat", help="shapes of the well, comma-separated (default flat)"
+        "--shapes", default="flat", help="shapes of the well, comma-separated (default flat)"
     )
     g.add_argument(
         "--particles", default="1,5", help="particle counts k of the well, comma-separated (1,5)"
@@ -82,7 +82,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     r.add_argument("--periods", type=number, default=200, help="window in periods T (200)")
     r.add_argument("--seed", type=number, default=0, help="random seed >= 0 (default 0)")
     r.add_argument(
-        "--samples", type=number, default=16, help="samples per period of the records (16)"
+        "--samples-per-period",
+        type=number,
+        default=16,
+        help="samples per period of the records (16)",
     )
     r.add_argument("--tol", type=number, default=None, help="energy tolerance (default 1e-8)")
     o = parser.add_argument_group("output")
@@ -108,7 +111,7 @@ def run(args: argparse.Namespace) -> Output:
 
     atts = attachments_of(
         _words(args.attachments),
-        shapes=_words(args.shape),
+        shapes=_words(args.shapes),
         particles=_ints("particles", args.particles),
         alpha=args.alpha,
         beta=args.beta,
@@ -118,9 +121,13 @@ def run(args: argparse.Namespace) -> Output:
     )
     energies = energies_of(*args.energies)
     w_energy = None
-    if wavelet is not None and not (isinstance(args.samples, int) and args.samples >= 6):
+    if wavelet is not None and not (
+        isinstance(args.samples_per_period, int) and args.samples_per_period >= 6
+    ):
         # the map reaches omega = 3: the Nyquist frequency samples / 2 must too
-        raise ParameterError("samples", args.samples, "an integer >= 6 with --wavelet")
+        raise ParameterError(
+            "samples_per_period", args.samples_per_period, "an integer >= 6 with --wavelet"
+        )
     if wavelet is not None:
         given = args.wavelet_energy
         w_energy = float(energies[-1]) if given is None else v.positive("wavelet-energy", given)
@@ -133,7 +140,7 @@ def run(args: argparse.Namespace) -> Output:
         periods=args.periods,
         runs=args.runs,
         seed=args.seed,
-        samples_per_period=args.samples,
+        samples_per_period=args.samples_per_period,
         tol=args.tol,
         progress=not args.quiet,
     )
@@ -163,7 +170,7 @@ def _transfer_figure(atts, energy: float, args, energies):
     maps, bones, notes, cache = [], [], [], {}
     for att in atts:
         maps.append(transfer_map(att, energy, damping=args.damping, periods=args.periods,
-                                 seed=args.seed, samples_per_period=args.samples,
+                                 seed=args.seed, samples_per_period=args.samples_per_period,
                                  tol=args.tol))  # fmt: skip
         key = (att.kind, att.n, att.shape)
         if key not in cache:

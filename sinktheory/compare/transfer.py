@@ -29,6 +29,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import renamed
 from ..results import Result
 from .wavelet import DEFAULT_WAVELET, WaveletMap, wavelet_map
 
@@ -77,9 +78,10 @@ class TransferMap(Result):
     DIMS = {"energy_left": ("t",), "container_energy": ("t",)}
 
 
+@renamed(energy="container_energy")
 def transfer_map(
     att,
-    energy: float,
+    container_energy: float,
     *,
     damping: float,
     periods: int,
@@ -95,7 +97,7 @@ def transfer_map(
     Parameters
     ----------
     att : Attachment
-    energy, damping, periods, seed, samples_per_period, tol
+    container_energy, damping, periods, seed, samples_per_period, tol
         As :func:`sinktheory.attachments.impulse_response`.
     run : int >= 0
         The run of the seeded ensemble (runs ``0..run`` are integrated).
@@ -118,7 +120,7 @@ def transfer_map(
     run = v.positive_int("run", run, minimum=0, maximum=10**6)
     res = impulse_response(
         att,
-        energy,
+        container_energy,
         damping=damping,
         periods=periods,
         runs=run + 1,

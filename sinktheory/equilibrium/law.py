@@ -328,7 +328,7 @@ class EquilibriumLaw(Result):
 
     def log10_kac_periods(self, f) -> np.ndarray | float:
         """log10 of Kac's mean return time (periods) to {E_c >= f E}, f in (0, 1)."""
-        fs = check_fractions(f)
+        fs = check_fractions(f, name="f")
         out = -self.log_tail(fs) / math.log(10)
         return float(out[0]) if np.ndim(f) == 0 else out.reshape(np.shape(f))
 
@@ -365,15 +365,15 @@ class EquilibriumLaw(Result):
         )
 
 
-def check_fractions(fractions) -> np.ndarray:
+def check_fractions(fractions, name: str = "fractions") -> np.ndarray:
     """Fractions f as a 1-D array, each in the open interval (0, 1) (ParameterError naming
-    ``fractions`` otherwise)."""
-    fs = np.atleast_1d(v.real_array("fractions", fractions)).ravel()
+    ``name`` otherwise)."""
+    fs = np.atleast_1d(v.real_array(name, fractions)).ravel()
     if not fs.size:
-        raise ParameterError("fractions", fractions, "one or more numbers in (0, 1)")
+        raise ParameterError(name, fractions, "one or more numbers in (0, 1)")
     for f in fs:
         if not (0 < f < 1):
-            raise ParameterError("fractions", float(f), "each a number in (0, 1)")
+            raise ParameterError(name, float(f), "each a number in (0, 1)")
     return fs
 
 

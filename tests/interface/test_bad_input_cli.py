@@ -469,9 +469,9 @@ def test_api_type_errors_are_parameter_errors():
         (lambda: exact_solution([0.0, "a"], 2, 1.0), "t"),
         (lambda: exact_shape("x", 2), "tau"),
         (lambda: period(4, amplitude=1, dps=10_000), "dps"),
-        (lambda: rqa("abc", eps=0.1), "energy"),
-        (lambda: rqa([1j, 2j], eps=0.1), "energy"),
-        (lambda: rqa([[1.0, 2.0], [3.0]], eps=0.1), "energy"),
+        (lambda: rqa("abc", eps=0.1), "series"),
+        (lambda: rqa([1j, 2j], eps=0.1), "series"),
+        (lambda: rqa([[1.0, 2.0], [3.0]], eps=0.1), "series"),
     ]
     for make, name in cases:
         with pytest.raises(ParameterError) as info:

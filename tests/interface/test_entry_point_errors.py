@@ -72,9 +72,9 @@ API.update(
         # NaN and None were a density of 0.0
         "law.pdf nan": (lambda: _law().pdf(math.nan), "s"),
         "law.pdf None": (lambda: _law().pdf(None), "s"),
-        "law.kac_periods 1": (lambda: _law().kac_periods(1.0), "fraction"),  # 1 / 0
+        "law.kac_periods 1": (lambda: _law().kac_periods(1.0), "f"),  # 1 / 0
         "law.summary points": (lambda: _law().summary(points=10**9), "points"),  # 16 GB
-        "law.summary no fractions": (lambda: _law().summary(fractions=[]), "fraction"),
+        "law.summary no fractions": (lambda: _law().summary(fractions=[]), "fractions"),
         "scaled_energy -1": (lambda: _area("scaled_energy", -1), "energy"),  # complex
         "area_ratio nan": (lambda: _area("area_ratio", math.nan), "t"),  # NaN
         # 0.0027 % below the corner saddle the area's series cannot converge

@@ -125,9 +125,9 @@ def test_plot_recurrence_labels():
 @pytest.mark.parametrize(
     "call,name",
     [
-        (lambda: rqa(np.ones((3, 3)), 0.1), "energy"),
-        (lambda: rqa([1.0, np.nan, 2.0], 0.1), "energy"),
-        (lambda: rqa([1.0], 0.1), "energy"),
+        (lambda: rqa(np.ones((3, 3)), 0.1), "series"),
+        (lambda: rqa([1.0, np.nan, 2.0], 0.1), "series"),
+        (lambda: rqa([1.0], 0.1), "series"),
         (lambda: rqa([1.0, 2.0], -0.1), "eps"),
         (lambda: rqa([1.0, 2.0, 3.0], 0.1, theiler=5), "theiler"),
         (lambda: rqa_matrix(np.triu(np.ones((3, 3)))), "matrix"),

@@ -323,7 +323,7 @@ def test_bad_attachment_names_the_parameter(kw, name):
 @pytest.mark.parametrize(
     "kw, name",
     [
-        ({"energy": 0.0}, "energy"),
+        ({"energy": 0.0}, "container_energy"),
         ({"damping": -1.0}, "damping"),
         ({"periods": 0}, "periods"),
         ({"samples_per_period": 0}, "samples_per_period"),

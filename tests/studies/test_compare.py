@@ -114,7 +114,10 @@ REFUSALS = [
     (["--damping", "0.01", "--periods", "1e15"], "periods"),
     (["--damping", "0.01", "--plot", "out.txt"], "--plot"),
     (["--damping", "0.01", "--wavelet-energy", "0.1"], "wavelet-energy"),
-    (["--damping", "0.01", "--wavelet", "w.png", "--samples", "4"], "samples"),
+    (
+        ["--damping", "0.01", "--wavelet", "w.png", "--samples-per-period", "4"],
+        "samples_per_period",
+    ),  # fmt: skip
 ]
 
 
