@@ -83,6 +83,8 @@ GLOSSARY: dict[str, str] = {
     "n": "n: the wall stiffness (exponent of the walls; inf is the rigid limit)",
     "gamma": "gamma: the well strength",
     "shape": "the well's shape (flat, symmetric, circular)",
+    "values": "numbers for a well's symbolic parameters, where its general form leaves a "
+    "question open",
     "nes_n": "the wall exponent of the 1-D NES",
     # --- particles and runs
     "particles": "k: the number of particles",
@@ -101,7 +103,8 @@ GLOSSARY: dict[str, str] = {
     "quiet": "no progress bar (and no estimate line)",
     "settings": "RunSettings: container energy E0, runs, periods, seed, box",
     "sink": "Sink: the well, the particles and their mass",
-    "well": "Well: alpha, beta, n, gamma, shape",
+    "well": "the particles' well: a Well (shape, alpha, beta, n, gamma), a user's well "
+    "definition, or on the command line a well file (--well FILE)",
     # --- analyses
     "spectrum": "the Lyapunov spectrum (QR): all exponents or the D largest",
     "gali": "GALI_K order K",

@@ -847,7 +847,7 @@ class WellLadder:
 
 
 def ladder(
-    shape: str | WellDefinition, values: Mapping[sp.Symbol, sp.Expr] | None = None
+    well: str | WellDefinition, values: Mapping[sp.Symbol, sp.Expr] | None = None
 ) -> WellLadder:
     """The :class:`WellLadder` of a registered shape or a user's well, one interface for
     both: the equations of motion, force and Hessian are written in x, y (the atoms of a
@@ -861,22 +861,22 @@ def ladder(
     >>> steps.force, steps.equations_of_motion[y]
     ((-k*x, -k*y), -k*y/mu)
     """
-    definition = shape_definition(shape)
-    L, _ = lagrangian(1, shape)
-    eom = equations_of_motion(1, shape)
+    definition = shape_definition(well)
+    L, _ = lagrangian(1, well)
+    eom = equations_of_motion(1, well)
     values = None if values is None else dict(values)
-    V = potential(shape)
+    V = potential(well)
     return WellLadder(
         name=definition.name,
         parameters=tuple(definition.parameter_symbols),
         potential=V,
         lagrangian=L,
-        hamiltonian=hamiltonian(1, shape),
-        equations_of_motion={q: substitute_ratios(a, shape) for q, a in eom.items()},
-        separable=separable_hamiltonian(1, shape),
+        hamiltonian=hamiltonian(1, well),
+        equations_of_motion={q: substitute_ratios(a, well) for q, a in eom.items()},
+        separable=separable_hamiltonian(1, well),
         force=(-sp.diff(V, x), -sp.diff(V, y)),
         hessian=(sp.diff(V, x, 2), sp.diff(V, x, y), sp.diff(V, y, 2)),
-        normal_mode=normal_mode(shape, values),
+        normal_mode=normal_mode(well, values),
     )
 
 

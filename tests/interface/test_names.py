@@ -25,7 +25,7 @@ from sinktheory.glossary import GLOSSARY, MARKS, RENAMED_OPTIONS, option_of
 ENTRY_POINTS = {
     "well": ["model:Well", "model:Well.summary"],
     "sink": ["model:Well", "model:Sink", "model:RunSettings"],
-    "derive": [],
+    "derive": ["symbolic:ladder"],
     "simulate": ["model:Well", "model:Sink", "model:RunSettings", "simulate:simulate"],
     "period": ["oscillator:oscillator"],
     "series": ["series:accuracy"],
