@@ -329,6 +329,10 @@ def simulate_adaptive(
     t0, h0, runs, periods = begun.time, begun.reference_energy, begun.runs, settings.periods
     check_work(replace(settings, runs=runs), sink, estimated_steps(sink, float(np.max(h0)), eps))
     module, q, vel, table = _engine_state(sink, values)
+    ctl = _control(eps, sink.well.n)
+    rho, rem = _carried(initial_state, runs)
+    if rho is None:  # a fresh start: the controller begins at the rate, with a whole step
+        rho, rem = module.rate_of(q, vel, table, ctl), np.zeros(runs)
     K = sink.particles
     shared = np.zeros((runs, periods + 1 if "container" in record else 0))
     members = np.zeros((runs, periods + 1 if "particles" in record else 0, K))
@@ -342,13 +346,13 @@ def simulate_adaptive(
     status = np.zeros(runs, dtype=np.int64)
     fail_period, fail_energy, worst = np.zeros(runs, dtype=np.int64), np.zeros(runs), np.zeros(runs)
     audit = (np.ascontiguousarray(h0, dtype=float), bound, status, fail_period, fail_energy, worst)
-    fixed = (*_scheme_arrays(scheme), _control(eps, sink.well.n), PERIOD, MAX_STEPS)
+    fixed = (*_scheme_arrays(scheme), ctl, PERIOD, MAX_STEPS)
     chunk = max(1, math.ceil(periods / 100))
     bar = ProgressBar(periods, enabled=progress is not False, label="adaptive ", unit="period")
     try:
         for start, stop in chunks(periods, most=chunk):  # interrupts between chunks
             module.advance(q, vel, table, fixed, start, stop, BLOCK, audit,
-                           (shared, members, taken, resets))  # fmt: skip
+                           (shared, members, taken, resets, rho, rem))  # fmt: skip
             _raise_on_failure(status, fail_period, fail_energy, h0, t0, bound)
             bar.update(stop - start)
     finally:
@@ -363,7 +367,8 @@ def simulate_adaptive(
         particle_energy=members if "particles" in record else None,
         trajectory=None,
         trajectory_times=None,
-        final_state=SimulationState(values, t0 + periods * PERIOD, h0, dt, "adaptive")
+        final_state=SimulationState(values, t0 + periods * PERIOD, h0, dt, "adaptive",
+                                    np.column_stack([rho, rem]))  # fmt: skip
         if "final" in record
         else None,
         initial_energy=h0,
@@ -379,6 +384,24 @@ def simulate_adaptive(
         f"{worst_all:.3g} <= {bound:.3g}",
         parameters=run_parameters(sink, settings, runs),
     )
+
+
+def _carried(initial_state, runs: int) -> tuple[np.ndarray | None, np.ndarray | None]:
+    """(rho, remainder) of each run from an adaptive ``initial_state`` that carries them,
+    else (None, None); ParameterError if they are not rates > 0 and remainders >= 0."""
+    c = getattr(initial_state, "controller", None)
+    if c is None or initial_state.method != "adaptive":
+        return None, None
+    c = np.array(c, dtype=float)
+    if c.shape != (runs, 2) or not np.all(np.isfinite(c)) or np.any(c[:, 0] <= 0) or np.any(
+        c[:, 1] < 0
+    ):
+        raise ParameterError(
+            "initial_state",
+            "a state whose controller values are not (rho > 0, remainder >= 0) per run",
+            "the final_state of an adaptive run, unchanged",
+        )
+    return np.ascontiguousarray(c[:, 0]), np.ascontiguousarray(c[:, 1])
 
 
 def _raise_on_failure(status, fail_period, fail_energy, h0, t0, bound) -> None:
