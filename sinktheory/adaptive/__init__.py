@@ -332,7 +332,7 @@ def simulate_adaptive(
     ctl = _control(eps, sink.well.n)
     rho, rem = _carried(initial_state, runs)
     if rho is None:  # a fresh start: the controller begins at the rate, with a whole step
-        rho, rem = module.rate_of(q, vel, table, ctl), np.zeros(runs)
+        rho, rem = module.start_rate(q, vel, table, ctl), np.zeros(runs)
     K = sink.particles
     shared = np.zeros((runs, periods + 1 if "container" in record else 0))
     members = np.zeros((runs, periods + 1 if "particles" in record else 0, K))

@@ -305,3 +305,36 @@ def rate_of(q, v, P, ctl):
     accelerations(q, a, P)
     _rate(q, v, a, h, P, om, G, ctl)
     return om
+
+
+@numba.njit(cache=True, error_model="numpy")
+def start_rate(q, v, P, ctl):
+    """The controller's first rate of every run: Omega, with each particle's crossing of
+    the well by its acceleration relative to the container, |a| |grad r| per wall ratio
+    r, added to Omega^2.  Omega follows the velocities alone, so a particle at rest in an
+    accelerating container (the start of every run from given positions) would otherwise
+    begin with a step the wall reaches before it ends."""
+    D, B = q.shape
+    K = members_of(D)
+    a = np.empty((D, B))
+    h = np.empty((hessian_rows(D), B))
+    om = np.empty(B)
+    G = np.empty(B)
+    accelerations(q, a, P)
+    _rate(q, v, a, h, P, om, G, ctl)
+    for r in range(B):
+        w2 = om[r] * om[r]
+        for j in range(K):
+            x = q[1 + j, r] - q[0, r]
+            y = q[1 + K + j, r]
+            f = walls(x, y, P[0, r], P[1, r], P[2, r])
+            ax = a[1 + j, r] - a[0, r]
+            ay = a[1 + K + j, r]
+            acc = math.sqrt(ax * ax + ay * ay)
+            for i in range((len(f) - 1) // 6):
+                rx, ry = f[2 + 6 * i], f[3 + 6 * i]
+                term = acc * math.sqrt(rx * rx + ry * ry)
+                if math.isfinite(term):
+                    w2 += term
+        om[r] = math.sqrt(w2)
+    return om
