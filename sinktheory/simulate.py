@@ -160,7 +160,7 @@ def simulate(
         (default: the larger of 1e-6 and 100 tol).
     progress : bool, optional
         Progress bar on stderr (only on a terminal, after 2 s); default on.
-    eps : float in (0, 0.3], optional
+    eps : float in (0, 0.25], optional
         The adaptive method's step factor (default 0.25; dt, tol and stride do not apply
         to it).
 

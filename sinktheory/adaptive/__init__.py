@@ -39,11 +39,11 @@ a slow drift.
 
 Accuracy is set by eps directly (no tolerance rule).  Measured largest abs(dH)/H0 on
 Fig. 8's ensemble (flat well, alpha 0.5, beta 0.3, 5 particles, m 0.2), n = 4, 8 runs x
-4 periods, seeds 0 and 1: eps 0.5: 8.1e-10; 0.4: 1.9e-10; 0.35: 8.3e-11; 0.3: 3.2e-11;
-0.25: 1.0e-11; 0.2: 2.6e-12; 0.15: 4.7e-13; 0.1: 5.4e-14.  Halving eps divides it by
-about 65, as the scheme's order 6 says.  Over long runs the error grows, and the
-range of eps accepted, (0, MAX_EPS], is where 10^4 periods held the default bound 1e-6 at
-n = 4, 10 and 100 (docs/guide/billiard.rst, "Long runs", from
+4 periods, seeds 0 and 1: eps 0.25: 1.0e-11; 0.2: 2.6e-12; 0.15: 4.7e-13; 0.1: 5.4e-14
+(and, before the range was cut, 0.3: 3.2e-11; 0.4: 1.9e-10; 0.5: 8.1e-10).  Halving eps
+divides it by about 65, as the scheme's order 6 says.  Over long runs the error grows,
+and the range of eps accepted, (0, MAX_EPS], is where 10^4 periods held the default
+bound 1e-6 with a margin at n = 4, 10 and 100 (docs/guide/billiard.rst, "Long runs", from
 benchmarks/bench_adaptive_drift.py).  These are measurements, not bounds; the audit
 checks every run.  Cost: docs/guide/billiard.rst ("Cost against the wall stiffness"):
 fewer steps than the fixed step from n ~ 10 on, but a step costs more, and the steps
@@ -148,7 +148,7 @@ def check_eps(eps: object) -> float:
     >>> check_eps(2)
     Traceback (most recent call last):
     ...
-    sinktheory.errors.ParameterError: eps = 2 is not allowed: must be a number in (0, 0.3]
+    sinktheory.errors.ParameterError: eps = 2 is not allowed: must be a number in (0, 0.25]
     """
     value = v.finite("eps", eps) if not isinstance(eps, bool) else None
     if value is None or not 0.0 < value <= MAX_EPS:
@@ -312,7 +312,7 @@ def simulate_adaptive(
 
     Parameters as in ``simulate``, and:
 
-    eps : float in (0, MAX_EPS] = (0, 0.3]
+    eps : float in (0, MAX_EPS] = (0, 0.25]
         Step factor, h = eps / rho (default :data:`DEFAULT_EPS` = 0.25; the energy error
         it gives is measured in the module docstring).
     scheme : str

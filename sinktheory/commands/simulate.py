@@ -50,7 +50,7 @@ QUOTED = {
     "default_tol": 1e-8,
     "energy_bound": 1e-6,
     "default_eps": 0.25,
-    "max_eps": 0.3,
+    "max_eps": 0.25,
 }
 
 
