@@ -83,6 +83,8 @@ class SimulationState(Result):
     named by :class:`sinktheory.layout.StateLayout`.
     ``reference_energy`` is each run's total energy at the start of the whole simulation, so
     the energy audit of a continued run still measures the drift from the very beginning.
+    ``controller`` (R, 2), method "adaptive" only: each run's step rate rho and the part of
+    a step still to take, so that a continued run takes the steps it would have taken.
     """
 
     values: np.ndarray
@@ -90,8 +92,13 @@ class SimulationState(Result):
     reference_energy: np.ndarray
     dt: float
     method: str
+    controller: np.ndarray | None = None
 
-    DIMS = {"values": ("run", "state"), "reference_energy": ("run",)}
+    DIMS = {
+        "values": ("run", "state"),
+        "reference_energy": ("run",),
+        "controller": ("run", "controller_value"),
+    }
 
     @property
     def layout(self) -> StateLayout:

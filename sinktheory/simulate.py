@@ -196,7 +196,7 @@ def simulate(
         (default: the larger of 1e-6 and 100 tol).
     progress : bool, optional
         Progress bar on stderr (only on a terminal, after 2 s); default on.
-    eps : float in (0, 0.5], optional
+    eps : float in (0, 0.25], optional
         The adaptive stepper's step factor (default 0.25; dt, tol and stride do not apply
         to it).
 

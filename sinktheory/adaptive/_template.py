@@ -160,26 +160,31 @@ def steps(q, v, P, A, Bk, ctl, rho, count, resets):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _period(q, v, P, A, Bk, ctl, period, max_steps, taken, resets):
-    """Advance every run of the block by ``period`` time units (the controller starts at
-    rho = Omega, the last step is cut to end on the period); taken[r] = its steps, or
-    -1 if it needed more than ``max_steps``."""
+def _period(q, v, P, A, Bk, ctl, period, max_steps, taken, resets, rho, rem):
+    """Advance every run of the block by ``period`` time units with the controller's
+    steps, carried across period ends: rho[r] is the rate of the run's next step and
+    rem[r] > 0 the part of a step that a period end split, still to take (both updated).
+    A step that crosses the period end is split there into two parts and the controller
+    is updated once, after the second, so the sequence of full steps is the one
+    :func:`steps` takes.  taken[r] = the (part-)steps taken, or -1 if it needed more than
+    ``max_steps``."""
     D, B = q.shape
     eps = ctl[0]
     a = np.empty((D, B))
     h = np.empty((hessian_rows(D), B))
     om = np.empty(B)
     G = np.empty(B)
-    rho = np.empty(B)
     qf = q.copy()  # a stalled run (taken -1) goes back to its start
     vf = v.copy()
+    rho0 = rho.copy()
+    rem0 = rem.copy()
     t = np.zeros(B)
     hstep = np.zeros(B)
+    left = np.zeros(B)
     active = np.zeros(B, dtype=np.bool_)
+    whole = np.zeros(B, dtype=np.bool_)
     accelerations(q, a, P)
-    _rate(q, v, a, h, P, om, G, ctl)
     for r in range(B):
-        rho[r] = om[r]
         taken[r] = 0
     while True:
         moving = 0
@@ -191,57 +196,72 @@ def _period(q, v, P, A, Bk, ctl, period, max_steps, taken, resets):
                     taken[r] = -1
                     active[r] = False
                 else:
-                    hstep[r] = min(eps / rho[r], period - t[r])
+                    left[r] = rem[r] if rem[r] > 0.0 else eps / rho[r]
+                    hstep[r] = min(left[r], period - t[r])
                     taken[r] += 1
                     moving += 1
         if moving == 0:
+            for r in range(B):
+                if taken[r] < 0:
+                    rho[r] = rho0[r]
+                    rem[r] = rem0[r]
             q[:, :] = qf
             v[:, :] = vf
             return
         _step(q, v, a, P, A, Bk, hstep)
-        _rate(q, v, a, h, P, om, G, ctl)
         for r in range(B):
+            whole[r] = False
             if active[r]:
-                # the cut step ends exactly on the period; NaN ends it too
-                t[r] = t[r] + hstep[r] if eps / rho[r] < period - t[r] else period
-                if not t[r] < period:  # done: its state is kept from here on
+                if left[r] < period - t[r]:
+                    t[r] = t[r] + left[r]
+                    rem[r] = 0.0
+                    whole[r] = True
+                else:  # the period ends within (or at the end of) this step; NaN too
+                    rem[r] = left[r] - hstep[r]
+                    whole[r] = not rem[r] > 0.0
+                    t[r] = period
                     for d in range(D):
                         qf[d, r] = q[d, r]
                         vf[d, r] = v[d, r]
-        _control(rho, om, G, eps, active, resets)
+        _rate(q, v, a, h, P, om, G, ctl)
+        _control(rho, om, G, eps, whole, resets)
 
 
 @numba.njit(cache=True, parallel=True, error_model="numpy")
 def advance(Q, V, P, scheme, p0, p1, block, audit, rec):
-    """Periods [p0, p1) of every run, in blocks of ``block`` runs spread over threads.
+    """Periods [p0, p1) of every run, in blocks of ``block`` runs spread over threads (a
+    block goes through all the periods in one task: one launch of the threads per call,
+    not per period).
 
     scheme = (A, Bk, ctl, period, max_steps).  audit = (h0, bound, status, fail_period,
     fail_energy, worst).  rec = (container (R, P + 1), particles (R, P + 1, K) or empty,
-    steps (R,), controller resets (R,)).  Stops after the first period in which a run
-    failed; returns the periods done."""
+    steps (R,), controller resets (R,), rates rho (R,), split remainders (R,)).  A block
+    stops after the first period in which one of its runs failed."""
     A, Bk, ctl, period, max_steps = scheme
     h0, bound, status, fail_period, fail_energy, worst = audit
-    rec_shared, rec_members, steps_taken, resets = rec
+    rec_shared, rec_members, steps_taken, resets, RHO, REM = rec
     D, R = Q.shape
     K = members_of(D)
     blocks = (R + block - 1) // block
-    for p in range(p0, p1):
-        for ib in numba.prange(blocks):
-            r0 = ib * block
-            r1 = min(R, r0 + block)
-            B = r1 - r0
-            q = np.ascontiguousarray(Q[:, r0:r1])
-            v = np.ascontiguousarray(V[:, r0:r1])
-            Pb = np.ascontiguousarray(P[:, r0:r1])
-            taken = np.empty(B, dtype=np.int64)
-            reset = np.zeros(B, dtype=np.int64)
-            _period(q, v, Pb, A, Bk, ctl, period, max_steps, taken, reset)
-            Q[:, r0:r1] = q
-            V[:, r0:r1] = v
-            total = np.empty(B)
-            shared = np.empty(B)
-            members = np.empty((K, B))
+    for ib in numba.prange(blocks):
+        r0 = ib * block
+        r1 = min(R, r0 + block)
+        B = r1 - r0
+        q = np.ascontiguousarray(Q[:, r0:r1])
+        v = np.ascontiguousarray(V[:, r0:r1])
+        Pb = np.ascontiguousarray(P[:, r0:r1])
+        rho = RHO[r0:r1].copy()
+        rem = REM[r0:r1].copy()
+        taken = np.empty(B, dtype=np.int64)
+        reset = np.zeros(B, dtype=np.int64)
+        total = np.empty(B)
+        shared = np.empty(B)
+        members = np.empty((K, B))
+        for p in range(p0, p1):
+            reset[:] = 0
+            _period(q, v, Pb, A, Bk, ctl, period, max_steps, taken, reset, rho, rem)
             energies(q, v, Pb, total, shared, members)
+            failed = False
             for b in range(B):
                 r = r0 + b
                 H = total[b]
@@ -265,10 +285,13 @@ def advance(Q, V, P, scheme, p0, p1, block, audit, rec):
                 if status[r] != RUNNING:
                     fail_period[r] = p + 1
                     fail_energy[r] = H
-        for r in range(R):
-            if status[r] != RUNNING:
-                return p + 1
-    return p1
+                    failed = True
+            if failed:
+                break
+        Q[:, r0:r1] = q
+        V[:, r0:r1] = v
+        RHO[r0:r1] = rho
+        REM[r0:r1] = rem
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -281,4 +304,37 @@ def rate_of(q, v, P, ctl):
     G = np.empty(B)
     accelerations(q, a, P)
     _rate(q, v, a, h, P, om, G, ctl)
+    return om
+
+
+@numba.njit(cache=True, error_model="numpy")
+def start_rate(q, v, P, ctl):
+    """The controller's first rate of every run: Omega, with each particle's crossing of
+    the well by its acceleration relative to the container, |a| |grad r| per wall ratio
+    r, added to Omega^2.  Omega follows the velocities alone, so a particle at rest in an
+    accelerating container (the start of every run from given positions) would otherwise
+    begin with a step the wall reaches before it ends."""
+    D, B = q.shape
+    K = members_of(D)
+    a = np.empty((D, B))
+    h = np.empty((hessian_rows(D), B))
+    om = np.empty(B)
+    G = np.empty(B)
+    accelerations(q, a, P)
+    _rate(q, v, a, h, P, om, G, ctl)
+    for r in range(B):
+        w2 = om[r] * om[r]
+        for j in range(K):
+            x = q[1 + j, r] - q[0, r]
+            y = q[1 + K + j, r]
+            f = walls(x, y, P[0, r], P[1, r], P[2, r])
+            ax = a[1 + j, r] - a[0, r]
+            ay = a[1 + K + j, r]
+            acc = math.sqrt(ax * ax + ay * ay)
+            for i in range((len(f) - 1) // 6):
+                rx, ry = f[2 + 6 * i], f[3 + 6 * i]
+                term = acc * math.sqrt(rx * rx + ry * ry)
+                if math.isfinite(term):
+                    w2 += term
+        om[r] = math.sqrt(w2)
     return om

@@ -59,6 +59,7 @@ def test_simulate_help_quotes_its_sources():
     """The values the simulate help writes out (to stay light) equal their sources."""
     from sinktheory.commands.simulate import QUOTED
     from sinktheory.integrators import DEFAULT_SCHEME, SCHEMES
+    from sinktheory.limits import DEFAULT_EPS, MAX_EPS
     from sinktheory.simulate import ENERGY_BOUND
     from sinktheory.stepsize import DEFAULT_TOL, TOL_RANGE
 
@@ -68,4 +69,6 @@ def test_simulate_help_quotes_its_sources():
         "tol_range": tuple(TOL_RANGE),
         "default_tol": DEFAULT_TOL,
         "energy_bound": ENERGY_BOUND,
+        "default_eps": DEFAULT_EPS,
+        "max_eps": MAX_EPS,
     }
