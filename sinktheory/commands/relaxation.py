@@ -56,13 +56,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         default=1e-6,
         help="relative total-energy error of the simulator (default 1e-6)",
     )
-    m = parser.add_argument_group("the model's drift (short runs started on the shell)")
+    m = parser.add_argument_group("the model's slow mode (short runs started on the shell)")
     m.add_argument("--points", type=number, default=12, help="starting energies >= 3 (default 12)")
     m.add_argument(
         "--shell-runs", type=number, default=100, help="runs per starting energy >= 4 (default 100)"
     )
-    m.add_argument("--lag", type=number, default=64, help="lag in periods (default 64)")
-    m.add_argument("--base-lag", type=number, default=8, help="base lag in periods (default 8)")
+    m.add_argument(
+        "--lag",
+        type=number,
+        default=128,
+        help="largest lag in periods >= 8, best near the relaxation time (default 128)",
+    )
     parser.add_argument(
         "--measure",
         type=number,
@@ -103,7 +107,7 @@ def run(args: argparse.Namespace) -> Output:
                     seed=args.seed).check(sink)  # fmt: skip
     p = predict_relaxation(
         sink, args.energy, fraction=args.fraction, periods=args.periods, points=args.points,
-        runs=args.shell_runs, lag=args.lag, base_lag=args.base_lag, seed=args.seed, tol=args.tol,
+        runs=args.shell_runs, lag=args.lag, seed=args.seed, tol=args.tol,
         resamples=args.resamples,
     )  # fmt: skip
     measured = sim = None
@@ -120,11 +124,18 @@ def run(args: argparse.Namespace) -> Output:
         f"  law's mean <E_c> {p.target:.6g}; settled when within {100 * p.fraction:g} % of it",
         f"  predicted: settles at {p.settle_time:.0f} periods ({level} interval "
         f"{_interval(p.settle_low, p.settle_high)}, statistical), relaxation time "
-        f"{p.rate_time:.0f} ({_interval(p.rate_low, p.rate_high)})",
+        f"{p.rate_time:.0f} ({_interval(p.rate_low, p.rate_high)}), fraction seen by E_c "
+        f"{p.visible:.2f} ± {p.visible_stderr:.2f}",
         f"    model: {p.model}",
-        f"    drift D1 = {p.drift_intercept:.4g} {p.drift_slope:+.4g} E_c per period from "
-        f"{p.coefficients}",
+        "    ln lambda at lags "
+        + ", ".join(f"{t}: {x:.3f} ± {e:.3f}" for t, x, e in
+                    zip(p.lags, p.log_lambda, p.log_lambda_stderr, strict=True))  # fmt: skip
+        + f"; from {p.coefficients}",
     ]
+    if p.extrapolated:
+        lines.append(f"    the relaxation time exceeds twice the largest lag: the lags do not "
+                     f"reach the slow mode and the prediction is probably short; rerun with "
+                     f"--lag {int(p.rate_time)}")  # fmt: skip
     data = {"prediction": p.as_dict(), "measured": None}
     if measured is not None:
         flag = " (beyond the record: extrapolated, run longer)" if measured.extrapolated else ""

@@ -1,41 +1,49 @@
 """Predicted relaxation of the container energy, and how long an ensemble must run.
 
-The model
----------
-E_c is treated as a one-dimensional reversible diffusion on [0, E] whose stationary
-density is the exact law p (:mod:`sinktheory.equilibrium.law`).  Only the drift D1 is
-measured (:func:`~sinktheory.equilibrium.kramers.measure_kramers_moyal`: its slow part,
-from the moments' growth between the base lag tau_0 and the lag tau, at the Gauss grid's
-energies), and it is fitted by a straight line D1 = a + b E_c (least squares weighted by
-the runs' standard errors): the measured drift is close to linear, and a free
-interpolation through the points is dominated by their noise where the law lives (there
-the drift is 0 within its errors for k >= 3, and the settling time then scatters by
-factors between seeds).  The diffusion follows from the fluctuation-dissipation relation
-D1 p = d(D2 p)/dE with zero flux at both ends,
+The model: a slow mode seen through fast noise
+----------------------------------------------
+E_c sampled once a period is not a one-variable Markov process: started on the shell at
+a given E_c, it jumps by ~0.1 of E within the first period and the slowest implied
+timescale of its transition matrix grows with the lag (docs/guide/equilibrium.rst).  All
+of that is described by one slow exponential mode of which E_c sees a fraction c, the
+rest decorrelating within a few periods: the shell's conditional mean of s = E_c / E
+after tau periods,
 
-    D2(E) p(E) = -\\int_E^{E_tot} D1 p dE',
+    E[s(tau) - mu | s(0)] = lambda(tau) (s(0) - mu),   lambda(tau) ~ c exp(-tau / t_r)
 
-after D1 is shifted by its law average (which must vanish: d<E_c>/dt = <D1> = 0 at
-equilibrium).  For the line this gives D2 p = -b \\int_E^{E_tot} (E' - <E_c>) p dE' >= 0,
-and the mean relaxes exactly as <E_c>(t) - mu = (E0 - mu) exp(-t / t_r), t_r = -1 / b,
-so the settling time is t_r ln(|E0 - mu| / (f mu)).  The spread of E_c comes from the
-Fokker-Planck flux J = -D2 p_eq d(p / p_eq)/dE, discretised on ``cells`` cells of
-s = E_c / E as a reversible birth-death chain with the law's cell masses pi_i as its
-stationary state (exactly) and rates G_{i+1/2} / (h pi_i) across face i + 1/2 (G = D2 p
-in s), solved exactly in time by the eigenvectors of the symmetrised generator.  So the
-prediction ends at the law's mean and spread by construction.
+(mu the law's mean), is regressed on s(0) at the Gauss grid's points
+(:func:`~sinktheory.equilibrium.kramers.measure_kramers_moyal`, raw increments, a
+straight line weighted by the runs' standard errors) at the lags tau = lag / 8, lag / 4,
+lag / 2 and lag, and ln lambda(tau) is fitted by a straight line in tau over the last
+three: its slope is -1 / t_r, its intercept ln c.  The mean from the paper's start then
+follows <s>(t) = mu + c (s0 - mu) exp(-t / t_r) for t > 0 (the fast part takes the same
+fraction 1 - c of the excess from a start at rest: for Fig. 8's k = 1, c = 0.74-0.76 on
+the shell and 0.76 from <E_c>(50) of 128 runs from the paper's start), and the settling
+time is t_f = t_r ln(c |s0 - mu| / (f mu)).
+
+The run-to-run spread comes from the slow mode as a one-dimensional reversible diffusion
+whose stationary density is the exact law p (:mod:`sinktheory.equilibrium.law`): its
+drift is the line -(s - mu) / t_r and its diffusion follows from the
+fluctuation-dissipation relation D1 p = d(D2 p)/ds with zero flux at both ends,
+
+    D2(s) p(s) = -\\int_s^1 D1 p ds'
+
+(after D1 is shifted by its law average, zero for the line).  The Fokker-Planck flux
+J = -D2 p d(q / p)/ds (q the density at time t) is discretised on ``cells`` cells as a
+reversible birth-death chain with the law's cell masses as its stationary state (exactly)
+and rates G_{i+1/2} / (h pi_i) across face i + 1/2 (G = D2 p), and solved exactly in time
+by the eigenvectors of the symmetrised generator (:func:`law_chain`).  So the predicted
+spread ends at the law's.
 
 What it is worth
 ----------------
-E_c is not Markov: the rate of any one-variable model fitted at lag tau grows with tau
-(the slowest implied timescale of the E_c transition matrix, Fig. 8 well, 16 points x
-100 runs, seeds 0 and 1: 11-12, 19-22, 39, 54-57, 75-80, 101-110 periods at lags 4 ... 128
-for k = 1, whose measured tail time is 118; 15-20, 35-37, 73, 135, 219-257, 313-393 for
-k = 5, tail time 1260).  The base-lag drift removes the fast exchange of the first
-periods, but what is left still depends on tau_0 and tau.  Against measured settling
-times the prediction is off by a factor up to :data:`MODEL_FACTOR`
-(docs/guide/equilibrium.rst, benchmarks/bench_prediction.py); treat it as an estimate of
-the order of magnitude and of trends in k, m, beta and n, and measure
+Where t_r is longer than the lags, ln lambda(tau) still curves (a slower mode that the
+lags do not reach yet) and t_r comes out short: for Fig. 8's k = 5, lags up to 128 give
+t_r ~ 650 against the measured tail time ~1260.  ``extrapolated`` flags t_r > 2 lag; then
+rerun with a lag near t_r (the runs cost points x runs x lag periods, about what a direct
+measurement of 32 runs over the settling time costs).  Against measured settling times
+on Fig. 8's well and variants the prediction is within a factor of :data:`MODEL_FACTOR`
+(docs/guide/equilibrium.rst, docs/guide/make_relaxation.py); measure
 (:func:`~sinktheory.equilibrium.relaxation.measure_relaxation`) when the number matters.
 
 Examples
@@ -64,18 +72,23 @@ from .. import validation as v
 from ..errors import NumericalError, ParameterError
 from ..model import RunSettings, Sink
 from ..results import Result
-from .kramers import KramersMoyal, measure_kramers_moyal
+from .kramers import measure_kramers_moyal
 from .law import equilibrium_law
 
 __all__ = [
+    "fit_line",
+    "LADDER",
     "law_chain",
     "LawChain",
+    "log_lambdas",
     "measure_settling",
     "MODEL_FACTOR",
     "predict_relaxation",
     "RelaxationPrediction",
     "Settling",
     "settling_periods",
+    "settling_time",
+    "slow_mode",
     "start_total_energy",
 ]
 
@@ -83,8 +96,11 @@ __all__ = [
 #: cases (benchmarks/bench_prediction.py); the predicted interval of
 #: :func:`settling_periods` is widened by it.
 MODEL_FACTOR = 2.5
-#: Default lag, base lag (periods), grid points and runs per point of the drift.
-LAG, BASE_LAG, POINTS, RUNS = 64, 8, 12, 100
+#: Default largest lag (periods), grid points and runs per point of the regressions.
+LAG, POINTS, RUNS = 128, 12, 100
+#: The lags of the regressions, as fractions of the largest; the fit of ln lambda uses the
+#: last three.
+LADDER = (1 / 8, 1 / 4, 1 / 2, 1)
 #: Sub-cell Gauss nodes of the cell integrals of the law.
 _NODES = 6
 
@@ -168,8 +184,8 @@ def law_chain(pdf, s_points, drift, *, cells: int = 150) -> LawChain:
 
 @dataclass(frozen=True)
 class RelaxationPrediction(Result):
-    """Predicted <E_c>(t) from the start (E0, particles at rest) by the law-constrained
-    diffusion (module docstring), with bootstrap errors from the measured drift.
+    """Predicted <E_c>(t) from the start (E0, particles at rest) by the slow-mode model
+    (module docstring), with bootstrap errors over the shell runs.
 
     Attributes
     ----------
@@ -182,14 +198,16 @@ class RelaxationPrediction(Result):
     means, spread : predicted ensemble mean of E_c and the run-to-run standard deviation
     low, high : pointwise bootstrap band of ``means`` at ``level``
     settle_time, settle_low, settle_high : predicted t_f and its bootstrap interval (the
-        statistical error of the drift only; the model's own error is up to a factor
+        statistical error only; the model's own error is up to a factor
         :data:`MODEL_FACTOR`)
-    rate_time, rate_low, rate_high : t_r, the relaxation time of the predicted mean
+    rate_time, rate_low, rate_high : t_r, the slow mode's relaxation time
+    visible, visible_stderr : c, the fraction of the excess the slow mode carries
+    lags, log_lambda, log_lambda_stderr : the regressions' ln lambda(tau) and errors
+    extrapolated : t_r > 2 lag: the lags do not reach the slow mode (rerun with a lag near
+        t_r)
     level, resamples : confidence level and bootstrap resamples
-    lag, base_lag, points, runs, seed : how the drift was measured
-    drift_intercept, drift_slope : the fitted drift D1 = a + b E_c (a in energy per period,
-        b per period; -1 / b is ``rate_time``)
-    coefficients : one line on the drift's measurement
+    points, runs, seed : how the regressions were measured
+    coefficients : one line on the shell runs
     model : one line on what the prediction is and what it is worth
     """
 
@@ -210,32 +228,25 @@ class RelaxationPrediction(Result):
     rate_time: float
     rate_low: float
     rate_high: float
+    visible: float
+    visible_stderr: float
+    lags: np.ndarray
+    log_lambda: np.ndarray
+    log_lambda_stderr: np.ndarray
+    extrapolated: bool
     level: float
     resamples: int
-    lag: int
-    base_lag: int
     points: int
     runs: int
     seed: int
-    drift_intercept: float
-    drift_slope: float
     coefficients: str
     model: str
 
-    DIMS = {name: ("time",) for name in ("means", "spread", "low", "high")}
-    COORDS = {"times": "time"}
-
-
-def _drifts(km: KramersMoyal, j: int, draws: np.ndarray | None) -> np.ndarray:
-    """The drift at lag index ``j`` (point,), from runs drawn as ``draws`` (point, run)
-    indices, or all runs."""
-    col = int(np.flatnonzero(km.increment_lags == km.lags[j])[0])
-    inc = km.increments[:, col]
-    if km.base_lag:
-        inc = inc - km.increments[:, int(np.flatnonzero(km.increment_lags == km.base_lag)[0])]
-    if draws is not None:
-        inc = np.take_along_axis(inc, draws, axis=1)
-    return inc.mean(axis=1) / km.spans[j]
+    DIMS = {
+        **{name: ("time",) for name in ("means", "spread", "low", "high")},
+        **{name: ("lag",) for name in ("lags", "log_lambda", "log_lambda_stderr")},
+    }
+    COORDS = {"times": "time", "lags": "lag"}
 
 
 def fit_line(x, y, stderr) -> tuple[float, float]:
@@ -254,12 +265,53 @@ def fit_line(x, y, stderr) -> tuple[float, float]:
     return float(a), float(b)
 
 
-def _settling(slope: float, s0: float, mu: float, fraction: float) -> tuple[float, float]:
-    """(t_f, t_r) of the mean's exponential approach with rate -slope (inf if slope >= 0)."""
-    if slope >= 0:
-        return math.inf, math.inf
-    t_r = -1 / slope
-    return t_r * max(math.log(abs(s0 - mu) / (fraction * mu)), 0.0), t_r
+def log_lambdas(s, increments, weights) -> np.ndarray:
+    """ln lambda(tau) per lag: ln(1 + b) with b the slope of the line through the run means
+    of ``increments`` (point, lag, run) of s against the starting s, weighted by
+    ``weights`` (point, lag) standard errors; NaN where 1 + b <= 0.
+
+    Examples
+    --------
+    >>> s = np.array([0.1, 0.5, 0.9])
+    >>> inc = np.stack([(0.5 * np.exp(-t / 100) - 1) * (s - 0.3) for t in (10, 20)], axis=1)
+    >>> np.round(log_lambdas(s, inc[..., None].repeat(2, axis=2), np.ones((3, 2))), 6)
+    array([-0.793147, -0.893147])
+    """
+    out = []
+    for j in range(increments.shape[1]):
+        b = fit_line(s, increments[:, j].mean(axis=1), weights[:, j])[1]
+        out.append(math.log1p(b) if b > -1 else math.nan)
+    return np.array(out)
+
+
+def slow_mode(lags, log_lambda, stderr) -> tuple[float, float]:
+    """(t_r, c) from ln lambda = ln c - tau / t_r fitted over the last three lags (t_r inf
+    when ln lambda does not fall).
+
+    Examples
+    --------
+    >>> lags = np.array([16, 32, 64, 128])
+    >>> t, c = slow_mode(lags, np.log(0.75) - lags / 120, np.ones(4))
+    >>> round(t, 6), round(c, 6)
+    (120.0, 0.75)
+    """
+    keep = slice(-3, None)
+    a, b = fit_line(np.asarray(lags, dtype=float)[keep], np.asarray(log_lambda)[keep],
+                    np.asarray(stderr)[keep])  # fmt: skip
+    return (-1 / b if b < 0 else math.inf), math.exp(a)
+
+
+def settling_time(rate_time: float, visible: float, s0: float, mu: float, fraction: float):
+    """t_f = t_r ln(c |s0 - mu| / (f mu)), 0 when the excess is already below f after the
+    fast part.
+
+    Examples
+    --------
+    >>> round(settling_time(100.0, 0.5, 1.0, 0.2, 0.05), 6)  # 100 ln(40)
+    368.887945
+    """
+    depth = math.log(visible * abs(s0 - mu) / (fraction * mu))
+    return rate_time * depth if depth > 0 else 0.0
 
 
 def start_total_energy(sink: Sink, energy: float, seed: int = 0, runs: int = 16) -> float:
@@ -289,7 +341,6 @@ def predict_relaxation(
     points: int = POINTS,
     runs: int = RUNS,
     lag: int = LAG,
-    base_lag: int = BASE_LAG,
     seed: int = 0,
     tol: float = 1e-6,
     level: float = 0.95,
@@ -298,10 +349,10 @@ def predict_relaxation(
 ) -> RelaxationPrediction:
     """Predicted relaxation of <E_c> from the paper's start at E0 = ``energy``.
 
-    The drift is measured at ``points`` energies x ``runs`` runs started on the shell
-    (base lag ``base_lag``, lag ``lag``, seed ``seed``, simulator tolerance ``tol``; cost
-    points x runs x lag run-periods), the model built and solved (module docstring), and
-    the drift bootstrapped over the runs of each point ``resamples`` times.
+    ``points`` energies x ``runs`` runs started on the shell (seed ``seed``, simulator
+    tolerance ``tol``) are integrated ``lag`` periods (cost: points x runs x lag
+    run-periods), the slow mode fitted and the model solved (module docstring); the
+    errors come from ``resamples`` bootstrap draws of the runs at each point.
 
     Parameters
     ----------
@@ -313,15 +364,15 @@ def predict_relaxation(
     periods : int >= 1, optional
         Length of the curve (default: 1.5 times the upper end of the settling interval).
     points, runs : int >= 3, int >= 4
-    lag, base_lag : int
-        The lag tau > tau_0 >= 0 of the drift.
+    lag : int >= 8
+        The largest lag (periods); the regressions use lag / 8, lag / 4, lag / 2 and lag.
     seed, tol, level, resamples, cells : see the module docstring.
 
     Examples
     --------
     >>> from sinktheory.canonical import FIG8_WELL
     >>> sink = Sink(FIG8_WELL, particles=1, mass=0.2)
-    >>> pred = predict_relaxation(sink, points=4, runs=8, lag=16, resamples=20, seed=3)
+    >>> pred = predict_relaxation(sink, points=4, runs=8, lag=32, resamples=20, seed=3)
     >>> bool(pred.settle_low <= pred.settle_time <= pred.settle_high)
     True
     >>> bool(abs(pred.means[-1] - pred.target) < 0.05 * pred.target)
@@ -335,8 +386,7 @@ def predict_relaxation(
         raise ParameterError("fraction", fraction, "a number in (0, 1)")
     points = v.positive_int("points", points, minimum=3)
     runs = v.positive_int("runs", runs, minimum=4)
-    base_lag = v.positive_int("base_lag", base_lag, minimum=0)
-    lag = v.positive_int("lag", lag, minimum=base_lag + 1)
+    lag = v.positive_int("lag", lag, minimum=8)
     seed = v.positive_int("seed", seed, minimum=0)
     if not 0 < v.finite("level", level) < 1:
         raise ParameterError("level", level, "a number in (0, 1)")
@@ -345,39 +395,53 @@ def predict_relaxation(
         periods = v.positive_int("periods", periods)
     total = start_total_energy(sink, start, seed)
     law = equilibrium_law(sink, total)  # checks the energy against the well
-    km = measure_kramers_moyal(sink, total, points=points, lags=(lag,), runs=runs, seed=seed,
-                               tol=tol, base_lag=base_lag)  # fmt: skip
-    j = km.lag_index(lag)
+    lags = sorted({max(1, round(lag * x)) for x in LADDER})
+    km = measure_kramers_moyal(sink, total, points=points, lags=lags, runs=runs, seed=seed,
+                               tol=tol)  # fmt: skip
     s = km.container_energies / total
     s0, mu = start / total, law.mean_fraction
-    # the drift in s = E_c / E per period, ds/dt = a + b s
-    stderr = np.maximum(km.drift_stderr[:, j], np.max(km.drift_stderr[:, j]) * 1e-6) / total
+    inc = km.increments / total
+    spread_runs = np.maximum(inc.std(axis=2, ddof=1), 1e-12) / math.sqrt(runs)
     rng = np.random.default_rng([seed, 1])
-    slopes = np.array([fit_line(s, _drifts(km, j, rng.integers(0, runs, (points, runs))) / total,
-                                stderr)[1] for _ in range(resamples)])  # fmt: skip
-    a, b = fit_line(s, _drifts(km, j, None) / total, stderr)
-    if b >= 0:
+    boot_lambda = np.array([
+        log_lambdas(s, np.take_along_axis(inc, rng.integers(0, runs, (points, 1, runs)), 2),
+                    spread_runs)
+        for _ in range(resamples)])  # fmt: skip
+    log_lambda = log_lambdas(s, inc, spread_runs)
+    stderr = np.nanstd(boot_lambda, axis=0, ddof=1)
+    if not np.all(np.isfinite(log_lambda[-3:])) or not np.all(stderr[-3:] > 0):
         raise NumericalError(
-            f"predict_relaxation: the measured drift does not fall with E_c (slope {b:.3g} "
-            f"per period); the model cannot relax (more runs or another lag)"
+            f"predict_relaxation: the conditional mean of E_c does not decay over lags "
+            f"{lags} (ln lambda = {np.round(log_lambda, 3).tolist()}); more runs or another lag"
         )
+    rate, visible = slow_mode(km.lags, log_lambda, stderr)
+    if not math.isfinite(rate):
+        raise NumericalError(
+            f"predict_relaxation: ln lambda does not fall over the lags {lags[-3:]} "
+            f"({np.round(log_lambda[-3:], 3).tolist()}); more runs or a longer lag"
+        )
+    modes = np.array([slow_mode(km.lags, row, stderr) if np.all(np.isfinite(row[-3:]))
+                      else (math.inf, 1.0) for row in boot_lambda])  # fmt: skip
     q = (1 - level) / 2
-    settle, rate = _settling(b, s0, mu, fraction)
-    boot = np.array([_settling(x, s0, mu, fraction) for x in slopes])
-    settle_low, settle_high = np.quantile(boot[:, 0], [q, 1 - q], method="inverted_cdf").tolist()
-    rate_low, rate_high = np.quantile(boot[:, 1], [q, 1 - q], method="inverted_cdf").tolist()
+    settle = settling_time(rate, visible, s0, mu, fraction)
+    settles = np.array([settling_time(t, c, s0, mu, fraction) for t, c in modes])
+    settle_low, settle_high = np.quantile(settles, [q, 1 - q], method="inverted_cdf").tolist()
+    rate_low, rate_high = np.quantile(modes[:, 0], [q, 1 - q], method="inverted_cdf").tolist()
     ends = [x for x in (settle_high, settle, 10.0) if math.isfinite(x)]
     horizon = periods or int(math.ceil(1.5 * max(ends)))
     times = np.linspace(0.0, horizon, 401)
-    chain = law_chain(law.pdf, s, a + b * s, cells=cells)
-    spread = chain.moments(s0, times)[1]  # its mean is the exponential, to ~1e-3
-    mean = mu + (s0 - mu) * np.exp(b * times)
-    band = [mu + (s0 - mu) * np.exp(x * times) for x in np.quantile(slopes, [q, 1 - q])]
+
+    def curve(t_r, c):
+        return np.where(times > 0, mu + c * (s0 - mu) * np.exp(-times / t_r), s0)
+
+    finite = modes[np.isfinite(modes[:, 0])]
+    curves = np.array([curve(t, c) for t, c in finite])
+    chain = law_chain(law.pdf, s, -(s - mu) / rate, cells=cells)
+    spread = chain.moments(s0, times)[1]
     model = (
-        f"1-D Fokker-Planck in E_c with the law as its stationary state; drift measured "
-        f"(base lag {base_lag}, lag {lag} periods) and fitted by a line, diffusion from "
-        f"fluctuation-dissipation; E_c is not Markov, so the settling time is an estimate "
-        f"within a factor of ~{MODEL_FACTOR:g} (docs/guide/equilibrium.rst)"
+        f"slow mode t_r from the shell's conditional mean at lags {lags[-3:]} periods, seen "
+        f"through fast noise; spread from a 1-D diffusion with the law as its stationary "
+        f"state; an estimate within a factor of ~{MODEL_FACTOR:g} (docs/guide/equilibrium.rst)"
     )
     return RelaxationPrediction(
         energy=start,
@@ -387,25 +451,27 @@ def predict_relaxation(
         target=law.mean,
         fraction=fraction,
         times=times,
-        means=total * mean,
+        means=total * curve(rate, visible),
         spread=total * spread,
-        low=total * np.minimum(*band),
-        high=total * np.maximum(*band),
+        low=total * np.quantile(curves, q, axis=0),
+        high=total * np.quantile(curves, 1 - q, axis=0),
         settle_time=settle,
         settle_low=settle_low,
         settle_high=settle_high,
         rate_time=rate,
         rate_low=rate_low,
         rate_high=rate_high,
+        visible=visible,
+        visible_stderr=float(np.std(finite[:, 1], ddof=1)),
+        lags=km.lags,
+        log_lambda=log_lambda,
+        log_lambda_stderr=stderr,
+        extrapolated=rate > 2 * lag,
         level=level,
         resamples=resamples,
-        lag=lag,
-        base_lag=base_lag,
         points=points,
         runs=runs,
         seed=seed,
-        drift_intercept=total * a,
-        drift_slope=b,
         coefficients=km.message,
         model=model,
     )
