@@ -67,7 +67,7 @@ def shell_part(k: int, runs: int, seed: int) -> None:
     inc = km.increments / ENERGY
     se = np.maximum(inc.std(axis=2, ddof=1), 1e-12) / math.sqrt(runs)
     ll = log_lambdas(s, inc, se)
-    t_r, c = slow_mode(km.lags[2:], ll[2:], np.ones(4))  # lags 32, 64, 128
+    t_r, c = slow_mode(km.lags[3:], ll[3:], np.ones(3))  # lags 32, 64, 128
     reading = [t_r * lag / (lag + t_r * math.log(1 / c)) for lag in km.lags]
     print(f"  k = {k}, seed {seed} [{time.perf_counter() - t0:.0f} s]: lag "
           + " ".join(f"{x:>5d}" for x in km.lags))  # fmt: skip

@@ -15,7 +15,8 @@ after tau periods,
 (:func:`~sinktheory.equilibrium.kramers.measure_kramers_moyal`, raw increments, a
 straight line weighted by the runs' standard errors) at the lags tau = lag / 8, lag / 4,
 lag / 2 and lag, and ln lambda(tau) is fitted by a straight line in tau over the last
-three: its slope is -1 / t_r, its intercept ln c.  The mean from the paper's start then
+three (the last three where lambda stands above its noise, when the relaxation is much
+faster than the lags): its slope is -1 / t_r, its intercept ln c.  The mean from the paper's start then
 follows <s>(t) = mu + c (s0 - mu) exp(-t / t_r) for t > 0 (the fast part takes the same
 fraction 1 - c of the excess from a start at rest: for Fig. 8's k = 1, c = 0.74-0.76 on
 the shell and 0.76 from <E_c>(50) of 128 runs from the paper's start), and the settling
@@ -285,19 +286,17 @@ def log_lambdas(s, increments, weights) -> np.ndarray:
 
 
 def slow_mode(lags, log_lambda, stderr) -> tuple[float, float]:
-    """(t_r, c) from ln lambda = ln c - tau / t_r fitted over the last three lags (t_r inf
-    when ln lambda does not fall).
+    """(t_r, c) from ln lambda = ln c - tau / t_r fitted over the lags given (t_r inf when
+    ln lambda does not fall).
 
     Examples
     --------
     >>> lags = np.array([16, 32, 64, 128])
-    >>> t, c = slow_mode(lags, np.log(0.75) - lags / 120, np.ones(4))
+    >>> t, c = slow_mode(lags[1:], np.log(0.75) - lags[1:] / 120, np.ones(3))
     >>> round(t, 6), round(c, 6)
     (120.0, 0.75)
     """
-    keep = slice(-3, None)
-    a, b = fit_line(np.asarray(lags, dtype=float)[keep], np.asarray(log_lambda)[keep],
-                    np.asarray(stderr)[keep])  # fmt: skip
+    a, b = fit_line(lags, log_lambda, stderr)
     return (-1 / b if b < 0 else math.inf), math.exp(a)
 
 
@@ -409,19 +408,26 @@ def predict_relaxation(
         for _ in range(resamples)])  # fmt: skip
     log_lambda = log_lambdas(s, inc, spread_runs)
     stderr = np.nanstd(boot_lambda, axis=0, ddof=1)
-    if not np.all(np.isfinite(log_lambda[-3:])) or not np.all(stderr[-3:] > 0):
+    # the fit uses the last three lags at which lambda stands above its noise (ln lambda
+    # known to 1/3); a relaxation much faster than the lags leaves only the first ones
+    usable = np.flatnonzero(np.isfinite(log_lambda) & (stderr > 0) & (stderr < 1 / 3))
+    use = usable[-3:]
+    if use.size < 2 or np.any(np.diff(use) != 1):
         raise NumericalError(
-            f"predict_relaxation: the conditional mean of E_c does not decay over lags "
-            f"{lags} (ln lambda = {np.round(log_lambda, 3).tolist()}); more runs or another lag"
-        )
-    rate, visible = slow_mode(km.lags, log_lambda, stderr)
+            f"predict_relaxation: the conditional mean of E_c is not resolved at lags "
+            f"{lags} (ln lambda = {np.round(log_lambda, 3).tolist()} ± "
+            f"{np.round(stderr, 3).tolist()}); a shorter lag if it has decayed, more runs "
+            f"if it is noise"
+        )  # fmt: skip
+    rate, visible = slow_mode(km.lags[use], log_lambda[use], stderr[use])
     if not math.isfinite(rate):
         raise NumericalError(
-            f"predict_relaxation: ln lambda does not fall over the lags {lags[-3:]} "
-            f"({np.round(log_lambda[-3:], 3).tolist()}); more runs or a longer lag"
+            f"predict_relaxation: ln lambda does not fall over the lags {km.lags[use].tolist()} "
+            f"({np.round(log_lambda[use], 3).tolist()}); more runs or a longer lag"
         )
-    modes = np.array([slow_mode(km.lags, row, stderr) if np.all(np.isfinite(row[-3:]))
-                      else (math.inf, 1.0) for row in boot_lambda])  # fmt: skip
+    modes = np.array([slow_mode(km.lags[use], row[use], stderr[use])
+                      if np.all(np.isfinite(row[use])) else (math.inf, 1.0)
+                      for row in boot_lambda])  # fmt: skip
     q = (1 - level) / 2
     settle = settling_time(rate, visible, s0, mu, fraction)
     settles = np.array([settling_time(t, c, s0, mu, fraction) for t, c in modes])
@@ -439,7 +445,8 @@ def predict_relaxation(
     chain = law_chain(law.pdf, s, -(s - mu) / rate, cells=cells)
     spread = chain.moments(s0, times)[1]
     model = (
-        f"slow mode t_r from the shell's conditional mean at lags {lags[-3:]} periods, seen "
+        f"slow mode t_r from the shell's conditional mean at lags {km.lags[use].tolist()} "
+        f"periods, seen "
         f"through fast noise; spread from a 1-D diffusion with the law as its stationary "
         f"state; an estimate within a factor of ~{MODEL_FACTOR:g} (docs/guide/equilibrium.rst)"
     )
@@ -488,7 +495,8 @@ class Settling(Result):
         bootstrap interval widened by the model's factor (low / MODEL_FACTOR,
         high * MODEL_FACTOR)
     source : "measured" or "predicted"
-    extrapolated : measured only: the crossing lies beyond the runs' record
+    extrapolated : measured: the crossing lies beyond the runs' record; predicted: the
+        relaxation time exceeds twice the largest lag (the prediction is probably short)
     fraction : f
     note : one line on how it was obtained
     """
@@ -538,7 +546,7 @@ def settling_periods(
             low=p.settle_low / MODEL_FACTOR,
             high=p.settle_high * MODEL_FACTOR,
             source="predicted",
-            extrapolated=False,
+            extrapolated=p.extrapolated,
             fraction=fraction,
             note=p.model,
         )
