@@ -13,7 +13,7 @@ n = 4, 10, 20), from the paper's start (E0 = 0.5, particles at rest):
   :func:`sinktheory.equilibrium.relaxation.measure_relaxation`.
 
 "agrees": within 25 %, or ln(predicted / measured) within 2 standard errors (each from its
-95 % interval's width); "+" marks a prediction whose t_r exceeds twice the largest lag.
+95 % interval's width); "+" marks a prediction whose t_r exceeds 4 times the largest lag.
 ``--cache FILE.json`` keeps the measurements (the slow part) between runs: a case is
 measured again only when its run length (set by the prediction) changes.
 
@@ -122,7 +122,7 @@ def main() -> None:
             p = predict_relaxation(sink, 0.5, seed=0)
         except NumericalError as error:
             p, periods = None, 3000
-            failure = str(error).split(": ", 1)[1].split(";")[0]
+            failure = str(error).split(": ", 1)[1].split(" (")[0]  # without the numbers
         else:
             periods = int(min(max(4 * p.settle_time, 3000), 20000))
         t1 = time.perf_counter()
@@ -163,7 +163,7 @@ def main() -> None:
                                                        "fresh": "C0"}[seen])  # fmt: skip
         ax.annotate(label, (r.settle_time, p.settle_time), fontsize=6, xytext=(3, 3),
                     textcoords="offset points")  # fmt: skip
-    lo, hi = 100, 30000
+    lo, hi = 30, 30000
     ax.plot([lo, hi], [lo, hi], "k-", lw=0.8, label="predicted = measured")
     ax.fill_between([lo, hi], [lo / 1.25, hi / 1.25], [lo * 1.25, hi * 1.25], color="0.85",
                     label="within 25 %")  # fmt: skip
@@ -173,9 +173,8 @@ def main() -> None:
     ax.set_ylim(lo, hi)
     ax.set_xlabel("measured 5 % settling time (periods)")
     ax.set_ylabel("predicted (slow mode seen through fast noise)")
-    ax.set_title(f"{runs} runs per case; grey squares: seen while choosing the model, orange "
-                 "diamonds: run with an earlier model, blue: fresh, red: crossing beyond "
-                 "the record", fontsize=6)  # fmt: skip
+    ax.set_title(f"{runs} runs per case; grey squares: seen while choosing the model,\n"
+                 "orange diamonds: run with an earlier model, blue: fresh", fontsize=7)  # fmt: skip
     ax.legend(fontsize=7, loc="upper left")
     out.mkdir(parents=True, exist_ok=True)
     fig.savefig(out / "relaxation.png", dpi=110)

@@ -133,7 +133,7 @@ def run(args: argparse.Namespace) -> Output:
         + f"; from {p.coefficients}",
     ]
     if p.extrapolated:
-        lines.append(f"    the relaxation time exceeds twice the largest lag: the lags do not "
+        lines.append(f"    the relaxation time exceeds 4 times the largest lag: the lags do not "
                      f"reach the slow mode and the prediction is probably short; rerun with "
                      f"--lag {int(p.rate_time)}")  # fmt: skip
     data = {"prediction": p.as_dict(), "measured": None}

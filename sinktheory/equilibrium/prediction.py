@@ -40,7 +40,9 @@ What it is worth
 ----------------
 Where t_r is longer than the lags, ln lambda(tau) still curves (a slower mode that the
 lags do not reach yet) and t_r comes out short: for Fig. 8's k = 5, lags up to 128 give
-t_r ~ 650 against the measured tail time ~1260.  ``extrapolated`` flags t_r > 2 lag; then
+t_r ~ 650 against the measured tail time ~1260.  ``extrapolated`` flags t_r > 4 lag (a
+threshold read off the cases of docs/guide/make_relaxation.py: the predictions above it
+came out short, those below it did not); then
 rerun with a lag near t_r (the runs cost points x runs x lag periods, about what a direct
 measurement of 32 runs over the settling time costs).  Against measured settling times
 on Fig. 8's well and variants the prediction is within a factor of :data:`MODEL_FACTOR`
@@ -77,6 +79,7 @@ from .kramers import measure_kramers_moyal
 from .law import equilibrium_law
 
 __all__ = [
+    "EXTRAPOLATION",
     "fit_line",
     "LADDER",
     "law_chain",
@@ -99,6 +102,8 @@ __all__ = [
 MODEL_FACTOR = 2.5
 #: Default largest lag (periods), grid points and runs per point of the regressions.
 LAG, POINTS, RUNS = 128, 12, 100
+#: t_r beyond this many times the largest lag flags the prediction as probably short.
+EXTRAPOLATION = 4
 #: The lags of the regressions, as fractions of the largest; the fit of ln lambda uses the
 #: last three.
 LADDER = (1 / 8, 1 / 4, 1 / 2, 1)
@@ -204,7 +209,7 @@ class RelaxationPrediction(Result):
     rate_time, rate_low, rate_high : t_r, the slow mode's relaxation time
     visible, visible_stderr : c, the fraction of the excess the slow mode carries
     lags, log_lambda, log_lambda_stderr : the regressions' ln lambda(tau) and errors
-    extrapolated : t_r > 2 lag: the lags do not reach the slow mode (rerun with a lag near
+    extrapolated : t_r > 4 lag: the lags do not reach the slow mode (rerun with a lag near
         t_r)
     level, resamples : confidence level and bootstrap resamples
     points, runs, seed : how the regressions were measured
@@ -446,8 +451,7 @@ def predict_relaxation(
     spread = chain.moments(s0, times)[1]
     model = (
         f"slow mode t_r from the shell's conditional mean at lags {km.lags[use].tolist()} "
-        f"periods, seen "
-        f"through fast noise; spread from a 1-D diffusion with the law as its stationary "
+        f"periods, seen through fast noise; spread from a 1-D diffusion with the law as its stationary "
         f"state; an estimate within a factor of ~{MODEL_FACTOR:g} (docs/guide/equilibrium.rst)"
     )
     return RelaxationPrediction(
@@ -473,7 +477,7 @@ def predict_relaxation(
         lags=km.lags,
         log_lambda=log_lambda,
         log_lambda_stderr=stderr,
-        extrapolated=rate > 2 * lag,
+        extrapolated=rate > EXTRAPOLATION * lag,
         level=level,
         resamples=resamples,
         points=points,
@@ -496,7 +500,8 @@ class Settling(Result):
         high * MODEL_FACTOR)
     source : "measured" or "predicted"
     extrapolated : measured: the crossing lies beyond the runs' record; predicted: the
-        relaxation time exceeds twice the largest lag (the prediction is probably short)
+        relaxation time exceeds EXTRAPOLATION times the largest lag (the prediction is
+        probably short)
     fraction : f
     note : one line on how it was obtained
     """
