@@ -133,9 +133,9 @@ def run(args: argparse.Namespace) -> Output:
         + f"; from {p.coefficients}",
     ]
     if p.extrapolated:
-        lines.append(f"    the relaxation time exceeds 4 times the largest lag: the lags do not "
-                     f"reach the slow mode and the prediction is probably short; rerun with "
-                     f"--lag {int(p.rate_time)}")  # fmt: skip
+        lines.append("    the relaxation time exceeds 4 times the largest lag: such slow "
+                     "relaxations have come out short by up to a factor 2 (longer lags do not "
+                     "help); measure with --measure RUNS PERIODS")  # fmt: skip
     data = {"prediction": p.as_dict(), "measured": None}
     if measured is not None:
         flag = " (beyond the record: extrapolated, run longer)" if measured.extrapolated else ""
