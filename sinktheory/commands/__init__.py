@@ -32,6 +32,8 @@ HELP = {
     "Kac return times",
     "lifetime": "measured return times of the container energy against Kac's prediction from "
     "the equilibrium law",
+    "relaxation": "how fast the container energy settles at the law: predicted curve and "
+    "settling time, measured with --measure",
     "compare": "the 1-D NES and vibro-impact absorbers beside the 2-D sink: efficiency against "
     "impulse energy, 90 % times, wavelet maps",
     "sweep": "parameter sweep of any analysis kind (sweep --help lists them) into a resumable "

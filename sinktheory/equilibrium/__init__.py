@@ -11,6 +11,9 @@
 * :mod:`~sinktheory.equilibrium.relaxation` -- when the ensemble mean of E_c settles
   within a fraction of the law's mean (crossing of a fitted stretched exponential, with a
   bootstrap interval over runs that does not move with their number);
+* :mod:`~sinktheory.equilibrium.prediction` -- the predicted relaxation (a one-variable
+  Fokker-Planck model with the law as its stationary state and a measured drift) and
+  :func:`settling_periods`, how long an ensemble must run (predicted or measured);
 * :mod:`~sinktheory.equilibrium.microcanonical` -- states drawn from the shell's measure
   at a prescribed E_c (the particles on their own microcanonical shell);
 * :mod:`~sinktheory.equilibrium.kramers` -- Kramers-Moyal drift and diffusion of E_c from
@@ -29,6 +32,7 @@ from .kramers import (
 from .law import EquilibriumLaw, EquilibriumSummary, equilibrium_law
 from .lifetime import LawComparison, compare_with_law, measure_lifetimes
 from .microcanonical import shell_states
+from .prediction import RelaxationPrediction, Settling, predict_relaxation, settling_periods
 from .relaxation import Relaxation, measure_relaxation
 
 __all__ = [
@@ -38,6 +42,8 @@ __all__ = [
     "KramersMoyal",
     "LawComparison",
     "Relaxation",
+    "RelaxationPrediction",
+    "Settling",
     "basin_area",
     "area_quadrature",
     "check_fluctuation_dissipation",
@@ -47,6 +53,8 @@ __all__ = [
     "measure_kramers_moyal",
     "measure_lifetimes",
     "measure_relaxation",
+    "predict_relaxation",
     "scaled_energy",
+    "settling_periods",
     "shell_states",
 ]

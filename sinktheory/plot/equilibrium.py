@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-__all__ = ["plot_ergodicity", "plot_law", "plot_lifetimes", "VERDICTS"]
+__all__ = ["plot_ergodicity", "plot_law", "plot_lifetimes", "plot_relaxation", "VERDICTS"]
 
 
 def plot_law(summary, ax=None):
@@ -95,6 +95,51 @@ def plot_lifetimes(fractions, particles, predicted, measured=None, ax=None):
     ax.set_yscale("log")
     ax.set_xlabel("fraction $f$ of the total energy")
     ax.set_ylabel(r"mean return time to $\{E_c \geq fE\}$ (periods $T$)")
+    ax.legend(fontsize=8)
+    return fig
+
+
+def plot_relaxation(prediction, measured=None, ax=None):
+    """Predicted <E_c>(t) (a :class:`~sinktheory.equilibrium.prediction.RelaxationPrediction`)
+    with its band and run-to-run spread, the law's mean and the settled band, the
+    predicted settling time and, when given, the measured window means (a
+    :class:`~sinktheory.equilibrium.relaxation.Relaxation`) with their band and settling.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace as NS
+    >>> t = np.linspace(0, 100, 5)
+    >>> p = NS(times=t, means=0.1 + 0.4 * np.exp(-t / 30), low=0.1 + 0.3 * np.exp(-t / 30),
+    ...        high=0.1 + 0.5 * np.exp(-t / 30), spread=0.05 + 0 * t, target=0.1, fraction=0.05,
+    ...        settle_time=60.0, particles=1, mass=0.2, energy=0.5)
+    >>> plot_relaxation(p).axes[0].get_xlabel()
+    'time (periods $T$)'
+    """
+    if ax is None:
+        fig = Figure(figsize=(6.4, 4.2), layout="constrained")
+        ax = fig.subplots()
+    else:
+        fig = ax.figure
+    p = prediction
+    mu, f = p.target, p.fraction
+    ax.fill_between(p.times, p.means - p.spread, p.means + p.spread, color="C0", alpha=0.12,
+                    lw=0, label="predicted run-to-run spread")  # fmt: skip
+    ax.fill_between(p.times, p.low, p.high, color="C0", alpha=0.35, lw=0)
+    ax.plot(p.times, p.means, color="C0", lw=1.6, label=r"predicted $\langle E_c\rangle$")
+    ax.axvline(p.settle_time, color="C0", ls="--", lw=1.0, label="predicted settling")
+    if measured is not None:
+        m = measured
+        ax.fill_between(m.times, m.low, m.high, color="C3", alpha=0.25, lw=0)
+        ax.plot(m.times, m.means, color="C3", lw=1.0, label=f"measured ({m.runs} runs)")
+        ax.axvline(m.settle_time, color="C3", ls="--", lw=1.0, label="measured settling")
+    ax.axhspan(mu * (1 - f), mu * (1 + f), color="0.6", alpha=0.3, lw=0)
+    ax.axhline(mu, color="k", lw=0.8, label="law's mean")
+    ax.set_xlim(0, p.times[-1])
+    ax.set_ylim(0, None)
+    ax.set_xlabel("time (periods $T$)")
+    ax.set_ylabel(r"$E_c$")
+    ax.set_title(f"$k$={p.particles}, $m$={p.mass:g}, $E_0$={p.energy:g}: settling within "
+                 f"{100 * f:g} % of the law's mean", fontsize=9)  # fmt: skip
     ax.legend(fontsize=8)
     return fig
 

@@ -1,0 +1,168 @@
+"""``sinktheory relaxation``: how fast the container's energy settles at the law, predicted
+(and measured when asked)."""
+
+from __future__ import annotations
+
+import argparse
+
+from . import HELP as HELPS
+from ._common import (
+    Output,
+    add_json,
+    add_well_arguments,
+    number,
+    png_path,
+    well_from_args,
+)
+
+__all__ = ["add_arguments", "HELP", "NAME", "run", "TABLE_ROWS"]
+
+NAME = "relaxation"
+HELP = HELPS[NAME]
+#: Rows of the printed curve.
+TABLE_ROWS = 10
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_well_arguments(parser)
+    g = parser.add_argument_group("sink and start")
+    g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
+    g.add_argument(
+        "--mass", type=number, default=0.2, help="total particle mass m > 0 (default 0.2)"
+    )
+    g.add_argument(
+        "--energy",
+        type=number,
+        default=0.5,
+        help="container energy E0 > 0 at the start, particles at rest (default 0.5)",
+    )
+    g.add_argument(
+        "--fraction",
+        type=number,
+        default=0.05,
+        help="settled when <E_c> is within this fraction of the law's mean, in (0, 1) "
+        "(default 0.05)",
+    )
+    g.add_argument(
+        "--periods",
+        type=number,
+        default=None,
+        help="length of the printed curve, periods (default: 1.5 x the settling interval's end)",
+    )
+    g.add_argument("--seed", type=number, default=0, help="random seed, integer >= 0 (default 0)")
+    g.add_argument(
+        "--tol",
+        type=number,
+        default=1e-6,
+        help="relative total-energy error of the simulator (default 1e-6)",
+    )
+    m = parser.add_argument_group("the model's slow mode (short runs started on the shell)")
+    m.add_argument("--points", type=number, default=12, help="starting energies >= 3 (default 12)")
+    m.add_argument(
+        "--shell-runs", type=number, default=100, help="runs per starting energy >= 4 (default 100)"
+    )
+    m.add_argument(
+        "--lag",
+        type=number,
+        default=128,
+        help="largest lag in periods >= 8, best near the relaxation time (default 128)",
+    )
+    parser.add_argument(
+        "--measure",
+        type=number,
+        nargs=2,
+        metavar=("RUNS", "PERIODS"),
+        help="also simulate RUNS runs x PERIODS periods from the start and measure the settling",
+    )
+    parser.add_argument(
+        "--resamples",
+        type=number,
+        default=199,
+        help="bootstrap resamples of the drift and of the measured runs, >= 20 (default 199)",
+    )
+    parser.add_argument("--plot", metavar="FILE.png", help="draw predicted (and measured) <E_c>(t)")
+    add_json(parser)
+
+
+def _interval(low: float, high: float) -> str:
+    import math
+
+    return f"{low:.0f}-" + (f"{high:.0f}" if math.isfinite(high) else "inf")
+
+
+def run(args: argparse.Namespace) -> Output:
+    import numpy as np
+
+    from ..equilibrium.prediction import measure_settling, predict_relaxation
+    from ..model import RunSettings, Sink
+
+    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    plot = png_path("plot", args.plot)
+    if args.measure is not None:  # checked before the prediction's runs
+        from .. import validation as v
+
+        v.positive_int("measure", args.measure[0], minimum=3)
+        v.positive_int("measure", args.measure[1], minimum=24)
+        RunSettings(energy=args.energy, runs=args.measure[0], periods=args.measure[1],
+                    seed=args.seed).check(sink)  # fmt: skip
+    p = predict_relaxation(
+        sink, args.energy, fraction=args.fraction, periods=args.periods, points=args.points,
+        runs=args.shell_runs, lag=args.lag, seed=args.seed, tol=args.tol,
+        resamples=args.resamples,
+    )  # fmt: skip
+    measured = sim = None
+    if args.measure is not None:
+        measured, sim = measure_settling(sink, args.energy, args.measure, fraction=args.fraction,
+                                         seed=args.seed, tol=args.tol,
+                                         resamples=args.resamples)  # fmt: skip
+    well = sink.well
+    level = f"{100 * p.level:g} %"
+    lines = [
+        f"relaxation of E_c: {well.shape} well alpha={well.alpha:g} beta={well.beta:g} "
+        f"n={well.n} gamma={well.gamma:g}, k={sink.particles}, m={sink.mass:g}, "
+        f"E0={p.energy:g} (total E={p.total_energy:.6g}), particles at rest",
+        f"  law's mean <E_c> {p.target:.6g}; settled when within {100 * p.fraction:g} % of it",
+        f"  predicted: settles at {p.settle_time:.0f} periods ({level} interval "
+        f"{_interval(p.settle_low, p.settle_high)}, statistical), relaxation time "
+        f"{p.rate_time:.0f} ({_interval(p.rate_low, p.rate_high)}), fraction seen by E_c "
+        f"{p.visible:.2f} ± {p.visible_stderr:.2f}",
+        f"    model: {p.model}",
+        "    ln lambda at lags "
+        + ", ".join(f"{t}: {x:.3f} ± {e:.3f}" for t, x, e in
+                    zip(p.lags, p.log_lambda, p.log_lambda_stderr, strict=True))  # fmt: skip
+        + f"; from {p.coefficients}",
+    ]
+    if p.extrapolated:
+        lines.append("    the relaxation time exceeds 4 times the largest lag: such slow "
+                     "relaxations have come out short by up to a factor 2 (longer lags do not "
+                     "help); measure with --measure RUNS PERIODS")  # fmt: skip
+    data = {"prediction": p.as_dict(), "measured": None}
+    if measured is not None:
+        flag = " (beyond the record: extrapolated, run longer)" if measured.extrapolated else ""
+        lines += [
+            f"  measured: settles at {measured.settle_time:.0f} periods ({level} interval "
+            f"{_interval(measured.settle_low, measured.settle_high)}){flag}, tail time "
+            f"{measured.rate_time:.0f} ± {measured.rate_stderr:.0f}, late mean - law "
+            f"{measured.late_z:+.1f} standard errors",
+            f"    {sim.message}",
+        ]
+        data["measured"] = measured.as_dict()
+        data["simulation"] = sim.message
+    lines.append("  t (periods)  predicted <E_c> (band)      spread"
+                 + ("   measured <E_c> ± se" if measured is not None else ""))  # fmt: skip
+    for t in np.linspace(0, p.times[-1], TABLE_ROWS + 1):
+        i = int(np.argmin(np.abs(p.times - t)))
+        row = (f"  {p.times[i]:<11.0f}  {p.means[i]:.4f} ({p.low[i]:.4f}-{p.high[i]:.4f})"
+               f"  {p.spread[i]:.4f}")  # fmt: skip
+        if measured is not None and measured.times[0] <= p.times[i] <= measured.times[-1]:
+            w = int(np.argmin(np.abs(measured.times - p.times[i])))
+            row += f"   {measured.means[w]:.4f} ± {measured.stderr[w]:.4f}"
+        lines.append(row)
+    out = Output(data, "\n".join(lines))
+    if plot is not None:
+        from ..plot.equilibrium import plot_relaxation
+
+        fig = plot_relaxation(p, measured)
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        data["plot"] = str(plot)
+    return out
