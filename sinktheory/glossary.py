@@ -119,6 +119,12 @@ GLOSSARY: dict[str, str] = {
     "window": "periods per window",
     "level": "confidence level of an interval",
     "resamples": "bootstrap resamples",
+    "shell_energies": "starting container energies on the energy shell of the relaxation "
+    "model's short runs",
+    "shell_runs": "runs per starting energy of the relaxation model's short runs",
+    "lag": "the largest lag, in periods, of the relaxation model's short runs",
+    "cells": "grid cells of the Fokker-Planck solution",
+    "measure": "(runs, periods) simulated from the paper's start to measure the settling",
     "energy_runs": "E(jT) of independent runs: the container energy records (runs x periods)",
     "series": "a 1-D series (such as the container energy E_k at t = kT)",
     "theiler": "Theiler window: points with |i - j| below it are left out",

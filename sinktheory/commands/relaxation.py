@@ -31,7 +31,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--mass", type=number, default=0.2, help="total particle mass m > 0 (default 0.2)"
     )
     g.add_argument(
-        "--energy",
+        "--container-energy",
         type=number,
         default=0.5,
         help="container energy E0 > 0 at the start, particles at rest (default 0.5)",
@@ -57,7 +57,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="relative total-energy error of the simulator (default 1e-6)",
     )
     m = parser.add_argument_group("the model's slow mode (short runs started on the shell)")
-    m.add_argument("--points", type=number, default=12, help="starting energies >= 3 (default 12)")
+    m.add_argument(
+        "--shell-energies", type=number, default=12, help="starting energies >= 3 (default 12)"
+    )
     m.add_argument(
         "--shell-runs", type=number, default=100, help="runs per starting energy >= 4 (default 100)"
     )
@@ -103,16 +105,16 @@ def run(args: argparse.Namespace) -> Output:
 
         v.positive_int("measure", args.measure[0], minimum=3)
         v.positive_int("measure", args.measure[1], minimum=24)
-        RunSettings(energy=args.energy, runs=args.measure[0], periods=args.measure[1],
+        RunSettings(container_energy=args.container_energy, runs=args.measure[0], periods=args.measure[1],
                     seed=args.seed).check(sink)  # fmt: skip
     p = predict_relaxation(
-        sink, args.energy, fraction=args.fraction, periods=args.periods, points=args.points,
-        runs=args.shell_runs, lag=args.lag, seed=args.seed, tol=args.tol,
+        sink, args.container_energy, fraction=args.fraction, periods=args.periods,
+        shell_energies=args.shell_energies, shell_runs=args.shell_runs, lag=args.lag, seed=args.seed, tol=args.tol,
         resamples=args.resamples,
     )  # fmt: skip
     measured = sim = None
     if args.measure is not None:
-        measured, sim = measure_settling(sink, args.energy, args.measure, fraction=args.fraction,
+        measured, sim = measure_settling(sink, args.container_energy, args.measure, fraction=args.fraction,
                                          seed=args.seed, tol=args.tol,
                                          resamples=args.resamples)  # fmt: skip
     well = sink.well

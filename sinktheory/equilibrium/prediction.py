@@ -320,8 +320,8 @@ def settling_time(rate_time: float, visible: float, s0: float, mu: float, fracti
     return rate_time * depth if depth > 0 else 0.0
 
 
-def start_total_energy(sink: Sink, energy: float, seed: int = 0, runs: int = 16) -> float:
-    """Total energy E of the paper's start (container at E0 = ``energy`` at rest, particles
+def start_total_energy(sink: Sink, container_energy: float, seed: int = 0, runs: int = 16) -> float:
+    """Total energy E of the paper's start (container at E0 = ``container_energy`` at rest, particles
     at rest at the seeded random positions of the start box): the mean over ``runs`` starts.
 
     Examples
@@ -332,20 +332,20 @@ def start_total_energy(sink: Sink, energy: float, seed: int = 0, runs: int = 16)
     """
     from ..ensemble import random_positions, start_state, total_energy
 
-    settings = RunSettings(energy=energy, runs=runs, seed=seed)
+    settings = RunSettings(container_energy=container_energy, runs=runs, seed=seed)
     settings.check(sink)
-    rows = start_state(sink, energy, random_positions(settings, sink.particles))
+    rows = start_state(sink, container_energy, random_positions(settings, sink.particles))
     return float(np.mean(total_energy(sink, rows)))
 
 
 def predict_relaxation(
     sink: Sink,
-    energy: float = 0.5,
+    container_energy: float = 0.5,
     *,
     fraction: float = 0.05,
     periods: int | None = None,
-    points: int = POINTS,
-    runs: int = RUNS,
+    shell_energies: int = POINTS,
+    shell_runs: int = RUNS,
     lag: int = LAG,
     seed: int = 0,
     tol: float = 1e-6,
@@ -353,9 +353,9 @@ def predict_relaxation(
     resamples: int = 199,
     cells: int = 150,
 ) -> RelaxationPrediction:
-    """Predicted relaxation of <E_c> from the paper's start at E0 = ``energy``.
+    """Predicted relaxation of <E_c> from the paper's start at E0 = ``container_energy``.
 
-    ``points`` energies x ``runs`` runs started on the shell (seed ``seed``, simulator
+    ``shell_energies`` energies x ``shell_runs`` runs started on the shell (seed ``seed``, simulator
     tolerance ``tol``) are integrated ``lag`` periods (cost: points x runs x lag
     run-periods), the slow mode fitted and the model solved (module docstring); the
     errors come from ``resamples`` bootstrap draws of the runs at each point.
@@ -363,13 +363,13 @@ def predict_relaxation(
     Parameters
     ----------
     sink : Sink
-    energy : float > 0
+    container_energy : float > 0
         E0, the container's starting energy.
     fraction : float in (0, 1)
         Relative excess that counts as settled.
     periods : int >= 1, optional
         Length of the curve (default: 1.5 times the upper end of the settling interval).
-    points, runs : int >= 3, int >= 4
+    shell_energies, shell_runs : int >= 3, int >= 4
     lag : int >= 8
         The largest lag (periods); the regressions use lag / 8, lag / 4, lag / 2 and lag.
     seed, tol, level, resamples, cells : see the module docstring.
@@ -378,7 +378,7 @@ def predict_relaxation(
     --------
     >>> from sinktheory.canonical import FIG8_WELL
     >>> sink = Sink(FIG8_WELL, particles=1, mass=0.2)
-    >>> pred = predict_relaxation(sink, points=4, runs=8, lag=32, resamples=20, seed=3)
+    >>> pred = predict_relaxation(sink, shell_energies=4, shell_runs=8, lag=32, resamples=20, seed=3)
     >>> bool(pred.settle_low <= pred.settle_time <= pred.settle_high)
     True
     >>> bool(abs(pred.means[-1] - pred.target) < 0.05 * pred.target)
@@ -386,12 +386,12 @@ def predict_relaxation(
     """
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-    start = v.positive("energy", energy)  # E0
+    start = v.positive("container_energy", container_energy)  # E0
     fraction = v.positive("fraction", fraction)
     if not fraction < 1:
         raise ParameterError("fraction", fraction, "a number in (0, 1)")
-    points = v.positive_int("points", points, minimum=3)
-    runs = v.positive_int("runs", runs, minimum=4)
+    points = v.positive_int("shell_energies", shell_energies, minimum=3)
+    runs = v.positive_int("shell_runs", shell_runs, minimum=4)
     lag = v.positive_int("lag", lag, minimum=8)
     seed = v.positive_int("seed", seed, minimum=0)
     if not 0 < v.finite("level", level) < 1:
@@ -519,14 +519,14 @@ class Settling(Result):
 
 def settling_periods(
     sink: Sink,
-    energy: float = 0.5,
+    container_energy: float = 0.5,
     *,
     fraction: float = 0.05,
     measure: tuple[int, int] | None = None,
     seed: int = 0,
     tol: float = 1e-6,
 ) -> Settling:
-    """How many periods an ensemble of ``sink`` started at E0 = ``energy`` (particles at
+    """How many periods an ensemble of ``sink`` started at E0 = ``container_energy`` (particles at
     rest) takes until its mean E_c is within ``fraction`` of the law's mean.
 
     Without ``measure`` the answer is predicted (:func:`predict_relaxation` with its
@@ -547,7 +547,7 @@ def settling_periods(
     ('measured', True)
     """
     if measure is None:
-        p = predict_relaxation(sink, energy, fraction=fraction, seed=seed, tol=tol)
+        p = predict_relaxation(sink, container_energy, fraction=fraction, seed=seed, tol=tol)
         return Settling(
             periods=p.settle_time,
             low=p.settle_low / MODEL_FACTOR,
@@ -557,7 +557,8 @@ def settling_periods(
             fraction=fraction,
             note=p.model,
         )
-    r, sim = measure_settling(sink, energy, measure, fraction=fraction, seed=seed, tol=tol)
+    r, sim = measure_settling(sink, container_energy, measure, fraction=fraction, seed=seed,
+                              tol=tol)  # fmt: skip
     return Settling(
         periods=r.settle_time,
         low=r.settle_low,
@@ -569,10 +570,10 @@ def settling_periods(
     )
 
 
-def measure_settling(sink: Sink, energy: float, measure, *, fraction: float = 0.05,
+def measure_settling(sink: Sink, container_energy: float, measure, *, fraction: float = 0.05,
                      seed: int = 0, tol: float = 1e-6, resamples: int = 199):  # fmt: skip
     """(:class:`~sinktheory.equilibrium.relaxation.Relaxation`, the simulation) of
-    ``measure = (runs, periods)`` runs from the paper's start at E0 = ``energy``."""
+    ``measure = (runs, periods)`` runs from the paper's start at E0 = ``container_energy``."""
     from ..simulate import simulate
     from .relaxation import measure_relaxation
 
@@ -582,7 +583,8 @@ def measure_settling(sink: Sink, energy: float, measure, *, fraction: float = 0.
         raise ParameterError("measure", measure, "a pair (runs, periods)") from None
     runs = v.positive_int("measure", runs, minimum=3)
     periods = v.positive_int("measure", periods, minimum=24)
-    settings = RunSettings(energy=energy, runs=runs, periods=periods, seed=seed)
+    settings = RunSettings(container_energy=container_energy, runs=runs, periods=periods,
+                           seed=seed)  # fmt: skip
     settings.check(sink)
     sim = simulate(sink, settings, tol=tol, progress=False)
     law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))

@@ -83,7 +83,7 @@ def test_the_slow_mode_of_a_jacobi_diffusion_is_its_exact_rate():
 
 def test_prediction_settles_where_the_chain_crosses_and_ends_with_the_law_spread():
     sink = Sink(FIG8_WELL, particles=1, mass=0.2)
-    p = predict_relaxation(sink, 0.5, points=4, runs=8, lag=32, resamples=20, seed=3)
+    p = predict_relaxation(sink, 0.5, shell_energies=4, shell_runs=8, lag=32, resamples=20, seed=3)
     law = equilibrium_law(sink, p.total_energy)
     mean, sd = law_moments(law)
     assert abs(p.spread[-1] / (sd * p.total_energy) - 1) < 0.02
@@ -105,8 +105,8 @@ def test_prediction_settles_where_the_chain_crosses_and_ends_with_the_law_spread
         ({"fraction": 1.0}, "fraction"),
         ({"fraction": 0.0}, "fraction"),
         ({"lag": 4}, "lag"),
-        ({"points": 2}, "points"),
-        ({"runs": 3}, "runs"),
+        ({"shell_energies": 2}, "shell_energies"),
+        ({"shell_runs": 3}, "shell_runs"),
         ({"resamples": 5}, "resamples"),
     ],
 )
@@ -116,7 +116,7 @@ def test_bad_arguments_are_named(kwargs, name):
 
 
 def test_bad_energy_is_named():
-    with pytest.raises(ParameterError, match="^energy = "):
+    with pytest.raises(ParameterError, match="^container_energy = "):
         predict_relaxation(Sink(FIG8_WELL), -1.0)
 
 

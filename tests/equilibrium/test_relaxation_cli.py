@@ -12,7 +12,7 @@ from sinktheory.equilibrium.prediction import measure_settling, predict_relaxati
 from sinktheory.model import Sink
 
 FIG8 = ["relaxation", "--alpha", "0.5", "--beta", "0.3", "--n", "4"]
-SMALL = ["--points", "4", "--shell-runs", "8", "--lag", "32", "--seed", "3", "--resamples", "20"]
+SMALL = ["--shell-energies", "4", "--shell-runs", "8", "--lag", "32", "--seed", "3", "--resamples", "20"]
 
 
 def test_cli_equals_api_and_draws(tmp_path, capsys):
@@ -22,7 +22,7 @@ def test_cli_equals_api_and_draws(tmp_path, capsys):
     assert code == 0, err
     data = json.loads(out)
     sink = Sink(FIG8_WELL, particles=1, mass=0.2)
-    p = predict_relaxation(sink, 0.5, points=4, runs=8, lag=32, seed=3, resamples=20)
+    p = predict_relaxation(sink, 0.5, shell_energies=4, shell_runs=8, lag=32, seed=3, resamples=20)
     r, _ = measure_settling(sink, 0.5, (4, 240), seed=3, resamples=20)
     assert data["prediction"]["settle_time"] == p.settle_time
     assert data["prediction"]["means"] == p.means.tolist()
@@ -43,11 +43,11 @@ def test_text_says_what_the_prediction_is(capsys):
         ([*FIG8, "--particles", "0"], "particles"),
         ([*FIG8, "--fraction", "1"], "fraction"),
         ([*FIG8, "--fraction", "-0.1"], "fraction"),
-        ([*FIG8, "--energy", "0"], "energy"),
+        ([*FIG8, "--container-energy", "0"], "container_energy"),
         ([*FIG8, "--mass", "nan"], "mass"),
         ([*FIG8, "--lag", "4"], "lag"),
-        ([*FIG8, "--points", "2"], "points"),
-        ([*FIG8, "--shell-runs", "3"], "runs"),
+        ([*FIG8, "--shell-energies", "2"], "shell_energies"),
+        ([*FIG8, "--shell-runs", "3"], "shell_runs"),
         ([*FIG8, "--measure", "2", "100"], "measure"),
         ([*FIG8, "--measure", "8", "10"], "measure"),
         ([*FIG8, "--plot", "out.txt"], "plot"),

@@ -58,6 +58,12 @@ ENTRY_POINTS = {
         "compare.transfer:transfer_map",
     ],  # fmt: skip
     "sweep": ["sweep.runner:run_sweep"],
+    "relaxation": [
+        "model:Well",
+        "model:Sink",
+        "equilibrium.prediction:predict_relaxation",
+        "equilibrium.prediction:measure_settling",
+    ],  # fmt: skip
 }
 #: Options that shape the command's output or its run and feed no keyword.
 COMMAND_ONLY = {"json", "plot", "out", "quiet", "report", "latex", "fresh", "figure", "quick",
