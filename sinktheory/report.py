@@ -12,10 +12,11 @@ __all__ = ["closing", "render", "SceneOutcome"]
 
 @dataclass
 class SceneOutcome(Result):
-    """A scene as run: its result (None if it failed), image name, seconds, error text.
+    """A scene as run: its result (None if it failed), image name, wall seconds, error
+    text, and CPU seconds of the process (all its threads) while it ran.
 
     ``as_dict()`` (what ``reproduce --json`` lists per figure): figure number, image,
-    seconds, error and the claims checked.
+    seconds, CPU seconds, error and the claims checked.
     """
 
     scene: Scene
@@ -23,12 +24,14 @@ class SceneOutcome(Result):
     image: str | None
     seconds: float
     error: str | None = None
+    cpu_seconds: float = 0.0
 
     def items(self) -> dict:
         return {
             "figure": self.scene.number,
             "image": self.image,
             "seconds": self.seconds,
+            "cpu_seconds": self.cpu_seconds,
             "error": self.error,
             "claims": [] if self.result is None else self.result.claims,
         }
@@ -57,7 +60,7 @@ def render(outcomes: list[SceneOutcome], *, quick: bool, version: str) -> str:
         s = o.scene
         lines += [f"## Fig. {s.number}: {s.title}", ""]
         lines.append(f"- model computed: {s.needs}")
-        lines.append(f"- run time: {o.seconds:.1f} s")
+        lines.append(f"- run time: {o.seconds:.1f} s ({o.cpu_seconds:.1f} s CPU)")
         if o.error is not None:
             lines += [f"- **failed**: {_cell(o.error)}", ""]
             counts["failed"] = counts.get("failed", 0) + 1

@@ -94,16 +94,16 @@ def run(args: argparse.Namespace) -> Output:
             f"Fig. {number} ({i}/{len(figures)}): {scene.title}; about {seconds:.0f} s"
             + (f" (compiles {', '.join(new)} first)" if new else "")
         )
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), time.process_time()
         try:
             result = scene.build(args.quick)
             error = None
         except NumericalError as e:  # reported, not hidden: the run exits with status 1
             result, error = None, f"{type(e).__name__}: {e}"
-        seconds = time.perf_counter() - start
+        seconds, cpu = time.perf_counter() - start, time.process_time() - cpu
         _say(f"Fig. {number}: {'failed' if error else 'done'} in {seconds:.1f} s")
         image = f"fig{number:02d}.png" if result is not None else None
-        outcomes.append(SceneOutcome(scene, result, image, seconds, error))
+        outcomes.append(SceneOutcome(scene, result, image, seconds, error, cpu))
     report = render(outcomes, quick=args.quick, version=__version__)
     data = {
         "out": str(out_dir),

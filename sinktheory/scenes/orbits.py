@@ -71,7 +71,37 @@ def _panel(alpha, n, shape, ranges, quick, ax, ax_map):
     orbit_panel(
         ax, ax_map, diagram, unstable, gaps, floq.resonances, cmap, floq.stable_intervals, title
     )
-    return diagram, floq, cmap
+    return diagram, floq, cmap, _coupled_mode(alpha, n, shape, ranges, quick)
+
+
+#: Betas at which the coupled normal mode's Floquet multipliers are computed, and the beta
+#: its branch starts from (inside every panel's range).
+MODE_POINTS, MODE_START = 24, -0.2
+
+
+def _coupled_mode(alpha, n, shape, ranges, quick) -> str:
+    """The transverse Floquet multipliers of the coupled normal mode at the chaos map's
+    energy (:func:`sinktheory.nnm.agreement.transverse_chart`) on MODE_POINTS betas of the
+    range holding MODE_START: its stable intervals, or why the branch was not followed."""
+    from ..errors import NumericalError
+    from ..model import Sink, Well
+    from ..nnm.agreement import reach_energy, transverse_chart
+
+    if quick:
+        return "the coupled normal mode's Floquet multipliers: not computed in a --quick preview"
+    lo, hi = next((a, b) for a, b in ranges if a < MODE_START < b)
+    betas = np.linspace(lo, hi, MODE_POINTS)
+    sink = Sink(Well(alpha, MODE_START, n, shape=shape), particles=1, mass=0.2)
+    try:
+        chart = transverse_chart(sink, 0.5, betas, start=reach_energy(sink, 0.5))
+    except NumericalError as e:  # ShootingError: the branch cannot be followed
+        return f"the coupled normal mode could not be followed to E = 0.5 ({e})"
+    stable = ", ".join(f"({a:.3f}, {b:.3f})" for a, b in chart.stable_intervals())
+    return (
+        f"the coupled normal mode's transverse Floquet multipliers (shooting at E = 0.5, "
+        f"{MODE_POINTS} betas in [{lo:.3f}, {hi:.3f}], step {betas[1] - betas[0]:.3f}): "
+        f"stable for beta in {stable or 'none'}"
+    )
 
 
 #: Two-sided margin (standard errors) of a per-beta stability call, and the chance that
@@ -104,7 +134,7 @@ def _floquet_calls(floq, betas: np.ndarray) -> np.ndarray:
     return np.where(near, 0, np.where(stable, -1, 1))
 
 
-def _floquet_claim(label, diagram, floq, cmap) -> Claim:
+def _floquet_claim(label, diagram, floq, cmap, mode: str) -> Claim:
     """The paper's Floquet prediction against the coupled system's transverse exponent,
     per beta with an error on each side; the generic-start chaos map beside it."""
     from scipy import stats
@@ -134,9 +164,9 @@ def _floquet_claim(label, diagram, floq, cmap) -> Claim:
         f"most {allowed}, the 99 % quantile of wrong calls at {100 * FALSE_CALL:.1f} % each)"
         + (f"; Floquet-stable but unstable in the coupled system at beta "
            f"{wrong.min():.3f} to {wrong.max():.3f} ({wrong.size} betas)" if wrong.size else "")
-        + f". Beside it, a different question: generic starts (the chaos map) are chaotic at "
-        f"{int(chaotic.sum())} of {chaotic.size} betas, regular exactly where Floquet-stable "
-        f"at {100 * generic:.0f} %"
+        + f"; {mode}. Beside it, a different question: generic starts (the chaos map) are "
+        f"chaotic at {int(chaotic.sum())} of {chaotic.size} betas, regular exactly where "
+        f"Floquet-stable at {100 * generic:.0f} %"
     )  # fmt: skip
     holds = N > 0 and D <= allowed
     physics = (
@@ -153,7 +183,7 @@ def _floquet_claim(label, diagram, floq, cmap) -> Claim:
 
 def _claims(panels, label_of) -> list[Claim]:
     claims = []
-    for (diagram, floq, cmap), label in zip(panels, label_of, strict=True):
+    for (diagram, floq, cmap, mode), label in zip(panels, label_of, strict=True):
         v = verdicts(cmap)
         chaotic = v["chaotic"]
         early = int((cmap.lambda1_periods.values < cmap.attrs["periods"]).sum())
@@ -176,7 +206,7 @@ def _claims(panels, label_of) -> list[Claim]:
                 "on both sides of beta = 0, as the paper says.",
             )
         )
-        claims.append(_floquet_claim(label, diagram, floq, cmap))
+        claims.append(_floquet_claim(label, diagram, floq, cmap, mode))
     return claims
 
 
