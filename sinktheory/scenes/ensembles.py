@@ -364,17 +364,17 @@ def _picture_claim(measures: list[SinkMeasures], periods: int) -> Claim:
         ""
         if falls
         else (
-            f"At {periods} periods the container with five particles still holds "
-            f"{levels[-1][0]:.3f} against {levels[0][0]:.3f} with one: more particles "
-            "lower the equilibrium level but approach it more slowly, and the paper stops "
-            "before the slow ones arrive (rows 2 and 3)."
+            f"At {periods} periods the levels ({text}) do not fall with k by 2 s.e.: more "
+            "particles lower the equilibrium level but approach it more slowly, so at the "
+            "paper's horizon each k shows a different stage of its approach (rows 2 and 3 "
+            "judge the level and the speed apart)."
         ),
     )
 
 
 def _level_claim(longs: list[LongTime]) -> Claim:
     """Split of the paper's claim: the equilibrium level falls with k."""
-    laws = ", ".join(f"{lt.label}: {lt.law:.3f}" for lt in longs)
+    laws = ", ".join(f"{lt.label}: {lt.law:.4f}" for lt in longs)
     statement = (
         "(split of the claim, level) the container's equilibrium level falls as the number "
         "of particles grows"
@@ -582,8 +582,8 @@ def _near_claim(lt: LongTime) -> Claim:
         f"{lt.law:.4f} {lt.z:+.1f} s.e. (holds within 3 s.e.){why}",
         verdict,
         f"The level is the exact law's {lt.law:.4f} (measured {lt.mean:.4f} +- {lt.se:.4f}), "
-        f"about {100 * (FIG12_LEVEL / lt.law - 1):.0f} % below the paper's reading of "
-        f"{FIG12_LEVEL:g}, which is likely read by eye off a noisy running mean.",
+        f"and the paper's {FIG12_LEVEL:g} lies {100 * (FIG12_LEVEL / lt.law - 1):.0f} % above "
+        "it.",
     )
 
 

@@ -274,7 +274,7 @@ def _touching_claim(panels, quick: bool) -> Claim:
             + ("unstable across the whole fine grid, so there is no stable interval there "
                "for a window to sit in" if set(found) == {"unstable"} else
                "stable or unstable across each fine grid, with no window at the touching")
-            + "; narrow features of the bifurcation diagrams have another cause."
+            + "; narrow features in bifurcation diagrams there would need another cause."
         ),
     )  # fmt: skip
 
