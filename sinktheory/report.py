@@ -13,7 +13,8 @@ __all__ = ["closing", "render", "SceneOutcome"]
 @dataclass
 class SceneOutcome(Result):
     """A scene as run: its result (None if it failed), image name, wall seconds, error
-    text, and CPU seconds of the process (all its threads) while it ran.
+    text, and CPU seconds while it ran (the process's threads and its finished worker
+    processes).
 
     ``as_dict()`` (what ``reproduce --json`` lists per figure): figure number, image,
     seconds, CPU seconds, error and the claims checked.

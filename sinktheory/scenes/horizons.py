@@ -34,8 +34,9 @@ __all__ = ["FACTOR", "MAX_HORIZON", "SETTLING", "Settling", "horizon",
 #: Settling times a claim's horizon must span.
 FACTOR = 3
 #: Longest horizon (periods) the report runs at paper fidelity: at the per-period cost of
-#: Fig. 8's five particles (0.03 ms per run-period on one core), 16 runs of it take about
-#: 10 s, so the main job stays within its budget (3 minutes on 2 cores).
+#: Fig. 8's five particles (0.03 ms per run-period, docs/guide/equilibrium.rst), the 24 runs
+#: of a long row cost about 15 s of CPU, so the main job stays within its budget (3
+#: minutes on 2 cores).
 MAX_HORIZON = 20000
 
 

@@ -23,7 +23,7 @@ from ..sweep.chaosmap import beta_grid, chaos_map
 from ..sweep.views import bifurcation_diagram
 from .base import FAILS, HOLDS, UNDECIDED, Claim, Scene, SceneResult
 
-__all__ = ["FALSE_CALL", "FIG11", "FIG3", "MARGIN", "transverse_calls"]
+__all__ = ["FIG11", "FIG3", "MARGIN", "false_call", "transverse_calls"]
 
 
 def _fidelity(quick: bool) -> dict:
@@ -104,9 +104,22 @@ def _coupled_mode(alpha, n, shape, ranges, quick) -> str:
     )
 
 
-#: Two-sided margin (standard errors) of a per-beta stability call, and the chance that
-#: a call at this margin is wrong when the truth lies on the threshold (normal tail).
-MARGIN, FALSE_CALL = 2.0, 0.0228
+#: Margin (standard errors) of a per-beta stability call on either side of the threshold.
+MARGIN = 2.0
+
+
+def false_call(runs: int) -> float:
+    """Chance that a call at MARGIN standard errors from ``runs`` runs is wrong when the
+    truth lies on the threshold: Student's tail with runs - 1 degrees of freedom.
+
+    Examples
+    --------
+    >>> round(false_call(6), 3), round(false_call(10**6), 4)
+    (0.051, 0.0228)
+    """
+    from scipy import stats
+
+    return float(stats.t.sf(MARGIN, runs - 1))
 
 
 def transverse_calls(cmap) -> tuple[np.ndarray, np.ndarray]:
@@ -144,7 +157,8 @@ def _floquet_claim(label, diagram, floq, cmap, mode: str) -> Claim:
     measured, thr = transverse_calls(cmap)
     both = (theory != 0) & (measured != 0)
     N, D = int(both.sum()), int((both & (theory != measured)).sum())
-    allowed = int(stats.binom.ppf(0.99, N, FALSE_CALL)) if N else 0
+    p = false_call(int(cmap.attrs["runs"]))
+    allowed = int(stats.binom.ppf(0.99, N, p)) if N else 0
     stable_txt = ", ".join(f"({a:.4f}, {b:.4f})" for a, b in floq.stable_intervals)
     wrong = betas[both & (theory == -1) & (measured == 1)]
     chaotic = verdicts(cmap)["chaotic"]
@@ -161,7 +175,7 @@ def _floquet_claim(label, diagram, floq, cmap, mode: str) -> Claim:
         f"at {int((measured == -1).sum())}, unresolved at {int((measured == 0).sum())} of "
         f"{betas.size} betas; Floquet calls {int((theory == 0).sum())} betas within a grid "
         f"step of a boundary; of the {N} betas both sides call, {D} disagree (holds if at "
-        f"most {allowed}, the 99 % quantile of wrong calls at {100 * FALSE_CALL:.1f} % each)"
+        f"most {allowed}, the 99 % quantile of wrong calls at {100 * p:.1f} % each)"
         + (f"; Floquet-stable but unstable in the coupled system at beta "
            f"{wrong.min():.3f} to {wrong.max():.3f} ({wrong.size} betas)" if wrong.size else "")
         + f"; {mode}. Beside it, a different question: generic starts (the chaos map) are "
