@@ -344,9 +344,10 @@ def _touching_claim(panels, quick: bool) -> Claim:
         HOLDS if holds else FAILS,
         "" if holds else (
             "No window at the touchings: the linear equation only touches phi = -1 (zero "
-            "width), and in the oscillating container y = 0 is "
-            + ("unstable across the whole fine grid, so there is no stable interval there "
-               "for a window to sit in" if set(found) == {"unstable"} else
+            "width); in the oscillating container, runs on the plane y = 0 are "
+            + ("transversally unstable across the whole fine grid, so there is no stable "
+               "background for a window, while the normal mode itself stays stable there "
+               "(the Floquet rows)" if set(found) == {"unstable"} else
                "stable or unstable across each fine grid, with no window at the touching")
             + "; narrow features in bifurcation diagrams there would need another cause."
         ),
