@@ -179,8 +179,9 @@ def _floquet_claim(label, floq, mode) -> Claim:
         HOLDS if not differ.size else FAILS,
         f"The coupled normal mode is transversally stable for beta in {coupled or 'none'}, "
         f"the fixed container's mode in {fixed}: "
-        + ("the container's motion moves the boundaries by less than the grid's step "
-           f"({step:.3f}), so the paper's prediction holds for the normal mode itself; the "
+        + ("with the container moving they differ nowhere farther than one grid step "
+           f"({step:.3f}) from a fixed-container boundary, so the paper's prediction holds "
+           "for the normal mode itself, up to a shift of its edges; the "
            "other motions in the plane y = 0 and generic starts are another matter (next "
            "row)." if not differ.size else
            "the container's motion moves the stability boundaries by more than the grid's "
