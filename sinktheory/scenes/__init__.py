@@ -37,23 +37,23 @@ FIGURES = tuple(sorted(MODULES))
 #: Seconds of each figure as (quick, paper) fidelity: the CPU seconds (all threads and
 #: finished worker processes) printed by ``python benchmarks/bench_reproduce.py --cold``
 #: on the project's 2-core machine (AVX-512, warm compilation cache, 2026-11-26), which
-#: was never idle that day (load average 13-15), so its wall times (728.9 s paper, 110.6 s
-#: quick for the process) say more about the other jobs.  On 2 idle cores a figure's wall
-#: time is at most about its CPU time (less where the kernels' two threads or the sweeps'
-#: two workers share the work; Fig. 9, unchanged since its idle measurement of 1.6 s,
-#: shows 2.5 CPU seconds).  In all: 10.6 s quick and 157.8 s paper.  ``reproduce``
-#: announces them before each figure as its estimate.
+#: was never idle that day: paper fidelity 145.4 s of CPU in 222.8 s wall at a load
+#: average of 6, quick 10.6 s of CPU in 57.9 s wall at 14.  On 2 idle cores a figure's
+#: wall time is at most about its CPU time (less where the kernels' two threads or the
+#: sweeps' two workers share the work: Fig. 9, unchanged since its idle measurement of
+#: 1.6 s, shows 2.4 CPU seconds).  ``reproduce`` announces them before each figure as its
+#: estimate.
 SECONDS = {
     2: (0.5, 0.5),
-    3: (4.8, 42.7),
-    4: (0.2, 0.5),
-    5: (0.1, 6.6),
+    3: (4.8, 37.8),
+    4: (0.2, 0.4),
+    5: (0.1, 6.0),
     7: (0.1, 0.1),
-    8: (0.4, 67.3),
-    9: (0.2, 2.5),
+    8: (0.4, 63.0),
+    9: (0.2, 2.4),
     10: (0.1, 0.1),  # 0.0 s printed; 0.1 s, the resolution, as the estimate
-    11: (4.1, 34.1),
-    12: (0.2, 3.5),
+    11: (4.1, 31.9),
+    12: (0.2, 3.3),
 }
 
 
