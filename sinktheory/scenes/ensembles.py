@@ -19,6 +19,10 @@ from .horizons import FACTOR, MAX_HORIZON, Settling, horizon, settling_time
 
 __all__ = [
     "ensemble",
+    "LONG_RUNS",
+    "long_time",
+    "LongTime",
+    "RESOLUTION",
     "FIG12",
     "FIG45_BETAS",
     "FIG5",
