@@ -59,6 +59,17 @@ def _first_compilations(figures) -> dict[int, list[str]]:
     return out
 
 
+def _cpu_seconds() -> float:
+    """CPU seconds of this process (all threads) and of its finished child processes (the
+    sweeps' worker pools), so that a figure's CPU time counts its workers too."""
+    try:
+        import resource
+    except ImportError:  # not on Windows: this process only
+        return time.process_time()
+    children = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return time.process_time() + children.ru_utime + children.ru_stime
+
+
 def run(args: argparse.Namespace) -> Output:
     figures = sorted(set(args.figure or FIGURES))
     unknown = [f for f in figures if f not in FIGURES]
@@ -94,16 +105,16 @@ def run(args: argparse.Namespace) -> Output:
             f"Fig. {number} ({i}/{len(figures)}): {scene.title}; about {seconds:.0f} s"
             + (f" (compiles {', '.join(new)} first)" if new else "")
         )
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), _cpu_seconds()
         try:
             result = scene.build(args.quick)
             error = None
         except NumericalError as e:  # reported, not hidden: the run exits with status 1
             result, error = None, f"{type(e).__name__}: {e}"
-        seconds = time.perf_counter() - start
+        seconds, cpu = time.perf_counter() - start, _cpu_seconds() - cpu
         _say(f"Fig. {number}: {'failed' if error else 'done'} in {seconds:.1f} s")
         image = f"fig{number:02d}.png" if result is not None else None
-        outcomes.append(SceneOutcome(scene, result, image, seconds, error))
+        outcomes.append(SceneOutcome(scene, result, image, seconds, error, cpu))
     report = render(outcomes, quick=args.quick, version=__version__)
     data = {
         "out": str(out_dir),

@@ -34,22 +34,26 @@ MODULES = {
 #: The paper's figures that have a scene, in order.
 FIGURES = tuple(sorted(MODULES))
 
-#: Wall seconds of each figure as (quick, paper) fidelity, printed by
-#: ``python benchmarks/bench_reproduce.py --fidelity both`` on the project's 2-core machine
-#: (AVX-512, load average 0.5-1.2, warm compilation cache; 2026-11-23: 13.9 s and 83.5 s in
-#: all, 18.5 s and 89.0 s for the whole process).  ``reproduce`` announces them before each
-#: figure as its estimate.
+#: Seconds of each figure as (quick, paper) fidelity: the CPU seconds (all threads and
+#: finished worker processes) printed by ``python benchmarks/bench_reproduce.py --cold``
+#: on the project's 2-core machine (AVX-512, warm compilation cache, 2026-11-26), which
+#: was never idle that day: paper fidelity 145.4 s of CPU in 222.8 s wall at a load
+#: average of 6, quick 10.6 s of CPU in 57.9 s wall at 14.  On 2 idle cores a figure's
+#: wall time is at most about its CPU time (less where the kernels' two threads or the
+#: sweeps' two workers share the work: Fig. 9, unchanged since its idle measurement of
+#: 1.6 s, shows 2.4 CPU seconds).  ``reproduce`` announces them before each figure as its
+#: estimate.
 SECONDS = {
     2: (0.5, 0.5),
-    3: (5.8, 33.6),
-    4: (0.3, 0.6),
-    5: (0.2, 0.5),
-    7: (0.1, 0.1),  # 0.0 and 0.1 s printed; 0.1 s, the resolution, as the estimate
-    8: (0.5, 4.5),
-    9: (0.2, 1.6),
-    10: (0.1, 0.1),
-    11: (6.2, 40.9),
-    12: (0.2, 1.2),
+    3: (4.8, 37.8),
+    4: (0.2, 0.4),
+    5: (0.1, 6.0),
+    7: (0.1, 0.1),
+    8: (0.4, 63.0),
+    9: (0.2, 2.4),
+    10: (0.1, 0.1),  # 0.0 s printed; 0.1 s, the resolution, as the estimate
+    11: (4.1, 31.9),
+    12: (0.2, 3.3),
 }
 
 

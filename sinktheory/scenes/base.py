@@ -8,18 +8,23 @@ from typing import Any
 
 from ..results import Result
 
-__all__ = ["Claim", "Scene", "SceneResult"]
+__all__ = ["BEYOND", "Claim", "Scene", "SceneResult"]
 
 HOLDS, FAILS, UNDECIDED = "holds", "does not hold", "cannot be decided"
+#: Prefix of a claim the report adds to the paper's (not counted as the paper's own).
+BEYOND = "(beyond the paper)"
 
 
 @dataclass(frozen=True)
 class Claim(Result):
-    """A statement of the paper, what we measured, and a plain verdict."""
+    """A statement of the paper, what we measured, a plain verdict, and (for the paper's
+    own claims) the physics behind the verdict in a sentence or two, using only numbers
+    of ``measured`` (the report's closing section collects them)."""
 
     statement: str
     measured: str
     verdict: str
+    physics: str = ""
 
     def __post_init__(self) -> None:
         if self.verdict not in (HOLDS, FAILS, UNDECIDED):

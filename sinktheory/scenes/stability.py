@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ..floquet import model_problem, scan
 from ..plot.floquet import plot_fig7
-from .base import HOLDS, UNDECIDED, Claim, Scene, SceneResult
+from .base import FAILS, HOLDS, Claim, Scene, SceneResult
 
 __all__ = ["FIG7"]
 
@@ -30,18 +30,23 @@ def _fig7(quick: bool) -> SceneResult:
                 f"n = {n}: the normal mode is stable on a beta interval and unstable outside it "
                 "(both signs of beta can be unstable)",
                 f"stable intervals (boundaries by root finding to 1e-12): {stable or 'none'}",
-                HOLDS if s.stable_intervals else UNDECIDED,
+                HOLDS if s.stable_intervals else FAILS,
+                f"Exact Floquet theory of the fixed container: stable for beta in {stable}, "
+                "unstable beyond on both sides (focusing walls too curved, or dispersing "
+                "walls).",
             )
         )
         res = ", ".join(f"{r:.10f}" for r in s.resonances)
         claims.append(
             Claim(
-                f"n = {n}: curves phi(beta) touch phi = -1 inside the stability interval, "
-                "giving narrow instability windows",
+                f"n = {n}: curves phi(beta) touch phi = -1 inside the stability interval",
                 f"phi_T = -1 (phi_half = 0) at beta = {res or 'none'}; there phi_T touches -1 "
-                "without crossing (phi_T = 2 phi_half^2 - 1 >= -1), so the window has zero width "
-                "for the linearised equation",
-                UNDECIDED,
+                "without crossing (phi_T = 2 phi_half^2 - 1 >= -1)",
+                HOLDS if s.resonances else FAILS,
+                f"The touchings exist (beta = {res}) but only touch: the half-period "
+                "symmetry of the coefficient makes phi_T = 2 phi_half^2 - 1, so the linear "
+                "equation has no instability window there; whether the full system has "
+                "one is Fig. 3's last row.",
             )
         )
     notes.append(

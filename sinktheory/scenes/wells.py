@@ -50,6 +50,8 @@ def _curvature_claim(wells: list[tuple[str, Well]]) -> Claim:
         "beta is half the curvature of the wall at y = 0 (eq. kappa, rigid limit)",
         "level-line curvature at y = 0 / c: " + "; ".join(parts),
         HOLDS if ok else FAILS,
+        "beta is the wall's curvature parameter exactly as the paper defines it: the "
+        "measured level lines bend by 2 beta at y = 0 to 1e-3.",
     )
 
 
@@ -90,6 +92,8 @@ def _fig10(quick: bool) -> SceneResult:
                 "the symmetric well is invariant under x <-> y",
                 "V(0.3, -0.7) == V(-0.7, 0.3) exactly for both wells: " + str(sym),
                 HOLDS if sym else FAILS,
+                "The symmetric well is built symmetric in x and y, and the computed potential "
+                "is, exactly.",
             ),
             Claim(
                 "beta = -0.1 gives a stadium-like well, beta = 0.1 convex scatterers",
@@ -98,6 +102,8 @@ def _fig10(quick: bool) -> SceneResult:
                 HOLDS
                 if wells[0][1].curvature_at_centre < 0 < wells[1][1].curvature_at_centre
                 else FAILS,
+                "The sign of beta sets the sign of the wall's curvature: negative beta "
+                "focuses (stadium-like), positive beta disperses.",
             ),
         ],
     )

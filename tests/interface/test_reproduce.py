@@ -14,11 +14,15 @@ def test_reproduce_writes_figures_and_report(tmp_path, capsys):
     data = json.loads(capsys.readouterr().out)
     assert [f["figure"] for f in data["figures"]] == [2, 10]
     claim = data["figures"][1]["claims"][0]  # Fig. 10: the x <-> y symmetry, exact
-    assert set(claim) == {"statement", "measured", "verdict"} and claim["verdict"] == "holds"
+    assert set(claim) == {"statement", "measured", "verdict", "physics"}
+    assert claim["verdict"] == "holds" and claim["physics"]
     for name in ("fig02.png", "fig10.png"):
         assert (out / name).read_bytes()[:4] == b"\x89PNG"
     report = (out / "report.md").read_text()
-    assert "## Fig. 2" in report and "| claim | measured | verdict |" in report
+    assert "## Fig. 2" in report and "| row | claim | measured | verdict |" in report
+    # the closing section links each of the paper's claims to its row's anchor
+    right = report.split("### Right")[1]
+    assert "[10.1](#r10-1)" in right and '<a id="r10-1"></a>10.1' in report
 
 
 def test_unknown_figure_is_refused_and_nothing_written(tmp_path, capsys):
