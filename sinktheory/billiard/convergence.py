@@ -23,7 +23,9 @@ rest, container at X = sqrt(2 E0) at rest).  Three figures per run:
 * ``energy_average``: the time average of the container energy E(jT), j = 0..P, and
   ``energy_curve`` its ensemble mean at each jT.
 
-Each with a standard error over the runs.  :meth:`Convergence.rate` fits
+Each with a standard error over the runs; lambda_1 also split into regular and chaotic
+runs (:meth:`Convergence.split`, the rule of :func:`sinktheory.chaos.verdicts.split`), so
+a mixed ensemble is seen as such.  :meth:`Convergence.rate` fits
 |q(n) - q(oo)| ~ C n^(-p) over the stiffnesses whose difference from the rigid value
 exceeds two standard errors (:func:`power_rate`).  :func:`lyapunov_chart` gives
 lambda_1(beta) for several n and the rigid limit (the chart of
@@ -37,6 +39,9 @@ Examples
 >>> c = convergence("flat", 0.5, 0.3, ns=(4, 10), settings=RunSettings(runs=2, periods=4))
 >>> c.lambda1.shape, c.rigid_lambda1.shape
 ((2, 2), (2,))
+>>> soft, rigid = c.split()  # lambda_1 of each n in regular and chaotic runs
+>>> [s.runs for s in soft], rigid.runs
+([2, 2], 2)
 >>> sorted(c.rate("mean_free_time"))
 ['C', 'fit_ns', 'limit', 'limit_stderr', 'p', 'p_stderr']
 """
@@ -45,6 +50,8 @@ from __future__ import annotations
 
 import functools
 import math
+import sys
+import time
 from dataclasses import dataclass, replace
 from typing import Any, ClassVar
 
@@ -53,6 +60,7 @@ import sympy as sp
 
 from .. import symbolic as S
 from .. import validation as val
+from ..chaos.verdicts import Split, split
 from ..errors import ParameterError
 from ..model import RunSettings, Sink, Well
 from ..results import Result
@@ -361,8 +369,21 @@ class Convergence(Result):
         """:func:`power_rate` of one of :data:`QUANTITIES` over n >= ``n_min``."""
         return power_rate(self.ns, *self.summary(quantity), n_min=n_min)
 
+    def split(self) -> tuple[list[Split], Split]:
+        """lambda_1 of each soft n, and of the rigid limit, split into regular and chaotic
+        runs (:func:`sinktheory.chaos.verdicts.split`, over the periods after the
+        transient); the starts are those of the module docstring."""
+        p = self.parameters
+        span = p["periods"] - p["transient"]
+        starts = (f"particles at rest, uniform in (-{p['box']:g}, {p['box']:g})^2 around the "
+                  "centre; container at X = sqrt(2 E0) at rest")  # fmt: skip
+        return ([split(lam, span, starts) for lam in self.lambda1],
+                split(self.rigid_lambda1, span, starts))  # fmt: skip
+
     def items(self) -> dict[str, Any]:
         out = super().items()
+        soft, rigid = self.split()
+        out["split_lambda1"] = {"soft": [s.as_dict() for s in soft], "rigid": rigid.as_dict()}
         for q in QUANTITIES:
             m, se, rm, rse = self.summary(q)
             out[f"mean_{q}"] = {"mean": m, "stderr": se, "rigid": rm, "rigid_stderr": rse}
@@ -382,10 +403,12 @@ def convergence(
     settings: RunSettings | None = None,
     transient: int = 0,
     tol: float | None = None,
+    progress: bool = False,
 ) -> Convergence:
     """:func:`measure` at every soft n of ``ns`` and at n = oo, gathered (module docstring).
 
-    Each finite n compiles its engine once (about 15 s the first time on a new machine).
+    Each finite n compiles its engine once (about 15 s the first time on a new machine);
+    ``progress`` prints a line to stderr as each stiffness is done.
     """
     settings = settings or RunSettings()
     grid = val.real_array("ns", ns, "a sequence of integers >= 1")
@@ -395,8 +418,18 @@ def convergence(
     if not soft:
         raise ParameterError("ns", ns, "at least one finite integer >= 1 (oo is always run)")
     kw = dict(particles=particles, mass=mass, gamma=gamma, settings=settings, transient=transient)
-    rigid = measure(shape, alpha, beta, math.inf, **kw)
-    runs = [measure(shape, alpha, beta, n, tol=tol, **kw) for n in soft]
+    progress = val.flag("progress", progress)
+
+    def timed(n, **extra):
+        t0 = time.perf_counter()
+        m = measure(shape, alpha, beta, n, **kw, **extra)
+        if progress:
+            print(f"  beta = {beta:+g}, n = {n}: {settings.runs} runs in "
+                  f"{time.perf_counter() - t0:.0f} s", file=sys.stderr, flush=True)  # fmt: skip
+        return m
+
+    rigid = timed(math.inf)
+    runs = [timed(n, tol=tol) for n in soft]
     return Convergence(
         np.array(soft),
         rigid.times,
@@ -410,8 +443,8 @@ def convergence(
         rigid.container_energy.mean(axis=0),
         {"shape": shape, "alpha": alpha, "beta": beta, "gamma": gamma, "particles": particles,
          "mass": mass, "energy": settings.energy, "runs": settings.runs,
-         "periods": settings.periods, "seed": settings.seed, "transient": transient,
-         "tol": tol, "hit_fraction": HIT_FRACTION},
+         "periods": settings.periods, "seed": settings.seed, "box": settings.box,
+         "transient": transient, "tol": tol, "hit_fraction": HIT_FRACTION},
     )  # fmt: skip
 
 

@@ -339,6 +339,7 @@ class _Point:
             "energy": s.energy,
             "runs": s.runs,
             "periods": s.periods,
+            "box": s.box,
             "period": 2.0 * math.pi,
         }
 
