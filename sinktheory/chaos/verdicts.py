@@ -49,7 +49,16 @@ import numpy as np
 
 from ..runstats import mean_stderr, plus_minus
 
-__all__ = ["THRESHOLD_FACTOR", "Split", "agreement", "chaotic", "split", "threshold", "verdicts"]
+__all__ = [
+    "THRESHOLD_FACTOR",
+    "Split",
+    "agreement",
+    "chaotic",
+    "map_split",
+    "split",
+    "threshold",
+    "verdicts",
+]
 
 #: The finite-time exponent of a regular orbit is ~ ln t / t; a chaotic verdict needs the
 #: mean minus two standard errors above this factor times ln t / t.
@@ -169,11 +178,34 @@ def split(lambda1, periods: float, starts: str = "") -> Split:
                  gap, starts)  # fmt: skip
 
 
+def map_split(ds) -> list[Split]:
+    """:func:`split` at every point of a chaos map (the ``chaos`` sweep kind; its per-run
+    ``lambda1_runs``), in the order of ``ds.lambda1.values.ravel()``.  Each point's span
+    is the periods its lambda_1 ran less the transient; the starts are the map's box."""
+    runs = ds.lambda1_runs.transpose(..., "run").values
+    runs = runs.reshape(-1, runs.shape[-1])
+    ran = np.broadcast_to(ds.lambda1_periods.values, ds.lambda1.shape).ravel()
+    span = ran - float(ds.attrs.get("transient", 0))
+    box = ds.attrs.get("box")
+    starts = "" if box is None else (
+        f"particles at rest, uniform in (-{box:g}, {box:g})^2 around the centre; container "
+        "at X = sqrt(2 E0) at rest")  # fmt: skip
+    return [split(r, p, starts) for r, p in zip(runs, span, strict=True)]
+
+
 def verdicts(ds) -> dict:
-    """Chaotic / regular per beta from lambda_1 and from the transverse exponent."""
+    """Chaotic / regular per beta from lambda_1 and from the transverse exponent; with the
+    per-run exponents, also the regular runs per beta (``regular_runs``, of ``runs``) and
+    where the ensemble is mixed (:func:`map_split`)."""
     periods = int(ds.attrs["periods"])
     out = {"threshold": threshold(periods),
            "chaotic": chaotic(ds.lambda1.values, ds.lambda1_se.values, periods)}  # fmt: skip
+    if "lambda1_runs" in ds and np.isfinite(ds.lambda1_runs.values).all():
+        groups = map_split(ds)
+        shape = ds.lambda1.shape
+        out["runs"] = int(ds.sizes["run"])
+        out["regular_runs"] = np.array([g.regular for g in groups]).reshape(shape)
+        out["mixed"] = np.array([g.mixed for g in groups]).reshape(shape)
     if "transverse" in ds and np.isfinite(ds.transverse.values).all():
         out["transverse_chaotic"] = chaotic(ds.transverse.values, ds.transverse_se.values, periods)
     return out

@@ -115,9 +115,19 @@ def plot_convergence(result: ChaosResult, path, **kwargs) -> None:
 
 def draw_map(ds, stable_intervals, ax, *, title: str = "") -> None:
     """lambda_1(beta) with its +-2 s.e. band, the transverse exponent, the verdict
-    threshold, and the Floquet-stable intervals of y = 0 shaded."""
+    threshold, and the Floquet-stable intervals of y = 0 shaded; betas whose runs split
+    into regular and chaotic ones (:func:`sinktheory.chaos.verdicts.map_split`) get each
+    run's lambda_1 as dots and the regular count written beside them."""
     beta = ds.beta.values
     lam, se = ds.lambda1.values, ds.lambda1_se.values
+    v = verdicts.verdicts(ds)
+    if "mixed" in v and v["mixed"].any():
+        for j in np.nonzero(v["mixed"])[0]:
+            runs = ds.lambda1_runs.values[j]
+            ax.plot(np.full(runs.size, beta[j]), runs, ".", color="C3", ms=2)
+            ax.annotate(f"{v['regular_runs'][j]}/{v['runs']} reg.", (beta[j], runs.max()),
+                        fontsize=6, ha="center", va="bottom")  # fmt: skip
+        ax.plot([], [], ".", color="C3", label=r"runs of a mixed $\beta$ (regular/runs)")
     for a, b in stable_intervals:
         ax.axvspan(a, b, color="tab:green", alpha=0.15, lw=0)
     ax.fill_between(beta, lam - 2 * se, lam + 2 * se, color="C0", alpha=0.3, lw=0)

@@ -85,3 +85,34 @@ def test_plots_draw_each_group_of_a_mixed_ensemble():
     labels = [t.get_text() for t in convergence_figure(res).axes[0].get_legend().get_texts()]
     assert any("2 regular runs of 4" in t for t in labels)
     assert any("2 chaotic runs of 4" in t for t in labels)
+
+
+def test_chaos_map_splits_each_beta():
+    """A synthetic map: per-run exponents of a mixed, a regular and a chaotic beta; the
+    span is the periods each beta ran less the transient."""
+    import xarray as xr
+    from matplotlib.figure import Figure
+
+    from sinktheory.chaos.verdicts import map_split, verdicts
+    from sinktheory.plot.chaos import draw_map
+
+    cut = threshold(90)  # 100 periods, transient 10
+    runs = [[0.5 * cut, 0.9 * cut, 0.4, 0.5], [0.5 * cut] * 4, [0.3, 0.4, 0.5, 0.6]]
+    ds = xr.Dataset(
+        {
+            "lambda1": ("beta", np.mean(runs, axis=1)),
+            "lambda1_se": ("beta", np.std(runs, axis=1, ddof=1) / 2),
+            "lambda1_runs": (("beta", "run"), runs),
+            "lambda1_periods": ("beta", [100.0] * 3),
+        },
+        coords={"beta": [-0.3, 0.0, 0.3], "run": np.arange(4)},
+        attrs={"periods": 100, "transient": 10, "box": 0.01},
+    )
+    groups = map_split(ds)
+    assert [g.regular for g in groups] == [2, 4, 0] and groups[0].threshold == cut
+    assert groups[0].chaotic_mean == pytest.approx(0.45) and "(-0.01, 0.01)^2" in groups[0].starts
+    v = verdicts(ds)
+    assert v["regular_runs"].tolist() == [2, 4, 0] and v["mixed"].tolist() == [True, False, False]
+    ax = Figure().subplots()
+    draw_map(ds, [], ax)
+    assert [t.get_text() for t in ax.texts] == ["2/4 reg."]
