@@ -15,12 +15,15 @@ The table's runs per well (:data:`WELLS`) are what resolves the gaps it states: 
 beta = 0.3 the soft and rigid lambda_1 differ by 0.05-0.1 with a per-run spread of about
 0.35, so 256 runs (standard error about 0.02).  The chart takes about four minutes on two
 cores, the table about 40 (plus about 15 s of compilation per new n the first time);
---quick takes seconds and writes nothing unless --out is given.
+--quick takes seconds and writes nothing unless --out is given; --cache DIR keeps the
+ensembles, so a rerun only rewrites the tables.
 """
 
 from __future__ import annotations
 
 import argparse
+import dataclasses
+import json
 import sys
 import time
 from pathlib import Path
@@ -32,7 +35,13 @@ sys.path.insert(0, str(HERE.parents[1] / "benchmarks"))
 
 from machine import describe  # noqa: E402
 
-from sinktheory.billiard.convergence import NS, QUANTITIES, convergence, lyapunov_chart  # noqa: E402
+from sinktheory.billiard.convergence import (  # noqa: E402
+    NS,
+    QUANTITIES,
+    Convergence,
+    convergence,
+    lyapunov_chart,
+)
 from sinktheory.chaos.verdicts import chaotic, threshold  # noqa: E402
 from sinktheory.floquet import model_problem, scan  # noqa: E402
 from sinktheory.model import RunSettings  # noqa: E402
@@ -62,6 +71,9 @@ def _verdict(mean: float, se: float, periods: int) -> str:
 def _rate(r: dict) -> str:
     """p +- its standard error and the n it was fitted over, or why there is none."""
     used = ", ".join(map(str, r["fit_ns"]))
+    if r.get("below") and r.get("above"):
+        below, above = (", ".join(map(str, r[k])) for k in ("below", "above"))
+        return f"-- (crosses the limit: below at n = {below}, above at n = {above})"
     if not np.isfinite(r["p"]):
         return f"-- (beyond two s.e.: n = {used or 'none'})"
     se = f" +- {r['p_stderr']:.2f}" if np.isfinite(r["p_stderr"]) else ""
@@ -164,7 +176,27 @@ def _split_rows(beta: float, c) -> list[list[str]]:
     return rows
 
 
-def table_part(f: dict, out: Path | None, machine: str) -> None:
+def _convergence(beta: float, runs: int, periods: int, ns, cache: Path | None):
+    """One well's :func:`convergence`, kept in (and taken from) ``cache`` when given: an
+    .npz per set-up, so that rewriting the tables does not rerun the ensembles."""
+    fields = [f.name for f in dataclasses.fields(Convergence)]
+    key = f"flat_{ALPHA:g}_{beta:+g}_{runs}x{periods}_n{'-'.join(map(str, ns))}.npz"
+    if cache is not None and (cache / key).exists():
+        with np.load(cache / key) as z:
+            print(f"beta = {beta:+g}: taken from {cache / key}", flush=True)
+            data = {k: z[k] for k in fields if k != "parameters"}
+            return Convergence(**data, parameters=json.loads(str(z["parameters"])))
+    settings = RunSettings(runs=runs, periods=periods)
+    c = convergence("flat", ALPHA, beta, ns=ns, transient=periods // 10, settings=settings,
+                    progress=True)  # fmt: skip
+    if cache is not None:
+        cache.mkdir(parents=True, exist_ok=True)
+        arrays = {k: getattr(c, k) for k in fields if k != "parameters"}
+        np.savez(cache / key, **arrays, parameters=json.dumps(c.parameters))
+    return c
+
+
+def table_part(f: dict, out: Path | None, machine: str, cache: Path | None = None) -> None:
     """Soft walls against the rigid limit at three wells: convergence_n.png/.inc."""
     start = time.perf_counter()
     periods = f["periods"]
@@ -173,9 +205,7 @@ def table_part(f: dict, out: Path | None, machine: str) -> None:
         runs = max(2, runs * f["scale"])
         counts.append(f"{runs} runs at beta = {beta:+g}")
         t0 = time.perf_counter()
-        settings = RunSettings(runs=runs, periods=periods)
-        c = convergence("flat", ALPHA, beta, ns=f["ns"], transient=periods // 10,
-                        settings=settings, progress=True)  # fmt: skip
+        c = _convergence(beta, runs, periods, f["ns"], cache)
         results.append(c)
         print(f"beta = {beta:+g}: {runs} runs, {time.perf_counter() - t0:.0f} s", flush=True)
         for q in QUANTITIES:
@@ -238,6 +268,7 @@ def main() -> None:
     ap.add_argument("--part", choices=("chart", "table", "all"), default="all",
                     help="the lambda_1(beta) chart, the table in n, or both")  # fmt: skip
     ap.add_argument("--out", help="directory for the PNGs and the .inc (default: this folder)")
+    ap.add_argument("--cache", help="keep each well's ensembles in DIR (rerun: taken from it)")
     args = ap.parse_args()
     f = QUICK if args.quick else FULL
     out = Path(args.out) if args.out else (None if args.quick else HERE)
@@ -246,7 +277,7 @@ def main() -> None:
     if args.part in ("chart", "all"):
         chart_part(f, out, machine)
     if args.part in ("table", "all"):
-        table_part(f, out, machine)
+        table_part(f, out, machine, Path(args.cache) if args.cache else None)
 
 
 if __name__ == "__main__":

@@ -293,7 +293,10 @@ def power_rate(ns, means, ses, limit: float, limit_se: float, n_min: float = 1) 
     difference d exceeds two standard errors
     s = sqrt(se(n)^2 + se(oo)^2) enter (the others are within noise of the limit); each
     log|d| has the weight (d / s)^2.  Returns p, its standard error (from the weights; nan
-    with two points, which fit exactly), C, the stiffnesses used and the limit.
+    with two points, which fit exactly), C, the stiffnesses used, the limit, and
+    ``below`` / ``above``: the resolved stiffnesses on each side of the limit.  When
+    those lie on both sides the approach is not a power law (q crosses the limit and
+    overshoots it): p, its error and C are then nan.
 
     Examples
     --------
@@ -302,14 +305,20 @@ def power_rate(ns, means, ses, limit: float, limit_se: float, n_min: float = 1) 
     (1.0, [10, 20, 40])
     >>> math.isnan(power_rate([10, 20], [1.0, 1.0], [0.1, 0.1], 1.0, 0.1)["p"])
     True
+    >>> r = power_rate([10, 20, 100], [0.9, 0.99, 1.1], [1e-3] * 3, 1.0, 0.0)  # crosses
+    >>> math.isnan(r["p"]), r["below"], r["above"]
+    (True, [10, 20], [100])
     """
     ns = np.asarray(ns, float)
     d = np.abs(np.asarray(means, float) - limit)
     s = np.sqrt(np.asarray(ses, float) ** 2 + limit_se**2)
     use = np.isfinite(d) & (d > 2 * s) & (ns >= n_min)
+    side = np.asarray(means, float) - limit
     out: dict[str, Any] = {"limit": limit, "limit_stderr": limit_se,
-                           "fit_ns": [int(n) for n in ns[use]]}  # fmt: skip
-    if use.sum() < 2:
+                           "fit_ns": [int(n) for n in ns[use]],
+                           "below": [int(n) for n in ns[use & (side < 0)]],
+                           "above": [int(n) for n in ns[use & (side > 0)]]}  # fmt: skip
+    if use.sum() < 2 or (out["below"] and out["above"]):
         return out | {"p": math.nan, "p_stderr": math.nan, "C": math.nan}
     A = np.column_stack([np.ones(use.sum()), -np.log(ns[use])])
     w = np.where(s[use] > 0, (d[use] / np.where(s[use] > 0, s[use], 1)) ** 2, 1e12)
