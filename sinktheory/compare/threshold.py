@@ -159,7 +159,8 @@ def full_exchange_energy(mu: float, k3: float) -> tuple[float, float]:
 
 def fold_energy(mu: float, k3: float, damping: float) -> float:
     """Container energy E = |phi_1|^2 / 2 at the lower fold of the damped slow invariant
-    manifold (module docstring): the largest |phi_1| of its particle-localised branch.
+    manifold (module docstring): the largest container amplitude on its particle-localised
+    branch.
 
     Raises ParameterError when the manifold has no fold (c >= mu / sqrt(3)).
 
