@@ -104,13 +104,17 @@ def chart_part(f: dict, out: Path | None, machine: str) -> None:
     stable = scan(model_problem(ALPHA, 10), *RANGE, 400).stable_intervals
     print(f"chart: {time.perf_counter() - start:.0f} s", flush=True)
     chart_rows = []
+
+    def mark(count):  # regular runs of a point, where there are any
+        return f" ({count} of {runs} regular)" if count else ""
+
     for j, b in enumerate(betas):
         cells = [f"{b:+.3f}"]
         for i in range(len(CHART_NS)):
             m, se = chart.lambda1[i, j], chart.lambda1_se[i, j]
-            cells.append(f"{_pm(m, se)} {_verdict(m, se, periods)}")
+            cells.append(f"{_pm(m, se)} {_verdict(m, se, periods)}{mark(chart.regular[i, j])}")
         m, se = chart.rigid_lambda1[j], chart.rigid_lambda1_se[j]
-        cells.append(f"{_pm(m, se)} {_verdict(m, se, periods)}")
+        cells.append(f"{_pm(m, se)} {_verdict(m, se, periods)}{mark(chart.rigid_regular[j])}")
         chart_rows.append(cells)
         print("  ".join(cells), flush=True)
     pooled_rows = []
@@ -142,7 +146,11 @@ def chart_part(f: dict, out: Path | None, machine: str) -> None:
         "",
         f"Chart: {runs} runs x {periods} periods per point, lambda_1 after a transient of "
         f"{transient} T; C: chaotic (mean - 2 s.e. > 3 ln t / t = {threshold(periods):.3f}), "
-        "R: regular.  Floquet-stable y = 0 at n = 10: "
+        "R: regular; a point some of whose runs are regular (lambda_1 <= 3 ln t / t over "
+        f"the {periods - transient} periods after the transient) says how many: "
+        f"{int(chart.regular.sum() + chart.rigid_regular.sum())} of "
+        f"{runs * (chart.regular.size + chart.rigid_regular.size)} runs are.  "
+        "Floquet-stable y = 0 at n = 10: "
         + (", ".join(f"({a:.3f}, {b:.3f})" for a, b in stable) or "none")
         + ".",
         "",

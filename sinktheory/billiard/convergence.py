@@ -43,7 +43,7 @@ Examples
 >>> [s.runs for s in soft], rigid.runs
 ([2, 2], 2)
 >>> sorted(c.rate("mean_free_time"))
-['C', 'fit_ns', 'limit', 'limit_stderr', 'p', 'p_stderr']
+['C', 'above', 'below', 'fit_ns', 'limit', 'limit_stderr', 'p', 'p_stderr']
 """
 
 from __future__ import annotations
@@ -460,13 +460,16 @@ def convergence(
 @dataclass(frozen=True)
 class LyapunovChart(Result):
     """lambda_1(beta) for soft stiffnesses ``ns`` and the rigid limit: means and standard
-    errors over the runs (rows of ``lambda1`` follow ``ns``)."""
+    errors over the runs (rows of ``lambda1`` follow ``ns``), and how many of the runs are
+    regular (:func:`sinktheory.chaos.verdicts.split`), so that a mixed point is seen."""
 
     DIMS: ClassVar = {
         "lambda1": ("n", "beta"),
         "lambda1_se": ("n", "beta"),
+        "regular": ("n", "beta"),
         "rigid_lambda1": ("beta",),
         "rigid_lambda1_se": ("beta",),
+        "rigid_regular": ("beta",),
     }
     COORDS: ClassVar = {"ns": "n", "betas": "beta"}
 
@@ -474,8 +477,10 @@ class LyapunovChart(Result):
     betas: np.ndarray
     lambda1: np.ndarray
     lambda1_se: np.ndarray
+    regular: np.ndarray
     rigid_lambda1: np.ndarray
     rigid_lambda1_se: np.ndarray
+    rigid_regular: np.ndarray
     parameters: dict
 
     def pooled_rate(self, lo: float = -math.inf, hi: float = math.inf) -> dict[str, Any]:
@@ -516,8 +521,8 @@ def lyapunov_chart(
     Examples
     --------
     >>> c = lyapunov_chart(0.5, [-0.3, 0.3], ns=(4,), settings=RunSettings(runs=2, periods=3))
-    >>> c.lambda1.shape, c.rigid_lambda1.shape
-    ((1, 2), (2,))
+    >>> c.lambda1.shape, c.rigid_lambda1.shape, c.regular.shape
+    ((1, 2), (2,), (1, 2))
     """
     from ..chaos import chaos_batch
     from ..chaos.sink import start_energy
@@ -534,21 +539,27 @@ def lyapunov_chart(
                                  maximum=max(0, settings.periods - 1))  # fmt: skip
     lam = np.zeros((len(soft), grid.size))
     lam_se = np.zeros_like(lam)
+    regular = np.zeros(lam.shape, dtype=np.int64)
     for i, n in enumerate(soft):
         sinks = [Sink(Well(alpha, b, n, shape=shape), particles, mass) for b in grid]
         dt = min(resolve_step(s, start_energy(s, settings))[1] for s in sinks)
         results = chaos_batch(sinks, [settings] * len(sinks), dt=dt, progress=False)
         for j, res in enumerate(results):
-            m, se = replace(res, transient=transient).mean("lambda1")
+            res = replace(res, transient=transient)
+            m, se = res.mean("lambda1")
             lam[i, j], lam_se[i, j] = float(m), float(se)
+            regular[i, j] = res.split().regular
     rigid = [
         measure(shape, alpha, b, math.inf, particles=particles, mass=mass, settings=settings,
-                transient=transient).as_dict()["mean_lambda1"]
+                transient=transient).lambda1
         for b in grid
     ]  # fmt: skip
+    span = settings.periods - transient
     return LyapunovChart(
-        np.array(soft), grid, lam, lam_se,
-        np.array([r["mean"] for r in rigid]), np.array([r["stderr"] for r in rigid]),
+        np.array(soft), grid, lam, lam_se, regular,
+        np.array([r.mean() for r in rigid]),
+        np.array([ensemble_mean(r[:, None])[1][0] for r in rigid]),
+        np.array([split(r, span).regular for r in rigid]),
         {"shape": shape, "alpha": alpha, "particles": particles, "mass": mass,
          "energy": settings.energy, "runs": settings.runs, "periods": settings.periods,
          "seed": settings.seed, "transient": transient},
