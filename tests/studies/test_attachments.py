@@ -176,6 +176,14 @@ def test_cubic_nes_has_an_energy_threshold():
     assert low.fraction_dissipated() == pytest.approx(floor, rel=0.03)
     assert np.all(below < floor + 0.04)
     assert np.all(above > 2.5 * floor)
+    # a longer window captures below the threshold: at 0.29 of it, c = 0.002, the floor
+    # 1 - exp(-c t) is 0.22 over 20 periods and 0.72 over 100; the NES takes 0.03-0.06
+    # more over 20 and 0.2 more (0.93, docs/guide/nes_threshold.inc) over 100
+    for periods, low_gain, high_gain in ((20, 0.0, 0.1), (100, 0.15, 0.3)):
+        floor = 1 - math.exp(-0.002 * periods * T)
+        got = impulse_response(att, 1.16e-5, damping=0.002, periods=periods, runs=2, tol=1e-6)
+        gain = got.fraction_dissipated() - floor
+        assert np.all((low_gain < gain) & (gain < high_gain)), (periods, gain)
 
 
 # --------------------------------------------------------------------------- (e) the line
