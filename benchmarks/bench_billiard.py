@@ -16,7 +16,13 @@ Prints (with the machine description):
    (``simulate``, tol 1e-8) at n = 4, 10, 20, 50 beside the rigid limit, same start
    (flat well, alpha 0.5, beta 0.3, k = 5, m = 0.2, 25 runs; each new n compiles its
    engine once, about a minute);
-5. with --plot, a PNG of item 3.
+5. with --islands, the fixed-container rows of item 3 split into regular and chaotic runs
+   (:func:`sinktheory.chaos.verdicts.split`) from two start distributions, the package's
+   (positions uniform in the start box (-0.01, 0.01)^2 around the centre, seeded random
+   directions) and positions uniform over the whole table (same directions): the fraction
+   of regular runs and lambda_1 of each group, 200 runs x 300 periods per beta (about a
+   minute); the moving container (k = 5) split at 25 runs x 300 periods;
+6. with --plot, a PNG of item 3.
 """
 
 from __future__ import annotations
@@ -30,7 +36,9 @@ import time
 import numpy as np
 from scipy.special import zeta
 
-from sinktheory.billiard import billiard, simulate_billiard, sinai_table
+from sinktheory.billiard import billiard, rigid_table, simulate_billiard, sinai_table
+from sinktheory.billiard.run import start_directions
+from sinktheory.chaos.verdicts import split
 from sinktheory.model import RunSettings
 
 
@@ -138,6 +146,52 @@ def soft_against_rigid() -> None:
     )
 
 
+def uniform_positions(table, runs: int, seed: int = 0) -> np.ndarray:
+    """(runs, 1, 2) positions uniform over the table (rejection from its bounding box)."""
+    rng = np.random.default_rng([seed, 33])
+    bx, by = table.box
+    out = []
+    while len(out) < runs:
+        x, y = rng.uniform(-bx, bx), rng.uniform(-by, by)
+        if table.contains(x, y):
+            out.append((x, y))
+    return np.array(out)[:, None]
+
+
+def _groups(s) -> str:
+    def pm(m, se):
+        return "--" if np.isnan(m) else f"{m:.4f} +- {se:.4f}"
+
+    return (
+        f"{s.regular:4d}/{s.runs} regular ({100 * s.fraction:4.1f} +- {100 * s.fraction_se:.1f} "
+        f"%)  regular {pm(s.regular_mean, s.regular_se)}  chaotic "
+        f"{pm(s.chaotic_mean, s.chaotic_se)}  gap {s.gap[0]:.3g} .. {s.gap[1]:.3g}"
+    )
+
+
+def islands(quick: bool) -> None:
+    runs, periods = (40, 150) if quick else (200, 300)
+    betas = (-0.45, -0.3, -0.1, 0.0, 0.1, 0.3, 0.45)
+    cut = split([1.0], periods).threshold
+    print(f"  fixed container, one particle, speed sqrt(2 E0 / m) = 2.236; {runs} runs x "
+          f"{periods} periods; regular: lambda_1 <= 3 ln t / t = {cut:.4f}")  # fmt: skip
+    for b in betas:
+        s = RunSettings(runs=runs, periods=periods)
+        box = billiard("flat", 0.5, b, particles=1, settings=s, fixed=True, lyapunov=True)
+        table = rigid_table("flat", 0.5, b)
+        speed = math.sqrt(2 * s.energy / 0.2)
+        whole = simulate_billiard(table, uniform_positions(table, runs),
+                                  speed * start_directions(s, 1), periods=periods,
+                                  lyapunov=True)  # fmt: skip
+        print(f"  {b:+.2f}  box 0.01: {_groups(split(box.lambda1, periods))}", flush=True)
+        print(f"         table:    {_groups(split(whole.lambda1, periods))}", flush=True)
+    print("  moving container, k = 5, m = 0.2, E0 = 0.5 (two trajectories)")
+    for b in (-0.45, -0.3, -0.1, 0.0):
+        s = RunSettings(runs=8 if quick else 25, periods=periods)
+        m = billiard("flat", 0.5, b, particles=5, settings=s, lyapunov=True)
+        print(f"  {b:+.2f}  box 0.01: {_groups(m.split())}", flush=True)
+
+
 def main() -> None:
     from machine import describe  # benchmarks/ is on sys.path when run as a script
 
@@ -145,8 +199,14 @@ def main() -> None:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--quick", action="store_true", help="fewer runs (a minute)")
     p.add_argument("--soft", action="store_true", help="also soft-wall ensembles (minutes)")
+    p.add_argument("--islands", action="store_true",
+                   help="only item 5: regular and chaotic runs of the fixed table")  # fmt: skip
     p.add_argument("--plot", help="write the lambda_1(beta) chart to FILE.png")
     a = p.parse_args()
+    if a.islands:
+        print("5. regular and chaotic runs, flat rigid table, alpha = 0.5, two start distributions")
+        islands(a.quick)
+        return
     print(f"Machine: {machine()}")
     print("1. speed")
     speed(a.quick)

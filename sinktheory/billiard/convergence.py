@@ -23,7 +23,9 @@ rest, container at X = sqrt(2 E0) at rest).  Three figures per run:
 * ``energy_average``: the time average of the container energy E(jT), j = 0..P, and
   ``energy_curve`` its ensemble mean at each jT.
 
-Each with a standard error over the runs.  :meth:`Convergence.rate` fits
+Each with a standard error over the runs; lambda_1 also split into regular and chaotic
+runs (:meth:`Convergence.split`, the rule of :func:`sinktheory.chaos.verdicts.split`), so
+a mixed ensemble is seen as such.  :meth:`Convergence.rate` fits
 |q(n) - q(oo)| ~ C n^(-p) over the stiffnesses whose difference from the rigid value
 exceeds two standard errors (:func:`power_rate`).  :func:`lyapunov_chart` gives
 lambda_1(beta) for several n and the rigid limit (the chart of
@@ -37,14 +39,19 @@ Examples
 >>> c = convergence("flat", 0.5, 0.3, ns=(4, 10), settings=RunSettings(runs=2, periods=4))
 >>> c.lambda1.shape, c.rigid_lambda1.shape
 ((2, 2), (2,))
+>>> soft, rigid = c.split()  # lambda_1 of each n in regular and chaotic runs
+>>> [s.runs for s in soft], rigid.runs
+([2, 2], 2)
 >>> sorted(c.rate("mean_free_time"))
-['C', 'fit_ns', 'limit', 'limit_stderr', 'p', 'p_stderr']
+['C', 'above', 'below', 'fit_ns', 'limit', 'limit_stderr', 'p', 'p_stderr']
 """
 
 from __future__ import annotations
 
 import functools
 import math
+import sys
+import time
 from dataclasses import dataclass, replace
 from typing import Any, ClassVar
 
@@ -53,6 +60,7 @@ import sympy as sp
 
 from .. import symbolic as S
 from .. import validation as val
+from ..chaos.verdicts import Split, split
 from ..errors import ParameterError
 from ..model import RunSettings, Sink, Well
 from ..results import Result
@@ -285,7 +293,10 @@ def power_rate(ns, means, ses, limit: float, limit_se: float, n_min: float = 1) 
     difference d exceeds two standard errors
     s = sqrt(se(n)^2 + se(oo)^2) enter (the others are within noise of the limit); each
     log|d| has the weight (d / s)^2.  Returns p, its standard error (from the weights; nan
-    with two points, which fit exactly), C, the stiffnesses used and the limit.
+    with two points, which fit exactly), C, the stiffnesses used, the limit, and
+    ``below`` / ``above``: the resolved stiffnesses on each side of the limit.  When
+    those lie on both sides the approach is not a power law (q crosses the limit and
+    overshoots it): p, its error and C are then nan.
 
     Examples
     --------
@@ -294,14 +305,20 @@ def power_rate(ns, means, ses, limit: float, limit_se: float, n_min: float = 1) 
     (1.0, [10, 20, 40])
     >>> math.isnan(power_rate([10, 20], [1.0, 1.0], [0.1, 0.1], 1.0, 0.1)["p"])
     True
+    >>> r = power_rate([10, 20, 100], [0.9, 0.99, 1.1], [1e-3] * 3, 1.0, 0.0)  # crosses
+    >>> math.isnan(r["p"]), r["below"], r["above"]
+    (True, [10, 20], [100])
     """
     ns = np.asarray(ns, float)
     d = np.abs(np.asarray(means, float) - limit)
     s = np.sqrt(np.asarray(ses, float) ** 2 + limit_se**2)
     use = np.isfinite(d) & (d > 2 * s) & (ns >= n_min)
+    side = np.asarray(means, float) - limit
     out: dict[str, Any] = {"limit": limit, "limit_stderr": limit_se,
-                           "fit_ns": [int(n) for n in ns[use]]}  # fmt: skip
-    if use.sum() < 2:
+                           "fit_ns": [int(n) for n in ns[use]],
+                           "below": [int(n) for n in ns[use & (side < 0)]],
+                           "above": [int(n) for n in ns[use & (side > 0)]]}  # fmt: skip
+    if use.sum() < 2 or (out["below"] and out["above"]):
         return out | {"p": math.nan, "p_stderr": math.nan, "C": math.nan}
     A = np.column_stack([np.ones(use.sum()), -np.log(ns[use])])
     w = np.where(s[use] > 0, (d[use] / np.where(s[use] > 0, s[use], 1)) ** 2, 1e12)
@@ -361,8 +378,21 @@ class Convergence(Result):
         """:func:`power_rate` of one of :data:`QUANTITIES` over n >= ``n_min``."""
         return power_rate(self.ns, *self.summary(quantity), n_min=n_min)
 
+    def split(self) -> tuple[list[Split], Split]:
+        """lambda_1 of each soft n, and of the rigid limit, split into regular and chaotic
+        runs (:func:`sinktheory.chaos.verdicts.split`, over the periods after the
+        transient); the starts are those of the module docstring."""
+        p = self.parameters
+        span = p["periods"] - p["transient"]
+        starts = (f"particles at rest, uniform in (-{p['box']:g}, {p['box']:g})^2 around the "
+                  "centre; container at X = sqrt(2 E0) at rest")  # fmt: skip
+        return ([split(lam, span, starts) for lam in self.lambda1],
+                split(self.rigid_lambda1, span, starts))  # fmt: skip
+
     def items(self) -> dict[str, Any]:
         out = super().items()
+        soft, rigid = self.split()
+        out["split_lambda1"] = {"soft": [s.as_dict() for s in soft], "rigid": rigid.as_dict()}
         for q in QUANTITIES:
             m, se, rm, rse = self.summary(q)
             out[f"mean_{q}"] = {"mean": m, "stderr": se, "rigid": rm, "rigid_stderr": rse}
@@ -382,10 +412,12 @@ def convergence(
     settings: RunSettings | None = None,
     transient: int = 0,
     tol: float | None = None,
+    progress: bool = False,
 ) -> Convergence:
     """:func:`measure` at every soft n of ``ns`` and at n = oo, gathered (module docstring).
 
-    Each finite n compiles its engine once (about 15 s the first time on a new machine).
+    Each finite n compiles its engine once (about 15 s the first time on a new machine);
+    ``progress`` prints a line to stderr as each stiffness is done.
     """
     settings = settings or RunSettings()
     grid = val.real_array("ns", ns, "a sequence of integers >= 1")
@@ -395,8 +427,18 @@ def convergence(
     if not soft:
         raise ParameterError("ns", ns, "at least one finite integer >= 1 (oo is always run)")
     kw = dict(particles=particles, mass=mass, gamma=gamma, settings=settings, transient=transient)
-    rigid = measure(shape, alpha, beta, math.inf, **kw)
-    runs = [measure(shape, alpha, beta, n, tol=tol, **kw) for n in soft]
+    progress = val.flag("progress", progress)
+
+    def timed(n, **extra):
+        t0 = time.perf_counter()
+        m = measure(shape, alpha, beta, n, **kw, **extra)
+        if progress:
+            print(f"  beta = {beta:+g}, n = {n}: {settings.runs} runs in "
+                  f"{time.perf_counter() - t0:.0f} s", file=sys.stderr, flush=True)  # fmt: skip
+        return m
+
+    rigid = timed(math.inf)
+    runs = [timed(n, tol=tol) for n in soft]
     return Convergence(
         np.array(soft),
         rigid.times,
@@ -410,21 +452,24 @@ def convergence(
         rigid.container_energy.mean(axis=0),
         {"shape": shape, "alpha": alpha, "beta": beta, "gamma": gamma, "particles": particles,
          "mass": mass, "energy": settings.container_energy, "runs": settings.runs,
-         "periods": settings.periods, "seed": settings.seed, "transient": transient,
-         "tol": tol, "hit_fraction": HIT_FRACTION},
+         "periods": settings.periods, "seed": settings.seed, "box": settings.box,
+         "transient": transient, "tol": tol, "hit_fraction": HIT_FRACTION},
     )  # fmt: skip
 
 
 @dataclass(frozen=True)
 class LyapunovChart(Result):
     """lambda_1(beta) for soft stiffnesses ``ns`` and the rigid limit: means and standard
-    errors over the runs (rows of ``lambda1`` follow ``ns``)."""
+    errors over the runs (rows of ``lambda1`` follow ``ns``), and how many of the runs are
+    regular (:func:`sinktheory.chaos.verdicts.split`), so that a mixed point is seen."""
 
     DIMS: ClassVar = {
         "lambda1": ("n", "beta"),
         "lambda1_se": ("n", "beta"),
+        "regular": ("n", "beta"),
         "rigid_lambda1": ("beta",),
         "rigid_lambda1_se": ("beta",),
+        "rigid_regular": ("beta",),
     }
     COORDS: ClassVar = {"ns": "n", "betas": "beta"}
 
@@ -432,8 +477,10 @@ class LyapunovChart(Result):
     betas: np.ndarray
     lambda1: np.ndarray
     lambda1_se: np.ndarray
+    regular: np.ndarray
     rigid_lambda1: np.ndarray
     rigid_lambda1_se: np.ndarray
+    rigid_regular: np.ndarray
     parameters: dict
 
     def pooled_rate(self, lo: float = -math.inf, hi: float = math.inf) -> dict[str, Any]:
@@ -474,8 +521,8 @@ def lyapunov_chart(
     Examples
     --------
     >>> c = lyapunov_chart(0.5, [-0.3, 0.3], ns=(4,), settings=RunSettings(runs=2, periods=3))
-    >>> c.lambda1.shape, c.rigid_lambda1.shape
-    ((1, 2), (2,))
+    >>> c.lambda1.shape, c.rigid_lambda1.shape, c.regular.shape
+    ((1, 2), (2,), (1, 2))
     """
     from ..chaos import chaos_batch
     from ..chaos.sink import start_energy
@@ -492,21 +539,27 @@ def lyapunov_chart(
                                  maximum=max(0, settings.periods - 1))  # fmt: skip
     lam = np.zeros((len(soft), grid.size))
     lam_se = np.zeros_like(lam)
+    regular = np.zeros(lam.shape, dtype=np.int64)
     for i, n in enumerate(soft):
         sinks = [Sink(Well(alpha, b, n, shape=shape), particles, mass) for b in grid]
         dt = min(resolve_step(s, start_energy(s, settings))[1] for s in sinks)
         results = chaos_batch(sinks, [settings] * len(sinks), dt=dt, progress=False)
         for j, res in enumerate(results):
-            m, se = replace(res, transient=transient).mean("lambda1")
+            res = replace(res, transient=transient)
+            m, se = res.mean("lambda1")
             lam[i, j], lam_se[i, j] = float(m), float(se)
+            regular[i, j] = res.split().regular
     rigid = [
         measure(shape, alpha, b, math.inf, particles=particles, mass=mass, settings=settings,
-                transient=transient).as_dict()["mean_lambda1"]
+                transient=transient).lambda1
         for b in grid
     ]  # fmt: skip
+    span = settings.periods - transient
     return LyapunovChart(
-        np.array(soft), grid, lam, lam_se,
-        np.array([r["mean"] for r in rigid]), np.array([r["stderr"] for r in rigid]),
+        np.array(soft), grid, lam, lam_se, regular,
+        np.array([r.mean() for r in rigid]),
+        np.array([ensemble_mean(r[:, None])[1][0] for r in rigid]),
+        np.array([split(r, span).regular for r in rigid]),
         {"shape": shape, "alpha": alpha, "particles": particles, "mass": mass,
          "energy": settings.container_energy, "runs": settings.runs, "periods": settings.periods,
          "seed": settings.seed, "transient": transient},

@@ -14,7 +14,11 @@ velocities absolute (as in :mod:`sinktheory.layout`).
   with energy E0 / k in a seeded random direction.  lambda_1 by the billiard tangent map
   (exact linearisation of flights and reflections, renormalised every period).
 
-Exponents are per unit time; the per-collision exponent is also given.
+Exponents are per unit time; the per-collision exponent is also given.  Tables with
+islands (the flat table with focusing walls, beta < 0, fixed container) give regular and
+chaotic runs side by side: :meth:`BilliardResult.split` reports the two groups (the rule
+of :func:`sinktheory.chaos.verdicts.split`) and the start distribution that set their
+proportion.
 
 Examples
 --------
@@ -32,6 +36,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ..chaos.verdicts import Split, split
 from ..ensemble import random_positions
 from ..errors import BracketError, EnergyDriftError, ParameterError
 from ..model import MAX_PERIODS, RunSettings, Sink, Well
@@ -156,6 +161,23 @@ class BilliardResult(Result):
         np.multiply(self.lambda1, mft, out=out, where=np.isfinite(mft))
         return out
 
+    @property
+    def starts(self) -> str:
+        """The start distribution, in words (from :func:`billiard`'s parameters)."""
+        p = self.parameters
+        if "box" not in p:
+            return "start states given to simulate_billiard"
+        where = f"uniform in (-{p['box']:g}, {p['box']:g})^2 around the centre"
+        if self.fixed:
+            return f"particles {where}, energy E0/k each in seeded random directions"
+        return f"particles at rest {where}; container at X = sqrt(2 E0) at rest"
+
+    def split(self) -> Split | None:
+        """lambda_1 split into regular and chaotic runs (None without lambda_1)."""
+        if self.logs is None:
+            return None
+        return split(self.lambda1, self.duration / PERIOD, self.starts)
+
     def items(self) -> dict[str, Any]:
         out = super().items()
         out["max_relative_energy_error"] = self.max_relative_energy_error
@@ -166,6 +188,7 @@ class BilliardResult(Result):
             out["lambda1_per_collision"] = self.lambda1_per_collision
             out["mean_lambda1"] = _stats(self.lambda1)
             out["mean_lambda1_per_collision"] = _stats(self.lambda1_per_collision)
+            out["split_lambda1"] = self.split().as_dict()
         return out
 
 
@@ -358,7 +381,7 @@ def billiard(
     params = {
         "shape": shape, "alpha": sink.well.alpha, "beta": sink.well.beta, "particles": k,
         "mass": sink.mass, "energy": settings.container_energy, "runs": settings.runs,
-        "periods": settings.periods, "seed": settings.seed, "fixed": fixed,
+        "periods": settings.periods, "seed": settings.seed, "box": settings.box, "fixed": fixed,
     }  # fmt: skip
     if fixed:
         speed = math.sqrt(2.0 * settings.container_energy / sink.mass)  # E0 / k per particle
@@ -389,7 +412,9 @@ class RigidLimit(Result):
             "moving_lambda1": _stats(self.moving.lambda1),
             "moving_mean_free_time": _stats(self.moving.mean_free_time),
             "moving_final_container_energy": _stats(self.moving.container_energy[:, -1]),
+            "moving_split_lambda1": self.moving.split().as_dict(),
             "fixed_lambda1": _stats(self.fixed.lambda1),
+            "fixed_split_lambda1": self.fixed.split().as_dict(),
             "fixed_lambda1_per_collision": _stats(self.fixed.lambda1_per_collision),
             "fixed_mean_free_time": _stats(self.fixed.mean_free_time),
         }

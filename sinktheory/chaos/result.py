@@ -13,6 +13,7 @@ import numpy as np
 
 from ..results import Result, plain
 from ..runstats import ensemble_mean
+from .verdicts import Split, split
 
 __all__ = ["ChaosResult", "PER_RUN_NOTE", "sali_from_gali2", "time_average"]
 
@@ -144,6 +145,21 @@ class ChaosResult(Result):
         return self._rate(self.log_growth)
 
     @property
+    def starts(self) -> str:
+        """The start distribution, in words (the sink's runs: from their parameters)."""
+        p = self.parameters
+        if "box" not in p:
+            return "start states given to indicators"
+        return (f"particles at rest, uniform in (-{p['box']:g}, {p['box']:g})^2 around the "
+                "centre; container at X = sqrt(2 E0) at rest")  # fmt: skip
+
+    def split(self) -> Split:
+        """:attr:`lambda1` split into regular and chaotic runs
+        (:func:`sinktheory.chaos.verdicts.split`, over the time after the transient)."""
+        span = self.times[-1] - self.times[self.transient]
+        return split(self.lambda1, span / (2.0 * np.pi), self.starts)
+
+    @property
     def finite_time_lambda1(self) -> np.ndarray:
         """lambda_1(t_j) = ln|delta_1(t_j)| / t_j for j >= 1, (R, S)."""
         return self.log_growth[:, 1:] / (self.times[1:] - self.times[0])
@@ -250,6 +266,7 @@ class ChaosResult(Result):
             per_run = getattr(self, name)
             m, se = self.mean(name)
             out[name] = summary(per_run, m, se)
+        out["split_lambda1"] = self.split().as_dict()
         finals = {}
         if self.gali is not None:
             finals[f"gali{self.gali_order}"] = self.gali[:, -1]

@@ -342,6 +342,7 @@ class _Point:
             "energy": s.container_energy,
             "runs": s.runs,
             "periods": s.periods,
+            "box": s.box,
             "period": 2.0 * math.pi,
         }
 

@@ -13,21 +13,52 @@ and *regular* otherwise.  The Floquet theory predicts regular motion where y = 0
 transverse exponent's verdict (the same test on it) measures how much of the chaos comes
 from the instability of y = 0 itself.
 
+**Mixed ensembles are split, not averaged.**  Where the phase space holds islands, some
+runs of an ensemble are regular and the others chaotic, and the mean lambda_1 depends on
+how many start in an island, that is on the start distribution.  :func:`split` judges
+each run on its own, by the same envelope:
+
+    run regular  <=>  lambda_1(run) <= THRESHOLD_FACTOR ln(t) / t,   t the span it was
+    averaged over,
+
+and reports the fraction of regular runs and lambda_1 of each group with their standard
+errors (:class:`Split`; one run in a group gives NaN, the single-run rule of
+:mod:`sinktheory.runstats`).  On a regular orbit the finite-time exponent sits near
+ln(t) / t (within a factor of about 1.5 on the rigid billiard's island and rectangle),
+while the chaotic runs seen so far stay far above the envelope (lambda_1 > 0.3 at
+t ~ 10^3), so the rule falls in the gap of the per-run distribution; :attr:`Split.gap`
+gives the largest regular and the smallest chaotic value, to check that it does.
+
 Examples
 --------
 >>> round(threshold(300), 5)
 0.012
 >>> chaotic([0.1, 0.01], [0.01, 0.01], 300).tolist()
 [True, False]
+>>> s = split([0.002, 0.004, 0.43, 0.44], 300)
+>>> s.regular, s.runs, round(s.chaotic_mean, 3)
+(2, 4, 0.435)
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["THRESHOLD_FACTOR", "agreement", "chaotic", "threshold", "verdicts"]
+from ..runstats import mean_stderr, plus_minus
+
+__all__ = [
+    "THRESHOLD_FACTOR",
+    "Split",
+    "agreement",
+    "chaotic",
+    "map_split",
+    "split",
+    "threshold",
+    "verdicts",
+]
 
 #: The finite-time exponent of a regular orbit is ~ ln t / t; a chaotic verdict needs the
 #: mean minus two standard errors above this factor times ln t / t.
@@ -46,11 +77,135 @@ def chaotic(mean, se, periods: int):
     return np.asarray(mean) - 2 * np.asarray(se) > threshold(periods)
 
 
+@dataclass(frozen=True)
+class Split:
+    """An ensemble's lambda_1 split into regular and chaotic runs (:func:`split`).
+
+    Attributes
+    ----------
+    threshold : the per-run envelope THRESHOLD_FACTOR ln(t) / t
+    runs, regular : how many runs, how many of them regular
+    fraction, fraction_se : regular / runs and its standard error (that of the mean of the
+        0/1 indicator over the runs; NaN from one run)
+    regular_mean, regular_se, chaotic_mean, chaotic_se : lambda_1 of each group, mean and
+        standard error (NaN for an empty group; the standard error NaN for one run)
+    gap : (largest regular lambda_1, smallest chaotic lambda_1), NaN where a group is empty
+    starts : the start distribution, in words (it sets the fraction)
+    """
+
+    threshold: float
+    runs: int
+    regular: int
+    fraction: float
+    fraction_se: float
+    regular_mean: float
+    regular_se: float
+    chaotic_mean: float
+    chaotic_se: float
+    gap: tuple[float, float]
+    starts: str = ""
+
+    @property
+    def mixed(self) -> bool:
+        """Both groups hold runs: the ensemble mean of lambda_1 depends on the starts."""
+        return 0 < self.regular < self.runs
+
+    def as_dict(self) -> dict:
+        """JSON-ready (NaN as None)."""
+
+        def f(x):
+            return None if math.isnan(x) else float(x)
+
+        return {
+            "rule": "regular when lambda_1 <= 3 ln(t)/t of the span it was averaged over",
+            "threshold": self.threshold, "runs": self.runs, "regular": self.regular,
+            "mixed": self.mixed, "regular_fraction": f(self.fraction),
+            "regular_fraction_stderr": f(self.fraction_se),
+            "regular_lambda1": {"mean": f(self.regular_mean), "stderr": f(self.regular_se)},
+            "chaotic_lambda1": {"mean": f(self.chaotic_mean), "stderr": f(self.chaotic_se)},
+            "gap": [f(g) for g in self.gap], "starts": self.starts,
+        }  # fmt: skip
+
+    def text(self) -> str:
+        """One line for the commands' text output.
+
+        Examples
+        --------
+        >>> print(split([0.003, 0.41, 0.45], 300).text())  # doctest: +NORMALIZE_WHITESPACE
+        runs: 1 of 3 regular (lambda_1 <= 3 ln t/t = 0.012), regular 0.003
+        (no standard error from one run), chaotic 0.43 +- 0.02
+        """
+
+        def group(count, mean, se):
+            return "none" if count == 0 else plus_minus(mean, se, ".3g")
+
+        where = f"; starts: {self.starts}" if self.starts else ""
+        return (
+            f"runs: {self.regular} of {self.runs} regular (lambda_1 <= "
+            f"{THRESHOLD_FACTOR:g} ln t/t = {self.threshold:.3g}{where}), regular "
+            f"{group(self.regular, self.regular_mean, self.regular_se)}, chaotic "
+            f"{group(self.runs - self.regular, self.chaotic_mean, self.chaotic_se)}"
+        )
+
+
+def split(lambda1, periods: float, starts: str = "") -> Split:
+    """Regular and chaotic runs of an ensemble (module docstring): ``lambda1`` one value
+    per run, averaged over ``periods`` periods of T = 2 pi (after any transient).
+
+    Runs whose lambda_1 is not finite are refused, not dropped.
+
+    Examples
+    --------
+    >>> s = split([0.003, 0.004, 0.5], 300, starts="uniform in the table")
+    >>> s.mixed, round(s.fraction, 3), s.gap
+    (True, 0.667, (0.004, 0.5))
+    >>> split([1.2], 300).chaotic_se
+    nan
+    """
+    from ..errors import ParameterError
+
+    lam = np.asarray(lambda1, dtype=float).ravel()
+    if lam.size == 0 or not np.all(np.isfinite(lam)):
+        raise ParameterError("lambda1", "empty or not finite", "finite values, one per run")
+    cut = threshold(periods)
+    low = lam <= cut
+    fraction, fraction_se = mean_stderr(low.astype(float))
+    rm, rse = mean_stderr(lam[low])
+    cm, cse = mean_stderr(lam[~low])
+    gap = (float(lam[low].max()) if low.any() else math.nan,
+           float(lam[~low].min()) if (~low).any() else math.nan)  # fmt: skip
+    return Split(cut, int(lam.size), int(low.sum()), fraction, fraction_se, rm, rse, cm, cse,
+                 gap, starts)  # fmt: skip
+
+
+def map_split(ds) -> list[Split]:
+    """:func:`split` at every point of a chaos map (the ``chaos`` sweep kind; its per-run
+    ``lambda1_runs``), in the order of ``ds.lambda1.values.ravel()``.  Each point's span
+    is the periods its lambda_1 ran less the transient; the starts are the map's box."""
+    runs = ds.lambda1_runs.transpose(..., "run").values
+    runs = runs.reshape(-1, runs.shape[-1])
+    ran = np.broadcast_to(ds.lambda1_periods.values, ds.lambda1.shape).ravel()
+    span = ran - float(ds.attrs.get("transient", 0))
+    box = ds.attrs.get("box")
+    starts = "" if box is None else (
+        f"particles at rest, uniform in (-{box:g}, {box:g})^2 around the centre; container "
+        "at X = sqrt(2 E0) at rest")  # fmt: skip
+    return [split(r, p, starts) for r, p in zip(runs, span, strict=True)]
+
+
 def verdicts(ds) -> dict:
-    """Chaotic / regular per beta from lambda_1 and from the transverse exponent."""
+    """Chaotic / regular per beta from lambda_1 and from the transverse exponent; with the
+    per-run exponents, also the regular runs per beta (``regular_runs``, of ``runs``) and
+    where the ensemble is mixed (:func:`map_split`)."""
     periods = int(ds.attrs["periods"])
     out = {"threshold": threshold(periods),
            "chaotic": chaotic(ds.lambda1.values, ds.lambda1_se.values, periods)}  # fmt: skip
+    if "lambda1_runs" in ds and np.isfinite(ds.lambda1_runs.values).all():
+        groups = map_split(ds)
+        shape = ds.lambda1.shape
+        out["runs"] = int(ds.sizes["run"])
+        out["regular_runs"] = np.array([g.regular for g in groups]).reshape(shape)
+        out["mixed"] = np.array([g.mixed for g in groups]).reshape(shape)
     if "transverse" in ds and np.isfinite(ds.transverse.values).all():
         out["transverse_chaotic"] = chaotic(ds.transverse.values, ds.transverse_se.values, periods)
     return out

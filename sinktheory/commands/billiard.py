@@ -4,7 +4,9 @@ The table is the well's rigid wall (``--shape``, ``--alpha``, ``--beta``); the r
 as ``sinktheory simulate`` starts them (same seed, same positions): the container at
 X = sqrt(2 E0) at rest, the particles at rest.  With ``--fixed`` the container stays
 still and the particles share E0 in seeded random directions.  Exponents are per unit
-time (T = 2 pi), ensemble mean +- standard error std(ddof=1)/sqrt(R).
+time (T = 2 pi), ensemble mean +- standard error std(ddof=1)/sqrt(R), and split into
+regular and chaotic runs (:func:`sinktheory.chaos.verdicts.split`): a table with islands
+has both, in a proportion the start distribution sets.
 """
 
 from __future__ import annotations
@@ -97,6 +99,7 @@ def run(args: argparse.Namespace) -> Output:
             f"lambda_1 = {_fmt(data['mean_lambda1'])} per unit time, "
             f"{_fmt(data['mean_lambda1_per_collision'])} per impact ({result.lyapunov_method})"
         )
+        lines.append("lambda_1 " + result.split().text())
     writers = {}
     if plot is not None:
 

@@ -134,6 +134,7 @@ def run(args: argparse.Namespace) -> Output:
             else ""
         ),  # fmt: skip
         f"lambda_1 = {_fmt(*result.mean('lambda1'))}",
+        "lambda_1 " + result.split().text(),
     ]
     if result.spectrum is not None:
         m, se = result.mean("spectrum")
@@ -184,6 +185,7 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     the runs started as for a finite n; gamma plays no part."""
     from ..billiard import billiard
     from ..billiard.convergence import lambda_after
+    from ..chaos.verdicts import split
     from ..runstats import ensemble_mean
     from ..validation import positive
 
@@ -199,7 +201,9 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     lam = lambda_after(result, args.transient)
     data = result.as_dict()
     m, se = ensemble_mean(lam[:, None])
+    groups = split(lam, settings.periods - args.transient, result.starts)
     data |= {
+        "split_lambda1": groups.as_dict(),
         "n": "inf", "rigid": True, "lambda1": lam.tolist(),
         "transient_time": args.transient * 2 * math.pi,
         "mean_lambda1": {"mean": float(m[0]), "stderr": float(se[0])},
@@ -214,6 +218,7 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
         f"exponent per unit time (x T = 2 pi for per period), {result.lyapunov_method}; mean "
         "+- standard error" + (f"; from t = {args.transient:g} T on" if args.transient else ""),
         f"lambda_1 = {_fmt(m[0], se[0])}",
+        "lambda_1 " + groups.text(),
     ]
     writers = {}
     if plot is not None:

@@ -8,7 +8,10 @@ with ``lyapunov_runs`` > 0, computes the maximal Lyapunov exponent lambda_1 of a
 ensemble (:func:`sinktheory.chaos.chaos`).  The verdict, a stated rule:
 
 * **chaotic** when lambda_1 - 3 se(lambda_1) > 0 (se over the Lyapunov runs), else
-  **regular**;
+  **regular**; where the Lyapunov runs split into regular and chaotic ones
+  (:func:`sinktheory.chaos.verdicts.split`: a run is regular when its lambda_1 <=
+  3 ln t / t), the point also reports how many are regular and lambda_1 of each group,
+  since their mean depends on the starts (the box, :data:`DEFAULTS`);
 * **sampling the law** when the KS p-value > :data:`P_LEVEL` and |mean z| < 3;
 * verdict 2 = chaotic and sampling the law (ergodic as far as the runs tell),
   1 = chaotic but not sampling it (islands, slow mixing, or a transient too short),
@@ -77,6 +80,11 @@ RESULTS = {
     "return_time": (("fraction",), "measured mean return time (periods)"),
     "lambda1": ((), "maximal Lyapunov exponent (per unit time; NaN without Lyapunov runs)"),
     "lambda1_se": ((), "standard error of lambda1 over the Lyapunov runs"),
+    "regular_runs": ((), "Lyapunov runs with lambda_1 <= 3 ln t / t (regular; NaN without)"),
+    "lambda1_regular": ((), "lambda_1 of the regular Lyapunov runs (NaN if none)"),
+    "lambda1_regular_se": ((), "its standard error (NaN for fewer than two runs)"),
+    "lambda1_chaotic": ((), "lambda_1 of the chaotic Lyapunov runs (NaN if none)"),
+    "lambda1_chaotic_se": ((), "its standard error (NaN for fewer than two runs)"),
     "verdict": (
         (),
         "2 chaotic and sampling the law, 1 chaotic not sampling it, 0 regular, -1 undecided",
@@ -189,6 +197,8 @@ def ergodicity_point(p: dict, seed: int) -> dict:
         seed=seed,
     )
     lam, lam_se = math.nan, math.nan
+    groups = dict.fromkeys(("regular_runs", "lambda1_regular", "lambda1_regular_se",
+                            "lambda1_chaotic", "lambda1_chaotic_se"), math.nan)  # fmt: skip
     if p["lyapunov_runs"] > 0:
         from dataclasses import replace
 
@@ -203,6 +213,10 @@ def ergodicity_point(p: dict, seed: int) -> dict:
         summary = res.as_dict()["lambda1"]
         lam = float(summary["mean"])
         lam_se = math.nan if summary["stderr"] is None else float(summary["stderr"])
+        g = res.split()
+        groups = {"regular_runs": float(g.regular), "lambda1_regular": g.regular_mean,
+                  "lambda1_regular_se": g.regular_se, "lambda1_chaotic": g.chaotic_mean,
+                  "lambda1_chaotic_se": g.chaotic_se}  # fmt: skip
     mean_z = (c.mean - law.mean) / c.mean_stderr if c.mean_stderr > 0 else math.nan
     return {
         "law_mean": law.mean,
@@ -217,6 +231,7 @@ def ergodicity_point(p: dict, seed: int) -> dict:
         "return_time": c.return_time,
         "lambda1": lam,
         "lambda1_se": lam_se,
+        **groups,
         "verdict": verdict(lam, lam_se, c.ks_pvalue, mean_z),
     }
 
@@ -238,6 +253,11 @@ class ErgodicityMap(Result):
     tail_ratio_se: np.ndarray
     lambda1: np.ndarray
     lambda1_se: np.ndarray
+    regular_runs: np.ndarray
+    lambda1_regular: np.ndarray
+    lambda1_regular_se: np.ndarray
+    lambda1_chaotic: np.ndarray
+    lambda1_chaotic_se: np.ndarray
     verdict: np.ndarray
 
     DIMS = {

@@ -22,8 +22,10 @@ __all__ = ["billiard_figure"]
 def billiard_figure(result: BilliardResult, *, title: str = ""):
     """Three panels: the table (walls coloured by curvature sign: blue dispersing, red
     focusing, black flat), the container energy <E>(t/T) with its standard-error band
-    (moving container), and the finite-time lambda_1(t) of each run with the mean
-    (when computed).
+    (moving container), and the finite-time lambda_1(t) of each run (when computed),
+    coloured by its group (:meth:`~sinktheory.billiard.run.BilliardResult.split`: blue
+    regular, red chaotic) with the mean of each group and the regular fraction in the
+    title, never one mean over a mixed ensemble.
 
     Returns
     -------
@@ -57,9 +59,22 @@ def billiard_figure(result: BilliardResult, *, title: str = ""):
     if result.logs is not None:
         with np.errstate(divide="ignore", invalid="ignore"):
             finite = result.logs[:, 1:] / result.times[1:]
-        for row in finite:
-            ax_l.plot(periods[1:], row, color="0.6", lw=0.6)
-        ax_l.plot(periods[1:], finite.mean(axis=0), color="k")
+        split = result.split()
+        regular = result.lambda1 <= split.threshold
+        for group, light, dark, name in ((regular, "#9ecae1", "tab:blue", "regular"),
+                                         (~regular, "#fcae91", "tab:red", "chaotic")):  # fmt: skip
+            for row in finite[group]:
+                ax_l.plot(periods[1:], row, color=light, lw=0.6)
+            if group.any():
+                ax_l.plot(periods[1:], finite[group].mean(axis=0), color=dark,
+                          label=f"{name} runs: {int(group.sum())}")  # fmt: skip
+        ax_l.set_yscale("log")
+        ax_l.legend(fontsize=8)
+        ax_l.set_title(
+            f"{split.regular} of {split.runs} runs regular "
+            rf"($\lambda_1 \leq$ 3 ln t / t = {split.threshold:.2g})",
+            fontsize=9,
+        )
         ax_l.set_ylabel(rf"$\lambda_1(t)$ ({result.lyapunov_method})")
     else:
         ax_l.text(0.5, 0.5, "no --lyapunov", ha="center", va="center", transform=ax_l.transAxes)

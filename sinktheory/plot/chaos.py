@@ -17,6 +17,7 @@ import numpy as np
 
 from ..chaos import verdicts
 from ..chaos.result import ChaosResult
+from ..runstats import ensemble_mean
 
 __all__ = ["convergence_figure", "draw_map", "FLOOR", "plot_convergence"]
 
@@ -28,10 +29,12 @@ def convergence_figure(result: ChaosResult, *, window: int | None = None, title:
     """Finite-time exponents against time, with the ensemble mean +- standard error.
 
     Top: lambda_1(t) = ln|delta_1| / t of every run (thin), their mean with its standard-
-    error band, the mean over windows of ``window`` segments (default: S / 20) as steps,
-    and the other exponents of the spectrum (means) when computed; the transverse exponent
-    when computed.  Bottom (when computed): GALI_k (log scale) and the time-averaged
-    MEGNO <Y>.  Time in units of the segment (for the sink, the period T = 2 pi).
+    error band (for a mixed ensemble, :meth:`~sinktheory.chaos.ChaosResult.split`, one mean
+    and band per group: regular and chaotic runs apart), the mean over windows of
+    ``window`` segments (default: S / 20) as steps, and the other exponents of the
+    spectrum (means) when computed; the transverse exponent when computed.  Bottom (when
+    computed): GALI_k (log scale) and the time-averaged MEGNO <Y>.  Time in units of the
+    segment (for the sink, the period T = 2 pi).
 
     Returns
     -------
@@ -46,11 +49,18 @@ def convergence_figure(result: ChaosResult, *, window: int | None = None, title:
     t = result.times[1:] / seg
     ax = axes[0]
     ft = result.finite_time_lambda1
-    for run in ft[: min(len(ft), 50)]:
-        ax.plot(t, run, color="0.6", lw=0.5, alpha=0.6)
-    m, se = result.mean("finite_time_lambda1")
-    ax.fill_between(t, m - se, m + se, color="C0", alpha=0.3, lw=0)
-    ax.plot(t, m, color="C0", lw=1.5, label=r"$\lambda_1(t)$, mean $\pm$ s.e.")
+    split = result.split()
+    regular = result.lambda1 <= split.threshold
+    groups = ((regular, "C9", "regular"), (~regular, "C0", "chaotic")) if split.mixed else (
+        (np.ones(len(ft), bool), "C0", ""),)  # fmt: skip
+    for group, color, name in groups:
+        for run in ft[group][:50]:
+            ax.plot(t, run, color="0.6" if not name else color, lw=0.5, alpha=0.6)
+        m, se = ensemble_mean(ft[group])
+        ax.fill_between(t, m - se, m + se, color=color, alpha=0.3, lw=0)
+        label = (rf"$\lambda_1(t)$ of the {int(group.sum())} {name} runs of {len(ft)}" if name
+                 else r"$\lambda_1(t)$, mean $\pm$ s.e.")  # fmt: skip
+        ax.plot(t, m, color=color, lw=1.5, label=label)
     w = max(1, len(t) // 20) if window is None else int(window)
     ends, wl = result.window_exponents(w)
     if len(ends):
@@ -105,9 +115,19 @@ def plot_convergence(result: ChaosResult, path, **kwargs) -> None:
 
 def draw_map(ds, stable_intervals, ax, *, title: str = "") -> None:
     """lambda_1(beta) with its +-2 s.e. band, the transverse exponent, the verdict
-    threshold, and the Floquet-stable intervals of y = 0 shaded."""
+    threshold, and the Floquet-stable intervals of y = 0 shaded; betas whose runs split
+    into regular and chaotic ones (:func:`sinktheory.chaos.verdicts.map_split`) get each
+    run's lambda_1 as dots and the regular count written beside them."""
     beta = ds.beta.values
     lam, se = ds.lambda1.values, ds.lambda1_se.values
+    v = verdicts.verdicts(ds)
+    if "mixed" in v and v["mixed"].any():
+        for j in np.nonzero(v["mixed"])[0]:
+            runs = ds.lambda1_runs.values[j]
+            ax.plot(np.full(runs.size, beta[j]), runs, ".", color="C3", ms=2)
+            ax.annotate(f"{v['regular_runs'][j]}/{v['runs']} reg.", (beta[j], runs.max()),
+                        fontsize=6, ha="center", va="bottom")  # fmt: skip
+        ax.plot([], [], ".", color="C3", label=r"runs of a mixed $\beta$ (regular/runs)")
     for a, b in stable_intervals:
         ax.axvspan(a, b, color="tab:green", alpha=0.15, lw=0)
     ax.fill_between(beta, lam - 2 * se, lam + 2 * se, color="C0", alpha=0.3, lw=0)

@@ -20,7 +20,8 @@ __all__ = ["convergence_figure", "lyapunov_figure"]
 
 def lyapunov_figure(chart: LyapunovChart, *, title: str = ""):
     """lambda_1(beta) for each soft n and for n = oo on one plot, error bars of one
-    standard error; the rigid row in black.
+    standard error; the rigid row in black; a point some of whose runs are regular
+    (:func:`sinktheory.chaos.verdicts.split`) says how many beneath it.
 
     Returns
     -------
@@ -31,15 +32,21 @@ def lyapunov_figure(chart: LyapunovChart, *, title: str = ""):
     fig = Figure(figsize=(8, 4.6), layout="constrained")
     ax = fig.subplots()
     shift = 0.12 * np.min(np.diff(chart.betas)) if chart.betas.size > 1 else 0.0
-    rows = [(f"n = {n}", chart.lambda1[i], chart.lambda1_se[i]) for i, n in enumerate(chart.ns)]
-    rows.append((r"n = $\infty$ (rigid billiard)", chart.rigid_lambda1, chart.rigid_lambda1_se))
+    rows = [(f"n = {n}", chart.lambda1[i], chart.lambda1_se[i], chart.regular[i])
+            for i, n in enumerate(chart.ns)]  # fmt: skip
+    rows.append((r"n = $\infty$ (rigid billiard)", chart.rigid_lambda1, chart.rigid_lambda1_se,
+                 chart.rigid_regular))  # fmt: skip
     middle = (len(rows) - 1) / 2
-    for i, (label, mean, se) in enumerate(rows):
+    for i, (label, mean, se, regular) in enumerate(rows):
         rigid = i == len(rows) - 1
+        x = chart.betas + (i - middle) * shift
         ax.errorbar(
-            chart.betas + (i - middle) * shift, mean, yerr=se, label=label, marker="o",
+            x, mean, yerr=se, label=label, marker="o",
             ms=3.5, lw=1.6 if rigid else 1.0, capsize=2, color="k" if rigid else None,
         )  # fmt: skip
+        for j in np.nonzero(regular)[0]:  # a mixed point: how many of its runs are regular
+            ax.annotate(f"{regular[j]} reg.", (x[j], mean[j]), fontsize=6, ha="center",
+                        va="top", xytext=(0, -6), textcoords="offset points")  # fmt: skip
     ax.axhline(0.0, color="0.6", lw=0.6)
     ax.axvline(0.0, color="0.6", lw=0.6, ls=":")
     ax.set_xlabel(r"$\beta$ (walls bulge inward for $\beta$ > 0)")

@@ -156,8 +156,9 @@ VERDICTS = {
 def plot_ergodicity(result, ax=None):
     """An :class:`~sinktheory.equilibrium.ergodicity.ErgodicityMap`: the KS distance of the
     runs from the law (top) and lambda_1 with its errors (bottom) against beta, each point
-    coloured by its verdict.  ``ax``: a pair of Axes (top, bottom) to draw into; a new
-    Figure otherwise.
+    coloured by its verdict; where the Lyapunov runs split into regular and chaotic ones,
+    the lambda_1 of each group (crosses) and the regular count beside them.  ``ax``: a
+    pair of Axes (top, bottom) to draw into; a new Figure otherwise.
 
     Examples
     --------
@@ -188,6 +189,17 @@ def plot_ergodicity(result, ax=None):
             ms=4,
             capsize=2,
         )
+    runs = result.parameters.get("lyapunov_runs", 0)
+    mixed = (result.regular_runs > 0) & (result.regular_runs < runs)
+    for j in np.nonzero(mixed)[0]:  # regular and chaotic runs: each group's lambda_1
+        bottom.plot([beta[j]] * 2, [result.lambda1_regular[j], result.lambda1_chaotic[j]], "x",
+                    color="k", ms=5)  # fmt: skip
+        bottom.annotate(f"{int(result.regular_runs[j])}/{runs} reg.",
+                        (beta[j], result.lambda1_chaotic[j]), fontsize=6, ha="center",
+                        va="bottom")  # fmt: skip
+    if mixed.any():
+        bottom.plot([], [], "x", color="k", label="mixed: each group's $\\lambda_1$")
+        bottom.legend(fontsize=7)
     top.plot(beta, result.ks_distance, color="0.7", lw=0.8, zorder=0)
     top.set_ylabel("KS distance to the law")
     top.legend(fontsize=7)

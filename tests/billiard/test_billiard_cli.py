@@ -25,6 +25,24 @@ def test_json_matches_the_api(capsys):
     assert d["max_relative_energy_error"] < 1e-12
 
 
+def test_mixed_table_split_in_json_and_text(capsys):
+    """The focusing table has regular and chaotic runs: both say how many and which."""
+    args = ["billiard", "--alpha", "0.5", "--beta", "-0.3", "--runs", "12", "--periods", "150",
+            "--fixed", "--lyapunov"]  # fmt: skip
+    code, out, err = run_cli(args + ["--json"], capsys)
+    assert code == 0, err
+    d = json.loads(out)
+    groups, lam = d["split_lambda1"], np.array(d["lambda1"])
+    regular = lam <= groups["threshold"]
+    assert groups["mixed"] and groups["regular"] == regular.sum()
+    assert groups["chaotic_lambda1"]["mean"] == pytest.approx(lam[~regular].mean(), rel=1e-12)
+    assert groups["regular_fraction"] == pytest.approx(regular.mean(), rel=1e-12)
+    code, out, err = run_cli(args, capsys)
+    assert f"lambda_1 runs: {regular.sum()} of 12 regular" in out and "starts: particles" in out
+    code, out, err = run_cli(args[:5] + ["--runs", "1", "--fixed", "--lyapunov"], capsys)
+    assert code == 0 and "of 1 regular" in out and "(no standard error from one run)" in out
+
+
 def test_text_and_plot(capsys, tmp_path):
     png = tmp_path / "b.png"
     code, out, err = run_cli(BASE + ["--fixed", "--lyapunov", "--plot", str(png)], capsys)

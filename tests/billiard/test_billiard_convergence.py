@@ -97,10 +97,10 @@ def test_soft_mean_free_time_approaches_the_rigid_one():
     # n = 10 (an engine the suite compiles anyway; n = 50 cost 30 s of CI) against n = oo,
     # the same 12 seeded starts, beta = 0.3 (chaotic).  Tolerance: 3 standard errors of
     # the difference plus 8 % of the rigid value, the largest soft-rigid difference at
-    # n = 10 in the guide's table (docs/guide/convergence.inc: 7.7 %, the energy average at
-    # beta = 0.3; 5 % from n = 20 on); with 12 runs x 25 periods that allows about 30 %: a
-    # loose check that catches a hit count off by a large factor; the exact check of the
-    # count is the oscillator's above
+    # n = 10 in the guide's table (docs/guide/convergence_n.inc, 256 runs: 7.9 %, the energy
+    # average at beta = 0.3; 5 % from n = 20 on); with 12 runs x 25 periods that allows
+    # about 30 %: a loose check that catches a hit count off by a large factor; the exact
+    # check of the count is the oscillator's above
     st = RunSettings(runs=12, periods=25, seed=3)
     c = convergence("flat", 0.5, 0.3, ns=(4, 10), settings=st)
     m, se, rm, rse = c.summary("mean_free_time")

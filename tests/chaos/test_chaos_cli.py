@@ -28,6 +28,11 @@ def test_spectrum_json_pairs_sum_to_zero(capsys):
     res = chaos(Sink(FIG8_WELL, 1, 0.2), RunSettings(runs=2, periods=100), spectrum=True,
                 dt=0.01)  # fmt: skip
     np.testing.assert_array_equal(np.array(d["spectrum"]["runs"]), res.spectrum)
+    # lambda_1 split into regular and chaotic runs, from the per-run values shown
+    groups = d["split_lambda1"]
+    lam = np.array(d["lambda1"]["runs"])
+    assert groups["runs"] == 2 and groups["regular"] == int(np.sum(lam <= groups["threshold"]))
+    assert "(-0.01, 0.01)^2" in groups["starts"]
 
 
 def test_half_spectrum_from_the_cli(capsys):
@@ -46,6 +51,7 @@ def test_all_indicators_text_and_plot(capsys, tmp_path):
     code, out, err = run_cli(BASE + args + ["--plot", str(png)], capsys)
     assert code == 0, err
     assert "lambda_1 =" in out and "GALI_2" in out and "SALI" in out and "transverse" in out
+    assert "lambda_1 runs: " in out and " of 2 regular (lambda_1 <= 3 ln t/t = " in out
     assert png.stat().st_size > 10_000
 
 

@@ -54,6 +54,22 @@ def test_map_and_chart():
     assert ds.tail_ratio.dims == ("beta", "fraction")
     fig = plot_ergodicity(m)
     assert len(fig.axes) == 2
+    # no regular Lyapunov run here: the chaotic group is the whole ensemble
+    assert m.regular_runs.tolist() == [0, 0]
+    np.testing.assert_allclose(m.lambda1_chaotic, m.lambda1, rtol=1e-12)
+    assert np.isnan(m.lambda1_regular).all()
+
+
+def test_chart_shows_both_groups_of_a_mixed_point():
+    from dataclasses import replace
+
+    from sinktheory.plot.equilibrium import plot_ergodicity
+
+    m = ergodicity_map([0.2], seed=2, progress=False, **{**SMALL, "runs": 2, "periods": 40})
+    mixed = replace(m, regular_runs=np.array([1.0]), lambda1_regular=np.array([0.01]),
+                    lambda1_chaotic=np.array([0.4]))  # fmt: skip
+    texts = [t.get_text() for t in plot_ergodicity(mixed).axes[1].texts]
+    assert texts == ["1/2 reg."]
 
 
 def test_bad_points_are_refused_before_running():

@@ -144,19 +144,22 @@ def test_inphase_backbone_against_the_averaged_one():
 
 
 def test_cubic_nes_has_an_energy_threshold():
-    """Below the threshold the NES is a free mass on a dashpot (a Lanchester damper): the
-    container loses 1 - exp(-c t) of its energy (c << mu: the particle barely moves);
+    """Over a short window (20 periods), below the threshold the NES is a free mass on a
+    dashpot (a Lanchester damper): the container loses 1 - exp(-c t) of its energy
+    (c << mu: the particle barely moves; over 100 periods impulses down to a quarter of
+    the threshold are captured too: tests/studies/test_nes_threshold.py);
     above it the 1:1 resonance capture pumps energy into the particle and the dashpot
     takes far more.  The threshold of the averaged flow (4.0e-5 for mu = 0.2, k3 =
     gamma / D^4 = 625) separates the two: the floor 2.5x below it, well above 1.5x above
-    it (measured: the fraction crosses half-way from the floor to its plateau at
-    3.8e-5 for c = 0.001 over 20 periods, 4.0e-5 for c = 0.002).
+    it (measured over 20 periods: the fraction crosses half-way from the floor to its
+    plateau, not monotonically, between 3.6e-5 and 3.8e-5 for c = 0.001 and 3.6e-5 and
+    3.9e-5 for c = 0.002: docs/guide/nes_threshold.inc).
 
     Against the NNM backbone: the in-phase 1:1 family is particle-localised at low energy
     and container-localised at high energy; it holds half its energy in the container's
     spring at E_loc = 4.6e-5 (sinktheory.nnm.backbone.localisation_energy; the one-harmonic
     balance puts that point at 2.8e-5).  The threshold lies just below it, at 0.87 E_loc
-    (averaged flow) and 0.83 E_loc (measured half-way crossing): an impulse above ~E_loc
+    (averaged flow) and 0.78-0.85 E_loc (measured half-way crossings): an impulse above ~E_loc
     starts on the container-localised part of the family, from which the dashpot walks
     the energy down the backbone into the particle (Kerschen et al., Nonlinear Dyn. 42,
     2005).  The backbone's frequency there is 0.76, well below the container's linear
@@ -176,6 +179,14 @@ def test_cubic_nes_has_an_energy_threshold():
     assert low.fraction_dissipated() == pytest.approx(floor, rel=0.03)
     assert np.all(below < floor + 0.04)
     assert np.all(above > 2.5 * floor)
+    # a longer window captures below the threshold: at 0.29 of it, c = 0.002, the floor
+    # 1 - exp(-c t) is 0.22 over 20 periods and 0.72 over 100; the NES takes 0.03-0.06
+    # more over 20 and 0.2 more (0.93, docs/guide/nes_threshold.inc) over 100
+    for periods, low_gain, high_gain in ((20, 0.0, 0.1), (100, 0.15, 0.3)):
+        floor = 1 - math.exp(-0.002 * periods * T)
+        got = impulse_response(att, 1.16e-5, damping=0.002, periods=periods, runs=2, tol=1e-6)
+        gain = got.fraction_dissipated() - floor
+        assert np.all((low_gain < gain) & (gain < high_gain)), (periods, gain)
 
 
 # --------------------------------------------------------------------------- (e) the line
