@@ -47,7 +47,7 @@ def main() -> None:
         periods = args.long if 3 * stored.periods > args.periods else args.periods
         start = time.perf_counter()
         sink = Sink(Well(alpha, beta, n, shape=shape), particles=k, mass=MASS)
-        settings = RunSettings(energy=E0, runs=args.runs, periods=periods, seed=SEED)
+        settings = RunSettings(container_energy=E0, runs=args.runs, periods=periods, seed=SEED)
         res = simulate(sink, settings, progress=False)
         law = equilibrium_law(sink, float(res.initial_energy.mean()))
         window = max(10, periods // 120)
