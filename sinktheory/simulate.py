@@ -119,12 +119,16 @@ class Stepper:
 
     Attributes
     ----------
-    name : the ``stepper`` value that picks it
-    options : the keywords of :func:`simulate` only this stepper takes (given to another
-        stepper they are refused, naming the keyword)
-    run : ``run(sink, settings, *, record, initial, initial_state, energy_bound, progress,
-        **options)`` -> :class:`SimulationResult`
-    summary : one line for help texts
+    name : str
+        The ``stepper`` value that picks it.
+    options : tuple of str
+        The keywords of :func:`simulate` only this stepper takes (given to another stepper
+        they are refused, naming the keyword).
+    run : callable
+        Takes the sink and settings, the keywords record, initial, initial_state,
+        energy_bound and progress, and the options; returns a :class:`SimulationResult`.
+    summary : str
+        One line for help texts.
     """
 
     name: str

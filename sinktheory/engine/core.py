@@ -54,13 +54,10 @@ class Records:
     logs : (R, S + 1, M) accumulated log growth of each deviation vector, or None
     gali : (R, S + 1) GALI_k of the first k deviation vectors, or None
     megno : (R, S + 1) MEGNO Y(t) of deviation vector 0, or None
-    worst : (R,) largest relative energy error of each run over the segments (of H + W
-        with damping)
-    work : (R, S + 1) work the damping has taken from each run since the ensemble
-        started, or None
+    worst : (R,) largest relative energy error of each run over the segments (of H + W with damping)
+    work : (R, S + 1) work the damping has taken from each run since the ensemble started, or None
     work_samples : (R, samples) the same work at the trajectory's samples, or None
-    integral : (R,) the integral of the shared energy over time since the ensemble
-        started (trapezoid rule over the steps), or None
+    integral : (R,) the shared energy integrated over time since the ensemble started, or None
     """
 
     shared: np.ndarray | None
