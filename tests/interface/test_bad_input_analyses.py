@@ -45,8 +45,11 @@ CASES = [
     (["nnm", *WELL, "--continue", "energy", "--steps", "1000000000"], "steps", "1000000]"),
     ([*NNM, "--points", "10000", "--ds", "1e-300"], "ds", "[1e-06, 10]"),
     ([*DESIGN, "--bootstrap", "1000000000"], "bootstrap", "[2, 100000]"),
-    (["chaos", *WELL, "--particles", "1000", "--runs", "2", "--periods", "2", "--spectrum"],
-     "spectrum", "4002"),  # fmt: skip
+    (
+        ["chaos", *WELL, "--particles", "1000", "--runs", "2", "--periods", "2", "--spectrum"],
+        "spectrum",
+        "4002",
+    ),  # fmt: skip
     # 15.6 days estimated: under the sweeps' 30 days, over a one-shot computation's hour
     # (lambda_1 alone takes 2 h here, so periods is named)
     (["chaos", *WELL, "--particles", "200", "--runs", "25", "--spectrum"], "periods", "15.6 days"),
