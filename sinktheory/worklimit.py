@@ -165,11 +165,14 @@ def duration(seconds: float) -> str:
     return f"{seconds:.3g} s"
 
 
-def check_particle_steps(name: str, value: object, steps: float, what: str) -> None:
+def check_particle_steps(
+    name: str, value: object, steps: float, what: str, change: str = "smaller"
+) -> None:
     """Refuse ``value`` of ``name`` when ``steps`` particle steps (``what`` says of what)
     would take longer than the limit in force (:func:`max_seconds`) at the optimistic
     :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP`; the message gives the estimate,
-    the limit and the way to a larger job."""
+    the limit and the way to a larger job.  ``change`` says which way ``value`` must move
+    ("larger" for a clearance, say)."""
     seconds = steps * SECONDS_PER_PARTICLE_STEP
     limit = max_seconds()
     if seconds <= limit:
@@ -189,7 +192,7 @@ def check_particle_steps(name: str, value: object, steps: float, what: str) -> N
     raise ParameterError(
         name,
         value,
-        f"smaller: at most {limit / SECONDS_PER_PARTICLE_STEP:.3g} particle steps "
+        f"{change}: at most {limit / SECONDS_PER_PARTICLE_STEP:.3g} particle steps "
         f"({duration(limit)}) {where}",
         why=f"{what} is {steps:.3g} particle steps at {SECONDS_PER_PARTICLE_STEP:g} s each, "
         f"at least {seconds:.3g} s (about {duration(seconds)}); {bigger}",
