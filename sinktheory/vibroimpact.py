@@ -100,6 +100,8 @@ def modes(mass: float, damping: float) -> tuple[np.ndarray, np.ndarray, np.ndarr
     """
     mass, damping = v.positive("mass", mass), v.nonnegative("damping", damping)
     kappa = damping * (1.0 + mass) / mass
+    if not math.isfinite(kappa):
+        raise ParameterError("damping", damping, "small enough that c (1 + mu) / mu is finite")
     B = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, damping], [1.0, 0.0, -kappa]])
     lam, P = np.linalg.eig(B)
     lam, P = lam.astype(complex), P.astype(complex)
