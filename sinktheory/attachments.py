@@ -314,6 +314,9 @@ def impulse_response(
     box = v.positive("box", box) * math.sqrt(2.0 * energy)
     settings = RunSettings(container_energy=energy, runs=runs, periods=periods, seed=seed, box=box)
     offset = v.nonnegative("line_offset", line_offset)
+    for name, value in (("tol", tol), ("dt", dt)):  # checked even where "impact" ignores them
+        if value is not None:
+            v.positive(name, value)
     if offset and att.kind != "nes":
         raise ParameterError("line_offset", offset, "0 unless the attachment is an 'nes'")
     rows = start_rows(att, settings)

@@ -102,7 +102,10 @@ def _main(argv: list[str], command: str | None) -> int:
         return 2
     prog = f"sinktheory {args.command}"
     try:
-        out = args.module.run(args)
+        from .worklimit import interactive_limit
+
+        with interactive_limit(getattr(args, "max_hours", None)):  # --max-hours
+            out = args.module.run(args)
         write_outputs(out.writers)
     except ParameterError as e:
         print(f"{prog}: error: {e}", file=sys.stderr)

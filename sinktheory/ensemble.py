@@ -274,7 +274,11 @@ def check_record(record: Sequence[str], allowed: tuple[str, ...] = RECORDS) -> t
     """``record`` as a tuple of names from ``allowed`` (one name may be given alone)."""
     if isinstance(record, str):
         record = (record,)
-    return tuple(v.choice("record", r, allowed) for r in record)
+    try:
+        names = tuple(record)
+    except TypeError:
+        raise ParameterError("record", record, f"names from {', '.join(allowed)}") from None
+    return tuple(v.choice("record", r, allowed) for r in names)
 
 
 def start_positions(sink: Sink, settings: RunSettings, initial=None) -> np.ndarray:

@@ -27,6 +27,7 @@ __all__ = [
     "MAX_N",
     "MAX_ORDER",
     "MAX_PERIODS",
+    "MAX_RESAMPLES",
     "MAX_RUNS",
     "MAX_SECONDS",
     "MAX_STEPS_PER_PERIOD",
@@ -47,14 +48,19 @@ MAX_RUNS = 10**7
 MAX_PERIODS = 10**9
 #: An optimistic cost of one particle step (measured 5e-7 s on 2 cores in 2026-11), used
 #: to refuse work that could not finish within MAX_SECONDS (30 days: a sweep's point) or
-#: MAX_INTERACTIVE_SECONDS (a day: a computation that cannot resume).
+#: MAX_INTERACTIVE_SECONDS (an hour: a computation that cannot resume).
 SECONDS_PER_PARTICLE_STEP = 1e-7
 MAX_SECONDS = 30 * 86400.0
 #: The longest estimated work (seconds at SECONDS_PER_PARTICLE_STEP, itself optimistic) a
-#: computation that cannot resume may start.  The paper's largest jobs estimate minutes
-#: (``sinktheory reproduce`` as a whole about 83 s measured); a day keeps a mistyped size
-#: from holding a machine for days, while a sweep goes up to MAX_SECONDS per point.
-MAX_INTERACTIVE_SECONDS = 86400.0
+#: computation that cannot resume may start unless the user raises it (``--max-hours``,
+#: :func:`sinktheory.worklimit.interactive_limit`).  The paper's largest jobs estimate
+#: minutes (``sinktheory reproduce`` as a whole about 83 s measured); an hour keeps a
+#: mistyped size from holding a machine for days, while a sweep goes up to MAX_SECONDS per
+#: point.
+MAX_INTERACTIVE_SECONDS = 3600.0
+#: Most bootstrap resamples of a statistic (each redraws the runs: 1e5 already pins a
+#: p-value to +-0.002 at p = 0.5; 1e12 asked for terabytes).
+MAX_RESAMPLES = 100_000
 #: Most points of one sweep (every point is checked before any work starts: about
 #: 0.1 ms each, so 1e6 points take a couple of minutes just to check).
 MAX_SWEEP_POINTS = 10**6

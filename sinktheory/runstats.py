@@ -39,7 +39,9 @@ def as_runs(energy_runs) -> np.ndarray:
     >>> as_runs([1.0, 2.0]).shape
     (1, 2)
     """
-    e = np.asarray(energy_runs, dtype=float)
+    from .validation import real_array
+
+    e = real_array("energy_runs", energy_runs, "a finite array of shape (runs, samples)")
     if e.ndim == 1:
         e = e[None, :]
     if e.ndim != 2 or e.shape[1] < 1:

@@ -57,8 +57,8 @@ def running_mean(series, window: int) -> np.ndarray:
     >>> running_mean([1.0, 2.0, 3.0, 4.0], 2).tolist()
     [1.5, 2.5, 3.5]
     """
-    s = np.asarray(series, dtype=float)
-    if s.ndim != 1:
+    s = v.real_array("series", series, "a finite 1-D series")
+    if s.ndim != 1 or not np.isfinite(s).all():
         raise ParameterError("series", f"array of shape {s.shape}", "a 1-D series")
     window = v.positive_int("window", window, maximum=max(s.size, 1))
     kernel = np.full(window, 1.0 / window)
@@ -73,10 +73,16 @@ def first_fall_below(mean_energy, fractions, e0: float) -> dict[float, int | Non
     >>> first_fall_below([0.5, 0.4, 0.2, 0.3, 0.1], [0.9, 0.5, 0.1], 0.5)
     {0.9: 1, 0.5: 2, 0.1: None}
     """
-    m = np.asarray(mean_energy, dtype=float)
+    m = v.real_array("mean_energy", mean_energy, "a finite 1-D series")
+    if m.ndim != 1 or not np.isfinite(m).all():
+        raise ParameterError("mean_energy", f"array of shape {m.shape}", "a finite 1-D series")
     e0 = v.positive("e0", e0)
+    fs = v.real_array("fraction", fractions, "numbers > 0")
+    if fs.ndim != 1 or not fs.size:
+        raise ParameterError("fraction", fractions if isinstance(fractions, str) else fs.shape,
+                             "a list of one or more numbers > 0")  # fmt: skip
     out: dict[float, int | None] = {}
-    for f in fractions:
+    for f in fs.tolist():
         f = v.positive("fraction", f)
         below = np.flatnonzero(m < f * e0)
         out[f] = int(below[0]) if below.size else None

@@ -110,7 +110,7 @@ def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float
         first_out = np.argmin(inside, axis=1)  # the basin is star-shaped enough: first exit
         lo, hi = radius[0, first_out - 1], radius[0, first_out]
         for _ in range(40):
-            mid = 0.5 * (lo + hi)
+            mid = 0.5 * lo + 0.5 * hi  # the same bits as (lo + hi) / 2, without overflow
             x, y = mid * np.cos(theta[:, 0]), mid * np.sin(theta[:, 0])
             below = well.potential(x, y) <= energy
             lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)

@@ -11,32 +11,40 @@ integrate:
   (:func:`max_seconds`); :func:`check_work` prices an ensemble the same way.
 
 Two limits.  A computation that cannot resume (a simulation, ``chaos``, ``nnm``, any call
-of the Python API) may start at most :data:`MAX_INTERACTIVE_SECONDS` (one day) of
-estimated work: an interrupt or a crash loses all of it.  A sweep stores its points one by
-one and ``--resume`` continues it, so its points are checked (in :mod:`sinktheory.sweep`,
-inside :func:`resumable`) against the model's :data:`~sinktheory.model.MAX_SECONDS`
-(30 days) each.  A refusal says both, and how to go bigger.
+of the Python API) may start at most :data:`MAX_INTERACTIVE_SECONDS` (one hour) of
+estimated work: an interrupt or a crash loses all of it.  The user raises it, up to
+:data:`~sinktheory.model.MAX_SECONDS`, with ``--max-hours`` on the command line or
+:func:`interactive_limit` in Python.  A sweep stores its points one by one and
+``--resume`` continues it, so its points are checked (in :mod:`sinktheory.sweep`, inside
+:func:`resumable`) against :data:`~sinktheory.model.MAX_SECONDS` (30 days) each, and
+:func:`tally` collects their estimates, which the sweep prints before it starts.  A
+refusal says the estimate, the limit and how to go bigger.
 
 Examples
 --------
 >>> from sinktheory import RunSettings, Sink, Well
 >>> tangent_steps(particles=1, vectors=0), tangent_steps(particles=1, vectors=6)
 (1.0, 2.8)
->>> max_seconds() / 86400
+>>> max_seconds() / 3600
 1.0
 >>> with resumable():
 ...     max_seconds() / 86400
 30.0
->>> settings, sink = RunSettings(runs=100, periods=10**6), Sink(Well(0.5, 0.3, 4))
+>>> settings, sink = RunSettings(runs=10, periods=10**5), Sink(Well(0.5, 0.3, 4))
 >>> check_work(settings, sink, steps_per_period=10**5)  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-sinktheory.errors.ParameterError: periods = 1000000 is not allowed: must be smaller: at \
-most 8.64e+11 particle steps (1 day) in a computation that cannot resume (...about 11.6 \
-days); use fewer runs, periods or particles, or split the work into the points of a \
-resumable `sinktheory sweep` (up to 30 days per point))
->>> with resumable():
+sinktheory.errors.ParameterError: periods = 100000 is not allowed: must be smaller: at most \
+3.6e+10 particle steps (1 h) in a computation that cannot resume (...about 2.78 h); use \
+fewer runs, periods or particles, raise the limit (--max-hours, or \
+sinktheory.worklimit.interactive_limit; up to 720 h), or split the work into the points \
+of a resumable `sinktheory sweep`)
+>>> with interactive_limit(hours=3):
 ...     check_work(settings, sink, steps_per_period=10**5)
+>>> with resumable(), tally() as estimates:
+...     check_work(settings, sink, steps_per_period=10**5)
+>>> duration(sum(estimates))
+'2.78 h'
 """
 
 from __future__ import annotations
@@ -45,6 +53,7 @@ import contextlib
 from collections.abc import Iterator
 from contextvars import ContextVar
 
+from . import validation as v
 from .errors import ParameterError
 from .limits import MAX_INTERACTIVE_SECONDS
 from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
@@ -52,9 +61,12 @@ from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 __all__ = [
     "check_particle_steps",
     "check_work",
+    "duration",
+    "interactive_limit",
     "MAX_INTERACTIVE_SECONDS",
     "max_seconds",
     "resumable",
+    "tally",
     "tangent_steps",
     "VECTOR_STEP",
 ]
@@ -69,6 +81,12 @@ VECTOR_STEP = 0.3
 
 #: Whether the work being checked is a resumable sweep's (set by :func:`resumable`).
 _RESUMABLE: ContextVar[bool] = ContextVar("sinktheory_resumable_work", default=False)
+#: The limit of a computation that cannot resume, in seconds (set by :func:`interactive_limit`).
+_INTERACTIVE: ContextVar[float] = ContextVar(
+    "sinktheory_interactive_limit", default=MAX_INTERACTIVE_SECONDS
+)
+#: The estimates (seconds) of the checks made inside :func:`tally`, or None outside it.
+_TALLY: ContextVar[list[float] | None] = ContextVar("sinktheory_work_tally", default=None)
 
 
 def tangent_steps(particles: int, vectors: int) -> float:
@@ -81,9 +99,35 @@ def tangent_steps(particles: int, vectors: int) -> float:
 
 
 def max_seconds() -> float:
-    """The work limit in force, in estimated seconds: :data:`MAX_INTERACTIVE_SECONDS`,
-    or :data:`~sinktheory.model.MAX_SECONDS` inside :func:`resumable`."""
-    return MAX_SECONDS if _RESUMABLE.get() else MAX_INTERACTIVE_SECONDS
+    """The work limit in force, in estimated seconds: :data:`MAX_INTERACTIVE_SECONDS`
+    (or the limit :func:`interactive_limit` set), or :data:`~sinktheory.model.MAX_SECONDS`
+    inside :func:`resumable`."""
+    return MAX_SECONDS if _RESUMABLE.get() else _INTERACTIVE.get()
+
+
+@contextlib.contextmanager
+def interactive_limit(hours: float | None) -> Iterator[None]:
+    """Let computations that cannot resume start up to ``hours`` of estimated work inside
+    (``--max-hours`` of the commands); None keeps :data:`MAX_INTERACTIVE_SECONDS`.
+
+    ``hours`` may also lower the limit; at most :data:`~sinktheory.model.MAX_SECONDS`
+    (720 h), the limit of a sweep's point.
+    """
+    seconds = MAX_INTERACTIVE_SECONDS
+    if hours is not None:
+        top = MAX_SECONDS / 3600
+        allowed = f"a number of hours in (0, {top:.0f}]"
+        try:
+            seconds = 3600.0 * v.positive("max_hours", hours)
+        except ParameterError:
+            raise ParameterError("max_hours", hours, allowed) from None
+        if seconds > MAX_SECONDS:
+            raise ParameterError("max_hours", hours, allowed)
+    token = _INTERACTIVE.set(seconds)
+    try:
+        yield
+    finally:
+        _INTERACTIVE.reset(token)
 
 
 @contextlib.contextmanager
@@ -97,25 +141,50 @@ def resumable() -> Iterator[None]:
         _RESUMABLE.reset(token)
 
 
-def _days(seconds: float) -> str:
-    days = seconds / 86400
-    return f"{days:.3g} day{'' if days == 1 else 's'}"
+@contextlib.contextmanager
+def tally() -> Iterator[list[float]]:
+    """Collect the estimate (seconds) of every work check made inside, in the list yielded:
+    a sweep adds up its points' estimates this way to print them before it starts."""
+    estimates: list[float] = []
+    token = _TALLY.set(estimates)
+    try:
+        yield estimates
+    finally:
+        _TALLY.reset(token)
 
 
-def check_particle_steps(name: str, value: object, steps: float, what: str) -> None:
+def duration(seconds: float) -> str:
+    """``seconds`` in the unit a reader takes in at a glance.
+
+    >>> duration(42), duration(600), duration(3600), duration(86400 * 15.6)
+    ('42 s', '10 min', '1 h', '15.6 days')
+    """
+    for unit, size in (("days", 86400.0), ("h", 3600.0), ("min", 60.0)):
+        if seconds >= (2 * size if unit == "days" else size):
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.3g} s"
+
+
+def check_particle_steps(
+    name: str, value: object, steps: float, what: str, change: str = "smaller"
+) -> None:
     """Refuse ``value`` of ``name`` when ``steps`` particle steps (``what`` says of what)
     would take longer than the limit in force (:func:`max_seconds`) at the optimistic
     :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP`; the message gives the estimate,
-    the limit and the way to a larger job."""
+    the limit and the way to a larger job.  ``change`` says which way ``value`` must move
+    ("larger" for a clearance, say)."""
     seconds = steps * SECONDS_PER_PARTICLE_STEP
     limit = max_seconds()
     if seconds <= limit:
+        if (estimates := _TALLY.get()) is not None:
+            estimates.append(seconds)
         return
-    if limit < MAX_SECONDS:
+    if not _RESUMABLE.get():
         where = "in a computation that cannot resume"
         bigger = (
-            "use fewer runs, periods or particles, or split the work into the points of a "
-            f"resumable `sinktheory sweep` (up to {_days(MAX_SECONDS)} per point)"
+            "use fewer runs, periods or particles, raise the limit (--max-hours, or "
+            f"sinktheory.worklimit.interactive_limit; up to {MAX_SECONDS / 3600:.0f} h), or "
+            "split the work into the points of a resumable `sinktheory sweep`"
         )
     else:
         where = "per point of a sweep"
@@ -123,10 +192,10 @@ def check_particle_steps(name: str, value: object, steps: float, what: str) -> N
     raise ParameterError(
         name,
         value,
-        f"smaller: at most {limit / SECONDS_PER_PARTICLE_STEP:.3g} particle steps "
-        f"({_days(limit)}) {where}",
+        f"{change}: at most {limit / SECONDS_PER_PARTICLE_STEP:.3g} particle steps "
+        f"({duration(limit)}) {where}",
         why=f"{what} is {steps:.3g} particle steps at {SECONDS_PER_PARTICLE_STEP:g} s each, "
-        f"at least {seconds:.3g} s (about {_days(seconds)}); {bigger}",
+        f"at least {seconds:.3g} s (about {duration(seconds)}); {bigger}",
     )
 
 

@@ -89,7 +89,7 @@ from ..limits import DEFAULT_EPS, MAX_EPS
 from ..model import RunSettings, Sink
 from ..progress import ProgressBar, chunks
 from ..stepsize import DEFAULT_TOL, PERIOD, choose
-from ..worklimit import check_work
+from ..worklimit import check_particle_steps, check_work
 
 __all__ = [
     "BLOCK",
@@ -283,14 +283,34 @@ def controller_steps(
     >>> bool(np.abs(back - y0).max() < 1e-12), resets, resets_back
     (True, array([0]), array([0]))
     """
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     eps = check_eps(eps)
     count = v.positive_int("count", count)
-    module, q, vel, table = _engine_state(sink, values)
+    width = 2 + 4 * sink.particles
+    allowed = f"finite state rows of shape (R, {width}), R >= 1"
+    rows = v.real_array("values", values, allowed)
+    if rows.ndim != 2 or rows.shape[1] != width or not len(rows):
+        raise ParameterError("values", f"an array of shape {rows.shape}", allowed)
+    if not np.isfinite(rows).all():
+        raise ParameterError("values", "non-finite values", allowed)
+    runs = len(rows)
+    check_particle_steps("count", count, 2.0 * count * runs * sink.particles,
+                         f"{count} step(s) x {runs} run(s) x {sink.particles} particle(s) at "
+                         "2 particle steps each (estimated_steps)")  # fmt: skip
+    module, q, vel, table = _engine_state(sink, rows)
     A, Bk = _scheme_arrays(scheme)
     ctl = _control(eps, sink.well.n)
     if rho is None:
         rho = module.rate_of(q, vel, table, ctl)
-    rho = np.array(rho, dtype=float)
+    allowed = f"{runs} finite rates > 0, one per run"
+    rho = np.array(v.real_array("rho", rho, allowed), dtype=float)
+    if rho.shape != (runs,):
+        raise ParameterError("rho", f"an array of shape {rho.shape}", allowed)
+    if not (np.isfinite(rho) & (rho > 0)).all():
+        raise ParameterError(
+            "rho", rho.tolist() if runs <= 4 else "some not finite or <= 0", allowed
+        )
     resets = np.zeros(q.shape[1], dtype=np.int64)
     used = module.steps(q, vel, table, A, Bk, ctl, rho, count, resets)
     return join_values(q, vel), used, rho, resets

@@ -44,12 +44,16 @@ from ..progress import chunks
 from ..results import Result
 from ..runstats import mean_stderr
 from ..validation import fits_memory, flag, positive, positive_int, real_array
+from ..worklimit import check_particle_steps
 from . import kernels as K
 from .table import Table, rigid_table
 
 __all__ = [
+    "ADVANCEMENT_STEP",
+    "advancement_steps",
     "billiard",
     "BilliardResult",
+    "check_flights",
     "ENERGY_BOUND",
     "PERIOD",
     "RENORMALISATIONS",
@@ -73,6 +77,12 @@ RENORMALISATIONS = 32
 #: next to the motion, SHADOW_DISTANCE <= 1e-3 x the container's amplitude sqrt(2 E0).
 MIN_SHADOW_ENERGY = 0.5 * (1e3 * SHADOW_DISTANCE) ** 2
 PERIOD = 2 * math.pi
+#: Particle steps (:data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP`) one
+#: conservative-advancement step counts for in the work estimate: 1.2e-6 to 4e-5 s per
+#: step of the lower bound of :func:`advancement_steps` were measured (flat table,
+#: E0 = 0.5 to 5e7, fixed and moving, 2026-11 on the 2-core development machine); 1e-6 s
+#: keeps the estimate optimistic.
+ADVANCEMENT_STEP = 10.0
 
 
 def _stats(values: np.ndarray) -> dict[str, float]:
@@ -215,6 +225,46 @@ def _outputs(R: int, walls: int, periods: int, records: int) -> tuple:
             np.zeros((R, 2)))  # fmt: skip
 
 
+def advancement_steps(table: Table, velocities, mu: float, container, periods: int) -> float:
+    """A lower bound on the conservative-advancement steps of ``periods`` periods.
+
+    A flight search steps at most ``table.reach / vr`` at a time, where the bound speed vr
+    is at least the particle's speed and at least the container's amplitude
+    sqrt(X^2 + X'^2) (:func:`~sinktheory.billiard.kernels.next_hit`).  Fixed container:
+    each particle keeps its speed |v|, so at least |v| T / reach steps a period.  Moving
+    container: the energy E = (X^2 + X'^2) / 2 + mu sum |v|^2 / 2 is conserved, and the
+    larger of the amplitude and the fastest particle's speed is at least
+    sqrt(2 E / (1 + k mu)), so at least that speed x T / reach steps a period.
+
+    Examples
+    --------
+    >>> from sinktheory.billiard.table import stadium_table
+    >>> t = stadium_table(1, 1)
+    >>> advancement_steps(t, [[[3.0, 4.0]]], 1.0, None, 2) == 2 * PERIOD * 5 / t.reach
+    True
+    """
+    vel = np.asarray(velocities, dtype=float)
+    if container is None:
+        speed = float(np.sqrt((vel**2).sum(axis=-1)).sum())
+    else:
+        cont = np.asarray(container, dtype=float)
+        energy = 0.5 * (cont**2).sum(axis=-1) + 0.5 * mu * (vel**2).sum(axis=(1, 2))
+        speed = float(np.sqrt(2.0 * energy / (1.0 + vel.shape[1] * mu)).sum())
+    return periods * PERIOD * speed / table.reach
+
+
+def check_flights(table: Table, velocities, mu, container, periods: int, name, value) -> None:
+    """Refuse, naming ``name``, billiard runs whose flights would exceed the work limit
+    (:func:`sinktheory.worklimit.check_particle_steps`; :func:`advancement_steps` at
+    :data:`ADVANCEMENT_STEP` particle steps each)."""
+    steps = advancement_steps(table, velocities, mu, container, periods)
+    R = np.shape(velocities)[0]
+    check_particle_steps(
+        name, value, ADVANCEMENT_STEP * steps, f"{R} run(s) x {periods} period(s) of "
+        f"billiard flights, at least {steps:.3g} conservative-advancement steps",
+    )  # fmt: skip
+
+
 def simulate_billiard(
     table: Table,
     positions,
@@ -271,6 +321,12 @@ def simulate_billiard(
     for name, count in (("periods", periods), ("discard", discard)):  # 4 records each
         fits_memory(name, count, 32.0 * R * (count + 1), f"{R} run(s) x {count} period(s)",
                     "smaller: the records must fit in memory")  # fmt: skip
+    cont = None
+    if container is not None:
+        cont = np.array(real_array("container", container), dtype=float)
+        if cont.shape != (R, 2) or not np.all(np.isfinite(cont)):
+            raise ParameterError("container", f"shape {cont.shape}", f"finite, shape ({R}, 2)")
+    check_flights(table, vel, mu, cont, periods + discard, "periods", periods)
     arrays = _table_arrays(table)
     rng = np.random.default_rng(seed)
     times = PERIOD * np.arange(periods + 1)
@@ -288,9 +344,6 @@ def simulate_billiard(
         total = 0.5 * mu * v2
         method = "tangent map"
     else:
-        cont = np.array(real_array("container", container), dtype=float)
-        if cont.shape != (R, 2):
-            raise ParameterError("container", f"shape {cont.shape}", f"shape ({R}, 2)")
         if lyapunov:
             d = rng.normal(size=(R, 2 + 4 * k))
             d *= SHADOW_DISTANCE / np.sqrt((d**2).sum(axis=1))[:, None]
@@ -391,6 +444,8 @@ def billiard(
         vel = np.zeros_like(pos)
         container = np.zeros((settings.runs, 2))
         container[:, 0] = math.sqrt(2.0 * settings.container_energy)
+    name = "periods" if settings.periods >= settings.runs else "runs"
+    check_flights(table, vel, sink.mu, container, settings.periods, name, getattr(settings, name))
     return simulate_billiard(
         table, pos, vel, mu=sink.mu, container=container, periods=settings.periods,
         lyapunov=lyapunov, seed=settings.seed, parameters=params,

@@ -28,6 +28,9 @@ def check_point(p: dict) -> None:
     from ..chaos.sink import check_tangent_work
 
     steps = ensemble_check(p)
+    if p["runs"] < 2:  # the rule for a single run (sinktheory.runstats): no verdict
+        raise ParameterError("runs", p["runs"], "at least 2 in a chaos map: the verdict needs "
+                             "lambda_1's standard error, which one run does not have")  # fmt: skip
     check_renorm(p["renorm"])
     v.positive_int("megno", p["megno"], minimum=0, maximum=1)
     v.positive_int("transverse", p["transverse"], minimum=0, maximum=1)

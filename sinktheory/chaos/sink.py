@@ -45,7 +45,7 @@ from ..ensemble import (
 from ..errors import ParameterError
 from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
-from ..model import RunSettings, Sink
+from ..model import SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 from ..stepsize import aligned_step, step_of
 from ..worklimit import check_particle_steps, tangent_steps
 from .general import (
@@ -57,7 +57,7 @@ from .general import (
     vector_count,
 )
 from .result import ChaosResult
-from .vectors import random_vectors
+from .vectors import ORTHONORMALISE_SECONDS, random_vectors
 
 __all__ = [
     "chaos",
@@ -106,8 +106,10 @@ def check_tangent_work(
     memory or could not finish within the work limit (:mod:`sinktheory.worklimit`).
 
     The spectrum's 2D vectors of dimension 2D make its cost grow with the square of the
-    number of particles; it is named when the analysis without it would fit, else the
-    larger of ``runs`` and ``periods``.
+    number of particles, and their set-up (drawing and orthonormalising them, 2D x (2D)^2
+    per run at :data:`~sinktheory.chaos.vectors.ORTHONORMALISE_SECONDS`) with its cube;
+    it is named when the analysis without it would fit, else the larger of ``runs`` and
+    ``periods``.
     """
     dim = 1 + 2 * sink.particles
     R, P = settings.runs, settings.periods
@@ -115,12 +117,14 @@ def check_tangent_work(
     base = R * P * steps
 
     def work(vecs):
-        return base * sum(tangent_steps(sink.particles, m) for m in vecs)
+        setup = R * 2 * dim * max(vecs) ** 2 * ORTHONORMALISE_SECONDS / SECONDS_PER_PARTICLE_STEP
+        return base * sum(tangent_steps(sink.particles, m) for m in vecs) + setup
 
     def check(name, vecs):
         value = {"spectrum": spectrum, "periods": P, "runs": R}[name]
         what = f"{R} run(s) x {P} period(s) x {steps} step(s) with "
         what += f"{'+'.join(map(str, vecs))} deviation vector(s) of {sink.particles} particle(s)"
+        what += " (set-up included)"
         val.fits_memory(name, value, 16.0 * dim * max(vecs) * R, what, "smaller")
         check_particle_steps(name, value, work(vecs), what)
 

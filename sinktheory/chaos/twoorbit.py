@@ -75,15 +75,23 @@ def two_orbit_exponent(
     if direction is None:
         dq, dv = random_vectors(D, 1, R, seed)
     else:
-        dq, dv = (val.real_array("direction", a) for a in direction)
+        allowed = f"(dq, dv) of shape ({D}, 1, {R})"
+        try:  # a pair (dq, dv); text, numbers and other lengths are refused
+            pair = None if isinstance(direction, str) else list(direction)
+        except TypeError:
+            pair = None
+        if pair is None or len(pair) != 2:
+            shown = direction if isinstance(direction, str | int | float) else type(direction)
+            raise ParameterError("direction", getattr(shown, "__name__", shown), allowed)
+        dq, dv = (val.real_array("direction", a, allowed) for a in pair)
         if dq.shape != (D, 1, R) or dv.shape != (D, 1, R):
             raise ParameterError("direction", f"arrays of shapes {dq.shape}, {dv.shape}",
-                                 f"(dq, dv) of shape ({D}, 1, {R})")  # fmt: skip
+                                 allowed)  # fmt: skip
     u = np.concatenate([dq[:, 0], dv[:, 0]])
     norms = np.sqrt((u**2).sum(0))
     if not np.all(np.isfinite(norms) & (norms > 0)):
         r = int(np.flatnonzero(~(np.isfinite(norms) & (norms > 0)))[0])
-        raise ParameterError("direction", f"a vector of length {norms[r]!r} for run {r}",
+        raise ParameterError("direction", f"a vector of length {float(norms[r])!r} for run {r}",
                              "finite non-zero vectors, one per run")  # fmt: skip
     u = u / norms
     z = np.concatenate([q, v])

@@ -47,6 +47,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import ParameterError
 from ..runstats import mean_stderr, plus_minus
 
 __all__ = [
@@ -73,8 +74,26 @@ def threshold(periods: int) -> float:
 
 def chaotic(mean, se, periods: int):
     """True where an exponent is chaotic: its mean less two standard errors above
-    :func:`threshold` (arrays or numbers)."""
-    return np.asarray(mean) - 2 * np.asarray(se) > threshold(periods)
+    :func:`threshold` (arrays or numbers).
+
+    No verdict without a standard error (the rule for a single run,
+    :mod:`sinktheory.runstats`): a NaN ``se`` is refused, never read as regular.
+
+    >>> chaotic([0.1], [float("nan")], 300)
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: se = nan is not allowed: must be finite standard \
+errors >= 0 (from two runs or more: one run has none, so no verdict)
+    """
+    mean, se = np.asarray(mean, dtype=float), np.asarray(se, dtype=float)
+    bad = ~(np.isfinite(se) & (se >= 0))
+    if bad.any():
+        raise ParameterError(
+            "se",
+            float(se[bad].flat[0]),
+            "finite standard errors >= 0 (from two runs or more: one run has none, so no verdict)",
+        )
+    return mean - 2 * se > threshold(periods)
 
 
 @dataclass(frozen=True)

@@ -176,6 +176,19 @@ def add_json(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object on stdout")
 
 
+def add_work_limit(parser: argparse.ArgumentParser) -> None:
+    """``--max-hours``: the limit of estimated work the command may start (default one hour;
+    see :mod:`sinktheory.worklimit`), applied around the command by :mod:`sinktheory.cli`."""
+    parser.add_argument(
+        "--max-hours",
+        type=number,
+        default=None,
+        metavar="H",
+        help="refuse work estimated above H hours (default 1, at most 720; the estimate is "
+        "optimistic)",
+    )
+
+
 def add_well_arguments(
     parser: argparse.ArgumentParser, *, beta: bool = True, rigid: bool = False
 ) -> None:

@@ -15,7 +15,7 @@ import argparse
 
 from ..runstats import plus_minus
 from . import HELP as HELPS
-from ._common import Output, add_json, add_sink_arguments, number, png_path
+from ._common import Output, add_json, add_sink_arguments, add_work_limit, number, png_path
 
 __all__ = ["add_arguments", "HELP", "NAME", "run"]
 
@@ -40,6 +40,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     o = parser.add_argument_group("output")
     o.add_argument("--plot", help="draw the table, <E>(t) and lambda_1(t) to FILE.png")
     add_json(parser)
+    add_work_limit(parser)
 
 
 def _fmt(stats: dict) -> str:

@@ -21,6 +21,7 @@ from ._common import (
     add_json,
     add_sink_arguments,
     add_well_arguments,
+    add_work_limit,
     number,
     png_path,
     rigid_limit,
@@ -83,6 +84,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     o.add_argument("--plot", help="draw the convergence of the exponents to FILE.png")
     o.add_argument("--quiet", action="store_true", help="no progress bar")
     add_json(parser)
+    add_work_limit(parser)
 
 
 def _fmt(mean, se) -> str:

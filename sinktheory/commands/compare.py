@@ -18,7 +18,7 @@ import math
 
 from ..errors import ParameterError
 from . import HELP as HELPS
-from ._common import Output, add_json, number, png_path
+from ._common import Output, add_json, add_work_limit, number, png_path
 
 __all__ = ["add_arguments", "HELP", "KINDS", "NAME", "run"]
 
@@ -101,6 +101,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     o.add_argument("--quiet", action="store_true", help="no progress bar")
     add_json(parser)
+    add_work_limit(parser)
 
 
 def run(args: argparse.Namespace) -> Output:

@@ -12,6 +12,7 @@ from ._common import (
     add_json,
     add_sink_arguments,
     add_well_arguments,
+    add_work_limit,
     number,
     png_path,
     well_from_args,
@@ -49,6 +50,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="lifetime chart: Kac's return time against f for k = 1..5, measured points",
     )
     add_json(parser)
+    add_work_limit(parser)
 
 
 def _pm(value: float, stderr: float) -> str:

@@ -26,7 +26,15 @@ import math
 
 from ..errors import ParameterError
 from . import HELP as HELPS
-from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
+from ._common import (
+    Output,
+    add_json,
+    add_well_arguments,
+    add_work_limit,
+    number,
+    png_path,
+    well_from_args,
+)
 
 __all__ = ["add_arguments", "HELP", "NAME", "run"]
 
@@ -75,6 +83,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--runs", type=number, default=8, help="chaos map runs per beta (8)")
     g.add_argument("--periods", type=number, default=200, help="chaos map periods (200)")
     add_json(parser)
+    add_work_limit(parser)
 
 
 def _check(args) -> None:

@@ -20,6 +20,7 @@ from ._common import (
     add_json,
     add_sink_arguments,
     add_well_arguments,
+    add_work_limit,
     number,
     output_file,
     png_path,
@@ -108,6 +109,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     o.add_argument("--plot", help="draw <E>(t/T) with its standard-error band to FILE.png")
     o.add_argument("--quiet", action="store_true", help="no progress bar")
     add_json(parser)
+    add_work_limit(parser)
 
 
 def _npz_path(value: str | None) -> Path | None:

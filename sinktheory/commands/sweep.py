@@ -11,6 +11,7 @@ flagged done are computed.  The store opens with ``xarray.open_zarr(STORE)``.
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 from ..errors import ParameterError
@@ -20,7 +21,7 @@ from ..validation import writable_directory
 from . import HELP as HELPS
 from ._common import Output, add_json, damage_note, interruptible, number, resume_hint
 
-__all__ = ["add_arguments", "HELP", "NAME", "params_of", "run"]
+__all__ = ["add_arguments", "estimate_line", "HELP", "NAME", "params_of", "run"]
 
 NAME = "sweep"
 HELP = HELPS[NAME]
@@ -54,7 +55,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="with --resume: remove chunks that no longer decode and recompute their points",
     )
-    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--quiet", action="store_true", help="no estimate line, no progress bar")
     add_json(parser)
     parser.epilog = "parameters of each KIND: " + "; ".join(
         f"{name}: {', '.join(kind.params)}" for name, kind in KINDS.items()
@@ -70,6 +71,18 @@ def params_of(specs: list[str]) -> dict[str, list[Value]]:
             raise ParameterError(name, spec, "given once (it was given twice)")
         params[name] = values
     return params
+
+
+def estimate_line(sweep) -> str:
+    """What the sweep prints before it starts: its points and their estimated work."""
+    from ..limits import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
+    from ..worklimit import duration
+
+    return (
+        f"{sweep.grid.size} point(s), estimated work {duration(sweep.estimate)} in all "
+        f"(optimistic: {SECONDS_PER_PARTICLE_STEP:g} s per particle step; each point may "
+        f"take up to {duration(MAX_SECONDS)})"
+    )
 
 
 def run(args: argparse.Namespace) -> Output:
@@ -88,6 +101,8 @@ def _run(args: argparse.Namespace) -> Output:
     from ..sweep.runner import execute
 
     sweep = Sweep.make(args.kind, params_of(args.param), args.seed)
+    if not args.quiet:  # before any work: the estimate
+        print(f"sinktheory sweep: {estimate_line(sweep)}", file=sys.stderr, flush=True)
     done = execute(
         sweep,
         store=args.out,
@@ -106,6 +121,7 @@ def _run(args: argparse.Namespace) -> Output:
         "repaired": done.repaired,
         "skipped": done.skipped,
         "seconds": done.seconds,
+        "estimated_seconds": sweep.estimate,
         "where": done.where,
         "seed": sweep.seed,
         "fingerprint": sweep.fingerprint,

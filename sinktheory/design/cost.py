@@ -40,6 +40,7 @@ import numpy as np
 
 from ..ensemble import settings_of, sink_of
 from ..stepsize import choose
+from ..worklimit import duration
 
 #: Seconds to generate and compile the engine of one well shape and n the first time,
 #: with its tangent-map functions for lambda_1 (30-60 s each on the development machine
@@ -103,7 +104,7 @@ class Estimate:
         p = self.calibration_point
         where = ", ".join(f"{k} = {p[k]}" for k in ("shape", "beta", "n", "particles"))
         return (
-            f"estimated {_duration(self.total_seconds)} for {self.points} point(s) on "
+            f"estimated {duration(self.total_seconds)} for {self.points} point(s) on "
             f"{self.workers} worker(s) (mean {self.per_point.mean():.3g} s per point on one "
             f"core; calibrated at {where} in {self.calibration_seconds:.1f} s"
             + (
@@ -113,14 +114,6 @@ class Estimate:
             )
             + ")"
         )
-
-
-def _duration(seconds: float) -> str:
-    if seconds < 120:
-        return f"{seconds:.0f} s"
-    if seconds < 7200:
-        return f"{seconds / 60:.1f} min"
-    return f"{seconds / 3600:.2f} h"
 
 
 def work(point: dict, tangent: float = TANGENT, dissipative: float = DISSIPATIVE) -> float:

@@ -75,6 +75,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..limits import MAX_RESAMPLES
 from ..results import Result
 from .law import EquilibriumLaw, check_fractions
 
@@ -117,8 +118,12 @@ def jackknife_ratio(numerators, denominators) -> tuple[float, float]:
     >>> value, se
     (2.0, 0.0)
     """
-    num = np.asarray(numerators, dtype=float)
-    den = np.asarray(denominators, dtype=float)
+    allowed = "finite 1-D arrays of equal length (one value per run)"
+    num = v.real_array("numerators", numerators, allowed)
+    den = v.real_array("denominators", denominators, allowed)
+    for name, a in (("numerators", num), ("denominators", den)):
+        if a.ndim != 1 or a.shape != num.shape or not np.isfinite(a).all():
+            raise ParameterError(name, f"an array of shape {a.shape}", allowed)
     total_den = den.sum()
     if total_den <= 0:
         return math.nan, math.nan
@@ -169,8 +174,12 @@ def kaplan_meier_mean(events, at_risk) -> float:
     >>> kaplan_meier_mean([0, 1, 1, 1], [0, 4, 2, 1])  # returns 1, 2, 3 and one > 1
     2.125
     """
-    d = np.asarray(events, dtype=float)
-    n = np.asarray(at_risk, dtype=float)
+    allowed = "finite counts >= 0, 1-D arrays of equal length"
+    d = v.real_array("events", events, allowed)
+    n = v.real_array("at_risk", at_risk, allowed)
+    for name, a in (("events", d), ("at_risk", n)):
+        if a.ndim != 1 or a.shape != d.shape or not (np.isfinite(a) & (a >= 0)).all():
+            raise ParameterError(name, f"an array of shape {a.shape}", allowed)
     if d.sum() == 0:
         return math.nan
     last = int(np.flatnonzero(n > 0)[-1])
@@ -305,12 +314,14 @@ def ks_distance(samples, cdf, *, resamples: int = BOOTSTRAP, seed: int = 0):
     >>> bool(p < 0.01)
     True
     """
+    if not callable(cdf):
+        raise ParameterError("cdf", type(cdf).__name__, "a function of s (the law's CDF)")
     x = v.real_array("samples", samples)
     if x.ndim != 2 or x.shape[0] < 2:
         raise ParameterError(
             "samples", f"an array of shape {x.shape}", "shape (runs >= 2, samples)"
         )
-    resamples = v.positive_int("resamples", resamples, minimum=19)
+    resamples = v.positive_int("resamples", resamples, minimum=19, maximum=MAX_RESAMPLES)
     seed = v.positive_int("seed", seed, minimum=0)
     levels = (np.arange(KS_GRID) + 0.5) / KS_GRID
     grid = np.quantile(x, levels)
@@ -484,9 +495,14 @@ def measure_lifetimes(
     >>> c.samples, c.runs, round(c.law.energy, 6)
     (41, 2, 0.5)
     """
+    from ..model import RunSettings, Sink
     from ..simulate import simulate
     from .law import equilibrium_law
 
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    if not isinstance(settings, RunSettings):
+        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
     settings.check(sink)
     v.positive_int("transient", transient, minimum=0, maximum=settings.periods - 4)
     fractions = check_fractions(fractions)

@@ -66,6 +66,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..limits import MAX_RESAMPLES
 from ..results import Result
 
 __all__ = ["BOOTSTRAP", "measure_relaxation", "Relaxation", "STRETCH_RANGE"]
@@ -99,7 +100,8 @@ class Relaxation(Result):
     amplitude, rate_time, rate_stderr : A and tau of the tail, tau's bootstrap error
     stretch, stretch_stderr : b of the whole approach and its bootstrap error
     chi2 : reduced chi-square of the tail's fit (degrees of freedom: windows - 2)
-    late_z : (mean over the second half of the windows - mu) / its standard error
+    late_z : (mean over the second half of the windows - mu) / its standard error (NaN
+        when the runs' late means are all equal: no standard error)
     """
 
     target: float
@@ -271,10 +273,13 @@ def measure_relaxation(
     window = v.positive_int("window", window, maximum=e.shape[1] // (2 * TAIL_WINDOWS))
     if not 0 < v.finite("level", level) < 1:
         raise ParameterError("level", level, "a number in (0, 1)")
-    resamples = v.positive_int("resamples", resamples, minimum=20)
+    resamples = v.positive_int("resamples", resamples, minimum=20, maximum=MAX_RESAMPLES)
     seed = v.positive_int("seed", seed, minimum=0)
     R, n = e.shape[0], e.shape[1] // window
     per_run = (e[:, : n * window].reshape(R, n, window).mean(axis=2) - target) / target
+    if not np.abs(per_run).max() < 1e100:  # the fit squares it
+        why = "the relative excess |<E_c> - target| / target is fitted"
+        raise ParameterError("target", target, "within 1e100 of the energies' scale", why=why)
     times = (np.arange(n) + 0.5) * window
     means, stderr = _curve(np.vstack([np.ones(R), _draws(R, resamples, seed)]), per_run)
     stderr = np.where(stderr > 0, stderr, np.min(stderr[stderr > 0], initial=1.0))
@@ -313,5 +318,11 @@ def measure_relaxation(
         stretch=math.exp(whole[2]),
         stretch_stderr=_spread(stretches),
         chi2=chi2 / max(int(np.sum(times >= t_tail)) - 2, 1),
-        late_z=float(late.mean() / (late.std(ddof=1) / math.sqrt(R))),
+        late_z=_z(late),
     )
+
+
+def _z(late: np.ndarray) -> float:
+    """Mean of ``late`` (one value per run) over its standard error; NaN without one."""
+    sd = float(late.std(ddof=1))
+    return float(late.mean() / (sd / math.sqrt(late.size))) if sd > 0 else math.nan

@@ -186,6 +186,10 @@ def floquet(M: np.ndarray, f: np.ndarray, g: np.ndarray, free=None) -> Floquet:
                              "a square (2D, 2D) monodromy with f and g of shape (2D,)")  # fmt: skip
     if not (np.isfinite(M).all() and np.isfinite(f).all() and np.isfinite(g).all()):
         raise ParameterError("M", "non-finite entries", "finite M, f and g")
+    det = float(np.linalg.det(M))
+    if not abs(det - 1.0) <= 0.5:  # singular, or no flow's: Liouville keeps volumes
+        raise ParameterError("M", f"a matrix of determinant {det:.3g}",
+                             "the monodromy of a Hamiltonian flow (determinant 1)")  # fmt: skip
     free = np.arange(n) if free is None else v.real_array("free", free).ravel()
     if (
         free.size < 2

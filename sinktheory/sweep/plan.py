@@ -3,7 +3,8 @@
 :meth:`Sweep.make` validates everything before any work starts: parameter names and
 types, and every point of the grid with the model's own validators, so a bad value fails
 at once with a :class:`~sinktheory.errors.ParameterError` naming the parameter.  A point's
-work is checked against the resumable limit (:func:`sinktheory.worklimit.resumable`).
+work is checked against the resumable limit (:func:`sinktheory.worklimit.resumable`), and
+the estimates of these checks add up to the sweep's (:attr:`Sweep.estimate`).
 
 Examples
 --------
@@ -19,6 +20,7 @@ sinktheory.errors.ParameterError: beta = 0.5 is not allowed: must be < alpha = 0
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -29,7 +31,7 @@ import xarray as xr
 from .. import __version__
 from .. import validation as v
 from ..errors import ParameterError
-from ..worklimit import resumable
+from ..worklimit import resumable, tally
 from .grid import Grid, fingerprint, point_seed
 from .kinds import Kind, get_kind
 
@@ -48,6 +50,10 @@ class Sweep:
     seed: int
     spec: str
     fingerprint: str
+    #: Estimated seconds of all points together: the sum of the estimates their work
+    #: checks made (:func:`sinktheory.worklimit.tally`; optimistic, as the limit's), or of
+    #: the kind's rough cost for a point that checks none (a floquet point).
+    estimate: float = 0.0
 
     @classmethod
     def make(cls, kind: str, params: Mapping[str, Any], seed: int = 0) -> Sweep:
@@ -59,12 +65,16 @@ class Sweep:
             )
         seed = v.positive_int("seed", seed, minimum=0)
         grid = Grid.from_params(k.complete(params))
+        estimates = []
         with resumable():  # points are stored and resumed one by one: the 30-day limit
             for index in range(grid.size):
-                k.check(grid.point(index))
+                point = grid.point(index)
+                with tally() as checked:
+                    k.check(point)
+                estimates.append(math.fsum(checked) if checked else k.cost(point))
         _check_memory(k, grid)
         spec, digest = fingerprint(k.name, grid, seed)
-        return cls(k, grid, seed, spec, digest)
+        return cls(k, grid, seed, spec, digest, math.fsum(estimates))
 
     # --- points -------------------------------------------------------------------------
     def task(self, index: int) -> tuple[int, dict, int]:

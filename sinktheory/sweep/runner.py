@@ -42,6 +42,7 @@ import time
 import warnings
 from collections.abc import Iterator, Mapping
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -323,8 +324,12 @@ def _run_here(kind: str, tasks: list) -> Iterator[tuple[list, list]]:
 
 def _run_pool(pool: ProcessPoolExecutor, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
     with HeldSignals() as signals:
-        with _main_file_hidden():  # the workers are started by these submits
-            futures = {pool.submit(_checked, kind, task): task for task in tasks}
+        try:
+            with _main_file_hidden():  # the workers are started by these submits
+                futures = {pool.submit(_checked, kind, task): task for task in tasks}
+        except (EOFError, OSError, BrokenProcessPool):
+            signals.release()  # an interrupt that ended the forkserver is raised instead
+            raise
         remaining = set(futures)
         while remaining:
             finished, remaining = wait(remaining, timeout=0.2, return_when=FIRST_COMPLETED)
@@ -391,7 +396,8 @@ def _context():
     """forkserver: children start from a clean process with the point functions imported
     (fork is unsafe once numba's thread pool runs; spawn re-imports everything per child)."""
     context = multiprocessing.get_context("forkserver")
-    context.set_forkserver_preload(["sinktheory.sweep.runner"])
+    # SIGINT ignored before the heavy imports (see sinktheory._forkserver_sigint)
+    context.set_forkserver_preload(["sinktheory._forkserver_sigint", "sinktheory.sweep.runner"])
     return context
 
 

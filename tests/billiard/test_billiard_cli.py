@@ -67,3 +67,43 @@ def test_bad_input_one_line_exit_2_nothing_written(capsys, tmp_path, extra, name
     assert code == 2
     assert err.count("\n") == 1 and f"{name} = " in err
     assert not png.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_huge_energy_is_refused_with_its_estimate_before_any_flight(capsys, tmp_path, monkeypatch):
+    """Issue 34: E0 = 1e18 ran 28 s, then failed.  The flights' work is bounded below by
+    speed x time / reach steps (moving container: speed sqrt(2 E0 / (1 + m))), counted
+    at ADVANCEMENT_STEP particle steps each; here by hand: 7.36 days, over the hour."""
+    import math
+
+    from _cli import refused
+
+    from sinktheory.billiard.run import ADVANCEMENT_STEP
+    from sinktheory.billiard.table import rigid_table
+
+    reach = rigid_table("flat", 0.5, 0.3).reach
+    steps = 2 * 10 * 2 * math.pi * math.sqrt(2e18 / 1.2) / reach
+    argv = ["billiard", "--alpha", "0.5", "--beta", "0.3", "--energy", "1e18", "--runs", "2",
+            "--periods", "10"]  # fmt: skip
+    line = refused(argv, capsys, tmp_path, monkeypatch, "periods")
+    assert f"at least {steps:.3g} conservative-advancement steps" in line, line
+    assert f"about {ADVANCEMENT_STEP * steps * 1e-7 / 86400:.3g} days" in line, line
+    # fixed container: every particle keeps its speed sqrt(2 E0 / m)
+    line = refused([*argv, "--fixed"], capsys, tmp_path, monkeypatch, "periods")
+    fixed = 2 * 10 * 2 * math.pi * math.sqrt(2e18 / 0.2) / reach
+    assert f"at least {fixed:.3g} conservative-advancement steps" in line, line
+
+
+def test_flight_work_bound_against_a_hand_count():
+    """advancement_steps of a moving container: E = (3^2 + 4^2) / 2 + 0.5 x 0.2 x 1^2 =
+    12.6, bound speed sqrt(2 E / 1.2); two runs add up."""
+    import math
+
+    from sinktheory.billiard.run import advancement_steps
+    from sinktheory.billiard.table import stadium_table
+
+    t = stadium_table(1, 1)
+    vel = np.array([[[1.0, 0.0]], [[0.0, 0.0]]])
+    cont = np.array([[3.0, 4.0], [0.0, 1.0]])
+    speeds = math.sqrt(2 * 12.6 / 1.2) + math.sqrt(2 * 0.5 / 1.2)
+    got = advancement_steps(t, vel, 0.2, cont, 3)
+    assert got == pytest.approx(3 * 2 * math.pi * speeds / t.reach, rel=1e-14)

@@ -195,3 +195,23 @@ def test_steps_per_run_only_where_the_runs_are_the_callers():
     for f in (monodromy, two_orbit_exponent):
         with pytest.raises(ParameterError, match="dt"):
             f(HENON_HEILES, q, v, [], dt=np.array([0.1, 0.1]), steps=10, segments=1)
+
+
+def test_one_run_gives_no_chaos_verdict():
+    """Issue 34: a NaN standard error (one run) made ``chaotic`` return False (regular),
+    and the chaos sweep kind allowed runs = 1.  Now the kind refuses it before any work
+    and the verdict refuses a NaN standard error, as ergodicity's is undecided."""
+    from sinktheory.chaos.verdicts import chaotic
+    from sinktheory.sweep.chaosmap import chaos_map
+    from sinktheory.sweep.plan import Sweep
+
+    with pytest.raises(ParameterError, match=r"^se = nan .*one run has none"):
+        chaotic([0.5, 0.1], [0.01, math.nan], 300)
+    with pytest.raises(ParameterError, match=r"^se = -0.1 "):
+        chaotic(0.5, -0.1, 300)
+    with pytest.raises(ParameterError, match=r"^runs = 1 .*standard error"):
+        Sweep.make("chaos", {"alpha": 0.5, "beta": [0.1, 0.3], "n": 4, "runs": 1})
+    with pytest.raises(ParameterError, match=r"^runs = 1 "):
+        chaos_map(0.5, 4, [0.1], runs=1, periods=10, dt=0.01, workers=1)
+    # by hand at 300 periods: threshold 3 ln(600 pi) / (600 pi) = 0.01200
+    assert chaotic([0.03, 0.03], [0.008, 0.0095], 300).tolist() == [True, False]

@@ -187,3 +187,18 @@ def test_lifetime_command_says_what_a_short_record_cannot_give(capsys):
     code, out, _ = run_cli([*argv, "--periods", "30"], capsys)
     assert code == 0 and "autocorrelation time not measurable" in out
     assert "nan" not in out.lower() and " -0." not in out
+
+
+def test_stiff_container_is_estimated_before_it_runs(capsys, tmp_path, monkeypatch):
+    """Issue 34: --gamma 1e18 ran minutes unannounced.  Its step resolves the stiff
+    container (millions of steps a period, against 575 at gamma = 1), so 2 runs x 1000
+    periods are over the hour and refused before any integration, naming periods."""
+    import re
+
+    from _cli import refused
+
+    argv = ["lifetime", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--gamma", "1e18",
+            "--runs", "2", "--periods", "1000"]  # fmt: skip
+    line = refused(argv, capsys, tmp_path, monkeypatch, "periods")
+    steps = int(re.search(r"x (\d+) step\(s\)", line).group(1))
+    assert steps > 10**6 and "--max-hours" in line, line

@@ -195,13 +195,95 @@ def _rigid_and_equilibrium_entries(small):
     ]  # fmt: skip
 
 
+def _newer_entries():
+    """The simulation, attachment, comparison and statistics entry points (issue 34)."""
+    from sinktheory import RunSettings
+    from sinktheory.adaptive import controller_steps
+    from sinktheory.attachments import Attachment, impulse_response
+    from sinktheory.compare.efficiency import compare
+    from sinktheory.ensemble import start_state
+    from sinktheory.equilibrium import equilibrium_law
+    from sinktheory.equilibrium.lifetime import (
+        autocorrelation_time,
+        compare_with_law,
+        jackknife_ratio,
+        kaplan_meier_mean,
+        ks_distance,
+        measure_lifetimes,
+        visit_statistics,
+    )
+    from sinktheory.equilibrium.relaxation import measure_relaxation
+    from sinktheory.recurrence import epsilon_for_rate, recurrence_rate, rqa
+    from sinktheory.simulate import simulate
+    from sinktheory.sinkstats import (
+        equipartition_container_energy,
+        first_fall_below,
+        running_mean,
+        sink_measures,
+    )
+    from sinktheory.vibroimpact import modes, simulate_vibroimpact
+
+    small = RunSettings(runs=2, periods=2, seed=1)
+    law = equilibrium_law(_sink(), 0.5)
+    runs = 0.5 * np.abs(np.sin(np.arange(60.0)))[None, :] * np.array([[1.0], [0.9], [0.8]])
+    y0 = start_state(_sink(), 0.5, np.array([[[0.003, -0.004]]]))
+    return [
+        ("simulate", simulate, dict(sink=_sink(), settings=small, method=None, dt=None,
+                                    tol=None, record=("container",), progress=False)),
+        ("controller_steps", controller_steps, dict(sink=_sink(), values=y0, count=3,
+                                                    eps=0.2, rho=None)),
+        ("simulate_vibroimpact", simulate_vibroimpact,
+         dict(start=np.array([[0.0, 1.0, 0.0, 0.0]]), clearance=0.2, mass=0.2, damping=0.05,
+              periods=2, samples_per_period=4, energy_bound=None)),
+        ("modes", modes, dict(mass=0.2, damping=0.05)),
+        ("impulse_response", impulse_response,
+         dict(att=Attachment("impact"), energy=0.1, damping=0.05, periods=2, runs=2, seed=0,
+              samples_per_period=4, tol=None, dt=None, box=0.01, energy_bound=None,
+              line_offset=0.0)),
+        ("compare", compare, dict(attachments=[Attachment("impact")], energies=[0.1],
+                                  damping=0.05, periods=2, runs=2)),
+        ("measure_lifetimes", measure_lifetimes,
+         dict(sink=_sink(), settings=RunSettings(runs=2, periods=30, seed=1), transient=10,
+              fractions=(0.5,), tol=None, progress=False)),
+        ("compare_with_law", compare_with_law,
+         dict(energy_runs=runs, law=law, transient=10, fractions=(0.5,), seed=0)),
+        ("ks_distance", ks_distance, dict(samples=runs, cdf=law.cdf, resamples=20, seed=0)),
+        ("autocorrelation_time", autocorrelation_time, dict(series=runs[0])),
+        ("jackknife_ratio", jackknife_ratio, dict(numerators=[1.0, 2.0, 3.0],
+                                                   denominators=[2.0, 2.0, 4.0])),
+        ("kaplan_meier_mean", kaplan_meier_mean, dict(events=[1, 1, 0], at_risk=[3, 2, 1])),
+        ("visit_statistics", visit_statistics, dict(inside=runs > 0.25)),
+        ("measure_relaxation", measure_relaxation,
+         dict(energy_runs=runs, target=0.3, fraction=0.05, tail=1.0, window=5, level=0.95,
+              resamples=20, seed=0)),
+        ("sink_measures", sink_measures,
+         dict(energy_runs=runs, e0=0.5, total_energy=0.5, particles=1, n=4, transient=None,
+              fractions=(0.5,))),
+        ("running_mean", running_mean, dict(series=runs[0], window=5)),
+        ("first_fall_below", first_fall_below, dict(mean_energy=runs[0], fractions=[0.5],
+                                                    e0=0.5)),
+        ("equipartition_container_energy", equipartition_container_energy,
+         dict(total_energy=0.5, particles=1, n=4, dimension=2)),
+        ("rqa", rqa, dict(energy=runs[0], eps=None, theiler=1, l_min=2, v_min=2)),
+        ("recurrence_rate", recurrence_rate, dict(energy=runs[0], eps=0.05)),
+        ("epsilon_for_rate", epsilon_for_rate, dict(energy=runs[0], rate=0.05)),
+    ]  # fmt: skip
+
+
 ENTRIES = entries()
+NEWER = _newer_entries()
 
 
 @pytest.mark.parametrize(("name", "function", "valid"), ENTRIES, ids=[e[0] for e in ENTRIES])
 @settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(data=st.data())
 def test_only_documented_errors_escape(name, function, valid, data):
+    _call_with_one_hostile_argument(function, valid, data)
+
+
+def _call_with_one_hostile_argument(function, valid, data):
+    """Replace one argument of ``valid`` by a hostile value; only the package's errors may
+    escape, a ParameterError naming its parameter first."""
     argument = data.draw(st.sampled_from(sorted(valid)), label="argument")
     value = data.draw(st.sampled_from(HOSTILE), label="value")
     try:
@@ -212,9 +294,16 @@ def test_only_documented_errors_escape(name, function, valid, data):
         pass
 
 
+@pytest.mark.parametrize(("name", "function", "valid"), NEWER, ids=[e[0] for e in NEWER])
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(data=st.data())
+def test_newer_entry_points_raise_only_documented_errors(name, function, valid, data):
+    _call_with_one_hostile_argument(function, valid, data)
+
+
 def test_valid_arguments_run():
     """The base arguments are valid: each entry point runs with them as they are."""
-    for _, function, valid in ENTRIES:
+    for _, function, valid in ENTRIES + NEWER:
         function(**valid)
 
 

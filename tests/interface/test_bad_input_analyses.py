@@ -45,9 +45,29 @@ CASES = [
     (["nnm", *WELL, "--continue-in", "energy", "--steps", "1000000000"], "steps", "1000000]"),
     ([*NNM, "--points", "10000", "--ds", "1e-300"], "ds", "[1e-06, 10]"),
     ([*DESIGN, "--bootstrap", "1000000000"], "bootstrap", "[2, 100000]"),
-    (["chaos", *WELL, "--particles", "1000", "--spectrum", "--quiet"], "spectrum", "4002"),
-    # 15.6 days estimated: under the sweeps' 30 days, over a one-shot computation's day
-    (["chaos", *WELL, "--particles", "200", "--runs", "25", "--spectrum"], "spectrum", "(1 day)"),
+    (
+        ["chaos", *WELL, "--particles", "1000", "--runs", "2", "--periods", "2", "--spectrum"],
+        "spectrum",
+        "4002",
+    ),  # fmt: skip
+    # 15.6 days estimated: under the sweeps' 30 days, over a one-shot computation's hour
+    # (lambda_1 alone takes 2 h here, so periods is named)
+    (["chaos", *WELL, "--particles", "200", "--runs", "25", "--spectrum"], "periods", "15.6 days"),
+    # issue 34: over the hour, refused before the vectors' set-up (which alone took minutes)
+    (
+        ["chaos", *WELL, "--particles", "1000", "--runs", "2", "--periods", "1", "--spectrum"],
+        "spectrum",
+        "(set-up included)",
+    ),
+    (
+        ["chaos", *WELL, "--particles", "200", "--runs", "25", "--periods", "5", "--spectrum"],
+        "spectrum",
+        "--max-hours",
+    ),
+    ([*CHAOS, "--max-hours", "721"], "max_hours", "(0, 720]"),
+    ([*CHAOS, "--max-hours", "0"], "max_hours", "(0, 720]"),
+    ([*CHAOS, "--max-hours", "nan"], "max_hours", "(0, 720]"),
+    ([*CHAOS, "--max-hours", "1e-9"], "runs", "(3.6e-06 s)"),  # lowered below this job
     (
         ["simulate", *WELL, "--runs", "10000", "--periods", "100000", "--particles", "20"],
         "periods",
@@ -93,14 +113,15 @@ def test_spectrum_cost_grows_with_the_square_of_the_dimension():
         with pytest.raises(ParameterError) as info:
             check_tangent_work(sink, RunSettings(runs=10, periods=periods * 1000), 1000, None, 0, 0)
         assert info.value.name == "periods"
-    with pytest.raises(ParameterError, match="cannot resume"):  # one shot: a day
+    with pytest.raises(ParameterError, match="cannot resume"):  # one shot: an hour
         check_tangent_work(sink, RunSettings(runs=10, periods=periods - 2), 1000, "full", 0, 0)
 
 
-def test_one_shot_work_limit_is_a_day_and_a_sweep_point_30_days():
+def test_one_shot_work_limit_is_an_hour_and_a_sweep_point_30_days():
     """The same ensemble, estimated by hand at 11.6 days (100 runs x 1e5 periods x 1000
     steps x 1000 particles at 1e-7 s): simulate() refuses it naming periods and pointing to
-    a sweep; a sweep point accepts it, and refuses ten times more (116 days)."""
+    --max-hours and a sweep; a sweep point accepts it, and refuses ten times more (116
+    days)."""
     import math
 
     from sinktheory import RunSettings, Sink
@@ -112,14 +133,53 @@ def test_one_shot_work_limit_is_a_day_and_a_sweep_point_30_days():
 
     dt = 2 * math.pi / 1000
     seconds = 100 * 10**5 * 1000 * 1000 * SECONDS_PER_PARTICLE_STEP
-    assert MAX_INTERACTIVE_SECONDS == 86400 < seconds < MAX_SECONDS
-    with pytest.raises(ParameterError, match=r"cannot resume .*11.6 days.*sinktheory sweep"):
+    assert MAX_INTERACTIVE_SECONDS == 3600 < seconds < MAX_SECONDS
+    with pytest.raises(ParameterError, match=r"cannot resume .*11.6 days.*--max-hours.*sweep"):
         simulate(Sink(FIG8_WELL, 1000), RunSettings(runs=100, periods=10**5), dt=dt)
     point = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 100, "periods": 10**5, "dt": dt}
-    Sweep.make("ensemble", {**point, "particles": 1000})
+    sweep = Sweep.make("ensemble", {**point, "particles": 1000})
+    assert sweep.estimate == pytest.approx(seconds, rel=1e-12)  # what the sweep prints
     with pytest.raises(ParameterError, match=r"per point of a sweep .*116 days") as info:
         Sweep.make("ensemble", {**point, "particles": 1000, "dt": dt / 10})
     assert info.value.name == "periods"
+
+
+def test_interactive_limit_is_raised_and_lowered_by_the_user():
+    """An ensemble estimated by hand at 2.78 h (10 runs x 1e5 periods x 1e5 steps x 1
+    particle at 1e-7 s) is refused under the default hour and passes the check with
+    ``interactive_limit(3)``; 2.7 h refuses it again, and the limit is restored after."""
+    from sinktheory import RunSettings, Sink
+    from sinktheory.errors import ParameterError
+    from sinktheory.worklimit import check_work, interactive_limit, max_seconds
+
+    settings, sink = RunSettings(runs=10, periods=10**5), Sink(FIG8_WELL)
+    with pytest.raises(ParameterError, match=r"\(1 h\) .*about 2.78 h"):
+        check_work(settings, sink, 10**5)
+    with interactive_limit(3):
+        check_work(settings, sink, 10**5)
+        assert max_seconds() == 3 * 3600
+    with interactive_limit(2.7), pytest.raises(ParameterError, match=r"\(2.7 h\)"):
+        check_work(settings, sink, 10**5)
+    assert max_seconds() == 3600
+
+
+def test_sweep_prints_its_estimate_before_any_work(capsys, tmp_path, monkeypatch):
+    """The estimate line comes first on stderr, and equals the hand count: 2 points x 2 runs
+    x 3 periods x 512 steps x 1 particle at 1e-7 s."""
+    import json
+
+    from _cli import run_cli
+
+    monkeypatch.chdir(tmp_path)
+    argv = ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=0.1,0.3"]
+    argv += ["--param", "n=4", "--param", "runs=2", "--param", "periods=3",
+             "--param", f"dt={2 * np.pi / 512!r}", "--out", "s.zarr", "--workers", "1",
+             "--json"]  # fmt: skip
+    code, out, err = run_cli(argv, capsys)
+    assert code == 0, err
+    seconds = 2 * 2 * 3 * 512 * 1 * 1e-7
+    assert err.startswith(f"sinktheory sweep: 2 point(s), estimated work {seconds:.3g} s in all")
+    assert json.loads(out)["estimated_seconds"] == pytest.approx(seconds, rel=1e-12)
 
 
 # --------------------------------------------------------------------------- interrupts

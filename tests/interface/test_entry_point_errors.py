@@ -132,8 +132,23 @@ API.update(
             lambda: _continue_both(interval=(1, 2)),
             "interval",
         ),
+        # issue 34, left from before: multipliers 0 with trivial_error 1 were returned
+        "floquet singular M": (lambda: floquet_of(np.zeros((4, 4))), "M"),
+        "floquet det 2": (lambda: floquet_of(np.diag([2.0, 1, 1, 1])), "M"),
+        "two_orbit direction not a pair": (
+            lambda: _two_orbit((1, 2, 3)),
+            "direction",
+        ),  # ValueError
+        "two_orbit direction number": (lambda: _two_orbit(5), "direction"),  # TypeError
+        "two_orbit direction ragged": (lambda: _two_orbit([[1, 2], [3]]), "direction"),
     }
 )
+
+
+def floquet_of(M):
+    from sinktheory.nnm.stability import floquet
+
+    return floquet(M, np.array([1.0, 0, 0, 0]), np.array([0, 1.0, 0, 0]))
 
 
 @pytest.mark.parametrize("case", list(API))

@@ -60,7 +60,7 @@ def test_section_refuses_work_and_memory_beyond_the_limits_at_once(monkeypatch):
     # by hand: 1e8 periods x 6 numbers x 8 bytes x (1 run + 3 padding) = 19 GB of record
     with pytest.raises(ParameterError, match=r"count = 100000000 .*memory"):
         section(stiff, transient=10, count=10**8)
-    # with memory to spare, 1e8 periods x 17,900 steps = 1.8e12 particle steps > 1 day
+    # with memory to spare, 1e8 periods x 17,900 steps = 1.8e12 particle steps > 1 hour
     monkeypatch.setattr(validation, "memory_limit", lambda: 10**15)
     with pytest.raises(ParameterError, match=r"count = 100000000 .*particle steps"):
         section(stiff, transient=10, count=10**8)

@@ -198,7 +198,7 @@ def test_cli(tmp_path, capsys):
 
 def test_work_beyond_the_limit_is_refused_before_any_step():
     # by hand: 25 runs x 2e7 periods x (1197 fixed steps x 3.15 = 3771) x 5 particles is
-    # ~9e12 particle-steps, over the one-day limit at 1e-7 s each; refused at once, with
+    # ~9e12 particle-steps, over the one-hour limit at 1e-7 s each; refused at once, with
     # the estimate in the message
     import time
 

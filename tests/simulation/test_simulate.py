@@ -338,3 +338,18 @@ def test_the_steppers_registry_is_what_simulate_dispatches_on():
             with pytest.raises(ParameterError, match=f"^{option} = .*stepper {name!r}"):
                 simulate(sink, settings, stepper=name, **{option: 0.2 if option != "stride"
                                                           else 2})  # fmt: skip
+
+
+def test_tiny_step_is_estimated_and_refused_over_the_hour(capsys, tmp_path, monkeypatch):
+    """Issue 34: --dt 1e-7 ran past a minute unannounced.  2 runs x 3 periods is 3.8e8
+    particle steps (38 s at the optimistic 1e-7 s: allowed); 300 periods are 2 x 300 x
+    ceil(2 pi / 1e-7) = 3.77e10 particle steps, over the hour's 3.6e10: refused."""
+    import math
+
+    from _cli import refused
+
+    steps = 2 * 300 * math.ceil(2 * math.pi / 1e-7)
+    argv = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--dt", "1e-7",
+            "--runs", "2", "--periods", "300", "--quiet"]  # fmt: skip
+    line = refused(argv, capsys, tmp_path, monkeypatch, "periods")
+    assert f"is {steps:.3g} particle steps" in line and "--max-hours" in line, line

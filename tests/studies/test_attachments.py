@@ -340,6 +340,11 @@ def test_bad_attachment_names_the_parameter(kw, name):
         ({"samples_per_period": 0}, "samples_per_period"),
         ({"line_offset": -1e-12}, "line_offset"),
         ({"box": float("nan")}, "box"),
+        # issue 34: accepted by the exact "impact" path, which ignores them
+        ({"dt": -1.0}, "dt"),
+        ({"dt": float("nan")}, "dt"),
+        ({"tol": -1.0}, "tol"),
+        ({"tol": "x"}, "tol"),
     ],
 )
 def test_bad_impulse_input_names_the_parameter(kw, name):
@@ -358,3 +363,39 @@ def test_vibroimpact_refuses_a_start_outside_the_clearance():
     with pytest.raises(ParameterError, match="^start = "):
         simulate_vibroimpact(np.array([[0.0, 1.0, 0.3, 0.0]]), clearance=0.2, mass=0.2,
                              damping=0.0, periods=1)  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    "mass, damping, name",
+    [(0.0, 0.1, "mass"), (-0.2, 0.1, "mass"), (math.nan, 0.0, "mass"), (0.2, -1.0, "damping"),
+     (0.2, math.inf, "damping")],
+)  # fmt: skip
+def test_modes_refuse_what_has_no_flow(mass, damping, name):
+    """Issue 34: modes(mass=0) raised ZeroDivisionError, modes(damping=-1) was accepted."""
+    with pytest.raises(ParameterError, match=rf"^{name} = "):
+        modes(mass, damping)
+
+
+def test_vibroimpact_work_is_estimated_before_any_flight():
+    """Issue 34: clearance = 1e-300 hung.  The start's relative speed |w| = 1 crosses the
+    clearance every 2 D: by hand 1 / (2e-300) impacts in each unit of the damped run's
+    relaxation time mu / (c (1 + mu)) = 0.2 / 0.06, refused at once naming clearance;
+    1000 runs x 1e5 periods is refused for its records' memory."""
+    start = np.array([[0.0, 1.0, 0.0, 0.0]])
+    args = {"mass": 0.2, "damping": 0.05}
+    with pytest.raises(ParameterError, match=r"^clearance = 1e-300 .*must be larger") as info:
+        simulate_vibroimpact(start, clearance=1e-300, periods=1, **args)
+    assert f"about {(0.2 / 0.06) / 2e-300:.3g} impact(s)" in str(info.value)
+    undamped = {"mass": 0.2, "damping": 0.0}  # impacts at that rate over all periods
+    with pytest.raises(ParameterError, match=r"^clearance = 1e-300 ") as info:
+        simulate_vibroimpact(start, clearance=1e-300, periods=1, **undamped)
+    assert f"about {2 * math.pi / 2e-300:.3g} impact(s)" in str(info.value)
+    with pytest.raises(ParameterError, match=r"^periods = 100000 .*memory"):
+        simulate_vibroimpact(np.repeat(start, 1000, 0), clearance=0.2, periods=10**5, **args)
+    # 10 runs x 1e6 periods with one sample each, at 1e-5 + 2e-6 s: 120 s, over 36 s
+    from sinktheory.worklimit import interactive_limit
+
+    with interactive_limit(0.01), pytest.raises(ParameterError, match=r"^periods = ") as info:
+        simulate_vibroimpact(np.repeat(start, 10, 0), clearance=0.2, periods=10**6,
+                             samples_per_period=1, **args)  # fmt: skip
+    assert "at least 120 s (about 2 min)" in str(info.value), str(info.value)
