@@ -118,7 +118,7 @@ def test_default_settings_hold_the_energy_bound_past_where_they_failed(capsys):
     # these 2000 periods, and 1.2e-7 at most over 8 runs x 1e4 periods
     # (benchmarks/bench_adaptive_drift.py); the old drift would give 1.2e-6 here
     argv = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--runs", "2",
-            "--periods", "2000", "--method", "adaptive", "--quiet"]  # fmt: skip
+            "--periods", "2000", "--stepper", "adaptive", "--quiet"]  # fmt: skip
     code, out, err = run_cli(argv, capsys)
     assert code == 0, err
     worst = float(re.search(r"max relative energy error (\S+) <= 1e-06", out).group(1))
