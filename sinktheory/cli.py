@@ -9,6 +9,7 @@ that keep a store add how to resume it).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import re
 import sys
@@ -102,9 +103,14 @@ def _main(argv: list[str], command: str | None) -> int:
         return 2
     prog = f"sinktheory {args.command}"
     try:
-        from .worklimit import interactive_limit
+        hours = getattr(args, "max_hours", None)  # --max-hours; None: the default limit
+        if hours is None:  # (worklimit imports numpy: not for a command refused early)
+            limit = contextlib.nullcontext()
+        else:
+            from .worklimit import interactive_limit
 
-        with interactive_limit(getattr(args, "max_hours", None)):  # --max-hours
+            limit = interactive_limit(hours)
+        with limit:
             out = args.module.run(args)
         write_outputs(out.writers)
     except ParameterError as e:

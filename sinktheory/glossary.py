@@ -119,6 +119,8 @@ GLOSSARY: dict[str, str] = {
     "window": "periods per window",
     "level": "confidence level of an interval",
     "resamples": "bootstrap resamples",
+    "max_hours": "the most estimated work, in hours, a command that cannot resume may start "
+    "(default 1; worklimit.interactive_limit)",
     "shell_energies": "starting container energies on the energy shell of the relaxation "
     "model's short runs",
     "shell_runs": "runs per starting energy of the relaxation model's short runs",

@@ -77,13 +77,13 @@ def first_fall_below(mean_energy, fractions, e0: float) -> dict[float, int | Non
     if m.ndim != 1 or not np.isfinite(m).all():
         raise ParameterError("mean_energy", f"array of shape {m.shape}", "a finite 1-D series")
     e0 = v.positive("e0", e0)
-    fs = v.real_array("fraction", fractions, "numbers > 0")
-    if fs.ndim != 1 or not fs.size:
-        raise ParameterError("fraction", fractions if isinstance(fractions, str) else fs.shape,
-                             "a list of one or more numbers > 0")  # fmt: skip
+    fs = v.real_array("fractions", fractions, "numbers > 0")
+    if fs.ndim != 1:
+        raise ParameterError("fractions", fractions if isinstance(fractions, str) else fs.shape,
+                             "a list of numbers > 0")  # fmt: skip
     out: dict[float, int | None] = {}
     for f in fs.tolist():
-        f = v.positive("fraction", f)
+        f = v.positive("fractions", f)
         below = np.flatnonzero(m < f * e0)
         out[f] = int(below[0]) if below.size else None
     return out

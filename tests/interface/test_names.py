@@ -67,7 +67,7 @@ ENTRY_POINTS = {
 }
 #: Options that shape the command's output or its run and feed no keyword.
 COMMAND_ONLY = {"json", "plot", "out", "quiet", "report", "latex", "fresh", "figure", "quick",
-                "param", "top", "no_estimate", "digits"}  # fmt: skip
+                "param", "top", "no_estimate", "digits", "max_hours"}  # fmt: skip
 #: command -> options whose keyword is still named differently (each entry must still be
 #: needed: the test fails when one is fixed, so the list only shrinks).
 KNOWN_DISAGREEMENTS = {
