@@ -72,10 +72,12 @@ def shell_part(k: int, runs: int, seed: int) -> None:
     print(f"  k = {k}, seed {seed} [{time.perf_counter() - t0:.0f} s]: lag "
           + " ".join(f"{x:>5d}" for x in km.lags))  # fmt: skip
     print("    cells' implied timescale      " + " ".join(f"{x:5.0f}" for x in its))
-    print("    linear: -tau / ln lambda      " + " ".join(f"{-t / x:5.0f}"
-                                                        for t, x in zip(km.lags, ll)))  # fmt: skip
-    print(f"    one slow mode t_r = {t_r:.0f}, c = {c:.2f}:  "
-          + " ".join(f"{x:5.0f}" for x in reading))
+    linear = (f"{-t / x:5.0f}" for t, x in zip(km.lags, ll, strict=True))
+    print("    linear: -tau / ln lambda      " + " ".join(linear))
+    print(
+        f"    one slow mode t_r = {t_r:.0f}, c = {c:.2f}:  "
+        + " ".join(f"{x:5.0f}" for x in reading)
+    )
 
 
 def quantile_cells(x: np.ndarray, m: int) -> np.ndarray:

@@ -95,6 +95,7 @@ import numpy as np
 
 from . import validation as v
 from .engine.cache import load
+from .engine.core import Ensemble
 from .ensemble import (
     check_sink,
     default_energy_bound,
@@ -109,7 +110,6 @@ from .glossary import renamed
 from .integrators import get_scheme
 from .layout import StateLayout
 from .model import DAMPING_KINDS, RunSettings, Sink
-from .engine.core import Ensemble
 from .runstats import mean_stderr
 from .stepsize import PERIOD, check_tol, resolve_step
 

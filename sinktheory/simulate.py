@@ -228,7 +228,9 @@ def simulate(
     settings = check_sink(sink, settings)
     given = {"scheme": scheme, "dt": dt, "tol": tol, "stride": stride, "eps": eps}
     if stepper is None:  # a continued adaptive run stays adaptive unless told otherwise
-        continues = isinstance(initial_state, SimulationState) and initial_state.method == "adaptive"
+        continues = (
+            isinstance(initial_state, SimulationState) and initial_state.method == "adaptive"
+        )
         fixed_given = any(given[name] is not None for name in STEPPERS["fixed"].options)
         stepper = "adaptive" if continues and not fixed_given else "fixed"
     chosen = STEPPERS[v.choice("stepper", stepper, tuple(STEPPERS))]

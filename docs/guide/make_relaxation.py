@@ -181,7 +181,8 @@ def main() -> None:
     widths = [max(len(r[i]) for r in rows + [HEADER]) for i in range(len(HEADER))]
     rule = "  ".join("=" * w for w in widths)
     lines = [f".. Written by docs/guide/make_relaxation.py on {machine.splitlines()[0]}", "",
-             rule, "  ".join(h.ljust(w) for h, w in zip(HEADER, widths, strict=True)), rule]  # fmt: skip
+             rule, "  ".join(h.ljust(w) for h, w in zip(HEADER, widths, strict=True)),
+             rule]  # fmt: skip
     lines += ["  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip() for r in rows]
     lines += [rule, ""]
     (out / "relaxation.inc").write_text("\n".join(lines))

@@ -403,8 +403,9 @@ def simulate_adaptive(
         particle_energy=members if "particles" in record else None,
         trajectory=None,
         trajectory_times=None,
-        final_state=SimulationState(values, t0 + periods * PERIOD, h0, dt, "adaptive",
-                                    np.column_stack([rho, rem]))  # fmt: skip
+        final_state=SimulationState(
+            values, t0 + periods * PERIOD, h0, dt, "adaptive", np.column_stack([rho, rem])
+        )  # fmt: skip
         if "final" in record
         else None,
         initial_energy=h0,
@@ -429,8 +430,11 @@ def _carried(initial_state, runs: int) -> tuple[np.ndarray | None, np.ndarray | 
     if c is None or initial_state.method != "adaptive":
         return None, None
     c = np.array(c, dtype=float)
-    if c.shape != (runs, 2) or not np.all(np.isfinite(c)) or np.any(c[:, 0] <= 0) or np.any(
-        c[:, 1] < 0
+    if (
+        c.shape != (runs, 2)
+        or not np.all(np.isfinite(c))
+        or np.any(c[:, 0] <= 0)
+        or np.any(c[:, 1] < 0)
     ):
         raise ParameterError(
             "initial_state",

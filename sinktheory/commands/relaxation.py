@@ -105,17 +105,17 @@ def run(args: argparse.Namespace) -> Output:
 
         v.positive_int("measure", args.measure[0], minimum=3)
         v.positive_int("measure", args.measure[1], minimum=24)
-        RunSettings(container_energy=args.container_energy, runs=args.measure[0], periods=args.measure[1],
-                    seed=args.seed).check(sink)  # fmt: skip
+        RunSettings(container_energy=args.container_energy, runs=args.measure[0],
+                    periods=args.measure[1], seed=args.seed).check(sink)  # fmt: skip
     p = predict_relaxation(
         sink, args.container_energy, fraction=args.fraction, periods=args.periods,
-        shell_energies=args.shell_energies, shell_runs=args.shell_runs, lag=args.lag, seed=args.seed, tol=args.tol,
-        resamples=args.resamples,
+        shell_energies=args.shell_energies, shell_runs=args.shell_runs, lag=args.lag,
+        seed=args.seed, tol=args.tol, resamples=args.resamples,
     )  # fmt: skip
     measured = sim = None
     if args.measure is not None:
-        measured, sim = measure_settling(sink, args.container_energy, args.measure, fraction=args.fraction,
-                                         seed=args.seed, tol=args.tol,
+        measured, sim = measure_settling(sink, args.container_energy, args.measure,
+                                         fraction=args.fraction, seed=args.seed, tol=args.tol,
                                          resamples=args.resamples)  # fmt: skip
     well = sink.well
     level = f"{100 * p.level:g} %"
@@ -130,8 +130,10 @@ def run(args: argparse.Namespace) -> Output:
         f"{p.visible:.2f} ± {p.visible_stderr:.2f}",
         f"    model: {p.model}",
         "    ln lambda at lags "
-        + ", ".join(f"{t}: {x:.3f} ± {e:.3f}" for t, x, e in
-                    zip(p.lags, p.log_lambda, p.log_lambda_stderr, strict=True))  # fmt: skip
+        + ", ".join(
+            f"{t}: {x:.3f} ± {e:.3f}"
+            for t, x, e in zip(p.lags, p.log_lambda, p.log_lambda_stderr, strict=True)
+        )  # fmt: skip
         + f"; from {p.coefficients}",
     ]
     if p.extrapolated:

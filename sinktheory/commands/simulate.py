@@ -151,8 +151,9 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
     for name in ("scheme", "dt", "tol", "eps"):
         value = getattr(args, name)
         if value is not None and name not in chosen.options:
+            takes = ", ".join("--" + o for o in chosen.options if hasattr(args, o))
             raise ParameterError(f"--{name}", value, f"absent with --stepper {chosen.name} (it "
-                                 f"takes {', '.join('--' + o for o in chosen.options if hasattr(args, o))})")  # fmt: skip
+                                 f"takes {takes})")  # fmt: skip
     if chosen.name == "adaptive":
         from ..adaptive import MAX_EPS, MAX_STEPS, check_eps, estimated_steps
 

@@ -24,10 +24,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..damped import InelasticResult, check_audit, result, setup
 from ..glossary import renamed
 from ..integrators import get_scheme
 from ..model import RunSettings, Sink
-from ..damped import InelasticResult, check_audit, result, setup
 
 
 def contact_weight(sink: Sink, q: np.ndarray) -> np.ndarray:

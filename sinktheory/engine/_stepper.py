@@ -3,8 +3,9 @@
 This file is not imported: :mod:`sinktheory.engine.printer` copies the text below the
 ``template starts`` marker after the system's kernels (``accelerations``, ``hessian``,
 ``tangent_kick``, ``energies``, ``shared_energy``, ``damping_factors``, ``dissipate``,
-``members_of``, ``hessian_rows`` and the constants ``SHARED`` and ``MEMBER_COORDS``), so that numba compiles and caches one module per system with every call
-inlinable.  Keeping it a real Python file lets linters and readers see it whole.
+``members_of``, ``hessian_rows`` and the constants ``SHARED`` and ``MEMBER_COORDS``), so
+that numba compiles and caches one module per system with every call inlinable.  Keeping
+it a real Python file lets linters and readers see it whole.
 
 Data layout (structure of arrays, runs last and contiguous): ``q[i, r]``, ``v[i, r]`` are
 coordinate / velocity i of run r; ``dq[i, m, r]``, ``dv[i, m, r]`` deviation vector m;

@@ -30,8 +30,8 @@ import numpy as np
 
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from ..model import DAMPING_KINDS
-from ..validation import nonnegative
 from ..progress import ProgressBar, chunks
+from ..validation import nonnegative
 from . import blocks
 from .cache import cost_table_path, load
 
@@ -407,8 +407,8 @@ def audit_error(where: str, nonfinite: bool, H: float, H0: float, bound: float,
                                    f"{H!r}, started at {H0!r}); {advice[0]}")  # fmt: skip
     err = abs(H - H0) / (abs(H0) or 1.0)
     error = "total-energy error" if audited == "H" else f"error of {what}"
-    return EnergyDriftError(f"{where}: relative {error} {err:.3g} > bound "
-                            f"{bound:.3g} ({audited} = {H!r}, H0 = {H0!r}); {advice[1]}")  # fmt: skip
+    return EnergyDriftError(f"{where}: relative {error} {err:.3g} > bound {bound:.3g} "
+                            f"({audited} = {H!r}, H0 = {H0!r}); {advice[1]}")  # fmt: skip
 
 
 def _per_run_steps(dt, steps, runs: int, renorm: int):

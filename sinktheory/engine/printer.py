@@ -65,7 +65,6 @@ def cse_lines(outputs: list[sp.Expr], prefix: str) -> tuple[list[str], list[str]
     return [f"{s.name} = {_p(e)}" for s, e in reps], [_p(e) for e in reduced]
 
 
-
 def _local_lines(term: Term) -> list[str]:
     """Local coordinates from the (already loaded) system coordinates, then the atoms."""
     lines = [f"{l.name} = {_p(m)}" for l, m in zip(term.local, term.maps, strict=True) if l != m]

@@ -16,9 +16,9 @@ after tau periods,
 straight line weighted by the runs' standard errors) at the lags tau = lag / 8, lag / 4,
 lag / 2 and lag, and ln lambda(tau) is fitted by a straight line in tau over the last
 three (the last three where lambda stands above its noise, when the relaxation is much
-faster than the lags): its slope is -1 / t_r, its intercept ln c.  The mean from the paper's start then
-follows <s>(t) = mu + c (s0 - mu) exp(-t / t_r) for t > 0 (the fast part takes the same
-fraction 1 - c of the excess from a start at rest: for Fig. 8's k = 1, c = 0.74-0.76 on
+faster than the lags): its slope is -1 / t_r, its intercept ln c.  The mean from the
+paper's start then follows <s>(t) = mu + c (s0 - mu) exp(-t / t_r) for t > 0 (the fast
+part takes the same fraction 1 - c of the excess from a start at rest: for Fig. 8's k = 1, c = 0.74-0.76 on
 the shell and 0.76 from <E_c>(50) of 128 runs from the paper's start), and the settling
 time is t_f = t_r ln(c |s0 - mu| / (f mu)).
 
@@ -320,9 +320,12 @@ def settling_time(rate_time: float, visible: float, s0: float, mu: float, fracti
     return rate_time * depth if depth > 0 else 0.0
 
 
-def start_total_energy(sink: Sink, container_energy: float, seed: int = 0, runs: int = 16) -> float:
-    """Total energy E of the paper's start (container at E0 = ``container_energy`` at rest, particles
-    at rest at the seeded random positions of the start box): the mean over ``runs`` starts.
+def start_total_energy(
+    sink: Sink, container_energy: float, seed: int = 0, runs: int = 16
+) -> float:
+    """Total energy E of the paper's start (container at E0 = ``container_energy`` at rest,
+    particles at rest at the seeded random positions of the start box): the mean over
+    ``runs`` starts.
 
     Examples
     --------
@@ -378,7 +381,8 @@ def predict_relaxation(
     --------
     >>> from sinktheory.canonical import FIG8_WELL
     >>> sink = Sink(FIG8_WELL, particles=1, mass=0.2)
-    >>> pred = predict_relaxation(sink, shell_energies=4, shell_runs=8, lag=32, resamples=20, seed=3)
+    >>> pred = predict_relaxation(sink, shell_energies=4, shell_runs=8, lag=32, resamples=20,
+    ...                           seed=3)
     >>> bool(pred.settle_low <= pred.settle_time <= pred.settle_high)
     True
     >>> bool(abs(pred.means[-1] - pred.target) < 0.05 * pred.target)
@@ -453,7 +457,8 @@ def predict_relaxation(
     spread = chain.moments(s0, times)[1]
     model = (
         f"slow mode t_r from the shell's conditional mean at lags {km.lags[use].tolist()} "
-        f"periods, seen through fast noise; spread from a 1-D diffusion with the law as its stationary "
+        f"periods, seen through fast noise; spread from a 1-D diffusion with the law as its "
+        "stationary "
         f"state; an estimate within a factor of ~{MODEL_FACTOR:g} (docs/guide/equilibrium.rst)"
     )
     return RelaxationPrediction(

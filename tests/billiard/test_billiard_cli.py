@@ -82,8 +82,8 @@ def test_huge_energy_is_refused_with_its_estimate_before_any_flight(capsys, tmp_
 
     reach = rigid_table("flat", 0.5, 0.3).reach
     steps = 2 * 10 * 2 * math.pi * math.sqrt(2e18 / 1.2) / reach
-    argv = ["billiard", "--alpha", "0.5", "--beta", "0.3", "--container-energy", "1e18", "--runs", "2",
-            "--periods", "10"]  # fmt: skip
+    argv = ["billiard", "--alpha", "0.5", "--beta", "0.3", "--container-energy", "1e18",
+            "--runs", "2", "--periods", "10"]  # fmt: skip
     line = refused(argv, capsys, tmp_path, monkeypatch, "periods")
     assert f"at least {steps:.3g} conservative-advancement steps" in line, line
     assert f"about {ADVANCEMENT_STEP * steps * 1e-7 / 86400:.3g} days" in line, line

@@ -12,7 +12,18 @@ from sinktheory.equilibrium.prediction import measure_settling, predict_relaxati
 from sinktheory.model import Sink
 
 FIG8 = ["relaxation", "--alpha", "0.5", "--beta", "0.3", "--n", "4"]
-SMALL = ["--shell-energies", "4", "--shell-runs", "8", "--lag", "32", "--seed", "3", "--resamples", "20"]
+SMALL = [
+    "--shell-energies",
+    "4",
+    "--shell-runs",
+    "8",
+    "--lag",
+    "32",
+    "--seed",
+    "3",
+    "--resamples",
+    "20",
+]
 
 
 def test_cli_equals_api_and_draws(tmp_path, capsys):

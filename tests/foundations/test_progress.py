@@ -2,6 +2,7 @@
 
 import io
 import os
+import signal
 import subprocess
 import sys
 
@@ -96,3 +97,36 @@ def test_a_subclass_drawing_its_own_line_still_ends_it():
     bar.update(2)
     bar.close()
     assert term.getvalue() == "\r2/2 points\n"
+
+
+def test_the_forkservers_sigint_module_changes_no_other_process(tmp_path):
+    """sinktheory._forkserver_sigint ignores SIGINT in the sweep's forkserver only: imported
+    anywhere else (say, by a doctest collector) it leaves Ctrl-C alone -- an ignored SIGINT
+    is inherited by every process started later, whose interrupts then never arrive.  In
+    a forkserver it does ignore SIGINT, already while the later preload modules import."""
+    plain = subprocess.run(
+        [sys.executable, "-c", "import signal, sinktheory._forkserver_sigint; "
+         "print(signal.getsignal(signal.SIGINT) is signal.default_int_handler)"],
+        capture_output=True, text=True, timeout=60,
+    )  # fmt: skip
+    assert plain.stdout.strip() == "True", plain.stderr
+    probe = tmp_path / "probe_mod.py"
+    probe.write_text("import signal, pathlib\npathlib.Path(__file__).with_suffix('.out')"
+                     ".write_text(str(signal.getsignal(signal.SIGINT)))\n")  # fmt: skip
+    script = (
+        "import multiprocessing as mp, time, pathlib\n"
+        "if __name__ == '__main__':\n"
+        "    mp.set_forkserver_preload(['sinktheory._forkserver_sigint', 'probe_mod'])\n"
+        "    from multiprocessing import forkserver\n"
+        "    forkserver.ensure_running()\n"
+        "    out = pathlib.Path('probe_mod.out')\n"
+        "    for _ in range(300):\n"
+        "        if out.exists() and out.read_text():\n"
+        "            break\n"
+        "        time.sleep(0.1)\n"
+        "    print(out.read_text())\n"
+    )
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(tmp_path), *sys.path])}
+    served = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                            timeout=60, cwd=tmp_path, env=env)  # fmt: skip
+    assert served.stdout.strip() == str(int(signal.SIG_IGN)), served.stderr
