@@ -320,9 +320,7 @@ def settling_time(rate_time: float, visible: float, s0: float, mu: float, fracti
     return rate_time * depth if depth > 0 else 0.0
 
 
-def start_total_energy(
-    sink: Sink, container_energy: float, seed: int = 0, runs: int = 16
-) -> float:
+def start_total_energy(sink: Sink, container_energy: float, seed: int = 0, runs: int = 16) -> float:
     """Total energy E of the paper's start (container at E0 = ``container_energy`` at rest,
     particles at rest at the seeded random positions of the start box): the mean over
     ``runs`` starts.
