@@ -18,8 +18,9 @@ lag / 2 and lag, and ln lambda(tau) is fitted by a straight line in tau over the
 three (the last three where lambda stands above its noise, when the relaxation is much
 faster than the lags): its slope is -1 / t_r, its intercept ln c.  The mean from the
 paper's start then follows <s>(t) = mu + c (s0 - mu) exp(-t / t_r) for t > 0 (the fast
-part takes the same fraction 1 - c of the excess from a start at rest: for Fig. 8's k = 1, c = 0.74-0.76 on
-the shell and 0.76 from <E_c>(50) of 128 runs from the paper's start), and the settling
+part takes the same fraction 1 - c of the excess from a start at rest: for Fig. 8's k = 1,
+c = 0.74-0.76 on the shell and 0.76 from <E_c>(50) of 128 runs from the paper's start),
+and the settling
 time is t_f = t_r ln(c |s0 - mu| / (f mu)).
 
 The run-to-run spread comes from the slow mode as a one-dimensional reversible diffusion
