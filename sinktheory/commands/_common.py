@@ -226,7 +226,19 @@ def add_sink_arguments(
 
     Returns the argument group, so a command can add options of its own to it.
     """
-    g = parser.add_argument_group("sink and run")
+    g = add_particle_arguments(parser, "sink and run")
+    g.add_argument("--runs", type=number, default=runs_default, help=runs_help)
+    g.add_argument(
+        "--periods", type=number, default=1500, help="periods T = 2 pi, integer >= 1 (default 1500)"
+    )
+    g.add_argument("--seed", type=number, default=0, help="random seed, integer >= 0 (default 0)")
+    return g
+
+
+def add_particle_arguments(parser: argparse.ArgumentParser, title: str):
+    """Options of the particles and the start: particles, mass, container energy (E0, the
+    particles at rest), in a new argument group called ``title``, which is returned."""
+    g = parser.add_argument_group(title)
     g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
     g.add_argument(
         "--mass", type=number, default=0.2, help="total particle mass m > 0 (default 0.2)"
@@ -237,11 +249,6 @@ def add_sink_arguments(
         default=0.5,
         help="the container's initial energy E0 > 0 (default 0.5)",
     )
-    g.add_argument("--runs", type=number, default=runs_default, help=runs_help)
-    g.add_argument(
-        "--periods", type=number, default=1500, help="periods T = 2 pi, integer >= 1 (default 1500)"
-    )
-    g.add_argument("--seed", type=number, default=0, help="random seed, integer >= 0 (default 0)")
     return g
 
 

@@ -9,6 +9,7 @@ from . import HELP as HELPS
 from ._common import (
     Output,
     add_json,
+    add_particle_arguments,
     add_well_arguments,
     number,
     png_path,
@@ -25,17 +26,7 @@ TABLE_ROWS = 10
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_well_arguments(parser)
-    g = parser.add_argument_group("sink and start")
-    g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
-    g.add_argument(
-        "--mass", type=number, default=0.2, help="total particle mass m > 0 (default 0.2)"
-    )
-    g.add_argument(
-        "--container-energy",
-        type=number,
-        default=0.5,
-        help="container energy E0 > 0 at the start, particles at rest (default 0.5)",
-    )
+    g = add_particle_arguments(parser, "sink and start")
     g.add_argument(
         "--fraction",
         type=number,
