@@ -1,5 +1,6 @@
-"""Shared by the CLI tests: run ``sinktheory`` in-process and capture its output, and check
-a clean refusal (exit 2, one line naming the parameter, nothing written)."""
+"""Shared by the tests: run ``sinktheory`` in-process and capture its output, check a
+clean refusal (exit 2, one line naming the parameter, nothing written); and wells typed
+as a user would, independently of the registry."""
 
 import subprocess
 import sys
@@ -68,3 +69,16 @@ def probe(args, tmp_path):
     assert last[0] == "STATUS", proc.stderr
     heavy = last[3].split(",") if len(last) > 3 else []
     return int(last[1]), heavy, proc
+
+
+#: The registry's shapes, an elliptic well and Henon-Heiles typed as a user would (the
+#: paper's parameters: defaults with ranges).
+BUILT_IN = {
+    "flat": "gamma/(2*n) * ((x/(alpha + beta*(y**2 - 1)))**(2*n) + y**(2*n))",
+    "symmetric": "gamma/(2*n) * ((x/(alpha + beta*(y**2 - 1)))**(2*n)"
+    " + (y/(alpha + beta*(x**2 - 1)))**(2*n))",
+    "circular": "gamma/(2*n) * ((x**2 + y**2)/(alpha - beta)**2)**n",
+}
+PAPER = {"alpha": 0.5, "beta": (0.3, (-5.0, 0.45)), "gamma": 1.0, "n": (4, (1, 1000))}
+ELLIPTIC = "gamma/(2*n) * ((x/a)**2 + (y/b)**2)**n"
+HH = "(x**2 + y**2)/2 + x**2*y - y**3/3"

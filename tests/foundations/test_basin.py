@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 import sympy as sp
+from _cli import BUILT_IN, ELLIPTIC, HH, PAPER
 from scipy import integrate, optimize
 
 from sinktheory import symbolic as S
@@ -15,16 +16,6 @@ from sinktheory.equilibrium.area import basin_area
 from sinktheory.errors import ParameterError, WellDefinitionError
 from sinktheory.model import Well
 from sinktheory.userwell import UserWell, check_well, parse_potential
-
-BUILT_IN = {
-    "flat": "gamma/(2*n) * ((x/(alpha + beta*(y**2 - 1)))**(2*n) + y**(2*n))",
-    "symmetric": "gamma/(2*n) * ((x/(alpha + beta*(y**2 - 1)))**(2*n)"
-    " + (y/(alpha + beta*(x**2 - 1)))**(2*n))",
-    "circular": "gamma/(2*n) * ((x**2 + y**2)/(alpha - beta)**2)**n",
-}
-PAPER = {"alpha": 0.5, "beta": (0.3, (-5.0, 0.45)), "gamma": 1.0, "n": (4, (1, 1000))}
-ELLIPTIC = "gamma/(2*n) * ((x/a)**2 + (y/b)**2)**n"
-HH = "(x**2 + y**2)/2 + x**2*y - y**3/3"
 
 
 def basin_of(shape, beta, n, gamma=1.0):

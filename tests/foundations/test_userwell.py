@@ -6,6 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sympy as sp
+from _cli import BUILT_IN, HH, PAPER
 
 from sinktheory import symbolic as S
 from sinktheory.errors import WellDefinitionError
@@ -22,16 +23,6 @@ from sinktheory.userwell import (
 ROOT = Path(__file__).resolve().parents[2]
 x, y = S.x, S.y
 a, b, c = sp.symbols("a b c", real=True)
-
-BUILT_IN = {
-    "flat": "gamma/(2*n) * ((x/(alpha + beta*(y**2 - 1)))**(2*n) + y**(2*n))",
-    "symmetric": "gamma/(2*n) * ((x/(alpha + beta*(y**2 - 1)))**(2*n)"
-    " + (y/(alpha + beta*(x**2 - 1)))**(2*n))",
-    "circular": "gamma/(2*n) * ((x**2 + y**2)/(alpha - beta)**2)**n",
-}
-PAPER = {"alpha": 0.5, "beta": (0.3, (-5.0, 0.45)), "gamma": 1.0, "n": (4, (1, 1000))}
-ELLIPTIC = "gamma/(2*n) * ((x/a)**2 + (y/b)**2)**n"
-HH = "(x**2 + y**2)/2 + x**2*y - y**3/3"
 
 
 # --- parsing ------------------------------------------------------------------------------
