@@ -372,8 +372,8 @@ def simulate_inelastic(
         total += out.members[:, :, j]
     samples = None
     if s.stride:
-        k, rows = sink.particles, out.trajectory
-        far = np.abs(rows[:, :, 2 + k : 2 + 2 * k]).max(axis=2)
+        rows = out.trajectory  # state rows, the columns of StateLayout
+        far = np.abs(rows[..., StateLayout(sink.particles).y]).max(axis=2)
         samples = (rows[:, :, 0], rows[:, :, 1], out.work_samples, far)
     return result(s, out.shared, total, out.work, out.integral, samples)
 

@@ -268,7 +268,8 @@ class Ensemble:
             rec["logs"][:R, 0] = self.logs.T
         if "work" in record:
             rec["work"][:R, 0] = self.diss[0]
-            wsamples[:R, : min(1, samples)] = self.diss[0, :, None]
+            if samples:
+                wsamples[:R, 0] = self.diss[0]
         traj = np.zeros((Rp, samples, 2 * D))
         if samples:
             Sh = self.module.SHARED

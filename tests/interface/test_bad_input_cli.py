@@ -17,6 +17,8 @@ from sinktheory.errors import ParameterError
 
 WELL = ["--alpha", "0.5", "--beta", "0.3", "--n", "4"]
 SIM = ["simulate", *WELL, "--runs", "2", "--periods", "2", "--quiet"]
+FLOQUET_SWEEP = ["sweep", "floquet", "--param", "alpha=0.5", "--param", "beta=0.1,0.2",
+                 "--param", "n=4", "--out"]  # fmt: skip
 
 
 # --------------------------------------------------------------------------- output paths
@@ -50,33 +52,11 @@ UNWRITABLE = [
     ([*SIM, "--out", "ok.npz", "--plot", "/sys/x.png"], "--plot"),
     ([*SIM, "--out", "ok.npz", "--plot", "d.png"], "--plot"),
     (
-        [
-            "sweep",
-            "floquet",
-            "--param",
-            "alpha=0.5",
-            "--param",
-            "beta=0.1,0.2",
-            "--param",
-            "n=4",
-            "--out",
-            "/proc/s.zarr",
-        ],
+        [*FLOQUET_SWEEP, "/proc/s.zarr"],
         "out",
     ),
     (
-        [
-            "sweep",
-            "floquet",
-            "--param",
-            "alpha=0.5",
-            "--param",
-            "beta=0.1,0.2",
-            "--param",
-            "n=4",
-            "--out",
-            "",
-        ],
+        [*FLOQUET_SWEEP, ""],
         "out",
     ),
     (["reproduce", "--figure", "2", "--quick", "--out", "/proc/x"], "out"),
