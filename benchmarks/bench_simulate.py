@@ -49,11 +49,12 @@ from scipy.integrate import solve_ivp
 from sympy.printing.c import C99CodePrinter
 
 sys.path.insert(0, str(Path(__file__).parent))
+from baseline import run_at  # noqa: E402
 from machine import describe  # noqa: E402
 
 from sinktheory import RunSettings, Sink, Well  # noqa: E402
 from sinktheory import symbolic as S
-from sinktheory.engine.printer import _chain
+from sinktheory.codegen import chain
 from sinktheory.engine.systems import sink_system
 from sinktheory.ensemble import random_positions, start_state, total_energy
 from sinktheory.errors import NumericalError
@@ -174,7 +175,7 @@ def heyoka_points(sink, full: RunSettings, periods: int) -> list[Point]:
 class _CPrinter(C99CodePrinter):
     def _print_Pow(self, expr):
         if expr.exp.is_Integer and abs(int(expr.exp)) >= 2:
-            text = _chain(self.parenthesize(expr.base, 1000), abs(int(expr.exp)))
+            text = chain(self.parenthesize(expr.base, 1000), abs(int(expr.exp)))
             return f"(1.0/{text})" if expr.exp < 0 else text
         return super()._print_Pow(expr)
 
@@ -234,10 +235,11 @@ void run(int R, int K, double *Q, double *V, int periods, int steps, int S,
 
 
 def _c_source(sink) -> str:
-    term = sink_system(sink.well.shape, sink.well.n).member_terms[0]
+    term = sink_system(sink.well.shape).member_terms[0]  # n fixed in the C text, as by hand
     pr = _CPrinter()
-    atoms = " ".join(f"const double {a.name} = {pr.doprint(e)};" for a, e in term.atoms)
-    gx, gy = term.gradient
+    n = {S.n: sink.well.n}
+    atoms = " ".join(f"const double {a.name} = {pr.doprint(e.subs(n))};" for a, e in term.atoms)
+    gx, gy = (g.subs(n) for g in term.gradient)
     forces = (
         f"const double gx = {pr.doprint(gx)}, gy = {pr.doprint(gy)};"
         " a[0] += gx; a[1 + j] = -gx / mu; a[1 + K + j] = -gy / mu;"
@@ -245,7 +247,7 @@ def _c_source(sink) -> str:
     return (
         _C_TEMPLATE.replace("ATOMS", atoms)
         .replace("FORCES", forces)
-        .replace("POTENTIAL", pr.doprint(term.value))
+        .replace("POTENTIAL", pr.doprint(term.value.subs(n)))
     )
 
 
@@ -333,13 +335,6 @@ def scaling(sink, counts, periods: int, cfn, baseline: str | None) -> dict[str, 
 
 def _baseline_time(rev: str, runs: int, periods: int, choice) -> float:
     """Wall time of ``simulate`` at an earlier commit, same workload and step."""
-    folder = Path(tempfile.gettempdir()) / f"sinktheory-baseline-{rev}"
-    if not folder.exists():
-        # from the checkout this script belongs to, whatever the working directory
-        repo = Path(__file__).resolve().parents[1]
-        subprocess.run(
-            ["git", "worktree", "add", "--detach", str(folder), rev], check=True, cwd=repo
-        )
     script = textwrap.dedent(
         f"""
         import time
@@ -353,12 +348,7 @@ def _baseline_time(rev: str, runs: int, periods: int, choice) -> float:
         print(time.perf_counter() - t)
         """
     )
-    env = dict(os.environ, PYTHONPATH=str(folder))
-    # run inside the worktree: "python -c" puts the working directory first on sys.path
-    res = subprocess.run(
-        [sys.executable, "-c", script], env=env, cwd=folder, capture_output=True, text=True
-    )
-    return float(res.stdout.strip().splitlines()[-1])
+    return float(run_at(rev, script))
 
 
 # --------------------------------------------------------------------------- report

@@ -176,7 +176,8 @@ def sections(
 ) -> np.ndarray:
     """Sections (B, count) of single-particle runs in several wells at once.
 
-    The wells must share the engine (shape and n); the runs advance as one ensemble whose
+    The wells must share the engine (their shape; n may differ); the runs advance as one
+    ensemble whose
     runs carry their own parameters and steps (:func:`section_step`), and each row is
     bitwise the section of its well alone.
 
@@ -199,7 +200,7 @@ def sections(
     if not sinks:
         raise ParameterError("sinks", "none", "at least one well")
     if len({engine_name(k) for k in sinks}) > 1:
-        raise ParameterError("sinks", "wells of different engines", "one shape and n")
+        raise ParameterError("sinks", "wells of different shapes", "wells of one shape")
     dt, steps = (np.array(x) for x in zip(*(section_step(k, energy) for k in sinks), strict=True))
     _check_work(sinks, steps, transient, count)
     values = [start_state(k, energy, np.array([[START]])) for k in sinks]

@@ -20,7 +20,18 @@ from sympy.printing.pycode import MpmathPrinter, PythonCodePrinter
 
 from . import symbolic as S
 
-__all__ = ["chain", "GENERATED_DIR", "GeometryPrinter", "ipow", "KernelPrinter", "render", "write"]
+__all__ = [
+    "chain",
+    "GENERATED_DIR",
+    "GeometryPrinter",
+    "integer_powers",
+    "ipow",
+    "kernel_lines",
+    "KernelPrinter",
+    "lowest_powers",
+    "render",
+    "write",
+]
 
 GENERATED_DIR = Path(__file__).parent / "_generated"
 
@@ -99,21 +110,38 @@ def _is_symbolic_int_pow(e) -> bool:
     return e.is_Pow and e.exp.is_integer and not e.exp.is_number
 
 
-def _integer_powers(outputs: Sequence[sp.Expr]) -> list[sp.Expr]:
-    """Wrap powers with symbolic integer exponents (s1**(2n), Dy**(-2n-1)) in ``ipow``.
-
-    CSE would otherwise pull 2n out into a temporary that no longer knows it is an
-    integer.  Powers of one base whose exponents differ by a whole number share one
-    ``ipow``: with s1**(2n-1) and s1**(2n) in the same kernel, the second becomes
-    s1 * ipow(s1, 2n - 1), so each base is raised to a runtime power only once.
-    """
+def lowest_powers(outputs: Sequence[sp.Expr], nonnegative=lambda exponent: True) -> dict:
+    """For each base raised to a symbolic integer power in ``outputs``, the lowest of its
+    exponents (among those ``nonnegative`` accepts) that the others exceed by a whole
+    number: the one power of that base a kernel computes at run time."""
     lowest: dict[sp.Expr, sp.Expr] = {}
     for expr in outputs:
         for p in expr.atoms(sp.Pow):
             if _is_symbolic_int_pow(p) and not p.exp.could_extract_minus_sign():
+                if not nonnegative(p.exp):
+                    continue
                 e0 = lowest.get(p.base)
                 if e0 is None or ((p.exp - e0).is_number and (p.exp - e0) < 0):
                     lowest[p.base] = p.exp
+    return lowest
+
+
+def integer_powers(outputs: Sequence[sp.Expr], lowest: dict | None = None) -> list[sp.Expr]:
+    """Wrap powers with symbolic integer exponents (s1**(2n), Dy**(-2n-1)) in ``ipow``.
+
+    CSE would otherwise pull 2n out into a temporary that no longer knows it is an
+    integer.  Powers of one base whose exponents differ by a whole number share one
+    ``ipow`` (``lowest``: :func:`lowest_powers` of ``outputs`` when not given): with
+    s1**(2n-1) and s1**(2n) in the same kernel, the second becomes s1 * ipow(s1, 2n - 1),
+    so each base is raised to a runtime power only once.
+
+    Examples
+    --------
+    >>> s, n = sp.symbols("s n", integer=True)
+    >>> integer_powers([s ** (2 * n - 1), s ** (2 * n)])
+    [ipow(s, 2*n - 1), s*ipow(s, 2*n - 1)]
+    """
+    lowest = lowest_powers(outputs) if lowest is None else lowest
 
     def wrap(e):
         if e.exp.could_extract_minus_sign():
@@ -130,22 +158,37 @@ _kernel_printer = KernelPrinter({"fully_qualified_modules": True, "standard": "p
 _mp_printer = MpmathPrinter({"fully_qualified_modules": True})
 
 
-def _body(
-    outputs: Sequence[sp.Expr], prelude: Sequence[tuple[sp.Symbol, sp.Expr]] = ()
-) -> list[str]:
-    """Assignment lines (prelude, CSE temporaries) and the names holding the outputs."""
-    lines = [f"{s.name} = {_kernel_printer.doprint(e)}" for s, e in prelude]
-    outputs = _integer_powers([sp.sympify(e) for e in outputs])
-    reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols("t"), optimizations="basic")
-    lines += [f"{s.name} = {_kernel_printer.doprint(e)}" for s, e in reps]
-    # a constant output is printed as a float, so every branch returns the same types
-    out = [
+def kernel_lines(outputs: Sequence[sp.Expr], prefix: str = "t") -> tuple[list[str], list[str]]:
+    """(assignment lines of the common subexpressions, the outputs' texts) of ``outputs``
+    in the kernel printer, run-time powers through ``ipow`` (scalar kernels; the engine's
+    vectorised kernels print theirs with :func:`sinktheory.engine.printer.cse_lines`).  A
+    constant output is printed as a float, so every branch of a kernel returns the same
+    types.
+
+    Examples
+    --------
+    >>> s, n = sp.symbols("s n", integer=True)
+    >>> kernel_lines([s ** (2 * n) + s ** (2 * n - 1), sp.Integer(2)])
+    ([], ['(s + 1)*ipow(s, 2*n - 1)', '2.0'])
+    """
+    outputs = integer_powers([sp.sympify(e) for e in outputs])
+    reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols(prefix), optimizations="basic")
+    texts = [
         (_kernel_printer.doprint(e) if e.is_infinite else repr(float(e)))
         if e.is_Number
         else _kernel_printer.doprint(e)
         for e in reduced
     ]
-    return lines + ["return " + ", ".join(out)]
+    return [f"{s.name} = {_kernel_printer.doprint(e)}" for s, e in reps], texts
+
+
+def _body(
+    outputs: Sequence[sp.Expr], prelude: Sequence[tuple[sp.Symbol, sp.Expr]] = ()
+) -> list[str]:
+    """Assignment lines (prelude, CSE temporaries) and the names holding the outputs."""
+    lines = [f"{s.name} = {_kernel_printer.doprint(e)}" for s, e in prelude]
+    temporaries, out = kernel_lines(outputs)
+    return lines + temporaries + ["return " + ", ".join(out)]
 
 
 def _njit_function(name: str, args: Sequence[str], doc: str, lines: Sequence[str]) -> str:

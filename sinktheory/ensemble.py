@@ -229,10 +229,11 @@ def total_energy(sink: Sink, values: np.ndarray) -> np.ndarray:
 
 
 def engine_name(sink: Sink) -> str:
-    """Name of the generated engine of this sink (shape, n and k fixed in its code)."""
+    """Name of the generated engine of this sink's well shape (n, k and the rest are
+    run-time values)."""
     from .engine.cache import sink_name  # the engine (numba) loads when first needed
 
-    return sink_name(sink.well.shape, sink.well.n)
+    return sink_name(sink.well.shape)
 
 
 #: The engine's runtime parameters of a sink, packed (:data:`sinktheory.layout.SINK_PARAMS`).

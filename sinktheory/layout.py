@@ -37,8 +37,9 @@ from .errors import ParameterError
 __all__ = ["pack_params", "SINK_PARAMS", "StateLayout"]
 
 #: The engine's runtime parameters of a sink, in the order its kernels read them (the
-#: particle mass is mu = m / k).  Shape, n and k are compiled into the engine instead.
-SINK_PARAMS = ("alpha", "beta", "gamma", "mu")
+#: particle mass is mu = m / k).  The shape is compiled into the engine; k is read from
+#: the state's size.
+SINK_PARAMS = ("alpha", "beta", "gamma", "n", "mu")
 
 
 def pack_params(sink) -> np.ndarray:
@@ -48,10 +49,10 @@ def pack_params(sink) -> np.ndarray:
     --------
     >>> from sinktheory import Sink, Well
     >>> pack_params(Sink(Well(0.5, 0.3, 4), particles=2, mass=0.2)).tolist()
-    [0.5, 0.3, 1.0, 0.1]
+    [0.5, 0.3, 1.0, 4.0, 0.1]
     """
     w = sink.well
-    return np.array([w.alpha, w.beta, w.gamma, sink.mu])
+    return np.array([w.alpha, w.beta, w.gamma, w.n, sink.mu], dtype=float)
 
 
 @dataclass(frozen=True)

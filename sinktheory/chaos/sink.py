@@ -238,7 +238,8 @@ def chaos_batch(
     parameters: a chaos map's betas (or alphas, gammas, masses, seeds) vectorised together.
 
     ``sinks`` and ``settings`` are sequences of equal length; the set-ups must share the
-    engine (shape, n, particles) and the number of periods.  ``dt`` (required: the step
+    engine (the well's shape; n is a run-time value), the particles and the number of
+    periods.  ``dt`` (required: the step
     :func:`chaos` would pick depends on the well) is one step for all, or one per set-up
     (a chaos map's stiff and soft betas need different steps; the engine groups the runs by
     their steps).  Each result is bitwise the result of ``chaos(sink, settings, dt=dt,
@@ -263,7 +264,7 @@ def chaos_batch(
     engines = {(engine_name(p.sink), p.sink.particles, p.settings.periods) for p in points}
     if len(engines) > 1:
         raise ParameterError(
-            "sinks", f"{len(engines)} engines or period counts", "one shape, n, k and periods"
+            "sinks", f"{len(engines)} engines or period counts", "one shape, k and periods"
         )
     scheme = get_scheme(method)
     dts, steps = point_steps(points, dt)

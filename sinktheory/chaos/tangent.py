@@ -49,7 +49,7 @@ def monodromy(
     Parameters
     ----------
     system : str
-        Engine system name (e.g. ``sink_flat_n4_k1``, ``henon_heiles``).
+        Engine system name (e.g. ``sink_flat``, ``henon_heiles``).
     q, v : arrays (D, R)
         Start states (the engine's coordinates: positions and velocities).
     params : sequence of float

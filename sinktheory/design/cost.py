@@ -42,7 +42,7 @@ from ..ensemble import settings_of, sink_of
 from ..stepsize import choose
 from ..worklimit import duration
 
-#: Seconds to generate and compile the engine of one well shape and n the first time,
+#: Seconds to generate and compile the engine of one well shape the first time (any n),
 #: with its tangent-map functions for lambda_1 (30-60 s each on the development machine
 #: under load; a 36-design demo that compiled three engines took 200 s against an
 #: estimate of 54 s made with 45 s per engine); added once per engine not yet cached.
@@ -78,7 +78,7 @@ class Estimate:
     overhead : float
         Measured seconds per point besides the integration (measures, step choice).
     compile_seconds : float
-        :data:`COMPILE_SECONDS` for each engine (shape, n) not compiled yet (included in
+        :data:`COMPILE_SECONDS` for each engine (well shape) not compiled yet (included in
         ``total_seconds``; a damped design runs the same engine).
     tangent : float
         Cost of a chaos step relative to a plain one (measured or :data:`TANGENT`).
@@ -163,17 +163,12 @@ def _time_chaos(point: dict, runs: int, periods: int) -> tuple[float, float]:
     return seconds, steps * (1 + 2 * p["particles"]) * runs * periods
 
 
-def uncompiled(engines) -> list[tuple[str, int]]:
-    """The (shape, n) engines whose compiled code is not in the engine cache yet."""
-    from ..engine.cache import _digest, cache_dir, sink_name
+def uncompiled(shapes) -> list[str]:
+    """The well shapes whose engine's compiled code is not in the engine cache yet (one
+    engine serves every n of a shape)."""
+    from ..engine.cache import compiled, sink_name
 
-    folder = cache_dir() / "__pycache__"
-    digest = _digest()
-    return sorted(
-        (shape, n)
-        for shape, n in engines
-        if not any(folder.glob(f"{sink_name(shape, n)}_{digest}.*.nbi"))
-    )
+    return sorted(shape for shape in set(shapes) if not compiled(sink_name(shape)))
 
 
 def _overhead(point: dict) -> float:
@@ -261,7 +256,7 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     # the work shared over the workers, but never less than the longest point
     busy = min(workers, len(points))
     total = max(float(per_point.sum()) / busy, float(per_point.max()))
-    compiling = COMPILE_SECONDS * len(uncompiled({(p["shape"], p["n"]) for p in points}))
+    compiling = COMPILE_SECONDS * len(uncompiled(p["shape"] for p in points))
     total += compiling
     return Estimate(
         points=len(points),

@@ -3,7 +3,8 @@
 This file is not imported: :mod:`sinktheory.engine.printer` copies the text below the
 ``template starts`` marker after the system's kernels (``accelerations``, ``hessian``,
 ``tangent_kick``, ``energies``, ``shared_energy``, ``damping_factors``, ``dissipate``,
-``members_of``, ``hessian_rows`` and the constants ``SHARED`` and ``MEMBER_COORDS``), so
+``members_of``, ``hessian_rows``, ``parameter_table`` and the constants ``SHARED``,
+``MEMBER_COORDS``, ``NPARAMS``, ``POWERS`` and ``MAX_POWER``), so
 that numba compiles and caches one module per system with every call inlinable.  Keeping
 it a real Python file lets linters and readers see it whole.
 
@@ -355,7 +356,16 @@ def table_of(params, runs):
         p = np.repeat(p.reshape(-1, 1), runs, axis=1)
     if p.shape != (NPARAMS, runs):
         raise ValueError(f"params: shape {p.shape}, expected ({NPARAMS},) or ({NPARAMS}, {runs})")
-    return parameter_table(np.ascontiguousarray(p))
+    table = parameter_table(np.ascontiguousarray(p))
+    powers = table[POWERS:]
+    good = (powers == np.round(powers)) & (np.abs(powers) < MAX_POWER)
+    if not np.all(good):
+        run = int(np.nonzero(~np.all(good, axis=0))[0][0])
+        raise ValueError(
+            f"params: run {run} raises a base to the power {powers[:, run].tolist()}: the "
+            f"kernels' run-time exponents must be whole numbers of size below {MAX_POWER}"
+        )
+    return table
 
 
 @numba.njit(cache=True, error_model="numpy")

@@ -78,7 +78,7 @@ class Ensemble:
     Parameters
     ----------
     system : str
-        Engine name (see :func:`sinktheory.engine.cache.load`), e.g. ``sink_flat_n4_k5``.
+        Engine name (see :func:`sinktheory.engine.cache.load`), e.g. ``sink_flat``.
     q, v : array (D, R)
         Positions and velocities (masses as in the system; for the sink, absolute ones).
     params : array (NPARAMS,) or (NPARAMS, R)
@@ -125,11 +125,14 @@ class Ensemble:
                 f"shapes {self.q.shape}, {self.v.shape}",
                 f"(D, R) each with D = {mod.SHARED} + {C} x members",
             )
+        if np.shape(params) not in ((mod.NPARAMS,), (mod.NPARAMS, R)):
+            raise ParameterError("params", np.shape(params), f"({mod.NPARAMS},) or "
+                                 f"({mod.NPARAMS}, {R}) values")  # fmt: skip
         try:
             self.table = mod.table_of(params, R)
-        except ValueError as e:
-            raise ParameterError("params", np.shape(params), f"({mod.NPARAMS},) or "
-                                 f"({mod.NPARAMS}, {R}) values") from e  # fmt: skip
+        except ValueError as e:  # a run-time exponent that is not a whole number
+            raise ParameterError("params", "these values", "parameters whose powers the "
+                                 "kernels can raise", why=str(e)) from None  # fmt: skip
         if dq is None:
             dq = np.zeros((D, 0, R))
             dv = np.zeros((D, 0, R))

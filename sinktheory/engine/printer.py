@@ -35,15 +35,68 @@ from pathlib import Path
 
 import sympy as sp
 
-from ..codegen import KernelPrinter
+from ..codegen import KernelPrinter, integer_powers, ipow
 from .systems import SeparableSystem, Term
 
-__all__ = ["cse_lines", "render", "RESERVED", "STEPPER"]
+__all__ = ["cse_lines", "POWER_CLASSES", "render", "RESERVED", "STEPPER"]
 
 STEPPER = Path(__file__).with_name("_stepper.py")
 
+#: Bit counts of run-time exponents the kernels are printed for.  A kernel with run-time
+#: powers has one body per class, for blocks whose runs share their exponents (the common
+#: case), which raise to a scalar exponent, plus one body for blocks that mix exponents,
+#: which raises each run to its own (per-lane selects, about 10 % slower at n = 4).  A block
+#: takes the first class that holds its exponents, so a new exponent never compiles
+#: anything.  For the paper's wells the exponents are 2n - 2 .. 2n: the classes hold
+#: n <= 3, 15, 127 and 1023 (the last: every n the model allows).
+POWER_CLASSES = (3, 5, 8, 11)
 
-_printer = KernelPrinter({"fully_qualified_modules": True, "standard": "python3"})
+
+class upow__(sp.Function):  # noqa: N801 - printed as the helper of that name
+    """A run-time power b^e whose exponent is never negative (``ipow`` sorted before CSE,
+    which would hide the exponent's sign in a temporary)."""
+
+
+class spow__(sp.Function):  # noqa: N801 - printed as the helper of that name
+    """A run-time power b^e whose exponent may be negative."""
+
+
+def _signed(expr: sp.Expr) -> sp.Expr:
+    """Each ``ipow`` of ``expr`` as :class:`upow__` or :class:`spow__`, its exponent
+    replaced by the symbol ``e<i>_`` of its row in the table (:data:`_EXPONENTS`)."""
+
+    def power(f):
+        helper = upow__ if f.args[1].is_nonnegative is True else spow__
+        _EXPONENTS.setdefault(f.args[1], None)
+        _PENDING.setdefault(f.args[1], None)
+        return helper(f.args[0], sp.Symbol(f"e{list(_EXPONENTS).index(f.args[1])}_"))
+
+    return expr.replace(lambda f: isinstance(f, ipow), power)
+
+
+class _EnginePrinter(KernelPrinter):
+    """The kernel printer with run-time powers printed as calls of the branch-free
+    square-and-multiply helpers (:func:`_power_helpers`): ``upow__`` when the exponent
+    is never negative, ``spow__`` when it may be; ``__`` becomes the bit class of the
+    body (:func:`_dispatch`)."""
+
+    def _power(self, name: str, expr) -> str:
+        return f"{name}({self._print(expr.args[0])}, {self._print(expr.args[1])})"
+
+    def _print_upow__(self, expr):  # noqa: D102 - printer protocol
+        return self._power("upow__", expr)
+
+    def _print_spow__(self, expr):  # noqa: D102 - printer protocol
+        return self._power("spow__", expr)
+
+
+_printer = _EnginePrinter({"fully_qualified_modules": True, "standard": "python3"})
+
+#: The run-time exponents :func:`cse_lines` has met since :func:`render` started the
+#: current system (exponent i is row POWERS + i of the table and ``e<i>_`` in a kernel),
+#: and those met since the last kernel was written (the ones its dispatch looks at).
+_EXPONENTS: dict[sp.Expr, None] = {}
+_PENDING: dict[sp.Expr, None] = {}
 
 
 def _p(e) -> str:
@@ -61,8 +114,63 @@ def cse_lines(outputs: list[sp.Expr], prefix: str) -> tuple[list[str], list[str]
     >>> cse_lines([(x + y) ** 3, 1 / (x + y)], "t")
     (['t0 = x + y'], ['((t0*t0)*t0)', '(1.0/t0)'])
     """
+    outputs = [_signed(e) for e in integer_powers([sp.sympify(e) for e in outputs])]
     reps, reduced = sp.cse(outputs, symbols=sp.numbered_symbols(prefix), optimizations="basic")
     return [f"{s.name} = {_p(e)}" for s, e in reps], [_p(e) for e in reduced]
+
+
+def _power_helpers() -> str:
+    """``upow<k>(b, e)``: b^e for a whole e in [0, 2^k) by square-and-multiply with
+    selects, k bits always (no branch, so the loop over runs that calls it vectorises;
+    with a scalar e the selects are the same for every run); ``spow<k>``: the same for
+    |e|, inverted when e < 0."""
+    out = ""
+    for bits in POWER_CLASSES:
+        body = ["k = int(e)", "r = b if k & 1 else 1.0", "p = b"]
+        for i in range(1, bits):
+            body += ["p = p * p", f"r = r * p if k & {1 << i} else r"]
+        out += _function(
+            f"upow{bits}", "b, e", f"b^e for a whole e in [0, {1 << bits}).", body + ["return r"]
+        )
+        out += _function(
+            f"spow{bits}",
+            "b, e",
+            f"b^e for a whole |e| < {1 << bits}.",
+            [f"r = upow{bits}(b, abs(e))", "return 1.0 / r if e < 0 else r"],
+        )
+    return out
+
+
+def _dispatch(body: list[str], powers: str = "block") -> list[str]:
+    """``body`` as the kernel's text when it raises no run-time power; else, for
+    ``powers`` = "block", the branch of :data:`POWER_CLASSES`: the exponents (those
+    :func:`cse_lines` met since the last kernel) are scanned over the block's runs, and a
+    block whose runs share them takes the body of the smallest class that holds them, with
+    scalar exponents ``e<i>_``; a block that mixes them takes the last class, each run
+    loading its own.  "one" (a kernel of a single run): the classes only.  "lanes" (a
+    kernel called once a segment, where compile time counts more than speed): the last
+    class only, each run loading its own exponents."""
+    rows = [list(_EXPONENTS).index(e) for e in _PENDING]
+    _PENDING.clear()
+    if not any("pow__(" in line for line in body):
+        return body
+    last = POWER_CLASSES[-1]
+    if powers == "lanes":
+        return [line.replace("pow__(", f"pow{last}(") for line in body]
+    out = [f"e{i}_ = P[POWERS + {i}, 0]" for i in rows]
+    if powers == "block":
+        out += ["mixed_ = False", "for b in range(P.shape[1]):"]
+        out += [f"    mixed_ = mixed_ or P[POWERS + {i}, b] != e{i}_" for i in rows]
+    out += ["top_ = max(" + ", ".join(f"abs(e{i}_)" for i in rows) + ", 0.0)"]
+    scalar = [line for line in body if not re.match(r"\s*e\d+_ = P\[", line)]
+    classes = POWER_CLASSES if powers == "block" else POWER_CLASSES[:-1]
+    for k, bits in enumerate(classes):
+        test = f"not mixed_ and top_ < {1 << bits}" if powers == "block" else f"top_ < {1 << bits}"
+        out.append(f"{'if' if k == 0 else 'elif'} {test}:")
+        out += ["    " + line.replace("pow__(", f"pow{bits}(") for line in scalar]
+    out.append("else:")
+    last_body = body if powers == "block" else scalar
+    return out + ["    " + line.replace("pow__(", f"pow{last}(") for line in last_body]
 
 
 def _local_lines(term: Term) -> list[str]:
@@ -148,6 +256,7 @@ def _params(system: SeparableSystem) -> list[str]:
     index = {e: i for i, (_, e) in enumerate(rows)}
     where = {name: i for i, (name, _) in enumerate(rows)}
     lines = [f"{p.name} = P[{i}, b]" for i, p in enumerate(system.params)]
+    lines += [f"e{i}_ = P[POWERS + {i}, b]" for i in range(len(_EXPONENTS))]
     lines += [
         f"im_{c.name} = P[{index[1 / m]}, b]" for c, m in _masses(system).items() if not m.is_number
     ]
@@ -188,9 +297,11 @@ def _terms(system: SeparableSystem):
     yield from ((t, True) for t in system.member_terms)
 
 
-def _function(name: str, args: str, doc: str, body: list[str]) -> str:
+def _function(name: str, args: str, doc: str, body: list[str], powers: str = "block") -> str:
+    """The text of a compiled kernel; ``powers``: how it raises run-time powers
+    (:func:`_dispatch`)."""
     deco = '@numba.njit(cache=True, error_model="numpy")'
-    text = "\n".join("    " + s for s in [f'"""{doc}"""', *body])
+    text = "\n".join("    " + s for s in [f'"""{doc}"""', *_dispatch(body, powers)])
     return f"\n\n{deco}\ndef {name}({args}):\n{text}\n"
 
 
@@ -454,7 +565,7 @@ def _dissipate(system: SeparableSystem) -> list[str]:
 #: or atom of a system may take one (the circular well's atom w met the work array w once).
 RESERVED = frozenset(
     "q v a h P c dq dv pull total shared members D B K M i j b m "
-    "decay c0 weighted tau work jj wgt_ vd_ dv_ w_ dw_ wn_".split()
+    "decay c0 weighted tau work jj wgt_ vd_ dv_ w_ dw_ wn_ mixed_ top_ e k r p".split()
 )
 
 
@@ -470,6 +581,8 @@ def _check_names(system: SeparableSystem) -> None:
 def render(system: SeparableSystem, banner: str) -> str:
     """Source text of the engine module of ``system``."""
     _check_names(system)
+    _EXPONENTS.clear()
+    _PENDING.clear()
     im, im_lines = _inverse_masses(system)
     _, shared_rows, member_rows = _hessian_rows(system)
     C = len(system.member)
@@ -479,7 +592,7 @@ def render(system: SeparableSystem, banner: str) -> str:
         'sinktheory.engine.printer)."""\n'
         "import math  # noqa: F401\n\nimport numba\nimport numpy as np\n\n"
         f"SHARED = {len(system.shared)}\nMEMBER_COORDS = {C}\nNPARAMS = {len(system.params)}\n"
-        f"NTABLE = {len(_table_rows(system))}\n"
+        f"POWERS = {len(_table_rows(system))}\nMAX_POWER = {1 << POWER_CLASSES[-1]}\n"
         f"SHARED_HESSIAN = {shared_rows}\nMEMBER_HESSIAN = {member_rows}\n"
         f"DAMPED = {system.damping is not None}\n"
     )
@@ -494,22 +607,7 @@ def render(system: SeparableSystem, banner: str) -> str:
         "Rows of the Hessian buffer for a state with D coordinates.",
         ["return SHARED_HESSIAN + MEMBER_HESSIAN * members_of(D)"],
     )
-    rows = _table_rows(system)
-    loads = [f"{p.name} = P[{i}, b]" for i, p in enumerate(system.params)]
-    table = _function(
-        "parameter_table",
-        "P",
-        "The kernels' per-run table (NTABLE, R) from the parameters P (NPARAMS, R).",
-        ["R = P.shape[1]", "T = np.empty((NTABLE, R))"]
-        + (["for b in range(R):"] if rows else [])
-        + ["    " + s for s in loads]
-        + [f"    T[{i}, b] = {_p(e)}" for i, (_, e) in enumerate(rows)]
-        + ["return T"],
-    )
-    parts = [
-        head,
-        sizes,
-        table,
+    kernels = [
         _function(
             "accelerations",
             "q, a, P",
@@ -522,6 +620,7 @@ def render(system: SeparableSystem, banner: str) -> str:
             "accelerations of a single run q[coordinate, 0], bitwise those of the block "
             "kernel; pull (SHARED, K) is work space.",
             im_lines + _accelerations(system, im, one=True),
+            powers="one",
         ),
         _function(
             "hessian",
@@ -540,6 +639,7 @@ def render(system: SeparableSystem, banner: str) -> str:
             "q, h, P",
             "hessian of a single run, h[entry, 0].",
             _hessian(system, one=True),
+            powers="one",
         ),
         _function(
             "tangent_kick_one",
@@ -573,8 +673,28 @@ def render(system: SeparableSystem, banner: str) -> str:
             "q, v, P, total, shared, members",
             "Total energy H, its shared (container) part and each member's part, per run.",
             _energies(system),
+            powers="lanes",
         ),
     ]
     stepper = STEPPER.read_text()
     stepper = stepper[stepper.index("# --- template starts") :]
+    parts = [head, sizes, _power_helpers(), _table(system), *kernels]
     return "".join(parts) + "\n\n" + stepper
+
+
+def _table(system: SeparableSystem) -> str:
+    """``NTABLE`` and ``parameter_table``: the rows of :func:`_table_rows`, then each
+    run-time exponent the kernels raise a base to (row POWERS + i: :data:`_EXPONENTS`)."""
+    rows = _table_rows(system)
+    loads = [f"{p.name} = P[{i}, b]" for i, p in enumerate(system.params)]
+    fill = [f"T[{i}, b] = {_p(e)}" for i, (_, e) in enumerate(rows)]
+    fill += [f"T[POWERS + {i}, b] = {_p(e)}" for i, e in enumerate(_EXPONENTS)]
+    return f"NTABLE = {len(fill)}\n" + _function(
+        "parameter_table",
+        "P",
+        "The kernels' per-run table (NTABLE, R) from the parameters P (NPARAMS, R): the "
+        "rows the kernels load, then each run-time exponent.",
+        ["R = P.shape[1]", "T = np.empty((NTABLE, R))"]
+        + (["for b in range(R):", *("    " + s for s in loads + fill)] if fill else [])
+        + ["return T"],
+    )

@@ -14,9 +14,9 @@ Everything here needs SymPy and runs only when a kernel module is generated
 
 Examples
 --------
->>> s = sink_system("flat", n=4)
+>>> s = sink_system("flat")
 >>> [str(c) for c in s.shared], [str(c) for c in s.member], [str(p) for p in s.params]
-(['X'], ['u', 'y'], ['alpha', 'beta', 'gamma', 'mu'])
+(['X'], ['u', 'y'], ['alpha', 'beta', 'gamma', 'n', 'mu'])
 >>> len(henon_heiles().shared), henon_heiles().member
 (2, ())
 """
@@ -108,35 +108,36 @@ class SeparableSystem:
     damping: Damping | None = None
 
 
-def _well_term(shape: str, n: int) -> Term:
-    """V(x, y) of one particle, x = u - X, in the shape's atoms, exponent fixed to n.
+def _well_term(well) -> Term:
+    """V(x, y) of one particle, x = u - X, in the atoms of ``well`` (:func:`sinktheory.
+    symbolic.kernel_form`: a registered shape's own, a user's well's lifted powers).
 
-    Every atom that appears with a negative power (a denominator such as D(y)) gets one
-    reciprocal atom iD = 1/D and every D^-k becomes iD^k, so a kernel divides once per
-    denominator.
+    The exponents stay symbolic (n is a run-time parameter; the printer raises each base
+    to its run-time power once).  Every atom that appears with a fixed negative power (a
+    denominator such as D(y)) gets one reciprocal atom iD = 1/D and every D^-k becomes
+    iD^k, so a kernel divides once per denominator.
     """
     u = sp.Symbol("u", real=True)
-    definition = S.shape_definition(shape)
+    definition = S.kernel_form(well)
     outputs = (
-        definition.potential,
-        *S.gradient_in_ratios(shape),
-        *S.hessian_in_ratios(shape),
+        S.potential_of_ratios(definition),
+        *S.gradient_in_ratios(definition),
+        *S.hessian_in_ratios(definition),
     )
-    outputs = [e.subs(S.n, n) for e in outputs]  # terms with a factor n - 1 cancel here
     names = dict(definition.atoms)
+
+    def fixed_negative(p) -> bool:
+        return p.is_Pow and p.base in names and p.exp.is_number and p.exp.is_negative
+
     recip = {
         p.base: sp.Symbol(f"i{p.base.name}", real=True)
         for e in outputs
         for p in e.atoms(sp.Pow)
-        if p.base in names and p.exp.is_negative
+        if fixed_negative(p)
     }
 
     def fix(e):
-        e = e.subs(S.n, n)
-        return e.replace(
-            lambda t: t.is_Pow and t.base in recip and t.exp.is_negative,
-            lambda t: recip[t.base] ** (-t.exp),
-        )
+        return e.replace(fixed_negative, lambda t: recip[t.base] ** (-t.exp))
 
     atoms = []
     for a, e in definition.atoms:
@@ -154,37 +155,75 @@ def _well_term(shape: str, n: int) -> Term:
     )
 
 
-def sink_system(shape: str, n: int) -> SeparableSystem:
-    """The container (mass 1, spring 1) with particles in the ``shape`` well, exponent 2n.
-
-    ``shape`` is any name of the registry :data:`sinktheory.symbolic.SHAPES`: the well
-    term is built from that shape's definition (atoms, potential and its derivatives).
+def sink_system(well, name: str | None = None) -> SeparableSystem:
+    """The container (mass 1, spring 1) with particles in ``well``: a name of the registry
+    :data:`sinktheory.symbolic.SHAPES` or a user's well (a
+    :class:`~sinktheory.symbolic.WellDefinition`); the well term is built from its
+    definition (atoms, potential and its derivatives), the same way for both.
 
     Coordinates are those of :func:`sinktheory.symbolic.separable_hamiltonian`; the masses
     are read from it, and the potential is checked there to be X^2/2 + sum V(u_j - X, y_j).
-    Runtime parameters: alpha, beta, gamma, mu.
+    Run-time parameters: the well's (alpha, beta, gamma, n for a registered shape, the
+    exponent n included), then the particle mass mu.  ``name`` defaults to sink_<shape>.
     """
-    sh = S.separable_hamiltonian(1, shape)
+    definition = S.shape_definition(well)
+    sh = S.separable_hamiltonian(1, well)
     u = sp.Symbol("u", real=True)
     X = S.X
-    expected = X**2 / 2 + S.potential(shape, u - X, S.y)
+    params = tuple(definition.parameter_symbols)
+    whole = _whole_exponents(definition)
+    expected = X**2 / 2 + S.potential(well, u - X, S.y)
     probe = {X: sp.Rational(1, 3), u: sp.Rational(1, 2), S.y: sp.Rational(-1, 5)}
-    probe |= {S.alpha: sp.Rational(1, 2), S.beta: sp.Rational(3, 10), S.gamma: 2, S.n: n}
+    probe |= {p: sp.Integer(2 + i) for i, p in enumerate(params)}  # whole: n is an exponent
     got = sh.potential.subs({sh.coordinates[1]: u})
     if sp.nsimplify((got - expected).subs(probe)) != 0:
         raise AssertionError("separable potential is not X^2/2 + sum V(u - X, y)")
+    term = _well_term(well)
+    term = Term(term.local, term.maps, tuple((a, e.subs(whole)) for a, e in term.atoms),
+                *(sp.sympify(e).subs(whole) for e in (term.value,)),
+                tuple(e.subs(whole) for e in term.gradient),
+                tuple(e.subs(whole) for e in term.hessian))  # fmt: skip
     return SeparableSystem(
-        name=f"sink_{shape}_n{n}",
+        name=name or f"sink_{definition.name}",
         shared=(X,),
         shared_masses=(sh.masses[0],),
         member=(u, S.y),
         member_masses=(sh.masses[1], sh.masses[2]),
-        params=(S.alpha, S.beta, S.gamma, S.mu),
+        params=(*(p.subs(whole) for p in params), S.mu),
         shared_terms=(Term.plain((X,), (X,), X**2 / 2),),
-        member_terms=(_well_term(shape, n),),
-        # the wall term 2 n V / gamma: about 1 at the wall, (1/2)^(2n) half-way to it
-        damping=Damping(pairs=((u, X), (S.y, None)), weight=2 * sp.Integer(n) / S.gamma),
+        member_terms=(term,),
+        # contact weight V / (its level at the wall): about 1 at the wall, (1/2)^(2n)
+        # half-way to it for the paper's wells (2 n V / gamma)
+        damping=Damping(pairs=((u, X), (S.y, None)), weight=_contact_weight(definition)),
     )
+
+
+def _whole_exponents(definition) -> dict[sp.Symbol, sp.Symbol]:
+    """The parameters of a user's well mapped to the symbols its engine takes them as:
+    ``par_<name>`` (a kernel's own names, such as the loop variable b, stay free), an
+    integer (non-negative or positive when the declared range says so) for each that sits
+    in an exponent with a whole default value, so that its powers become run-time powers
+    whose values must then be whole (checked when a parameter table is made).  Empty for
+    a registered shape (its n is an integer symbol already)."""
+    ranges = {p.symbol: (p.default, *p.range) for p in getattr(definition, "parameters", ())}
+    out = {s: sp.Symbol(f"par_{s.name}", real=True) for s in ranges}  # no clash with kernels
+    for power in definition.potential.atoms(sp.Pow):
+        for symbol in power.exp.free_symbols & set(ranges):
+            default, lo, _ = ranges[symbol]
+            if float(default).is_integer():
+                out[symbol] = sp.Symbol(
+                    f"par_{symbol.name}", integer=True, nonnegative=lo >= 0 or None,
+                    positive=lo > 0 or None,
+                )  # fmt: skip
+    return out
+
+
+def _contact_weight(definition) -> sp.Expr:
+    """The damping's contact weight per unit of the well term: 2n/gamma for the paper's
+    wells (V = gamma/(2n) at the wall); for a user's well, 1 (the weight is V itself)."""
+    if {S.gamma, S.n} <= set(definition.parameter_symbols):
+        return 2 * S.n / S.gamma
+    return sp.Integer(1)
 
 
 def henon_heiles() -> SeparableSystem:

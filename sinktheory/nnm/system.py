@@ -55,8 +55,8 @@ def parameter_names(system: str) -> tuple[str, ...]:
 
     Examples
     --------
-    >>> parameter_names("sink_flat_n4_k1"), parameter_names("duffing2")
-    (('alpha', 'beta', 'gamma', 'mu'), ())
+    >>> parameter_names("sink_flat"), parameter_names("duffing2")
+    (('alpha', 'beta', 'gamma', 'n', 'mu'), ())
     """
     return SINK_PARAMS if system.startswith("sink_") else ()
 
@@ -68,7 +68,7 @@ class FlowSystem:
     Parameters
     ----------
     system : str
-        Engine name, e.g. ``"sink_flat_n4_k1"`` or ``"duffing2"``.
+        Engine name, e.g. ``"sink_flat"`` or ``"duffing2"``.
     params : sequence of float
         The engine's runtime parameters (see :func:`parameter_names`).
     scheme : str

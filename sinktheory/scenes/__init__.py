@@ -63,15 +63,15 @@ SECONDS = {
 #: figure loads).
 ENGINES = {
     2: (),
-    3: ("sink_flat_n2", "sink_flat_n10"),
-    4: ("sink_flat_n10",),
-    5: ("sink_flat_n10",),
+    3: ("sink_flat",),
+    4: ("sink_flat",),
+    5: ("sink_flat",),
     7: (),
-    8: ("sink_flat_n4",),
-    9: ("sink_flat_n4",),
+    8: ("sink_flat",),
+    9: ("sink_flat",),
     10: (),
-    11: ("sink_symmetric_n6",),
-    12: ("sink_symmetric_n6", "sink_flat_n4"),
+    11: ("sink_symmetric",),
+    12: ("sink_symmetric", "sink_flat"),
 }
 
 

@@ -52,10 +52,18 @@ def test_batch_with_a_step_per_setup_equals_each_setup_alone():
         chaos_batch(sinks, settings, dt=[0.01, 0.02])
 
 
-def test_batch_refuses_mixed_engines():
-    sinks = [Sink(Well(0.5, 0.1, 4), 1, 0.2), Sink(Well(0.5, 0.1, 2), 1, 0.2)]
+def test_batch_refuses_mixed_engines_and_takes_mixed_n():
+    """Wells of two shapes need two engines and are refused; two exponents n share one
+    engine, and each result is bitwise the result alone."""
+    sinks = [Sink(Well(0.5, 0.1, 4), 1, 0.2), Sink(Well(0.5, 0.1, 2, shape="circular"), 1, 0.2)]
     with pytest.raises(ParameterError, match="sinks"):
         chaos_batch(sinks, [RunSettings(runs=1, periods=2)] * 2, dt=0.01)
+    sinks = [Sink(Well(0.5, 0.1, 4), 1, 0.2), Sink(Well(0.5, 0.1, 2), 1, 0.2)]
+    runs = [RunSettings(runs=2, periods=3, seed=s) for s in (1, 2)]
+    both = chaos_batch(sinks, runs, dt=0.01)
+    for sink, settings, result in zip(sinks, runs, both, strict=True):
+        alone = chaos(sink, settings, dt=0.01)
+        assert np.array_equal(result.lambda1, alone.lambda1)
     with pytest.raises(ParameterError, match="sinks, settings"):
         chaos_batch(sinks[:1], [], dt=0.01)
 
@@ -101,7 +109,11 @@ def test_sections_together_equal_sections_alone():
             alone = section(w, transient=3, count=4, quantity=quantity)
             assert np.array_equal(row, alone)
     with pytest.raises(ParameterError, match="sinks"):
-        sections([wells[0], Sink(Well(0.5, 0.1, 4), 1, 0.2)], transient=1, count=1)
+        sections([wells[0], Sink(Well(0.5, 0.1, 4, shape="circular"), 1, 0.2)], transient=1,
+                 count=1)  # fmt: skip
+    mixed = [wells[0], Sink(Well(0.5, 0.1, 4), 1, 0.2)]  # n = 2 and 4: one engine
+    for w, row in zip(mixed, sections(mixed, transient=2, count=3), strict=True):
+        assert np.array_equal(row, section(w, transient=2, count=3))
 
 
 def test_staged_exponents_stop_settled_betas_and_keep_the_rest_bitwise():

@@ -16,7 +16,7 @@ SMALL = [
     "--shell-energies",
     "4",
     "--shell-runs",
-    "8",
+    "64",
     "--lag",
     "32",
     "--seed",
@@ -33,7 +33,7 @@ def test_cli_equals_api_and_draws(tmp_path, capsys):
     assert code == 0, err
     data = json.loads(out)
     sink = Sink(FIG8_WELL, particles=1, mass=0.2)
-    p = predict_relaxation(sink, 0.5, shell_energies=4, shell_runs=8, lag=32, seed=3, resamples=20)
+    p = predict_relaxation(sink, 0.5, shell_energies=4, shell_runs=64, lag=32, seed=3, resamples=20)
     r, _ = measure_settling(sink, 0.5, (4, 240), seed=3, resamples=20)
     assert data["prediction"]["settle_time"] == p.settle_time
     assert data["prediction"]["means"] == p.means.tolist()

@@ -44,7 +44,7 @@ def test_split_join_against_the_engine_state():
 def test_packed_parameters_and_bad_widths():
     sink = Sink(Well(0.5, -0.2, 6, gamma=2.0), particles=4, mass=0.2)
     assert dict(zip(SINK_PARAMS, pack_params(sink), strict=True)) == pytest.approx(
-        {"alpha": 0.5, "beta": -0.2, "gamma": 2.0, "mu": 0.05}
+        {"alpha": 0.5, "beta": -0.2, "gamma": 2.0, "n": 6, "mu": 0.05}
     )
     for width in (0, 5, 7):
         with pytest.raises(ParameterError) as info:

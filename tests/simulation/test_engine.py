@@ -49,10 +49,10 @@ def _exact(shape, n, k=2):
 def test_kernels_match_the_separable_hamiltonian(shape, n, k):
     """a = -grad U / m, the tangent kick = -c Hess U dq / m and H, against exact SymPy."""
     sh, U, masses, grad, hess = _exact(shape, n, k)
-    mod = load(sink_name(shape, n))
+    mod = load(sink_name(shape))
     D = 1 + 2 * k
     q = np.array([[float(s)] for s in _state(k)])
-    P = mod.table_of([float(PARAMS[s]) for s in (S.alpha, S.beta, S.gamma, S.mu)], 1)
+    P = mod.table_of([*(float(PARAMS[s]) for s in (S.alpha, S.beta, S.gamma)), n, PARAMS[S.mu]], 1)
     a = mod.block_accelerations(q, P)[:, 0]
     expected = [-float(g / m) for g, m in zip(grad, masses, strict=True)]
     np.testing.assert_allclose(a, expected, rtol=RTOL, atol=RTOL * np.max(np.abs(expected)))
@@ -76,13 +76,12 @@ def test_kernels_match_the_separable_hamiltonian(shape, n, k):
     assert shared[0] == pytest.approx(0.5 * v[0, 0] ** 2 + 0.5 * float(STATE[0]) ** 2, rel=1e-15)
 
 
-@pytest.mark.parametrize(
-    "system", ["sink_flat_n4", "sink_symmetric_n6", "sink_circular_n4", HENON_HEILES]
-)
+@pytest.mark.parametrize("system", ["sink_flat", "sink_symmetric", "sink_circular", HENON_HEILES])
 def test_single_run_kernels_are_bitwise_the_block_kernels(system):
     """The one-run kernels (vectorised across the particles, the container's share summed
     afterwards) give each run the bits the block kernels give it, signed zeros included,
-    for any number of particles and per-run parameters."""
+    for any number of particles and per-run parameters: with one exponent n for the
+    whole block (a scalar power) and with a different n in every run (a power per run)."""
     mod = load(system)
     rng = np.random.default_rng(7)
     for k in (0, 1, 5, 13) if mod.MEMBER_COORDS else (0,):
@@ -90,7 +89,10 @@ def test_single_run_kernels_are_bitwise_the_block_kernels(system):
         q = rng.uniform(-0.6, 0.6, size=(D, R))
         q[:, 0] = 0.0  # every force term is a signed zero here
         q[:, 1] = -0.0
-        P = mod.table_of(rng.uniform(0.2, 0.4, size=(mod.NPARAMS, R)), R)
+        params = rng.uniform(0.2, 0.4, size=(mod.NPARAMS, R))
+        if mod.MEMBER_COORDS:  # n: the same in every run, then a different one in each
+            params[3] = 4 if k < 5 else rng.permutation([1, 2, 4, 9, 17, 40])
+        P = mod.table_of(params, R)
         dq, dv = rng.normal(size=(D, M, R)), rng.normal(size=(D, M, R))
         a = mod.block_accelerations(q, P)
         # every term is a signed zero in runs 0 and 1: sums from a zeroed array give +0.0
@@ -138,7 +140,7 @@ def test_tangent_map_is_the_jacobian_of_the_step_map():
     D = q.shape[0]
     eye = np.eye(2 * D)
     ens = Ensemble(
-        sink_name("flat", 4),
+        sink_name("flat"),
         q,
         v,
         engine_params(sink),
@@ -154,7 +156,7 @@ def test_tangent_map_is_the_jacobian_of_the_step_map():
         for sign in (1, -1):
             z = np.concatenate([q[:, 0], v[:, 0]])
             z[col] += sign * eps
-            e = Ensemble(sink_name("flat", 4), z[:D, None], z[D:, None], engine_params(sink))
+            e = Ensemble(sink_name("flat"), z[:D, None], z[D:, None], engine_params(sink))
             e.run(scheme, dt=dt, steps=steps, segments=1, record=())
             ends.append(np.concatenate([e.q[:, 0], e.v[:, 0]]))
         fd[:, col] = (ends[0] - ends[1]) / (2 * eps)
@@ -174,7 +176,7 @@ def test_bitwise_identical_for_any_block_size_and_thread_count(tangent):
         for block, nthreads in [(64, 1), (1, 1), (3, threads), (5, threads), (11, threads)]:
             numba.set_num_threads(nthreads)
             ens = Ensemble(
-                sink_name("flat", 4),
+                sink_name("flat"),
                 q,
                 v,
                 engine_params(sink),
@@ -200,7 +202,7 @@ def test_bitwise_identical_for_any_block_size_and_thread_count(tangent):
 
 def _run(q, v, params, **options):
     """Final state and records of a 3-period ensemble (blanes-moan6, 400 steps)."""
-    ens = Ensemble(sink_name("flat", 4), q, v, params)
+    ens = Ensemble(sink_name("flat"), q, v, params)
     rec = ens.run(get_scheme("blanes-moan6"), dt=2 * np.pi / 400, steps=400, segments=3,
                   record=("shared", "members"), **options)  # fmt: skip
     return ens.q, ens.v, rec.shared, rec.members, rec.worst
@@ -219,12 +221,15 @@ def test_automatic_plan_with_inert_copies_is_bitwise_the_plain_run(runs):
 
 
 def test_runs_with_their_own_parameters_equal_separate_ensembles():
-    """One ensemble over a grid of (beta, mu) equals one ensemble per point, bitwise."""
+    """One ensemble over a grid of (beta, n, mu) equals one ensemble per point, bitwise:
+    a block whose runs differ in n raises each run to its own power, a run alone raises
+    all to one, with the same products."""
     sink, q, v = _fig8_like(6)
     base = engine_params(sink)
     grid = np.repeat(base[:, None], 6, axis=1)
     grid[1] = [0.1, 0.1, 0.2, 0.2, 0.3, 0.3]  # beta
-    grid[3] = [0.05, 0.1, 0.05, 0.1, 0.05, 0.1]  # mu
+    grid[3] = [4, 2, 10, 4, 3, 40]  # n
+    grid[4] = [0.05, 0.1, 0.05, 0.1, 0.05, 0.1]  # mu
     together = _run(q, v, grid)
     for r in range(6):
         alone = _run(q[:, r : r + 1], v[:, r : r + 1], grid[:, r])
@@ -241,7 +246,7 @@ def test_damped_runs_are_bitwise_for_any_block_size_and_chunking(kind):
     sink, q, v = _fig8_like(5)
     results = []
     for block, pieces in [(1, (3,)), (5, (3,)), (2, (1, 2))]:
-        ens = Ensemble(sink_name("flat", 4), q, v, engine_params(sink), damping=0.7,
+        ens = Ensemble(sink_name("flat"), q, v, engine_params(sink), damping=0.7,
                        damping_kind=kind)  # fmt: skip
         for segments in pieces:
             rec = ens.run(get_scheme("blanes-moan6"), dt=2 * np.pi / 400, steps=400,
@@ -257,9 +262,9 @@ def test_damped_runs_are_bitwise_for_any_block_size_and_chunking(kind):
 def test_damping_is_refused_where_it_cannot_apply():
     sink, q, v = _fig8_like(2)
     with pytest.raises(ParameterError, match="damping"):
-        Ensemble(sink_name("flat", 4), q, v, engine_params(sink), damping=-1.0)
+        Ensemble(sink_name("flat"), q, v, engine_params(sink), damping=-1.0)
     with pytest.raises(ParameterError, match="damping_kind"):
-        Ensemble(sink_name("flat", 4), q, v, engine_params(sink), damping=1.0,
+        Ensemble(sink_name("flat"), q, v, engine_params(sink), damping=1.0,
                  damping_kind="magnetic")  # fmt: skip
     hh = np.array([[0.0], [0.1]]), np.array([[0.3], [0.0]])
     with pytest.raises(ParameterError, match="has no damping"):
@@ -269,7 +274,7 @@ def test_damping_is_refused_where_it_cannot_apply():
 def test_parameters_of_the_wrong_shape_are_refused():
     sink, q, v = _fig8_like(3)
     with pytest.raises(ValueError, match="params"):
-        Ensemble(sink_name("flat", 4), q, v, np.ones((4, 2)))
+        Ensemble(sink_name("flat"), q, v, np.ones((4, 2)))
 
 
 def test_take_continues_the_chosen_runs_bitwise():
@@ -280,7 +285,7 @@ def test_take_continues_the_chosen_runs_bitwise():
     scheme, dt = get_scheme("blanes-moan6"), 2 * np.pi / 400
 
     def fresh():
-        return Ensemble(sink_name("flat", 4), q, v, engine_params(sink), tangent="normalise",
+        return Ensemble(sink_name("flat"), q, v, engine_params(sink), tangent="normalise",
                         **vectors)  # fmt: skip
 
     whole = fresh()
@@ -301,7 +306,7 @@ def _mixed_steps_run(q, v, params, steps, *, block=None, threads=None, dq=None, 
     saved = numba.get_num_threads()
     numba.set_num_threads(threads or saved)
     try:
-        ens = Ensemble(sink_name("flat", 4), q, v, params, dq=dq, dv=dv,
+        ens = Ensemble(sink_name("flat"), q, v, params, dq=dq, dv=dv,
                        tangent="none" if dq is None else "normalise")  # fmt: skip
         steps = np.asarray(steps)
         rec = ens.run(get_scheme("blanes-moan6"), dt=2 * np.pi / steps, steps=steps, segments=3,
@@ -339,7 +344,7 @@ def test_runs_with_their_own_steps_equal_each_step_group_alone(block, threads):
 
 def test_steps_per_run_are_checked():
     sink, q, v = _fig8_like(3)
-    ens = Ensemble(sink_name("flat", 4), q, v, engine_params(sink))
+    ens = Ensemble(sink_name("flat"), q, v, engine_params(sink))
     scheme = get_scheme("verlet")
     with pytest.raises(ParameterError, match="dt, steps"):  # unequal segments
         ens.run(scheme, dt=np.array([0.01, 0.01, 0.02]), steps=np.array([10, 10, 10]), segments=1)
