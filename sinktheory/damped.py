@@ -237,7 +237,7 @@ def setup(
     params = engine.table_of(engine_params(sink), q.shape[1])
     h0 = engine.block_energies(q, vel, params)[0]
     sink.well.check_energy(float(np.max(h0)), name="total_energy")
-    method, dt, steps, tol = resolve_step(sink, float(np.max(h0)), method=method, dt=dt, tol=tol)
+    method, dt, steps, tol = resolve_step(sink, float(np.max(h0)), scheme=method, dt=dt, tol=tol)
     stride = 0
     if samples:
         steps = -(-steps // samples) * samples
