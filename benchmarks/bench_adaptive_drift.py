@@ -45,7 +45,7 @@ def _adaptive(n, k, eps, args):
     from sinktheory.simulate import simulate
 
     sink, first = _sink(n, k), max(1, args.periods // 10)
-    common = {"method": "adaptive", "eps": eps, "energy_bound": 1.0, "progress": False,
+    common = {"stepper": "adaptive", "eps": eps, "energy_bound": 1.0, "progress": False,
               "record": ("final",)}  # fmt: skip
     t0 = time.perf_counter()
     a = simulate(sink, RunSettings(runs=args.runs, periods=first, seed=args.seed), **common)

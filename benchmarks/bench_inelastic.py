@@ -99,7 +99,7 @@ def main() -> None:
         long_us, sim_us = t_long * per / long.periods, t_sim * per / long.periods
         diff = float(np.max(np.abs(fast.container_energy - slow.container_energy)))
         rows.append(
-            (k, fast.method, fast.steps_per_period, compile_s, slow_us, fast_us,
+            (k, fast.scheme, fast.steps_per_period, compile_s, slow_us, fast_us,
              slow_us / fast_us, long_us, slow_us / long_us, sim_us, long_us / sim_us, diff,
              fast.max_audit_error, slow.max_audit_error, res_long.max_audit_error)
         )  # fmt: skip

@@ -180,7 +180,7 @@ def fokker_planck(args) -> None:
     mean, sd, se = ens.mean(0), ens.std(0, ddof=1), ens.std(0, ddof=1) / np.sqrt(runs)
     s = np.linspace(0, 1, 4001)
     law_sd = float(
-        np.sqrt(np.sum((s * law.energy - law.mean) ** 2 * law.pdf(s)) / law.pdf(s).sum())
+        np.sqrt(np.sum((s * law.total_energy - law.mean) ** 2 * law.pdf(s)) / law.pdf(s).sum())
     )
     wall = time.perf_counter() - start
     print(f"\n5. k = 1 from the paper's start: {runs} runs x {periods} periods [{wall:.1f} s]; "

@@ -109,7 +109,7 @@ def ours(sink, full: RunSettings, sweep: RunSettings | None) -> tuple[list[Point
                 continue
             points.append(Point(method, f"tol={tol:g}", wall * scale, res.run_errors.max(), scale))
     wall, res = _timed(lambda: simulate(sink, full, tol=1e-8, progress=False))
-    head = Point(f"ours auto ({res.method})", "tol=1e-8", wall, res.max_relative_energy_error)
+    head = Point(f"ours auto ({res.scheme})", "tol=1e-8", wall, res.max_relative_energy_error)
     return points, head
 
 
@@ -315,12 +315,12 @@ def scaling(sink, counts, periods: int, cfn, baseline: str | None) -> dict[str, 
     for R in counts:
         st = RunSettings(runs=R, periods=periods, seed=2)
         wall, _ = _timed(
-            lambda st=st: simulate(sink, st, dt=choice.dt, scheme=choice.method, progress=False)
+            lambda st=st: simulate(sink, st, dt=choice.dt, scheme=choice.scheme, progress=False)
         )
         out["ours"].append(wall / R)
         if cfn is not None:
             out["C"].append(
-                c_run(cfn, sink, st, choice.method, choice.dt, choice.steps_per_period)[0] / R
+                c_run(cfn, sink, st, choice.scheme, choice.dt, choice.steps_per_period)[0] / R
             )
         if baseline:
             out["baseline"].append(_baseline_time(baseline, R, periods, choice) / R)
@@ -341,7 +341,7 @@ def _baseline_time(rev: str, runs: int, periods: int, choice) -> float:
         from sinktheory import RunSettings, Sink, Well
         from sinktheory.simulate import simulate
         sink = Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2)
-        kw = dict(scheme={choice.method!r}, dt={choice.dt!r}, progress=False)
+        kw = dict(scheme={choice.scheme!r}, dt={choice.dt!r}, progress=False)
         simulate(sink, RunSettings(runs=1, periods=1), **kw)
         t = time.perf_counter()
         simulate(sink, RunSettings(runs={runs}, periods={periods}, seed=2), **kw)
@@ -441,8 +441,8 @@ def main(argv=None) -> int:
         cpoint = None
         if cfn is not None:
             choice = choose(sink, 0.5, 1e-8)
-            wall, err = c_run(cfn, sink, full, choice.method, choice.dt, choice.steps_per_period)
-            cpoint = Point(f"plain C ({choice.method})", "tol=1e-8", wall, err)
+            wall, err = c_run(cfn, sink, full, choice.scheme, choice.dt, choice.steps_per_period)
+            cpoint = Point(f"plain C ({choice.scheme})", "tol=1e-8", wall, err)
         others = heyoka_points(sink, full, hy_periods) + scipy_points(sink, full, scipy_horizon)
         table(points + others + [p for p in (cpoint, head) if p])
         for name in ("heyoka", "scipy DOP853"):

@@ -344,7 +344,7 @@ def impulse_response(
     return ImpulseResponse(res.sample_times, x, xd, 0.5 * (x * x + xd * xd),
                            res.sample_dissipated, res.initial_energy, res.max_audit_error,
                            transverse=res.transverse, dt=float(res.dt),
-                           integrator=f"{res.method}, dt = {res.dt:.6g}, with the exact "
+                           integrator=f"{res.scheme}, dt = {res.dt:.6g}, with the exact "
                            "dashpot flow (Strang)", **common)  # fmt: skip
 
 

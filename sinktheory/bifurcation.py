@@ -35,7 +35,7 @@ from .ensemble import (
     total_energy,
 )
 from .errors import ParameterError
-from .glossary import renamed
+from .glossary import old_attribute, renamed
 from .integrators import DEFAULT_SCHEME, get_scheme
 from .layout import StateLayout
 from .limits import MAX_PERIODS
@@ -63,10 +63,11 @@ QUANTITIES = ("y", "energy")
 START = (0.0, 0.01)
 
 
+@renamed(energy="container_energy")
 @dataclass(frozen=True)
 class BifurcationDiagram(Result):
     """Section values (B, count) at each beta, with everything needed to redraw them
-    (``to_dataset``: dims beta, sample)."""
+    (``to_dataset``: dims beta, sample); ``container_energy`` is E0 of every run."""
 
     beta: np.ndarray
     section: np.ndarray
@@ -76,9 +77,11 @@ class BifurcationDiagram(Result):
     gamma: float
     shape: str
     mass: float
-    energy: float
+    container_energy: float
     transient: int
     count: int
+
+    energy = old_attribute("container_energy")
 
     DIMS = {"beta": ("beta",), "section": ("beta", "sample")}
 
@@ -112,13 +115,14 @@ def sampled_run(sink: Sink, settings: RunSettings, start, *, per_period: int) ->
     return res.trajectory[0]
 
 
+@renamed(energy="container_energy")
 def section(
     sink: Sink,
     *,
     transient: int = 200,
     count: int = 200,
     quantity: str = "y",
-    energy: float = 0.5,
+    container_energy: float = 0.5,
 ) -> np.ndarray:
     """The stroboscopic section of one single-particle run (see the module docstring).
 
@@ -129,14 +133,16 @@ def section(
     (3,)
     """
     return sections([sink], transient=transient, count=count, quantity=quantity,
-                    energy=energy)[0]  # fmt: skip
+                    container_energy=container_energy)[0]  # fmt: skip
 
 
-def section_step(sink: Sink, energy: float = 0.5) -> tuple[float, int]:
+@renamed(energy="container_energy")
+def section_step(sink: Sink, container_energy: float = 0.5) -> tuple[float, int]:
     """(dt, steps per period) of a section run: the default scheme's step for the default
     tolerance at the start's energy, taken down to the ladder of
     :func:`sinktheory.stepsize.ladder_step` so that neighbouring betas share it."""
-    bound = RunSettings(container_energy=energy, runs=1, periods=1).total_energy_bound(sink)
+    settings = RunSettings(container_energy=container_energy, runs=1, periods=1)
+    bound = settings.total_energy_bound(sink)
     return ladder_step(default_step(sink, bound)[0])
 
 
@@ -166,13 +172,14 @@ def _check_work(sinks, steps, transient: int, count: int) -> None:
     )
 
 
+@renamed(energy="container_energy")
 def sections(
     sinks,
     *,
     transient: int = 200,
     count: int = 200,
     quantity: str = "y",
-    energy: float = 0.5,
+    container_energy: float = 0.5,
 ) -> np.ndarray:
     """Sections (B, count) of single-particle runs in several wells at once.
 
@@ -201,6 +208,7 @@ def sections(
         raise ParameterError("sinks", "none", "at least one well")
     if len({engine_name(k) for k in sinks}) > 1:
         raise ParameterError("sinks", "wells of different shapes", "wells of one shape")
+    energy = container_energy
     dt, steps = (np.array(x) for x in zip(*(section_step(k, energy) for k in sinks), strict=True))
     _check_work(sinks, steps, transient, count)
     values = [start_state(k, energy, np.array([[START]])) for k in sinks]
@@ -253,7 +261,9 @@ def bifurcation(
     energy = container_energy
     for s in sinks:  # refuse bad input before any long computation
         RunSettings(container_energy=energy, runs=1, periods=1).check(s)
-    rows = sections(sinks, transient=transient, count=count, quantity=quantity, energy=energy)
+    rows = sections(
+        sinks, transient=transient, count=count, quantity=quantity, container_energy=energy
+    )
     w = sinks[0].well
     return BifurcationDiagram(
         betas,
@@ -281,12 +291,12 @@ def check_point(p: dict) -> None:
     v.positive_int("count", p["count"], maximum=MAX_PERIODS)
     v.choice("quantity", p["quantity"], QUANTITIES)
     settings = RunSettings(
-        container_energy=p["energy"], runs=1, periods=p["transient"] + p["count"]
+        container_energy=p["container_energy"], runs=1, periods=p["transient"] + p["count"]
     )
     settings.check(sink)
     # a well too stiff to integrate names the parameter responsible, and the section's
     # periods are checked against the work limit
-    _, _, steps, _ = step_of(sink, p["energy"], settings=settings)
+    _, _, steps, _ = step_of(sink, p["container_energy"], settings=settings)
     check_work(settings, sink, steps)
 
 
@@ -296,7 +306,8 @@ def points(points: list) -> list[dict]:
     (:func:`sinktheory.bifurcation.sections`)."""
     groups: dict[tuple, list[int]] = {}
     for i, (p, _) in enumerate(points):
-        key = (p["shape"], p["n"], p["transient"], p["count"], p["quantity"], p["energy"])
+        same = ("shape", "n", "transient", "count", "quantity", "container_energy")
+        key = tuple(p[name] for name in same)
         groups.setdefault(key, []).append(i)
     out: list = [None] * len(points)
     for members in groups.values():
@@ -306,7 +317,7 @@ def points(points: list) -> list[dict]:
             transient=first["transient"],
             count=first["count"],
             quantity=first["quantity"],
-            energy=first["energy"],
+            container_energy=first["container_energy"],
         )
         for i, row in zip(members, rows, strict=True):
             out[i] = {"section": row}

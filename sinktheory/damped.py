@@ -106,7 +106,7 @@ from .ensemble import (
     start_state,
 )
 from .errors import EnergyDriftError, NonFiniteStateError, ParameterError
-from .glossary import renamed
+from .glossary import old_attribute, renamed
 from .integrators import get_scheme
 from .layout import StateLayout
 from .model import DAMPING_KINDS, RunSettings, Sink
@@ -133,7 +133,7 @@ class InelasticResult:
     max_audit_error : float
     damping_ratio : ndarray (R,)
         zeta_eq of each run over the whole run (0 when nothing was dissipated).
-    damping, dt, steps_per_period, method, tol, damping_kind
+    damping, dt, steps_per_period, scheme, tol, damping_kind
         What was integrated with (tol None when dt was given).
     sample_times : ndarray (S,) or None
         t_i = i T / s, i = 0..P s, with ``samples_per_period`` = s (None without sampling).
@@ -153,7 +153,7 @@ class InelasticResult:
     damping: float
     dt: float
     steps_per_period: int
-    method: str
+    scheme: str
     tol: float | None = None
     damping_kind: str = "contact"
     sample_times: np.ndarray | None = None
@@ -161,6 +161,8 @@ class InelasticResult:
     container_v: np.ndarray | None = None
     sample_dissipated: np.ndarray | None = None
     transverse: np.ndarray | None = None
+
+    method = old_attribute("scheme")
 
     def equivalent_damping(self) -> tuple[float, float]:
         """zeta_eq of the container: mean over runs and its standard error (ddof = 1;
@@ -179,7 +181,7 @@ class Setup:
     params: np.ndarray
     damping: float
     bound: float
-    method: str
+    scheme: str
     dt: float
     steps: int
     tol: float | None
@@ -208,7 +210,7 @@ def setup(
     sink: Sink,
     settings: RunSettings | None,
     damping: float,
-    method: str | None,
+    scheme: str | None,
     dt: float | None,
     tol: float | None,
     energy_bound: float | None,
@@ -224,8 +226,8 @@ def setup(
     kind = v.choice("damping_kind", kind, DAMPING_KINDS)
     samples = v.positive_int("samples_per_period", samples_per_period, minimum=0,
                              maximum=100_000)  # fmt: skip
-    if method is not None:
-        method = get_scheme(method).name
+    if scheme is not None:
+        scheme = get_scheme(scheme).name
     if tol is not None:
         tol = check_tol(tol)
     if energy_bound is None:
@@ -237,12 +239,12 @@ def setup(
     params = engine.table_of(engine_params(sink), q.shape[1])
     h0 = engine.block_energies(q, vel, params)[0]
     sink.well.check_energy(float(np.max(h0)), name="total_energy")
-    method, dt, steps, tol = resolve_step(sink, float(np.max(h0)), method=method, dt=dt, tol=tol)
+    scheme, dt, steps, tol = resolve_step(sink, float(np.max(h0)), scheme=scheme, dt=dt, tol=tol)
     stride = 0
     if samples:
         steps = -(-steps // samples) * samples
         dt, stride = PERIOD / steps, steps // samples
-    return Setup(q, vel, h0, engine, params, damping, bound, method, dt, steps, tol, kind,
+    return Setup(q, vel, h0, engine, params, damping, bound, scheme, dt, steps, tol, kind,
                  stride)  # fmt: skip
 
 
@@ -282,7 +284,7 @@ def result(s: Setup, e_c, h_t, w_t, integral, samples=None) -> InelasticResult:
         damping=s.damping,
         dt=s.dt,
         steps_per_period=s.steps,
-        method=s.method,
+        scheme=s.scheme,
         tol=s.tol,
         damping_kind=s.kind,
         **_sampled(s, samples),
@@ -362,7 +364,7 @@ def simulate_inelastic(
         damping=s.damping if dissipative_stage else 0.0, damping_kind=s.kind,
     )  # fmt: skip
     out = ens.run(
-        get_scheme(s.method), dt=s.dt, steps=s.steps, segments=settings.periods,
+        get_scheme(s.scheme), dt=s.dt, steps=s.steps, segments=settings.periods,
         record=("shared", "members", "work", "integral") + (("trajectory",) if s.stride else ()),
         stride=s.stride, bound=s.bound, progress=bool(progress), label="inelastic ",
         unit="period",

@@ -26,6 +26,7 @@ import numpy as np
 
 from . import validation as v
 from .errors import ParameterError
+from .glossary import old_attribute, renamed
 from .layout import StateLayout, pack_params
 from .model import RunSettings, Sink, Well
 from .results import Result
@@ -74,6 +75,13 @@ def default_energy_bound(tol: float | None) -> float:
     return max(ENERGY_BOUND, 100.0 * (tol or DEFAULT_TOL))
 
 
+def _method(result) -> str | None:
+    """What ``method`` said before it was split: the stepper "adaptive", else the fixed
+    stepper's scheme."""
+    return "adaptive" if result.stepper == "adaptive" else result.scheme
+
+
+@renamed(method="scheme")
 @dataclass(frozen=True)
 class SimulationState(Result):
     """The state of every run at one instant, enough to continue exactly where it stopped.
@@ -83,16 +91,23 @@ class SimulationState(Result):
     named by :class:`sinktheory.layout.StateLayout`.
     ``reference_energy`` is each run's total energy at the start of the whole simulation, so
     the energy audit of a continued run still measures the drift from the very beginning.
-    ``controller`` (R, 2), method "adaptive" only: each run's step rate rho and the part of
-    a step still to take, so that a continued run takes the steps it would have taken.
+    ``scheme`` is the splitting scheme the runs were stepped with, ``stepper`` how (fixed
+    or adaptive).  ``controller`` (R, 2), stepper "adaptive" only: each run's step rate rho
+    and the part of a step still to take, so that a continued run takes the steps it would
+    have taken.  A state made before ``method`` was split in two (``method="adaptive"``, or
+    "adaptive" where the scheme now stands) is an adaptive state whose scheme was not
+    recorded (None).
     """
 
     values: np.ndarray
     time: float
     reference_energy: np.ndarray
     dt: float
-    method: str
+    scheme: str | None
     controller: np.ndarray | None = None
+    stepper: str = "fixed"
+
+    method = old_attribute("stepper", "scheme", read=_method)
 
     DIMS = {
         "values": ("run", "state"),
@@ -111,6 +126,11 @@ class SimulationState(Result):
     def relative_positions(self) -> np.ndarray:
         """Particle positions (x_j, y_j) in the container's frame, shape (R, k, 2)."""
         return self.layout.relative_positions(self.values)
+
+    def __post_init__(self) -> None:
+        if self.scheme == "adaptive":  # the stepper, as an old state's method named it
+            object.__setattr__(self, "stepper", "adaptive")
+            object.__setattr__(self, "scheme", None)
 
     def coords(self) -> dict:
         return {"state": list(self.layout.names())}
@@ -141,7 +161,9 @@ class SimulationResult(Result):
         Largest relative total-energy error of each run, checked at every period end.
     max_relative_energy_error : float
         Largest of ``run_errors``.
-    method, dt, steps_per_period : the integrator used (dt = T / steps_per_period).
+    stepper, scheme, dt, steps_per_period : the integrator used: the stepper (fixed or
+        adaptive), its splitting scheme and the step (dt = T / steps_per_period; the mean
+        step for the adaptive stepper).
     message : str
         One line summarising the run and its audit.
     tol : float or None
@@ -159,12 +181,15 @@ class SimulationResult(Result):
     initial_energy: np.ndarray
     run_errors: np.ndarray
     max_relative_energy_error: float
-    method: str
+    stepper: str
+    scheme: str
     dt: float
     steps_per_period: int
     message: str
     tol: float | None = None
     parameters: dict = field(default_factory=dict)
+
+    method = old_attribute("stepper", "scheme", read=_method)
 
     DIMS = {
         "container_energy": ("run", "time"),
@@ -266,8 +291,9 @@ def run_parameters(sink: Sink, settings: RunSettings, runs: int) -> dict:
     w = sink.well
     return {
         "shape": w.shape, "alpha": w.alpha, "beta": w.beta, "n": w.n, "gamma": w.gamma,
-        "particles": sink.particles, "mass": sink.mass, "energy": settings.container_energy,
-        "runs": runs, "periods": settings.periods, "seed": settings.seed, "box": settings.box,
+        "particles": sink.particles, "mass": sink.mass,
+        "container_energy": settings.container_energy, "runs": runs,
+        "periods": settings.periods, "seed": settings.seed, "box": settings.box,
     }  # fmt: skip
 
 
@@ -420,8 +446,12 @@ def sink_of(p: Mapping) -> Sink:
 
 
 def settings_of(p: Mapping, seed: int) -> RunSettings:
-    """The :class:`~sinktheory.model.RunSettings` of a sweep point's ensemble (energy,
-    runs, periods, box), seeded with the point's seed."""
+    """The :class:`~sinktheory.model.RunSettings` of a sweep point's ensemble (container
+    energy, runs, periods, box), seeded with the point's seed."""
     return RunSettings(
-        container_energy=p["energy"], runs=p["runs"], periods=p["periods"], seed=seed, box=p["box"]
+        container_energy=p["container_energy"],
+        runs=p["runs"],
+        periods=p["periods"],
+        seed=seed,
+        box=p["box"],
     )

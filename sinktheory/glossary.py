@@ -10,7 +10,9 @@ says (its :data:`MARKS`).
 
 Names that changed keep working for one release: :func:`renamed` accepts an old keyword
 with a DeprecationWarning that names the new one, and :func:`modern_argv` rewrites an old
-option of a command (:data:`RENAMED_OPTIONS`) with a one-line note on stderr.
+option of a command (:data:`RENAMED_OPTIONS`) or an old sweep parameter of ``--param``
+(:data:`RENAMED_PARAMETERS`) with a one-line note on stderr; a sweep store written under
+the old parameter names still resumes and reads (:mod:`sinktheory.sweep.store`).
 
 Examples
 --------
@@ -26,6 +28,8 @@ Examples
 (2.0, "f: the keyword 'energy' is now 'container_energy'")
 >>> modern_argv(["simulate", "--alpha", "0.5", "--energy=2"])
 (['simulate', '--alpha', '0.5', '--container-energy=2'], ['--energy is now --container-energy'])
+>>> modern_argv(["sweep", "ensemble", "--param", "energy=0.1,0.2"])[1]
+['--param energy is now --param container_energy']
 """
 
 from __future__ import annotations
@@ -40,6 +44,7 @@ __all__ = [
     "MARKS",
     "RENAMED_KEYWORDS",
     "RENAMED_OPTIONS",
+    "RENAMED_PARAMETERS",
     "modern_argv",
     "old_attribute",
     "refusals_named",
@@ -233,6 +238,10 @@ RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
 }
 
 
+#: Sweep parameters (``--param NAME=...``, the ``params`` of a sweep) renamed: old -> new.
+RENAMED_PARAMETERS: dict[str, str] = {"energy": "container_energy", "method": "scheme"}
+
+
 #: "module.function" -> old keyword -> its new name (or a function of the value giving
 #: it), filled by :func:`renamed` as the modules that use it are imported.
 RENAMED_KEYWORDS: dict[str, dict[str, str | Callable[[object], str]]] = {}
@@ -283,7 +292,9 @@ def renamed(**renames: str | Callable[[object], str]):
 
 class old_attribute:  # noqa: N801 (used like a property)
     """A read-only attribute kept under its old name for one release: reading it gives the
-    attribute ``new`` with a DeprecationWarning naming it.
+    attribute ``new`` with a DeprecationWarning naming it (an old attribute split in two,
+    ``old_attribute("stepper", "scheme", read=f)``: ``f(obj)``, its old value, with a
+    warning naming both).
 
     Examples
     --------
@@ -296,8 +307,8 @@ class old_attribute:  # noqa: N801 (used like a property)
     (0.5, "Settings: the attribute 'energy' is now 'container_energy'")
     """
 
-    def __init__(self, new: str) -> None:
-        self.new = new
+    def __init__(self, *new: str, read: Callable[[object], object] | None = None) -> None:
+        self.new, self.read = new, read
 
     def __set_name__(self, owner, name: str) -> None:
         self.old, self.owner = name, owner.__qualname__
@@ -305,13 +316,14 @@ class old_attribute:  # noqa: N801 (used like a property)
     def __get__(self, obj, objtype=None):
         if obj is None:
             return self
+        names = " and ".join(repr(name) for name in self.new)
         warnings.warn(
-            f"{self.owner}: the attribute {self.old!r} is now {self.new!r} (the old name goes "
+            f"{self.owner}: the attribute {self.old!r} is now {names} (the old name goes "
             "in the next release)",
             DeprecationWarning,
             stacklevel=2,
         )
-        return getattr(obj, self.new)
+        return getattr(obj, self.new[0]) if self.read is None else self.read(obj)
 
 
 @contextlib.contextmanager
@@ -342,21 +354,36 @@ def refusals_named(**names: str):
 
 
 def modern_argv(argv: list[str]) -> tuple[list[str], list[str]]:
-    """``argv`` with the old options of its command (:data:`RENAMED_OPTIONS`) renamed, and
+    """``argv`` with the old options of its command (:data:`RENAMED_OPTIONS`) and the old
+    sweep parameters of its ``--param NAME=...`` (:data:`RENAMED_PARAMETERS`) renamed, and
     one note ``--old is now --new`` for each; other words are left as they are."""
     at = next((i for i, w in enumerate(argv) if not w.startswith("-")), len(argv))
     table = RENAMED_OPTIONS.get(argv[at] if at < len(argv) else "", {})
     out, notes = [], []
     for i, word in enumerate(argv):
         option, sep, value = word.partition("=")
+        note = None
         if i > at and option in table and word.startswith("--"):
             new = table[option]
             if callable(new):
                 given = value if sep else (argv[i + 1] if i + 1 < len(argv) else "")
                 new = new(given)
             note = f"{option} is now {new}"
-            if note not in notes:
-                notes.append(note)
             word = new + sep + value
+        elif i > at and ((option == "--param" and sep) or argv[i - 1] == "--param"):
+            word, note = _modern_param(word)
+        if note is not None and note not in notes:
+            notes.append(note)
         out.append(word)
     return out, notes
+
+
+def _modern_param(word: str) -> tuple[str, str | None]:
+    """A ``--param`` value (``NAME=...``, or the whole ``--param=NAME=...``) with an old
+    NAME renamed, and its note (None if NAME is not old)."""
+    prefix = "--param=" if word.startswith("--param=") else ""
+    name, sep, rest = word[len(prefix) :].partition("=")
+    new = RENAMED_PARAMETERS.get(name.strip())
+    if not sep or new is None:
+        return word, None
+    return prefix + new + sep + rest, f"--param {name.strip()} is now --param {new}"

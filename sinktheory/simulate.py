@@ -229,7 +229,7 @@ def simulate(
     given = {"scheme": scheme, "dt": dt, "tol": tol, "stride": stride, "eps": eps}
     if stepper is None:  # a continued adaptive run stays adaptive unless told otherwise
         continues = (
-            isinstance(initial_state, SimulationState) and initial_state.method == "adaptive"
+            isinstance(initial_state, SimulationState) and initial_state.stepper == "adaptive"
         )
         fixed_given = any(given[name] is not None for name in STEPPERS["fixed"].options)
         stepper = "adaptive" if continues and not fixed_given else "fixed"
@@ -248,7 +248,7 @@ def _run_fixed(sink, settings, *, scheme, dt, tol, stride, record, initial, init
                energy_bound, progress) -> SimulationResult:  # fmt: skip
     """The fixed stepper: the compiled engine, one step (from ``tol`` or ``dt``) for the
     whole ensemble."""
-    method = None if scheme is None else get_scheme(scheme).name
+    name = None if scheme is None else get_scheme(scheme).name
     if tol is not None:
         tol = check_tol(tol)
     begun = prepare(sink, settings, record, initial=initial, initial_state=initial_state,
@@ -256,14 +256,14 @@ def _run_fixed(sink, settings, *, scheme, dt, tol, stride, record, initial, init
     record, bound, values = begun.record, begun.bound, begun.values
     t0, h0, runs, periods = begun.time, begun.reference_energy, begun.runs, settings.periods
     if dt is None and tol is None and initial_state is not None:
-        dt, method = initial_state.dt, method or initial_state.method
+        dt, name = initial_state.dt, name or initial_state.scheme
     # a well too stiff for any step names its parameter; work beyond the limit is refused
     drawn = settings if initial is None and initial_state is None else None
-    method, dt, steps, tol = step_of(
-        sink, float(np.max(h0)), method=method, dt=dt, tol=tol, settings=drawn
+    name, dt, steps, tol = step_of(
+        sink, float(np.max(h0)), scheme=name, dt=dt, tol=tol, settings=drawn
     )
     check_work(replace(settings, runs=runs), sink, steps)
-    scheme = get_scheme(method)
+    scheme = get_scheme(name)
     if "trajectory" in record:
         stride = max(1, steps // 32) if stride is None else v.positive_int("stride", stride)
         samples = periods * steps // stride + 1
@@ -313,7 +313,8 @@ def _run_fixed(sink, settings, *, scheme, dt, tol, stride, record, initial, init
         initial_energy=h0,
         run_errors=max_error,
         max_relative_energy_error=worst,
-        method=scheme.name,
+        stepper="fixed",
+        scheme=scheme.name,
         dt=dt,
         steps_per_period=steps,
         message=f"{runs} run(s) x {periods} period(s) with {scheme.name}, dt = {dt:.6g}"
@@ -344,13 +345,13 @@ def check_point(p: dict) -> int:
     names the parameter responsible, and the work is checked against the limit)."""
     sink, settings = sink_of(p), settings_of(p, 0)
     settings.check(sink)
-    get_scheme(p["method"])
+    get_scheme(p["scheme"])
     if p["dt"] is not None:
         v.time_step("dt", p["dt"])
     v.positive("energy_bound", p["energy_bound"])
     v.positive_int("replica", p.get("replica", 0), minimum=0)
     energy = settings.total_energy_bound(sink)
-    _, _, steps, _ = step_of(sink, energy, method=p["method"], dt=p["dt"], settings=settings)
+    _, _, steps, _ = step_of(sink, energy, scheme=p["scheme"], dt=p["dt"], settings=settings)
     check_work(settings, sink, steps)
     return steps
 
@@ -361,7 +362,7 @@ def point(p: dict, seed: int) -> dict:
     res = simulate(
         sink_of(p),
         settings_of(p, seed),
-        scheme=p["method"],
+        scheme=p["scheme"],
         dt=p["dt"],
         record=("container",),
         energy_bound=p["energy_bound"],

@@ -24,7 +24,7 @@ Examples
 --------
 >>> from sinktheory import Sink, Well
 >>> c = choose(Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2), 0.5, 1e-8)
->>> c.method, c.steps_per_period > 100, bool(c.predicted_error <= 1e-8)
+>>> c.scheme, c.steps_per_period > 100, bool(c.predicted_error <= 1e-8)
 ('blanes-moan6', True, True)
 """
 
@@ -39,6 +39,7 @@ import numpy as np
 
 from . import validation as v
 from .errors import ParameterError
+from .glossary import old_attribute, renamed
 from .integrators import DEFAULT_SCHEME, SCHEMES, get_scheme
 from .limits import DEFAULT_TOL, TOL_RANGE
 
@@ -162,12 +163,14 @@ def ladder_step(dt: float) -> tuple[float, int]:
 class StepChoice:
     """The scheme and step picked for a tolerance, with the model's predicted error."""
 
-    method: str
+    scheme: str
     dt: float
     steps_per_period: int
     h_omega: float
     predicted_error: float
     force_evaluations_per_period: int
+
+    method = old_attribute("scheme")
 
 
 def check_tol(tol: float) -> float:
@@ -179,9 +182,10 @@ def check_tol(tol: float) -> float:
     return tol
 
 
-def step_for(method: str, omega: float, tol: float) -> StepChoice:
-    """The largest step of ``method`` whose modelled error at ``omega`` is <= ``tol``."""
-    scheme = get_scheme(method)
+@renamed(method="scheme")
+def step_for(scheme: str, omega: float, tol: float) -> StepChoice:
+    """The largest step of ``scheme`` whose modelled error at ``omega`` is <= ``tol``."""
+    scheme = get_scheme(scheme)
     C, cliff = CALIBRATION[scheme.name]
     h_omega = min(cliff, (tol / C) ** (1.0 / scheme.order))
     dt, steps = aligned_step(h_omega / omega)
@@ -196,10 +200,11 @@ def step_for(method: str, omega: float, tol: float) -> StepChoice:
     )
 
 
+@renamed(method="scheme")
 def default_step(
-    sink: Sink, energy: float, method: str = DEFAULT_SCHEME, tol: float = DEFAULT_TOL
+    sink: Sink, energy: float, scheme: str = DEFAULT_SCHEME, tol: float = DEFAULT_TOL
 ) -> tuple[float, int]:
-    """(dt, steps per period) of ``method`` for relative energy error ``tol``.
+    """(dt, steps per period) of ``scheme`` for relative energy error ``tol``.
 
     The step comes from the scheme's calibrated error model at the fastest frequency the
     total ``energy`` allows (:func:`step_for`); dt is shortened so a
@@ -213,38 +218,41 @@ def default_step(
     >>> abs(dt * steps - 2 * math.pi) < 1e-12
     True
     """
-    choice = choose(sink, energy, tol, method)
+    choice = choose(sink, energy, tol, scheme)
     return choice.dt, choice.steps_per_period
 
 
-def cost_table(sink: Sink, energy: float, tol: float, methods=None) -> list[StepChoice]:
-    """Each scheme's largest step for ``tol`` at total ``energy`` in ``sink``, cheapest
-    (fewest force evaluations per period) first."""
+@renamed(methods="schemes")
+def cost_table(sink: Sink, energy: float, tol: float, schemes=None) -> list[StepChoice]:
+    """Each scheme's largest step for ``tol`` at total ``energy`` in ``sink`` (of
+    ``schemes``, default all), cheapest (fewest force evaluations per period) first."""
     tol = check_tol(tol)
     omega = stiffness_frequency(sink, energy)
-    options = [step_for(name, omega, tol) for name in (methods or SCHEMES)]
-    return sorted(options, key=lambda c: (c.force_evaluations_per_period, c.method))
+    options = [step_for(name, omega, tol) for name in (schemes or SCHEMES)]
+    return sorted(options, key=lambda c: (c.force_evaluations_per_period, c.scheme))
 
 
-def choose(sink: Sink, energy: float, tol: float, method: str | None = None) -> StepChoice:
+@renamed(method="scheme")
+def choose(sink: Sink, energy: float, tol: float, scheme: str | None = None) -> StepChoice:
     """The cheapest scheme and step reaching relative energy error ``tol`` (or the step of
-    ``method`` if given), for total ``energy`` in ``sink``."""
-    return cost_table(sink, energy, tol, None if method is None else [method])[0]
+    ``scheme`` if given), for total ``energy`` in ``sink``."""
+    return cost_table(sink, energy, tol, None if scheme is None else [scheme])[0]
 
 
+@renamed(method="scheme")
 def resolve_step(
     sink: Sink,
     energy: float,
     *,
-    method: str | None = None,
+    scheme: str | None = None,
     dt: float | None = None,
     tol: float | None = None,
 ) -> tuple[str, float, int, float | None]:
-    """(method, dt, steps per period, tol) from what a caller asked for.
+    """(scheme, dt, steps per period, tol) from what a caller asked for.
 
-    ``dt`` overrides the tolerance (and then ``method`` defaults to
+    ``dt`` overrides the tolerance (and then ``scheme`` defaults to
     :data:`~sinktheory.integrators.DEFAULT_SCHEME`, tol is None); otherwise ``tol``
-    (default :data:`DEFAULT_TOL`) picks the step of ``method`` or, without one, the
+    (default :data:`DEFAULT_TOL`) picks the step of ``scheme`` or, without one, the
     cheapest scheme.  Giving both ``dt`` and ``tol`` is refused.
 
     Examples
@@ -258,30 +266,31 @@ def resolve_step(
         raise ParameterError("tol", tol, "None when dt is given (dt overrides the tolerance)")
     if dt is not None:
         dt, steps = aligned_step(v.time_step("dt", dt))
-        return get_scheme(method or DEFAULT_SCHEME).name, dt, steps, None
+        return get_scheme(scheme or DEFAULT_SCHEME).name, dt, steps, None
     tol = DEFAULT_TOL if tol is None else check_tol(tol)
-    choice = choose(sink, energy, tol, method)
+    choice = choose(sink, energy, tol, scheme)
     if choice.steps_per_period > v.MAX_STEPS_PER_PERIOD:
         raise ParameterError(
             "tol", tol, "a tolerance this well reaches in at most 1e9 steps per period"
         )
-    return choice.method, choice.dt, choice.steps_per_period, tol
+    return choice.scheme, choice.dt, choice.steps_per_period, tol
 
 
 #: Defaults a too-stiff well is tried with, in order, to find the parameter responsible.
 _SUSPECTS = (("gamma", 1.0), ("mass", 0.2), ("energy", 0.5))
 
 
+@renamed(method="scheme")
 def step_of(
     sink: Sink,
     energy: float,
     *,
-    method: str | None = None,
+    scheme: str | None = None,
     dt: float | None = None,
     tol: float | None = None,
     settings: RunSettings | None = None,
 ) -> tuple[str, float, int, float | None]:
-    """(method, dt, steps per period, tol) as :func:`~sinktheory.stepsize.resolve_step`,
+    """(scheme, dt, steps per period, tol) as :func:`~sinktheory.stepsize.resolve_step`,
     but a well too stiff for any step within the limit names the parameter responsible.
 
     The suspects (gamma, mass, total energy) are set one at a time to their defaults;
@@ -289,7 +298,8 @@ def step_of(
     tolerance is named if the caller gave it, else the stiffest parameter left (n).  With
     ``settings`` (the runs' E0 and start box) each trial's total energy is the bound
     :meth:`~sinktheory.model.RunSettings.total_energy_bound` of its own well (the
-    particles' start energy scales with gamma), and E0 is the suspect ``energy``.
+    particles' start energy scales with gamma), and E0 is the suspect, named
+    ``container_energy``.
 
     Examples
     --------
@@ -303,7 +313,7 @@ that the well can be integrated ... (with gamma = 1 it can)
     from .model import Sink, Well  # the model's kernels load only for a diagnosis
 
     try:
-        return resolve_step(sink, energy, method=method, dt=dt, tol=tol)
+        return resolve_step(sink, energy, scheme=scheme, dt=dt, tol=tol)
     except ParameterError as e:
         if e.name != "tol" or dt is not None:
             raise
@@ -323,9 +333,11 @@ that the well can be integrated ... (with gamma = 1 it can)
             total = replace(settings, container_energy=total).total_energy_bound(trial)
         try:
             well.check_energy(total)
-            resolve_step(trial, total, method=method, tol=limit)
+            resolve_step(trial, total, scheme=scheme, tol=limit)
         except ParameterError:
             continue
+        if name == "energy" and settings is not None:
+            name = "container_energy"  # E0, as the runs' settings and a sweep name it
         raise ParameterError(
             name,
             given,

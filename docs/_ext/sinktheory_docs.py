@@ -243,7 +243,8 @@ def _target(new) -> str:
 
 class NamesGlossary(SphinxDirective):
     """The glossary of :mod:`sinktheory.glossary`: every name with its option and its one
-    meaning, then the names that changed (options per command, keywords per function)."""
+    meaning, then the names that changed (options per command, sweep parameters, keywords
+    per function)."""
 
     has_content = False
 
@@ -264,6 +265,8 @@ class NamesGlossary(SphinxDirective):
         rows = [[f"sinktheory {command}", old, _target(new)]
                 for command, table in sorted(g.RENAMED_OPTIONS.items())
                 for old, new in table.items()]  # fmt: skip
+        rows += [["sinktheory sweep", f"--param {old}=...", f"--param {new}=..."]
+                 for old, new in g.RENAMED_PARAMETERS.items()]  # fmt: skip
         options += _table(["command", "old option", "now"], rows, [30, 30, 40])
         keywords = _section(self, "Renamed keywords", "glossary-renamed-keywords")
         rows = [[where, old, _target(new)]

@@ -56,8 +56,8 @@ Examples
 >>> from sinktheory import RunSettings, Sink, Well
 >>> sink = Sink(Well(alpha=0.5, beta=0.3, n=4), particles=2, mass=0.2)
 >>> res = simulate_adaptive(sink, RunSettings(runs=2, periods=2, seed=1), eps=0.2)
->>> res.container_energy.shape, res.method
-((2, 3), 'adaptive')
+>>> res.container_energy.shape, res.stepper, res.scheme
+((2, 3), 'adaptive', 'blanes-moan6')
 >>> bool(res.max_relative_energy_error < 1e-8)
 True
 """
@@ -356,7 +356,7 @@ def simulate_adaptive(
     >>> sink = Sink(Well(alpha=0.5, beta=0.3, n=4), particles=1, mass=0.2)
     >>> res = simulate_adaptive(sink, RunSettings(runs=1, periods=1), initial=[(0.0, 0.01)],
     ...                         record=("container", "final"), eps=0.15)
-    >>> res.final_state.method, res.message.split(":")[0]
+    >>> res.final_state.stepper, res.message.split(":")[0]
     ('adaptive', '1 run(s) x 1 period(s), adaptive blanes-moan6, eps = 0.15')
     """
     eps = check_eps(eps)
@@ -406,14 +406,15 @@ def simulate_adaptive(
         trajectory=None,
         trajectory_times=None,
         final_state=SimulationState(
-            values, t0 + periods * PERIOD, h0, dt, "adaptive", np.column_stack([rho, rem])
+            values, t0 + periods * PERIOD, h0, dt, scheme, np.column_stack([rho, rem]), "adaptive"
         )  # fmt: skip
         if "final" in record
         else None,
         initial_energy=h0,
         run_errors=worst,
         max_relative_energy_error=worst_all,
-        method="adaptive",
+        stepper="adaptive",
+        scheme=scheme,
         dt=dt,
         steps_per_period=round(mean_steps),
         message=f"{runs} run(s) x {periods} period(s), adaptive {scheme}, eps = {eps:.3g}"
@@ -429,7 +430,7 @@ def _carried(initial_state, runs: int) -> tuple[np.ndarray | None, np.ndarray | 
     """(rho, remainder) of each run from an adaptive ``initial_state`` that carries them,
     else (None, None); ParameterError if they are not rates > 0 and remainders >= 0."""
     c = getattr(initial_state, "controller", None)
-    if c is None or initial_state.method != "adaptive":
+    if c is None or initial_state.stepper != "adaptive":
         return None, None
     c = np.array(c, dtype=float)
     if (

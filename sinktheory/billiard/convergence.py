@@ -451,7 +451,7 @@ def convergence(
         rigid.energy_average,
         rigid.container_energy.mean(axis=0),
         {"shape": shape, "alpha": alpha, "beta": beta, "gamma": gamma, "particles": particles,
-         "mass": mass, "energy": settings.container_energy, "runs": settings.runs,
+         "mass": mass, "container_energy": settings.container_energy, "runs": settings.runs,
          "periods": settings.periods, "seed": settings.seed, "box": settings.box,
          "transient": transient, "tol": tol, "hit_fraction": HIT_FRACTION},
     )  # fmt: skip
@@ -561,6 +561,6 @@ def lyapunov_chart(
         np.array([ensemble_mean(r[:, None])[1][0] for r in rigid]),
         np.array([split(r, span).regular for r in rigid]),
         {"shape": shape, "alpha": alpha, "particles": particles, "mass": mass,
-         "energy": settings.container_energy, "runs": settings.runs, "periods": settings.periods,
-         "seed": settings.seed, "transient": transient},
+         "container_energy": settings.container_energy, "runs": settings.runs,
+         "periods": settings.periods, "seed": settings.seed, "transient": transient},
     )  # fmt: skip

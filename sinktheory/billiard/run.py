@@ -433,7 +433,7 @@ def billiard(
     pos = random_positions(settings, k)
     params = {
         "shape": shape, "alpha": sink.well.alpha, "beta": sink.well.beta, "particles": k,
-        "mass": sink.mass, "energy": settings.container_energy, "runs": settings.runs,
+        "mass": sink.mass, "container_energy": settings.container_energy, "runs": settings.runs,
         "periods": settings.periods, "seed": settings.seed, "box": settings.box, "fixed": fixed,
     }  # fmt: skip
     if fixed:

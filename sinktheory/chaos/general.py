@@ -34,6 +34,7 @@ import numpy as np
 
 from .. import validation as val
 from ..errors import ParameterError
+from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from .result import ChaosResult
 from .vectors import random_vectors
@@ -217,6 +218,7 @@ def _run(system, q, v, params, vectors, mode, scheme, dt, steps, segments, opts,
     return rec, ens
 
 
+@renamed(method="scheme")
 def indicators(
     system: str,
     q,
@@ -231,7 +233,7 @@ def indicators(
     megno: bool = False,
     transverse: tuple | None = None,
     vectors: tuple | None = None,
-    method: str = DEFAULT_SCHEME,
+    scheme: str = DEFAULT_SCHEME,
     renorm: int = 0,
     seed: int = 0,
     bound: float = math.inf,
@@ -271,7 +273,7 @@ def indicators(
     vectors : (dq, dv) arrays (D, M, R), optional
         Start deviation vectors instead of the seeded random orthonormal ones (M at least
         the number needed: 2D for the spectrum, k for GALI_k, 1 else).
-    method : str
+    scheme : str
         Splitting scheme (:data:`sinktheory.integrators.SCHEMES`).
     renorm : int >= 0
         Steps between renormalisations inside a segment (0: at segment ends only); needed
@@ -292,7 +294,7 @@ def indicators(
     system, q, v, dt, steps, segments = check_run(system, q, v, dt, steps, segments, per_run=True)
     D, R = q.shape
     params = check_params(system, params, R)
-    scheme = get_scheme(method)
+    scheme = get_scheme(scheme)
     if transverse is not None:
         transverse = check_transverse(transverse, D, R)
     gali = check_gali(gali, D)
@@ -394,7 +396,7 @@ def indicators(
     info = {
         "system": system,
         "params": np.asarray(params, float).tolist(),
-        "method": scheme.name,
+        "scheme": scheme.name,
         "dt": dt.tolist() if np.ndim(dt) else float(dt),
         "steps_per_segment": steps.tolist() if np.ndim(steps) else int(steps),
         "segments": int(segments),

@@ -54,7 +54,7 @@ def _chaos_step(p: dict, seed: int) -> float:
         return p["dt"]
     sink = sink_of(p)
     top = start_energy(sink, settings_of(p, seed), bool(p["transverse"]))
-    return ladder_step(resolve_step(sink, top, method=p["method"])[1])[0]
+    return ladder_step(resolve_step(sink, top, scheme=p["scheme"])[1])[0]
 
 
 def points(points: list) -> list[dict]:
@@ -67,7 +67,7 @@ def points(points: list) -> list[dict]:
     groups: dict[tuple, list[int]] = {}
     steps = [_chaos_step(p, seed) for p, seed in points]
     for i, (p, _) in enumerate(points):
-        same = ("shape", "n", "particles", "periods", "method", "gali", "megno", "transverse",
+        same = ("shape", "n", "particles", "periods", "scheme", "gali", "megno", "transverse",
                 "renorm", "energy_bound", "stop_early", "transient")  # fmt: skip
         key = (*(p[k] for k in same), steps[i] if p["renorm"] else None)
         groups.setdefault(key, []).append(i)
@@ -79,7 +79,7 @@ def points(points: list) -> list[dict]:
         options = {
             "dt": [steps[i] for i in members],
             "transverse": bool(first["transverse"]),
-            "method": first["method"],
+            "scheme": first["scheme"],
             "renorm": first["renorm"],
             "energy_bound": first["energy_bound"],
         }

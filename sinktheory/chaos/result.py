@@ -86,7 +86,7 @@ class ChaosResult(Result):
     run_errors : ndarray (R,)
         Largest relative total-energy error of each run (of every ensemble that ran).
     parameters : dict
-        What was run (system, parameters, method, dt, steps, renorm, seed, ...).
+        What was run (system, parameters, scheme, dt, steps, renorm, seed, ...).
     transient : int
         Segments left out of :attr:`lambda1` and :attr:`transverse`: with t_0 =
         times[transient] they are the growth rates from t_0, (ln|delta(t)| -

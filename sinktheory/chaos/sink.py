@@ -211,7 +211,7 @@ def chaos(
     transient = val.positive_int("transient", transient, minimum=0,
                                  maximum=max(0, settings.periods - 1))  # fmt: skip
     _, dt, steps, _ = step_of(
-        sink, point.top, method=scheme.name, dt=dt, tol=tol, settings=settings
+        sink, point.top, scheme=scheme.name, dt=dt, tol=tol, settings=settings
     )
     check_tangent_work(
         sink, settings, steps, options["spectrum"], options["gali"], options["transverse"]
@@ -220,6 +220,7 @@ def chaos(
     return replace(result, transient=transient)
 
 
+@renamed(method="scheme")
 def chaos_batch(
     sinks,
     settings,
@@ -229,7 +230,7 @@ def chaos_batch(
     gali: int = 0,
     megno: bool = False,
     transverse: bool = False,
-    method: str = DEFAULT_SCHEME,
+    scheme: str = DEFAULT_SCHEME,
     renorm: int = 0,
     energy_bound: float = ENERGY_BOUND,
     progress: bool | None = None,
@@ -266,7 +267,7 @@ def chaos_batch(
         raise ParameterError(
             "sinks", f"{len(engines)} engines or period counts", "one shape, k and periods"
         )
-    scheme = get_scheme(method)
+    scheme = get_scheme(scheme)
     dts, steps = point_steps(points, dt)
     options = _options(sinks[0], spectrum, gali, megno, transverse, renorm, energy_bound, progress)
     for p, n in zip(points, steps, strict=True):
@@ -344,7 +345,7 @@ class _Point:
             "gamma": w.gamma,
             "particles": self.sink.particles,
             "mass": self.sink.mass,
-            "energy": s.container_energy,
+            "container_energy": s.container_energy,
             "runs": s.runs,
             "periods": s.periods,
             "box": s.box,
@@ -352,7 +353,7 @@ class _Point:
         }
 
 
-def _together(points: list[_Point], method, dts, steps, block, o) -> list[ChaosResult]:
+def _together(points: list[_Point], scheme, dts, steps, block, o) -> list[ChaosResult]:
     """One engine ensemble over every point's runs (each run with its point's parameters,
     step ``dts[i]`` and ``steps[i]`` per period, start state and seeded deviation vectors);
     the result split back per point."""
@@ -381,7 +382,7 @@ def _together(points: list[_Point], method, dts, steps, block, o) -> list[ChaosR
         megno=o["megno"],
         transverse=transverse,
         vectors=_vectors(points, count),
-        method=method,
+        scheme=scheme,
         renorm=o["renorm"],
         seed=points[0].settings.seed,
         bound=o["bound"],

@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..ensemble import ENERGY_BOUND
+from ..glossary import renamed
 from ..runstats import ensemble_mean
 from .verdicts import threshold
 
@@ -78,7 +79,8 @@ class StagedExponent:
     worst: np.ndarray
 
 
-def staged_chaos(sinks, settings, *, dt, transverse: bool, method: str,
+@renamed(method="scheme")
+def staged_chaos(sinks, settings, *, dt, transverse: bool, scheme: str,
                  renorm: int = 0, energy_bound: float = ENERGY_BOUND,
                  transient: int = 0) -> list[dict]:  # fmt: skip
     """lambda_1 (and the transverse exponent) of several set-ups as in
@@ -96,7 +98,7 @@ def staged_chaos(sinks, settings, *, dt, transverse: bool, method: str,
 
     points = [_Point.of(k, s, transverse, None) for k, s in zip(sinks, settings, strict=True)]
     system = engine_name(points[0].sink)
-    scheme = get_scheme(method)
+    scheme = get_scheme(scheme)
     dts, steps = point_steps(points, dt)
     dt, steps = _per_run(points, dts), _per_run(points, steps)
     periods = points[0].settings.periods

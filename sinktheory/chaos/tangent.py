@@ -26,12 +26,14 @@ from __future__ import annotations
 import numpy as np
 
 from .. import validation as val
+from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from .general import check_block, check_params, check_run
 
 __all__ = ["canonical", "finite_difference_jacobian", "monodromy", "symplectic_defect"]
 
 
+@renamed(method="scheme")
 def monodromy(
     system: str,
     q,
@@ -41,7 +43,7 @@ def monodromy(
     dt: float,
     steps: int,
     segments: int = 1,
-    method: str = DEFAULT_SCHEME,
+    scheme: str = DEFAULT_SCHEME,
     block: int | None = None,
 ) -> np.ndarray:
     """Jacobian of ``segments`` x ``steps`` steps of the splitting map at each run's state.
@@ -73,7 +75,7 @@ def monodromy(
     ens = Ensemble(
         system, q, np.array(v, float), params, dq=eye[:D].copy(), dv=eye[D:].copy(), tangent="none"
     )
-    ens.run(get_scheme(method), dt=dt, steps=steps, segments=segments, record=(), block=block)
+    ens.run(get_scheme(scheme), dt=dt, steps=steps, segments=segments, record=(), block=block)
     return np.concatenate([ens.dq, ens.dv]).transpose(2, 0, 1)
 
 
@@ -96,6 +98,7 @@ def symplectic_defect(M: np.ndarray, masses) -> np.ndarray:
     return np.abs(E).max(axis=(1, 2)) / scale
 
 
+@renamed(method="scheme")
 def finite_difference_jacobian(
     system: str,
     q,
@@ -105,7 +108,7 @@ def finite_difference_jacobian(
     dt: float,
     steps: int,
     segments: int = 1,
-    method: str = DEFAULT_SCHEME,
+    scheme: str = DEFAULT_SCHEME,
     h: float = 1e-6,
 ) -> np.ndarray:
     """Central-difference Jacobian of the same discrete flow map (no tangent vectors).
@@ -134,7 +137,7 @@ def finite_difference_jacobian(
     from ..engine.core import Ensemble  # numba loads with the first run
 
     ens = Ensemble(system, Z[:D], Z[D:], params)
-    ens.run(get_scheme(method), dt=dt, steps=steps, segments=segments, record=())
+    ens.run(get_scheme(scheme), dt=dt, steps=steps, segments=segments, record=())
     out = np.concatenate([ens.q, ens.v]).reshape(2 * D, 2, 2 * D, R)  # (j, sign, i, r)
     F = (out[:, 0] - out[:, 1]) / (2.0 * step[None])  # (j, i, r)
     return F.transpose(2, 0, 1)

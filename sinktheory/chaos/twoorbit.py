@@ -22,6 +22,7 @@ import numpy as np
 
 from .. import validation as val
 from ..errors import NumericalError, ParameterError
+from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from .general import check_params, check_run
 from .vectors import random_vectors
@@ -33,6 +34,7 @@ __all__ = ["D0_RANGE", "two_orbit_exponent"]
 D0_RANGE = (1e-13, 1e-3)
 
 
+@renamed(method="scheme")
 def two_orbit_exponent(
     system: str,
     q,
@@ -45,7 +47,7 @@ def two_orbit_exponent(
     d0: float = 1e-9,
     direction=None,
     seed: int = 0,
-    method: str = DEFAULT_SCHEME,
+    scheme: str = DEFAULT_SCHEME,
 ) -> np.ndarray:
     """Accumulated ln(d / d0) of shadow orbits, (R, segments + 1); divide by t for lambda_1.
 
@@ -100,7 +102,7 @@ def two_orbit_exponent(
 
     ens = Ensemble(system, Z[:D].copy(), Z[D:].copy(), params)
     ens.h0 = np.concatenate([ens.h0[:R], ens.h0[:R]])  # audit both against the reference
-    scheme = get_scheme(method)
+    scheme = get_scheme(scheme)
     logs = np.zeros((R, segments + 1))
     for s in range(segments):
         ens.run(scheme, dt=dt, steps=steps, segments=1, record=())

@@ -127,7 +127,7 @@ def run(args: argparse.Namespace) -> Output:
     lines = [
         f"{w.shape} well alpha={w.alpha:g} beta={w.beta:g} n={w.n} gamma={w.gamma:g}; "
         f"k={sink.particles}, m={sink.mass:g}; {settings.runs} run(s) x {settings.periods} "
-        f"period(s), {p['method']}, dt = {p['dt']:.6g}; max relative energy error "
+        f"period(s), {p['scheme']}, dt = {p['dt']:.6g}; max relative energy error "
         f"{data['max_relative_energy_error']:.3g}",
         "exponents per unit time (x T = 2 pi for per period); mean +- standard error"
         + (

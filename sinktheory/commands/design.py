@@ -52,20 +52,21 @@ __all__ = [
 NAME = "design"
 HELP = HELPS[NAME]
 
-#: option -> design parameter (each takes a value, a list or a range)
-GRID = {
-    "shape": "shape",
-    "alpha": "alpha",
-    "beta": "beta",
-    "n": "n",
-    "gamma": "gamma",
-    "particles": "particles",
-    "mass": "mass",
-    "container_energy": "energy",
-    "damping": "damping",
-    "attachment": "attachment",
-    "damping_kind": "damping_kind",
-}
+#: the design parameters given as options of the same name (each takes a value, a list
+#: or a range)
+GRID = (
+    "shape",
+    "alpha",
+    "beta",
+    "n",
+    "gamma",
+    "particles",
+    "mass",
+    "container_energy",
+    "damping",
+    "attachment",
+    "damping_kind",
+)
 #: option -> setting of the design kind (one value each)
 SETTINGS = (
     "runs",
@@ -170,8 +171,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def params_of(args: argparse.Namespace) -> dict:
     """The design grid and settings of the options (names of the ``design`` kind)."""
     params = {}
-    for option, name in GRID.items():
-        text = str(getattr(args, option))
+    for name in GRID:
+        text = str(getattr(args, name))
         _, values = parse_param(f"{name}={text}")
         params[name] = values
     for name in SETTINGS:

@@ -61,7 +61,7 @@ def run(args: argparse.Namespace) -> Output:
     del data["s"], data["pdf"], data["cdf"], data["law"]["log_density"]
     lines = [
         f"equilibrium law of E_c: {law.shape} well alpha={law.alpha:g} beta={law.beta:g} "
-        f"n={law.n} gamma={law.gamma:g}, k={law.particles}, total energy E={law.energy:g}",
+        f"n={law.n} gamma={law.gamma:g}, k={law.particles}, total energy E={law.total_energy:g}",
         f"  <E_c>                 {law.mean:.10g}  ({law.mean_fraction:.6g} of E)",
         f"  homogeneous estimate  {law.homogeneous_mean:.10g}  (E / (1 + k (1 + 1/n)))",
         "  quantiles of E_c      "

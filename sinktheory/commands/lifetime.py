@@ -103,7 +103,7 @@ def run(args: argparse.Namespace) -> Output:
     lines = [
         f"{sink.well.shape} well alpha={law.alpha:g} beta={law.beta:g} n={law.n}, "
         f"k={law.particles}, m={sink.mass:g}, E0={settings.container_energy:g} "
-        f"(total E={law.energy:.6g})",
+        f"(total E={law.total_energy:.6g})",
         f"  {sim.message}",
         f"  kept {c.runs} runs x {c.samples} periods after {c.transient}; "
         + _autocorrelation(c.autocorrelation_time, c.effective_samples),
@@ -129,10 +129,9 @@ def run(args: argparse.Namespace) -> Output:
 
         grid = np.linspace(0.05, 0.95, 19)
         ks = sorted({*CHART_PARTICLES, sink.particles})
+        energy = law.total_energy
         predicted = [
-            equilibrium_law(Sink(sink.well, particles=k, mass=sink.mass), law.energy).kac_periods(
-                grid
-            )
+            equilibrium_law(Sink(sink.well, particles=k, mass=sink.mass), energy).kac_periods(grid)
             for k in ks
         ]
         measured = [

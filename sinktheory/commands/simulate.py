@@ -269,7 +269,8 @@ def _save(path, result: SimulationResult, args) -> None:
     parameters = {
         **result.parameters,
         "initial": args.initial,
-        "method": result.method,
+        "stepper": result.stepper,
+        "scheme": result.scheme,
         "dt": result.dt,
         "energy_bound": args.energy_bound,
     }

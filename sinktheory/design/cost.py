@@ -121,7 +121,7 @@ def work(point: dict, tangent: float = TANGENT, dissipative: float = DISSIPATIVE
     attachment = point.get("attachment", "well")
     if attachment == "impact":  # exact flights: about one unit per recorded sample
         return float(point["runs"] * point["periods"])
-    steps = choose(sink_of(point), point["energy"], point["tol"]).steps_per_period
+    steps = choose(sink_of(point), point["container_energy"], point["tol"]).steps_per_period
     dof = 1 + 2 * point["particles"]
     if point["damping"] > 0 or attachment == "nes":  # the dissipative integrator
         return float(steps * dof * dissipative * point["runs"] * point["periods"])
@@ -159,7 +159,7 @@ def _time_chaos(point: dict, runs: int, periods: int) -> tuple[float, float]:
     start = time.perf_counter()
     chaos(sink_of(p), settings_of(p, 0), progress=False)
     seconds = time.perf_counter() - start
-    steps = choose(sink_of(p), p["energy"], p["tol"]).steps_per_period
+    steps = choose(sink_of(p), p["container_energy"], p["tol"]).steps_per_period
     return seconds, steps * (1 + 2 * p["particles"]) * runs * periods
 
 
@@ -177,22 +177,24 @@ def _overhead(point: dict) -> float:
     from .measures import design_measures, horizons_of
 
     rng = np.random.default_rng(0)
-    e = point["energy"] * (0.5 + 0.1 * rng.standard_normal((point["runs"], point["periods"] + 1)))
+    e = point["container_energy"] * (
+        0.5 + 0.1 * rng.standard_normal((point["runs"], point["periods"] + 1))
+    )
     start = time.perf_counter()
     design_measures(
         e,
-        e0=point["energy"],
-        total_energy=point["energy"],
+        e0=point["container_energy"],
+        total_energy=point["container_energy"],
         particles=point["particles"],
         n=point["n"],
         horizons=horizons_of(point["horizons"], point["periods"]),
         bootstrap=point["bootstrap"],
     )
-    choose(sink_of(point), point["energy"], point["tol"])
+    choose(sink_of(point), point["container_energy"], point["tol"])
     seconds = time.perf_counter() - start
     if point["lyapunov_runs"]:
         start = time.perf_counter()
-        choose(sink_of(point), point["energy"], point["tol"])
+        choose(sink_of(point), point["container_energy"], point["tol"])
         seconds += time.perf_counter() - start
     return seconds
 

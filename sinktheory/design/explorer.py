@@ -1,7 +1,7 @@
 """Run (or resume) a design sweep and get the measures, the ranking and the report.
 
 :func:`explore` is the Python side of ``sinktheory design``: a grid over shape, alpha,
-beta, n, k (``particles``), m (``mass``), E0 (``energy``), the contact damping c0
+beta, n, k (``particles``), m (``mass``), E0 (``container_energy``), the contact damping c0
 (``damping``: inelastic wall contact, :mod:`sinktheory.damped`; 0 is the
 conservative model) and the attachment (``"well"``, the default; ``"nes"`` and
 ``"impact"``, the 1-D absorbers, see :mod:`sinktheory.design.point`) -- each a value or a

@@ -88,7 +88,7 @@ def simulate_inelastic_reference(
     settings = RunSettings() if settings is None else settings
     q, vel, h0, engine, params = s.q, s.vel, s.h0, s.engine, s.params
     dt, steps = s.dt, s.steps
-    a, b = get_scheme(s.method).arrays()
+    a, b = get_scheme(s.scheme).arrays()
     runs, periods = q.shape[1], settings.periods
     e_c = np.empty((runs, periods + 1))
     h_t = np.empty((runs, periods + 1))

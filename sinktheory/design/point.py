@@ -45,7 +45,7 @@ d = 1).  They need particles = 1 and gamma = 1, and their start box is ``box`` t
 Examples
 --------
 >>> p = {"shape": "flat", "alpha": 0.5, "beta": 0.3, "n": 4, "gamma": 1.0,
-...      "particles": 1, "mass": 0.2, "energy": 0.5, "runs": 2, "periods": 12,
+...      "particles": 1, "mass": 0.2, "container_energy": 0.5, "runs": 2, "periods": 12,
 ...      "box": 0.01, "tol": 1e-6, "energy_bound": None, "horizons": "6+12",
 ...      "transient": None, "sigmas": 3.0, "risk_level": 0.5, "rqa_eps": 0.01,
 ...      "bootstrap": 10, "lyapunov_runs": 0, "lyapunov_periods": 10, "damping": 0.0,
@@ -154,7 +154,9 @@ def check(p: dict) -> None:
     v.positive_int("lyapunov_runs", p["lyapunov_runs"], minimum=0, maximum=p["runs"])
     if p["lyapunov_runs"]:
         RunSettings(
-            container_energy=p["energy"], runs=p["lyapunov_runs"], periods=p["lyapunov_periods"]
+            container_energy=p["container_energy"],
+            runs=p["lyapunov_runs"],
+            periods=p["lyapunov_periods"],
         ).check(sink)
     v.nonnegative("damping", p["damping"])
     v.choice("damping_kind", p.get("damping_kind", "contact"), DAMPING_KINDS)
@@ -186,7 +188,7 @@ def lyapunov(p: dict, seed: int) -> tuple[float, float]:
     except ImportError:  # the chaos capability is optional for the explorer
         return math.nan, math.nan
     settings = RunSettings(
-        container_energy=p["energy"],
+        container_energy=p["container_energy"],
         runs=p["lyapunov_runs"],
         periods=p["lyapunov_periods"],
         seed=seed,
@@ -254,7 +256,7 @@ def _impulse_ensemble(p: dict, seed: int) -> dict[str, Any]:
 
     res = impulse_response(
         attachment_of(p),
-        p["energy"],
+        p["container_energy"],
         damping=p["damping"],
         periods=p["periods"],
         runs=p["runs"],
@@ -287,7 +289,7 @@ def compute(p: dict, seed: int) -> dict[str, Any]:
     total = float(ens["h0"].mean())
     m = design_measures(
         e,
-        e0=p["energy"],
+        e0=p["container_energy"],
         total_energy=total,
         particles=p["particles"],
         n=p["n"],

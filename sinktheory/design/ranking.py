@@ -51,7 +51,7 @@ DESIGN_PARAMS = (
     "n",
     "particles",
     "mass",
-    "energy",
+    "container_energy",
     "damping",
     "attachment",
     "damping_kind",
@@ -107,7 +107,7 @@ def design_table(ds) -> list[dict]:
         if not bool(point.done):
             continue
         row = {**fixed, **{d: _plain(point[d].values) for d in dims}}
-        e0 = float(row["energy"])
+        e0 = float(row["container_energy"])
         for name in (
             "depth",
             "depth_se",

@@ -115,11 +115,9 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
     total = int(np.asarray(ds.done).size)
     lines = ["# Design explorer: energy absorbers", ""]
     values = ", ".join(f"{d} = {', '.join(label(v) for v in ds[d].values)}" for d in dims)
-    fixed = ", ".join(
-        f"{k} = {a[k]}"
-        for k in ("shape", "alpha", "beta", "n", "gamma", "particles", "mass", "energy", "damping")
-        if k in a
-    )
+    names = ("shape", "alpha", "beta", "n", "gamma", "particles", "mass", "container_energy",
+             "damping")  # fmt: skip
+    fixed = ", ".join(f"{k} = {a[k]}" for k in names if k in a)
     lines += [
         f"- swept: {values or 'nothing (one design)'}",
         f"- fixed: {fixed}",

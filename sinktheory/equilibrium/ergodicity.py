@@ -113,7 +113,7 @@ def _sink_settings(p: dict, seed: int):
 
 #: The well's and the sink's parameters a point takes (alpha, beta and n required).
 MODEL = {"alpha": None, "beta": None, "n": None, "gamma": 1.0, "shape": "flat",
-         "particles": 1, "mass": 0.2, "energy": 0.5}  # fmt: skip
+         "particles": 1, "mass": 0.2, "container_energy": 0.5}  # fmt: skip
 #: Set by a sweep to tell replicas of one point apart (their seeds differ).
 REPLICA = "replica"
 

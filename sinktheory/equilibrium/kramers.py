@@ -397,8 +397,9 @@ def check_fluctuation_dissipation(
     if not isinstance(law, EquilibriumLaw):
         raise ParameterError("law", law, "an EquilibriumLaw")
     tests = v.positive_int("tests", tests)
-    if not math.isclose(law.energy, km.energy, rel_tol=1e-12):
-        raise ParameterError("law", f"a law at E = {law.energy:g}", f"the law at E = {km.energy:g}")
+    if not math.isclose(law.total_energy, km.energy, rel_tol=1e-12):
+        raise ParameterError("law", f"a law at E = {law.total_energy:g}",
+                             f"the law at E = {km.energy:g}")  # fmt: skip
     j = km.lag_index(lag)
     if v.flag("exact", exact):
         return _exact_check(km, law, j, tests)

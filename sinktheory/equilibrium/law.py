@@ -55,7 +55,7 @@ from numpy.polynomial import chebyshev as C
 
 from .. import validation as v
 from ..errors import NumericalError, ParameterError
-from ..glossary import renamed
+from ..glossary import old_attribute, renamed
 from ..model import Sink
 from ..results import Result
 from ..sinkstats import equipartition_container_energy
@@ -185,6 +185,7 @@ def _moments(density: _Density, n: int, scales) -> np.ndarray:
     return np.array(out)
 
 
+@renamed(energy="total_energy")
 @dataclass(frozen=True)
 class EquilibriumLaw(Result):
     """The law of the container energy E_c on the shell H = E (module docstring).
@@ -193,7 +194,7 @@ class EquilibriumLaw(Result):
     ----------
     shape, alpha, beta, n, gamma : the well
     particles : k
-    energy : the total energy E
+    total_energy : the total energy E
     exponent : b_k = k (1 + 1/n): the law is Beta(1, b_k) in E_c / E for a homogeneous well
     mean : <E_c>
     mean_fraction : <E_c> / E
@@ -210,7 +211,7 @@ class EquilibriumLaw(Result):
     n: int
     gamma: float
     particles: int
-    energy: float
+    total_energy: float
     exponent: float
     mean: float
     mean_fraction: float
@@ -218,6 +219,8 @@ class EquilibriumLaw(Result):
     log_density: np.ndarray = field(repr=False)
 
     DIMS = {"log_density": ("coefficient",)}
+
+    energy = old_attribute("total_energy")
 
     @property
     def _density(self) -> _Density:
@@ -358,7 +361,7 @@ class EquilibriumLaw(Result):
             kac_periods=kac,
             log10_kac_periods=np.atleast_1d(self.log10_kac_periods(fractions)),
             levels=levels,
-            quantiles=np.atleast_1d(self.quantile(levels)) * self.energy,
+            quantiles=np.atleast_1d(self.quantile(levels)) * self.total_energy,
             s=grid,
             pdf=self.pdf(grid),
             cdf=np.atleast_1d(self.cdf(grid)),
@@ -474,7 +477,7 @@ def equilibrium_law(sink: Sink, total_energy: float) -> EquilibriumLaw:
         n=n,
         gamma=well.gamma,
         particles=k,
-        energy=e,
+        total_energy=e,
         exponent=result.b,
         mean=mean_fraction * e,
         mean_fraction=mean_fraction,

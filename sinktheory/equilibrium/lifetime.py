@@ -424,7 +424,7 @@ def compare_with_law(
         raise ParameterError(
             "energy_runs", f"an array of shape {e.shape}", "shape (runs >= 2, P + 1)"
         )
-    top = law.energy * (1 + ENERGY_SLACK)
+    top = law.total_energy * (1 + ENERGY_SLACK)
     outside = e[~((e >= 0) & (e <= top))]
     if outside.size:
         raise ParameterError(
@@ -434,7 +434,7 @@ def compare_with_law(
         )
     transient = v.positive_int("transient", transient, minimum=0, maximum=e.shape[1] - 4)
     fractions = check_fractions(fractions)
-    s = e[:, transient:] / law.energy
+    s = e[:, transient:] / law.total_energy
     per_run = s.mean(axis=1)
     tau, window = autocorrelation_time(s)
     d, p = ks_distance(s, law.cdf, seed=seed)
@@ -450,8 +450,8 @@ def compare_with_law(
         transient=transient,
         runs=s.shape[0],
         samples=s.shape[1],
-        mean=float(per_run.mean() * law.energy),
-        mean_stderr=float(per_run.std(ddof=1) / math.sqrt(s.shape[0]) * law.energy),
+        mean=float(per_run.mean() * law.total_energy),
+        mean_stderr=float(per_run.std(ddof=1) / math.sqrt(s.shape[0]) * law.total_energy),
         autocorrelation_time=tau,
         window=window,
         effective_samples=s.size / tau,
@@ -492,7 +492,7 @@ def measure_lifetimes(
     >>> from sinktheory import RunSettings, Sink, Well
     >>> c, sim = measure_lifetimes(Sink(Well(0.5, 0.3, 4)), RunSettings(runs=2, periods=60),
     ...                            transient=20, fractions=[0.5], progress=False)
-    >>> c.samples, c.runs, round(c.law.energy, 6)
+    >>> c.samples, c.runs, round(c.law.total_energy, 6)
     (41, 2, 0.5)
     """
     from ..model import RunSettings, Sink

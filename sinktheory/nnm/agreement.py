@@ -79,9 +79,9 @@ def reach_energy(
         raise ParameterError("energy", energy, f"a finite energy > {LOW_ENERGY:g}")
     system = sink_flow(sink)
     z0, T = mode_guess(sink, "container", LOW_ENERGY)
-    branch = continue_orbits(system, z0, T, steps=steps, energy=LOW_ENERGY,
-                             stop=(0.1 * LOW_ENERGY, energy), ds=ds, max_points=max_points,
-                             subspace="plane")  # fmt: skip
+    branch = continue_orbits(system, z0, T, steps=steps, total_energy=LOW_ENERGY,
+                             interval=(0.1 * LOW_ENERGY, energy), ds=ds,
+                             max_points=max_points, subspace="plane")  # fmt: skip
     last = branch.orbits[-1]
     if last.energy < energy:
         raise ShootingError(f"energy continuation ended at H = {last.energy:.6g} before "
@@ -159,8 +159,8 @@ def transverse_chart(
     energy = total_energy
     orbit = reach_energy(sink, energy, steps=steps) if start is None else start
     system = orbit.system
-    kw = dict(steps=orbit.steps, parameter="beta", energy=energy, stop=(lo, hi), ds=ds,
-              max_points=points, subspace="plane")  # fmt: skip
+    kw = dict(steps=orbit.steps, continue_in="beta", total_energy=energy, interval=(lo, hi),
+              ds=ds, max_points=points, subspace="plane")  # fmt: skip
     back = continue_orbits(system, orbit.z0, orbit.period, direction=-1, **kw)
     fwd = continue_orbits(system, orbit.z0, orbit.period, direction=1, **kw)
     branch = merge(back, fwd)

@@ -238,8 +238,8 @@ def inphase_backbone(
     z0[0], z0[1 : 1 + k] = A, B
     kw = dict(
         steps=steps,
-        energy=E,
-        stop=(lo, hi),
+        total_energy=E,
+        interval=(lo, hi),
         ds=ds,
         max_points=points,
         subspace="plane",

@@ -43,7 +43,7 @@ Examples
 >>> from sinktheory.nnm.system import FlowSystem
 >>> s = FlowSystem("duffing2", [])
 >>> b = continue_orbits(s, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=64,
-...                     energy=0.01, stop=(1e-3, 0.1), ds=0.3, max_points=30)
+...                     total_energy=0.01, interval=(1e-3, 0.1), ds=0.3, max_points=30)
 >>> b.stop_reason, bool(b.frequency[-1] > b.frequency[0])  # hardening spring
 ('parameter left [0.001, 0.1]', True)
 """
@@ -58,7 +58,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from .. import validation as v
 from ..errors import ParameterError
-from ..glossary import refusals_named, renamed
+from ..glossary import old_attribute, refusals_named, renamed
 from ..worklimit import check_particle_steps, tangent_steps
 from .shooting import (
     Orbit,
@@ -118,15 +118,16 @@ def check_ds(ds, name: str = "ds") -> float:
     return x
 
 
-def check_stop(stop) -> tuple[float, float]:
-    """(lo, hi) of a continuation: two numbers, not NaN, lo < hi (hi may be inf)."""
+def check_stop(stop, name: str = "stop") -> tuple[float, float]:
+    """(lo, hi) of a continuation: two numbers, not NaN, lo < hi (hi may be inf); refused
+    naming ``name``."""
     allowed = "two numbers (lo, hi) with lo < hi, not NaN"
     try:
         lo, hi = (float(x) for x in stop)
     except (TypeError, ValueError):
-        raise ParameterError("stop", stop, allowed) from None
+        raise ParameterError(name, stop, allowed) from None
     if any(v._is_bool(x) for x in stop) or not lo < hi:  # NaN compares False
-        raise ParameterError("stop", stop, allowed)
+        raise ParameterError(name, stop, allowed)
     return lo, hi
 
 
@@ -165,14 +166,16 @@ class Branch:
     stop_reason: str = ""
 
     @property
-    def parameter(self) -> str:
-        return self.problem.parameter
+    def continue_in(self) -> str:
+        return self.problem.continue_in
+
+    parameter = old_attribute("continue_in")
 
     @property
     def values(self) -> np.ndarray:
         """The continuation parameter at each point (energy, or the well parameter)."""
         lam = np.array([o.u[-1] for o in self.orbits])
-        return np.exp(lam) if self.parameter == "energy" else lam
+        return np.exp(lam) if self.continue_in == "energy" else lam
 
     @property
     def energy(self) -> np.ndarray:
@@ -221,15 +224,16 @@ def _orient(t: np.ndarray, usc: np.ndarray) -> np.ndarray:
     return t * usc
 
 
+@renamed(parameter="continue_in", energy="total_energy", stop="interval")
 def continue_orbits(
     system: FlowSystem,
     z0,
     T: float,
     *,
     steps: int,
-    parameter: str = "energy",
-    energy: float | None = None,
-    stop: tuple[float, float] = (0.0, math.inf),
+    continue_in: str = "energy",
+    total_energy: float | None = None,
+    interval: tuple[float, float] = (0.0, math.inf),
     ds: float = 0.1,
     ds_max: float | None = None,
     max_points: int = 200,
@@ -239,7 +243,7 @@ def continue_orbits(
     phase_index: int = 0,
     locate: bool = True,
 ) -> Branch:
-    """Find the orbit near (z0, T) and continue it in ``parameter``.
+    """Find the orbit near (z0, T) and continue it in ``continue_in``.
 
     Parameters
     ----------
@@ -247,11 +251,12 @@ def continue_orbits(
     z0, T : start guess (state (2D,), period)
     steps : int
         Steps per period N (fixed along the branch).
-    parameter : "energy" or a system parameter name ("alpha", "beta", "gamma", "mu")
-    energy : float, optional
-        Energy of the first orbit (and of the whole branch when continuing in a
+    continue_in : "energy" (the total energy) or a system parameter name ("alpha", "beta",
+        "gamma", "mu")
+    total_energy : float, optional
+        Total energy of the first orbit (and of the whole branch when continuing in a
         parameter); default H(z0).
-    stop : (lo, hi)
+    interval : (lo, hi)
         The branch ends when the parameter (energy itself, not its logarithm) leaves
         [lo, hi].
     ds, ds_max : float
@@ -267,11 +272,11 @@ def continue_orbits(
     -------
     Branch
     """
-    z0, h = checked_start(system, z0, energy)
+    z0, h = checked_start(system, z0, total_energy, "total_energy")
     steps, T = checked_steps(steps, T)
     if isinstance(direction, bool) or direction not in (1, -1):
         raise ParameterError("direction", direction, "+1 or -1")
-    lo, hi = check_stop(stop)
+    lo, hi = check_stop(interval, "interval")
     ds = check_ds(ds)
     ds_max = None if ds_max is None else check_ds(ds_max, "ds_max")
     if ds_max is not None and not ds_max >= ds:
@@ -283,13 +288,14 @@ def continue_orbits(
         f"shooting at least twice with {2 * system.dim} tangent vectors"
     )  # fmt: skip
     free = subspace_indices(system, subspace)
-    problem = ShootingProblem(
-        system, steps, free, z0, parameter, h, phase, phase_index, phase_ref=z0.copy()
-    )
-    start = h if parameter == "energy" else problem.lam(system, h)
+    with refusals_named(parameter="continue_in"):
+        problem = ShootingProblem(
+            system, steps, free, z0, continue_in, h, phase, phase_index, phase_ref=z0.copy()
+        )
+    start = h if continue_in == "energy" else problem.lam(system, h)
     if not lo <= start <= hi:  # the branch would end at its first point (with NaN phi)
-        raise ParameterError("stop", stop, f"an interval containing the start's {parameter} "
-                             f"= {start:.6g}")  # fmt: skip
+        raise ParameterError("interval", interval, f"an interval containing the start's "
+                             f"{continue_in} = {start:.6g}")  # fmt: skip
     u = problem.pack(z0, T, 0.0, problem.lam(system, h))
     u, J, data, it = problem.newton(u)
     first = problem.orbit(u, data, it)
@@ -365,7 +371,7 @@ def _turn(a, b) -> float:
 
 
 def _value(problem: ShootingProblem, lam: float) -> float:
-    return math.exp(lam) if problem.parameter == "energy" else lam
+    return math.exp(lam) if problem.continue_in == "energy" else lam
 
 
 def _normal(problem: ShootingProblem, u: np.ndarray, t: np.ndarray) -> np.ndarray:
@@ -517,6 +523,7 @@ def _locate(problem, index, u0, t0, f0, u1, f1, orbit1, kind, locate) -> Event:
     )
 
 
+@renamed(stop="interval")
 def switch_branch(
     branch: Branch,
     event: Event,
@@ -524,7 +531,7 @@ def switch_branch(
     amplitude: float = 1e-3,
     ds: float = 0.05,
     max_points: int = 50,
-    stop: tuple[float, float] = (0.0, math.inf),
+    interval: tuple[float, float] = (0.0, math.inf),
     locate: bool = True,
 ) -> Branch:
     """Start the bifurcating branch at a period doubling or symmetry-breaking ``event``.
@@ -551,7 +558,7 @@ def switch_branch(
     amplitude = v.positive("amplitude", amplitude)
     ds = check_ds(ds)
     max_points = v.positive_int("max_points", max_points, maximum=MAX_POINTS)
-    stop = check_stop(stop)
+    interval = check_stop(interval, "interval")
     old = branch.problem
     orbit = event.orbit
     target = 1.0 if event.kind == "symmetry-breaking" else -1.0
@@ -564,12 +571,12 @@ def switch_branch(
     free = np.arange(D2) if leaves or event.kind != "period-doubling" else old.free
     factor = 1 if event.kind == "symmetry-breaking" else 2
     problem = ShootingProblem(
-        orbit.system if old.parameter == "energy" else old.system,
+        orbit.system if old.continue_in == "energy" else old.system,
         old.steps * factor,
         free,
         orbit.z0,
-        old.parameter,
-        old.energy,
+        old.continue_in,
+        old.total_energy,
         old.phase,
         old.phase_index,
         phase_ref=orbit.z0.copy(),
@@ -585,7 +592,7 @@ def switch_branch(
     u, J, data, it = problem.newton(guess, extra=(direction / usc**2, guess))
     first = problem.orbit(u, data, it)
     t0 = direction
-    return _continue(problem, first, J, ds, None, max_points, 1, *stop, locate, t0=t0)
+    return _continue(problem, first, J, ds, None, max_points, 1, *interval, locate, t0=t0)
 
 
 def merge(backward: Branch, forward: Branch) -> Branch:
@@ -619,8 +626,8 @@ def continue_both(
     subspace: str = "plane",
 ):
     """The sink's normal mode ``mode`` at ``total_energy`` continued both ways in
-    ``continue_in`` inside ``interval`` (see :func:`continue_orbits`: its ``parameter`` and
-    ``stop``), as a :class:`~sinktheory.nnm.result.BranchResult`.
+    ``continue_in`` inside ``interval`` (see :func:`continue_orbits`), as a
+    :class:`~sinktheory.nnm.result.BranchResult`.
 
     Parameters
     ----------
@@ -638,8 +645,9 @@ def continue_both(
     """
     from .modes import mode_guess, sink_flow
 
-    kw = dict(steps=steps, parameter=continue_in, energy=total_energy, stop=interval, ds=ds)
-    with refusals_named(parameter="continue_in", energy="total_energy", stop="interval"):
+    kw = dict(steps=steps, continue_in=continue_in, total_energy=total_energy,
+              interval=interval, ds=ds)  # fmt: skip
+    with refusals_named(energy="total_energy"):  # mode_guess's energy
         system = sink_flow(sink)
         z0, T = mode_guess(sink, mode, total_energy)
         back = continue_orbits(system, z0, T, direction=-1, max_points=points,

@@ -107,14 +107,14 @@ class BranchResult(Result):
         info = {
             "system": p.system.system,
             "params": dict(zip(p.system.parameter_names, p.system.params.tolist(), strict=True)),
-            "parameter": p.parameter,
+            "parameter": p.continue_in,
             "steps": p.steps,
             "scheme": p.system.scheme,
             "free": [int(i) for i in p.free],
             "stop_reason": branch.stop_reason,
         }
-        if p.parameter != "energy":
-            info["energy"] = p.energy
+        if p.continue_in != "energy":
+            info["energy"] = p.total_energy
         info.update(meta)
         events = [
             {

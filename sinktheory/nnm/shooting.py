@@ -61,6 +61,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import NumericalError, ParameterError, ShootingError
+from ..glossary import old_attribute, renamed
 from .stability import Floquet, floquet
 from .system import FlowSystem
 
@@ -89,30 +90,35 @@ MAX_STEP = 0.25
 MAX_SHOOT_STEPS = 10**6
 
 
+@renamed(parameter="continue_in", energy="total_energy")
 @dataclass
 class ShootingProblem:
-    """The periodicity equations of one system with the continuation parameter ``parameter``.
+    """The periodicity equations of one system, continued in ``continue_in``.
 
-    Unknowns u = (z0[free], ln T, sigma, lam): lam is ln h for ``parameter="energy"``
-    (h the energy), otherwise the value of the named system parameter at fixed energy
-    ``energy``.  ``base`` holds the values of the state components that are not free.
+    Unknowns u = (z0[free], ln T, sigma, lam): lam is ln h for ``continue_in="energy"``
+    (h the total energy), otherwise the value of the named system parameter at the fixed
+    total energy ``total_energy``.  ``base`` holds the values of the state components that
+    are not free.
     """
 
     system: FlowSystem
     steps: int
     free: np.ndarray
     base: np.ndarray
-    parameter: str = "energy"
-    energy: float = math.nan
+    continue_in: str = "energy"
+    total_energy: float = math.nan
     phase: str = "velocity"
     phase_index: int = 0
     phase_ref: np.ndarray | None = None
 
+    parameter = old_attribute("continue_in")
+    energy = old_attribute("total_energy")
+
     def __post_init__(self) -> None:
         self.free = np.asarray(self.free, dtype=int)
         self.base = np.asarray(self.base, dtype=float).copy()
-        if self.parameter != "energy":
-            self.system.index(self.parameter)  # validates the name
+        if self.continue_in != "energy":
+            self.system.index(self.continue_in)  # validates the name
         if self.phase not in ("velocity", "orthogonal"):
             raise ParameterError("phase", self.phase, "'velocity' or 'orthogonal'")
         D = self.system.dim
@@ -123,9 +129,9 @@ class ShootingProblem:
 
     # --- packing ------------------------------------------------------------------
     def lam(self, system: FlowSystem, h: float) -> float:
-        if self.parameter == "energy":
+        if self.continue_in == "energy":
             return math.log(h)
-        return float(system.params[system.index(self.parameter)])
+        return float(system.params[system.index(self.continue_in)])
 
     def pack(self, z0: np.ndarray, T: float, sigma: float, lam: float) -> np.ndarray:
         return np.concatenate([np.asarray(z0)[self.free], [math.log(T), sigma, lam]])
@@ -137,9 +143,9 @@ class ShootingProblem:
 
     def system_at(self, lam: float) -> tuple[FlowSystem, float]:
         """(system, energy h) at continuation value lam."""
-        if self.parameter == "energy":
+        if self.continue_in == "energy":
             return self.system, math.exp(lam)
-        return self.system.with_param(self.parameter, lam), self.energy
+        return self.system.with_param(self.continue_in, lam), self.total_energy
 
     def phase_vector(self, system: FlowSystem) -> tuple[np.ndarray, np.ndarray]:
         D = system.dim
@@ -172,10 +178,10 @@ class ShootingProblem:
         J[n, :n] = c[F]
         J[n + 1, :n] = g[F]
         if lam_column:
-            if self.parameter == "energy":
+            if self.continue_in == "energy":
                 J[n + 1, n + 2] = -h
             else:
-                dz, dH = system.param_derivative(z0, T, self.parameter, steps=self.steps)
+                dz, dH = system.param_derivative(z0, T, self.continue_in, steps=self.steps)
                 J[:n, n + 2] = dz[F]
                 J[n + 1, n + 2] = dH
         return G, J, (system, z0, T, sigma, zT, M)
@@ -365,16 +371,16 @@ def subspace_indices(system: FlowSystem, subspace: str | None) -> np.ndarray:
     raise ParameterError("subspace", subspace, "'full' or 'plane'")
 
 
-def checked_start(system, z0, energy=None) -> tuple[np.ndarray, float]:
+def checked_start(system, z0, energy=None, name: str = "energy") -> tuple[np.ndarray, float]:
     """(z0 as a float state, target energy h): ParameterError unless ``system`` is a
     :class:`FlowSystem`, z0 a finite state of its length 2D and h (default: the energy
-    of z0) a finite positive number."""
+    of z0) a finite positive number (refused naming ``name``)."""
     if not isinstance(system, FlowSystem):
         raise ParameterError("system", system, "a sinktheory.nnm.system.FlowSystem")
     z0 = v.real_array("z0", z0)
     if z0.shape != (2 * system.dim,) or not np.isfinite(z0).all():
         raise ParameterError("z0", z0.shape, f"a finite state of length {2 * system.dim}")
-    h = v.positive("energy", system.energy(z0) if energy is None else energy)
+    h = v.positive(name, system.energy(z0) if energy is None else energy)
     return z0, h
 
 

@@ -56,7 +56,7 @@ def lyapunov_figure(chart: LyapunovChart, *, title: str = ""):
     ax.set_title(
         title
         or rf"{p['shape']}, $\alpha$ = {p['alpha']:g}, k = {p['particles']}, m = {p['mass']:g}, "
-        rf"$E_0$ = {p['energy']:g}; {p['runs']} runs x {p['periods']} T per point",
+        rf"$E_0$ = {p['container_energy']:g}; {p['runs']} runs x {p['periods']} T per point",
         fontsize=9,
     )
     return fig

@@ -20,7 +20,7 @@ Examples
 ...      "spread": (("beta", "n"), np.full((2, 2), 0.01)),
 ...      "done": (("beta", "n"), np.ones((2, 2), bool))},
 ...     coords={"beta": [0.1, 0.3], "n": [4, 6], "level": [0.5, 0.8]},
-...     attrs={"energy": 0.5})
+...     attrs={"container_energy": 0.5})
 >>> {name: f.axes[0].get_title() for name, f in heatmaps(ds).items()}
 {'heatmap_beta_n.png': 'depth (max)'}
 """
@@ -78,7 +78,9 @@ def panels(ds) -> tuple:
 
 
 def _e0(ds):
-    return ds.energy if "energy" in ds.coords else float(ds.attrs["energy"])
+    if "container_energy" in ds.coords:
+        return ds.container_energy
+    return float(ds.attrs["container_energy"])
 
 
 def heatmap(ds, x: str, y: str | None = None):

@@ -28,7 +28,7 @@ def plot_law(summary, ax=None):
         fig = ax.figure
     ax.plot(summary.s, summary.pdf, color="C0", lw=1.8, label="exact law")
     ax.axvline(law.mean_fraction, color="C0", ls="--", lw=1.0, label=r"$\langle E_c\rangle/E$")
-    homogeneous = law.homogeneous_mean / law.energy
+    homogeneous = law.homogeneous_mean / law.total_energy
     ax.axvline(homogeneous, color="C3", ls=":", lw=1.0, label=r"$1/(1 + k(1 + 1/n))$")
     for f, p in zip(summary.fractions, summary.tails, strict=True):
         ax.axvline(f, color="0.6", lw=0.6)
@@ -51,7 +51,7 @@ def plot_law(summary, ax=None):
     ax.set_ylabel("density of $s$")
     ax.set_title(
         f"{law.shape} well $\\alpha$={law.alpha:g}, $\\beta$={law.beta:g}, $n$={law.n}, "
-        f"$k$={law.particles}, $E$={law.energy:g}",
+        f"$k$={law.particles}, $E$={law.total_energy:g}",
         fontsize=9,
     )
     ax.legend(fontsize=8)

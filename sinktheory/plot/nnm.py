@@ -17,7 +17,7 @@ Examples
 >>> from sinktheory.nnm.system import FlowSystem
 >>> from sinktheory.nnm.continuation import continue_orbits
 >>> b = continue_orbits(FlowSystem("duffing2", []), np.array([0.1, 0.1, 0, 0]),
-...                     2 * np.pi, steps=64, energy=0.01, stop=(1e-3, 1.0), ds=0.5)
+...                     2 * np.pi, steps=64, total_energy=0.01, interval=(1e-3, 1.0), ds=0.5)
 >>> fig = plot_frequency_energy([b.result(label="NNM1")])
 >>> fig.axes[0].get_xlabel()
 'total energy $H$'

@@ -65,7 +65,7 @@ def chaos_map(
         "shape": shape,
         "particles": particles,
         "mass": mass,
-        "energy": container_energy,
+        "container_energy": container_energy,
         "runs": runs,
         "periods": periods,
         "transverse": int(v.flag("transverse", transverse)),

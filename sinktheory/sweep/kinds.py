@@ -51,6 +51,7 @@ sweep: alpha, amplitude, beta, gamma, n, rtol, shape
 from __future__ import annotations
 
 import numbers
+import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from importlib import import_module
@@ -64,6 +65,7 @@ from ..design.measures import ATTACHMENTS
 from ..ensemble import ENERGY_BOUND
 from ..equilibrium import ergodicity as _ergodicity
 from ..errors import ParameterError
+from ..glossary import RENAMED_PARAMETERS
 from ..integrators import DEFAULT_SCHEME, SCHEMES
 from ..limits import DEFAULT_RTOL
 from ..model import DAMPING_KINDS, SHAPES
@@ -156,7 +158,11 @@ WELL = {
     "gamma": Param(float, 1.0),
     "shape": Param(str, "flat", SHAPES),
 }
-SINK = {"particles": Param(int, 1), "mass": Param(float, 0.2), "energy": Param(float, 0.5)}
+SINK = {
+    "particles": Param(int, 1),
+    "mass": Param(float, 0.2),
+    "container_energy": Param(float, 0.5),
+}
 
 
 @dataclass(frozen=True)
@@ -185,7 +191,10 @@ class Kind:
     cost: Callable[[dict], float] = lambda p: 1.0
 
     def complete(self, given: Mapping[str, Any]) -> dict[str, Any]:
-        """Check names, add defaults, coerce types (values may be lists of values)."""
+        """Check names, add defaults, coerce types (values may be lists of values).  An old
+        name (:data:`sinktheory.glossary.RENAMED_PARAMETERS`) is taken for its new one,
+        with a DeprecationWarning."""
+        given = _modern_names(given)
         for name in given:
             if name not in self.params:
                 raise ParameterError(
@@ -218,6 +227,25 @@ class Kind:
             else:
                 out[name] = p.coerce(name, value)
         return out
+
+
+def _modern_names(given: Mapping[str, Any]) -> dict[str, Any]:
+    """``given`` with its old parameter names renamed, each with a DeprecationWarning."""
+    out = {}
+    for name, value in given.items():
+        new = RENAMED_PARAMETERS.get(name)
+        if new is not None:
+            warnings.warn(
+                f"sweep: the parameter {name!r} is now {new!r} (the old name goes in the next "
+                "release)",
+                DeprecationWarning,
+                stacklevel=4,
+            )
+            if new in given:
+                raise ParameterError(name, value, f"left out: {new} is given too")
+            name = new
+        out[name] = value
+    return out
 
 
 # --------------------------------------------------------------------------- floquet
@@ -338,7 +366,7 @@ KINDS = {
             "runs": Param(int, 25),
             "periods": Param(int, 1500, sweepable=False),
             "box": Param(float, 0.01),
-            "method": Param(str, DEFAULT_SCHEME, tuple(SCHEMES)),
+            "scheme": Param(str, DEFAULT_SCHEME, tuple(SCHEMES)),
             "dt": Param(float, None),
             "energy_bound": Param(float, ENERGY_BOUND),
             "replica": Param(int, 0),
@@ -424,7 +452,7 @@ KINDS["chaos"] = Kind(
         "runs": Param(int, 8, sweepable=False),
         "periods": Param(int, 300),
         "box": Param(float, 0.01),
-        "method": Param(str, DEFAULT_SCHEME, tuple(SCHEMES)),
+        "scheme": Param(str, DEFAULT_SCHEME, tuple(SCHEMES)),
         "dt": Param(float, None),
         "energy_bound": Param(float, ENERGY_BOUND),
         "renorm": Param(int, 0),

@@ -39,6 +39,14 @@ Why a killed sweep never corrupts the store or loses a finished point:
 This holds for a killed process (kill -9) on a local file system; it does not promise
 durability across a power cut (no fsync) or on object stores.
 
+Renamed parameters.  A store written before a sweep parameter was renamed
+(:data:`sinktheory.glossary.RENAMED_PARAMETERS`: ``energy`` is now ``container_energy``,
+``method`` is now ``scheme``) holds the old names in its description, attributes,
+coordinates and dimensions, and so another fingerprint.  Opening it for the same sweep
+under the new names tries the old spelling (:func:`old_spelling`) when the fingerprint
+does not match, and resumes it as it is; its results read under the new names
+(:func:`read`).  The store itself is not rewritten.
+
 Examples
 --------
 >>> import tempfile, pathlib
@@ -58,6 +66,7 @@ that does not exist yet (resume to continue the sweep stored there)
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import fcntl
 import hashlib
 import itertools
@@ -78,6 +87,8 @@ import zarr
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import RENAMED_PARAMETERS
+from .grid import Grid, fingerprint
 from .plan import MARK, Sweep
 
 __all__ = [
@@ -87,6 +98,8 @@ __all__ = [
     "coordinates",
     "LOCK",
     "MemoryStore",
+    "old_spelling",
+    "read",
     "selection",
     "SweepStore",
 ]
@@ -103,11 +116,17 @@ CHUNK_VALUES = 4096
 
 
 class SweepStore:
-    """An open sweep store (use :meth:`create` or :meth:`open`)."""
+    """An open sweep store (use :meth:`create` or :meth:`open`).  ``written`` is the sweep
+    as the store spells it (:func:`old_spelling` for a store written under old parameter
+    names; the sweep itself otherwise)."""
 
-    def __init__(self, path: Path, sweep: Sweep, group: zarr.Group) -> None:
+    def __init__(
+        self, path: Path, sweep: Sweep, group: zarr.Group, written: Sweep | None = None
+    ) -> None:
         self.path = path
         self.sweep = sweep
+        #: current name -> the name the store holds it under (empty: the same names)
+        self.stored_names = {} if written is None or written is sweep else _OLD_NAMES
         self.group = group
         self._lock = _lock(path)
         self._arrays = {name: group[name] for name in (*sweep.kind.results, "done")}
@@ -182,14 +201,17 @@ class SweepStore:
             raise ParameterError(
                 "store", str(path), "an intact sweep store", why="its fingerprint does not match"
             )
-        if attrs[MARK] != sweep.fingerprint:
+        written = next(
+            (s for s in (sweep, old_spelling(sweep)) if s.fingerprint == attrs[MARK]), None
+        )
+        if written is None:
             raise ParameterError(
                 "store",
                 str(path),
                 "a store made by this same sweep (kind, grid, fixed parameters, seed)",
                 why=_difference(json.loads(spec), json.loads(sweep.spec)),
             )
-        _check_attributes(path, attrs, sweep)
+        _check_attributes(path, attrs, written)
         if CHECKSUM_ATTR in attrs and CHECKSUM not in group:
             raise ParameterError(
                 "store",
@@ -200,7 +222,7 @@ class SweepStore:
             )
         store = None
         try:
-            store = cls(path, sweep, group)
+            store = cls(path, sweep, group, written)
             for name, array in store._arrays.items():
                 expected = sweep.grid.shape if name == "done" else sweep.shape(name)
                 if array.shape != expected:
@@ -277,7 +299,7 @@ class SweepStore:
         expected = {**self.sweep.coords(), "point_seed": self.sweep.point_seeds()}
         for name, values in expected.items():
             try:
-                stored = np.asarray(self.group[name][...])
+                stored = np.asarray(self.group[self.stored_names.get(name, name)][...])
                 same = stored.shape == np.shape(values) and bool(
                     # via object: numpy refuses StringDType (zarr 3's strings) -> str
                     np.all(stored.astype(object).astype(str) == np.asarray(values).astype(str))
@@ -325,12 +347,53 @@ class SweepStore:
         return reset
 
     def dataset(self) -> xr.Dataset:
-        """The stored results, opened lazily with ``xarray.open_zarr``."""
-        return xr.open_zarr(self.path)
+        """The stored results, opened lazily (:func:`read`)."""
+        return read(self.path)
 
     def close(self) -> None:
         """Release the store's lock (the results stay readable with xarray)."""
         self._lock.close()
+
+
+#: A renamed parameter's current name -> its old name.
+_OLD_NAMES = {new: old for old, new in RENAMED_PARAMETERS.items()}
+
+
+def old_spelling(sweep: Sweep) -> Sweep:
+    """``sweep`` as a store written before its parameters were renamed spells it: the old
+    names (:data:`sinktheory.glossary.RENAMED_PARAMETERS`) in its grid, description and
+    fingerprint; the same points, seeds and results.
+
+    Examples
+    --------
+    >>> s = Sweep.make("ensemble", {"alpha": 0.5, "beta": 0.3, "n": 4,
+    ...                             "container_energy": [0.4, 0.5], "periods": 2, "runs": 2})
+    >>> old = old_spelling(s)
+    >>> old.grid.names, old.fixed["method"] == s.fixed["scheme"], old.fingerprint != s.fingerprint
+    (('energy',), True, True)
+    """
+    grid = Grid(
+        tuple((_OLD_NAMES.get(name, name), values) for name, values in sweep.grid.dims),
+        tuple(sorted((_OLD_NAMES.get(name, name), value) for name, value in sweep.grid.fixed)),
+    )
+    spec, digest = fingerprint(sweep.kind.name, grid, sweep.seed)
+    return dataclasses.replace(sweep, grid=grid, spec=spec, fingerprint=digest)
+
+
+def read(path: str | Path) -> xr.Dataset:
+    """The results of the sweep store at ``path``, opened lazily with ``xarray.open_zarr``,
+    under the current parameter names: in a store written under old names
+    (:data:`sinktheory.glossary.RENAMED_PARAMETERS`) the swept coordinates, dimensions
+    and fixed-parameter attributes of an old name read under its new one."""
+    ds = xr.open_zarr(path)
+    names = {old: new for old, new in RENAMED_PARAMETERS.items() if old in ds.variables or
+             old in ds.dims}  # fmt: skip
+    if names:
+        ds = ds.rename(names)
+    old = [name for name in RENAMED_PARAMETERS if name in ds.attrs]
+    for name in old:
+        ds.attrs[RENAMED_PARAMETERS[name]] = ds.attrs.pop(name)
+    return ds
 
 
 class MemoryStore:
@@ -538,7 +601,14 @@ def _swept(dims: list) -> str:
 
 
 def _difference(stored: dict, given: dict) -> str:
-    """Say how the stored sweep differs from the one asked for."""
+    """Say how the stored sweep differs from the one asked for (a store's old parameter
+    names read as their new ones)."""
+    new = RENAMED_PARAMETERS
+    stored = {
+        **stored,
+        "dims": [[new.get(name, name), values] for name, values in stored.get("dims", [])],
+        "fixed": {new.get(name, name): value for name, value in stored.get("fixed", {}).items()},
+    }
     parts = []
     for key in ("kind", "seed"):
         if stored.get(key) != given.get(key):

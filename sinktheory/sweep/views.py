@@ -41,7 +41,7 @@ def bifurcation_diagram(dataset: xr.Dataset) -> BifurcationDiagram:
         attrs["gamma"],
         attrs["shape"],
         attrs["mass"],
-        attrs["energy"],
+        attrs["container_energy"],
         attrs["transient"],
         attrs["count"],
     )

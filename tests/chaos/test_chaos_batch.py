@@ -126,7 +126,7 @@ def test_staged_exponents_stop_settled_betas_and_keep_the_rest_bitwise():
     sinks = [Sink(Well(0.5, b, 2), 1, 0.2) for b in (0.3, -0.3)]
     settings = [RunSettings(runs=4, periods=80, seed=s) for s in (1, 2)]
     steps = [0.05, 0.04]  # one step per beta: still one ensemble
-    staged = staged_chaos(sinks, settings, dt=steps, transverse=True, method="blanes-moan6")
+    staged = staged_chaos(sinks, settings, dt=steps, transverse=True, scheme="blanes-moan6")
     full = chaos_batch(sinks, settings, dt=steps, transverse=True)
     assert looks(80) == [(20, 4.0), (40, 3.0)]
     chaotic, other = staged[0]["lambda1"], staged[1]["lambda1"]

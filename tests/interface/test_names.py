@@ -18,7 +18,14 @@ from _cli import run_cli
 
 import sinktheory as st
 from sinktheory.cli import build_parser
-from sinktheory.glossary import GLOSSARY, MARKS, RENAMED_OPTIONS, option_of
+from sinktheory.glossary import (
+    GLOSSARY,
+    MARKS,
+    RENAMED_OPTIONS,
+    RENAMED_PARAMETERS,
+    modern_argv,
+    option_of,
+)
 
 #: command -> "module:callable" of the entry points its options feed (classes: their
 #: constructor; "Class.method": a method).
@@ -73,12 +80,8 @@ COMMAND_ONLY = {"json", "plot", "out", "quiet", "report", "latex", "fresh", "fig
 KNOWN_DISAGREEMENTS = {
     "floquet": {"lam", "beta_range", "lam_range"},  # scan(problem, lo, hi, count)
     "compare": {"wavelet_energy"},  # transfer_map's container_energy
-    "design": {"container_energy"},  # the sweep parameter is still energy
     "nnm": {"agreement"},  # the number of betas of agreement_report's grid
 }
-#: Sweep parameters still named otherwise than the keywords they mean (renaming them
-#: changes every store's fingerprint): name -> the glossary's name.
-KNOWN_SWEEP_NAMES = {"energy": "container_energy", "method": "scheme"}
 
 
 def subparsers() -> dict[str, argparse.ArgumentParser]:
@@ -173,9 +176,32 @@ def test_every_sweep_parameter_is_in_the_glossary():
     from sinktheory.sweep.kinds import KINDS
 
     names = {p for kind in KINDS.values() for p in kind.params}
-    missing = sorted(p for p in names - set(KNOWN_SWEEP_NAMES) if p not in GLOSSARY)
+    missing = sorted(p for p in names if p not in GLOSSARY)
     assert not missing, f"sweep parameters with no meaning in the glossary: {missing}"
-    assert set(KNOWN_SWEEP_NAMES) <= names, "a sweep parameter was renamed: shrink the list"
+    assert not names & set(RENAMED_PARAMETERS), "an old sweep parameter name is back"
+    assert set(RENAMED_PARAMETERS.values()) <= names
+
+
+def test_an_old_sweep_parameter_still_works_with_a_note():
+    """``--param energy=...`` is rewritten as modern_argv rewrites an old option; in Python
+    the old name works with a DeprecationWarning, as an old keyword does."""
+    from sinktheory.sweep.kinds import get_kind
+
+    argv, notes = modern_argv(["sweep", "ensemble", "--param", "energy=0.3,0.4",
+                               "--param=method=verlet", "--param", "beta=0.1"])  # fmt: skip
+    assert argv[2:] == ["--param", "container_energy=0.3,0.4", "--param=scheme=verlet",
+                        "--param", "beta=0.1"]  # fmt: skip
+    assert notes == ["--param energy is now --param container_energy",
+                     "--param method is now --param scheme"]  # fmt: skip
+    kind = get_kind("ensemble")
+    given = {"alpha": 0.5, "beta": 0.1, "n": 4}
+    with pytest.warns(DeprecationWarning) as caught:
+        old = kind.complete({**given, "energy": 0.3, "method": "verlet"})
+    assert [str(w.message).split(" (")[0] for w in caught] == [
+        "sweep: the parameter 'energy' is now 'container_energy'",
+        "sweep: the parameter 'method' is now 'scheme'",
+    ]
+    assert old == kind.complete({**given, "container_energy": 0.3, "scheme": "verlet"})
 
 
 def test_a_second_meaning_fails():
@@ -216,3 +242,45 @@ def test_an_old_keyword_still_works_with_a_warning():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         st.RunSettings(container_energy=0.7)
+
+
+def test_old_attributes_still_read_with_a_warning():
+    """Result fields renamed to the glossary's names keep their old names readable (with a
+    DeprecationWarning naming the new ones); a state made under the old field name, by
+    keyword or with "adaptive" where the scheme now stands, still constructs."""
+    import numpy as np
+
+    from sinktheory.bifurcation import BifurcationDiagram
+    from sinktheory.ensemble import SimulationResult, SimulationState
+    from sinktheory.stepsize import StepChoice
+
+    row, one = np.zeros((1, 6)), np.ones(1)
+    fixed = SimulationState(row, 0.0, one, 0.1, "verlet")
+    with pytest.warns(DeprecationWarning, match="'method' is now 'stepper' and 'scheme'"):
+        assert fixed.method == "verlet"
+    with pytest.warns(DeprecationWarning, match="'method' is now 'scheme'"):
+        keyword = SimulationState(row, 0.0, one, 0.1, method="verlet")
+    assert (keyword.stepper, keyword.scheme) == (fixed.stepper, fixed.scheme) == ("fixed", "verlet")
+    old = SimulationState(row, 0.0, one, 0.1, "adaptive", np.ones((1, 2)))
+    assert (old.stepper, old.scheme) == ("adaptive", None)
+    with pytest.warns(DeprecationWarning):
+        assert old.method == "adaptive"
+    result = SimulationResult(
+        times=np.zeros(1), container_energy=None, particle_energy=None, trajectory=None,
+        trajectory_times=None, final_state=None, initial_energy=one, run_errors=one,
+        max_relative_energy_error=1.0, stepper="adaptive", scheme="blanes-moan6", dt=0.1,
+        steps_per_period=63, message="",
+    )  # fmt: skip
+    assert "method" not in result.as_dict() and result.as_dict()["stepper"] == "adaptive"
+    with pytest.warns(DeprecationWarning):
+        assert result.method == "adaptive"
+    diagram = BifurcationDiagram(np.zeros(1), np.zeros((1, 1)), "y", 0.5, 4, 1.0, "flat", 0.2,
+                                 0.7, 0, 1)  # fmt: skip
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
+        assert diagram.energy == diagram.container_energy == 0.7
+    choice = StepChoice("verlet", 0.1, 63, 0.1, 1e-3, 63)
+    with pytest.warns(DeprecationWarning, match="'method' is now 'scheme'"):
+        assert choice.method == "verlet"
+    law = st.equilibrium_law(st.Sink(st.Well(0.5, 0.0, 4), particles=2), total_energy=0.5)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert law.energy == law.total_energy == 0.5

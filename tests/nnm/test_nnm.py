@@ -117,8 +117,8 @@ def test_backbone_of_the_first_nnm_matches_harmonic_balance(duffing):
         np.array([0.1, 0.1, 0, 0]),
         2 * np.pi,
         steps=256,
-        energy=0.01,
-        stop=(1e-3, 30.0),
+        total_energy=0.01,
+        interval=(1e-3, 30.0),
         ds=0.3,
     )
     assert b.stop_reason.startswith("parameter left") and len(b.orbits) > 10
@@ -154,8 +154,8 @@ def _fd_monodromy(system, z0, T, h=1e-6):
 @pytest.mark.parametrize("energy", [1.0, 45.0])  # stable, and past the +1 crossing
 def test_multipliers_match_a_finite_difference_monodromy(duffing, energy):
     b = continue_orbits(
-        duffing, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=256, energy=0.01,
-        stop=(1e-3, energy), ds=0.3, ds_max=0.3,
+        duffing, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=256, total_energy=0.01,
+        interval=(1e-3, energy), ds=0.3, ds_max=0.3,
     )  # fmt: skip
     last = b.orbits[-1]
     o = shoot(duffing, last.z0 * (energy / last.energy) ** 0.25, last.period, steps=256,
@@ -188,7 +188,7 @@ def test_fold_of_the_sink_branch_is_located():
     sink = Sink(Well(ALPHA, 0.3, N), particles=1, mass=0.2)
     system = sink_flow(sink)
     z0, T = mode_guess(sink, "container", 1e-3)
-    b = continue_orbits(system, z0, T, steps=400, energy=1e-3, stop=(1e-4, 0.05),
+    b = continue_orbits(system, z0, T, steps=400, total_energy=1e-3, interval=(1e-4, 0.05),
                         ds=0.2, subspace="plane")  # fmt: skip
     folds = [e for e in b.events if e.kind == "fold"]
     assert folds, b.events

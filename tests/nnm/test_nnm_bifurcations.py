@@ -44,7 +44,7 @@ def _henon_heiles(_t, z):
 def y_axis_branch():
     s = FlowSystem(HENON_HEILES, [])
     return continue_orbits(s, np.array([0, 0.1, 0, 0]), 2 * np.pi, steps=256,
-                           stop=(1e-3, 0.15), ds=0.1, phase_index=1)  # fmt: skip
+                           interval=(1e-3, 0.15), ds=0.1, phase_index=1)  # fmt: skip
 
 
 def _hill_half_trace(E):
@@ -80,7 +80,7 @@ def test_period_doubling_of_the_y_axis_orbit_is_located(y_axis_branch):
 def test_switching_at_the_period_doubling_gives_a_genuine_period_2T_orbit(y_axis_branch):
     pd = next(e for e in y_axis_branch.events if e.kind == "period-doubling")
     new = switch_branch(y_axis_branch, pd, amplitude=1e-2, ds=0.05, max_points=4,
-                        stop=(0.1, 0.16))  # fmt: skip
+                        interval=(0.1, 0.16))  # fmt: skip
     assert len(new.orbits) == 4, new.stop_reason
     T = pd.orbit.period
     for o in new.orbits[1:]:
@@ -104,7 +104,7 @@ def test_long_steps_still_report_every_window():
     rotate fast, and the events are those of steps 30 times shorter, at the Hill
     equation's +-1 (to 1e-6)."""
     s = FlowSystem(HENON_HEILES, [])
-    kw = dict(steps=256, stop=(1e-3, 0.1664), max_points=2000, phase_index=1)
+    kw = dict(steps=256, interval=(1e-3, 0.1664), max_points=2000, phase_index=1)
     z0 = np.array([0, 0.1, 0, 0])
     coarse = continue_orbits(s, z0, 2 * np.pi, ds=0.6, ds_max=0.6, **kw)
     fine = continue_orbits(s, z0, 2 * np.pi, ds=0.02, ds_max=0.02, **kw)
@@ -124,7 +124,7 @@ def test_a_window_inside_one_step_is_found_between_its_end_points(monkeypatch):
     test function, and the margin's dip between them is refined into the two crossings."""
     monkeypatch.setattr(continuation, "MAX_TURN", np.inf)
     s = FlowSystem(HENON_HEILES, [])
-    b = continue_orbits(s, np.array([0, 0.1, 0, 0]), 2 * np.pi, steps=256, stop=(1e-3, 0.1664),
+    b = continue_orbits(s, np.array([0, 0.1, 0, 0]), 2 * np.pi, steps=256, interval=(1e-3, 0.1664),
                         ds=0.45, ds_max=0.45, phase_index=1)  # fmt: skip
     window = [e for e in b.events if e.kind == "branch-point" and 0.161 < e.value < 0.165]
     assert len(window) == 2 and window[0].index == window[1].index, b.events
@@ -141,8 +141,8 @@ def test_transverse_touch_of_minus_one_is_reported():
     independently at that beta has phi_T/2 = 0 (to 1e-6)."""
     sink = Sink(Well(0.5, 0.2, 4), particles=1, mass=0.2)
     z0, T = mode_guess(sink, "particle", 0.5)
-    b = continue_orbits(sink_flow(sink), z0, T, steps=400, parameter="beta", energy=0.5,
-                        stop=(-0.45, 0.3), direction=-1, ds=0.3, subspace="plane")  # fmt: skip
+    b = continue_orbits(sink_flow(sink), z0, T, steps=400, continue_in="beta", total_energy=0.5,
+                        interval=(-0.45, 0.3), direction=-1, ds=0.3, subspace="plane")  # fmt: skip
     touches = [e for e in b.events if e.kind == "transverse-period-doubling-touch"]
     assert len(touches) == 1, b.events
     assert not [e for e in b.events if e.kind == "transverse-period-doubling"]

@@ -36,7 +36,7 @@ def test_container_energy_agrees_with_the_fixed_step(n, tolerance):
     sink, settings = _fig8(n), RunSettings(runs=4, periods=3, seed=3)
     fixed = simulate(sink, settings, tol=1e-12, progress=False)
     adaptive = simulate(sink, settings, stepper="adaptive", eps=0.05, progress=False)
-    assert adaptive.method == "adaptive"
+    assert adaptive.stepper == "adaptive"
     assert adaptive.max_relative_energy_error < 1e-12
     np.testing.assert_allclose(adaptive.times, fixed.times)
     assert np.abs(adaptive.container_energy - fixed.container_energy).max() < tolerance
@@ -104,7 +104,7 @@ def test_continuing_equals_running_through():
     # simulate continues an adaptive state with the adaptive step unless told otherwise
     rest = simulate(sink, RunSettings(runs=3, periods=2), initial_state=half.final_state,
                     record=("container", "final"), progress=False)  # fmt: skip
-    assert rest.method == "adaptive"
+    assert rest.stepper == "adaptive"
     assert (half.final_state.controller[:, 1] > 0).any()  # a period end split a step
     assert rest.container_energy.tobytes() == through.container_energy[:, 2:].tobytes()
     assert rest.final_state.values.tobytes() == through.final_state.values.tobytes()

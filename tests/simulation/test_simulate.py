@@ -90,7 +90,7 @@ def test_forward_then_backward_recovers_the_start():
     back = simulate(
         STIFF,
         settings,
-        initial_state=SimulationState(flipped, 0.0, fwd.initial_energy, fwd.dt, fwd.method),
+        initial_state=SimulationState(flipped, 0.0, fwd.initial_energy, fwd.dt, fwd.scheme),
         record=("final",),
     )
     end = back.final_state.values.copy()
@@ -225,7 +225,7 @@ def test_non_finite_continuation_state_is_refused():
     res = simulate(FIG8, RunSettings(runs=1, periods=1), record=("final",))
     bad = res.final_state.values.copy()
     bad[0, 3] = np.nan
-    state = SimulationState(bad, 0.0, res.initial_energy, res.dt, res.method)
+    state = SimulationState(bad, 0.0, res.initial_energy, res.dt, res.scheme)
     with pytest.raises(ParameterError) as info:
         simulate(FIG8, RunSettings(runs=1, periods=1), initial_state=state)
     assert info.value.name == "initial_state"
@@ -267,7 +267,8 @@ def test_cli_json_npz_and_plot(tmp_path, capsys):
     assert data["mean_energy"] == mean.tolist() and data["stderr"] == err.tolist()
     assert len(data["mean_energy"]) == 5
     assert (data["parameters"]["runs"], data["parameters"]["periods"]) == (3, 4)
-    assert data["method"] == direct.method and data["dt"] == direct.dt
+    assert (data["stepper"], data["scheme"]) == ("fixed", direct.scheme)
+    assert data["dt"] == direct.dt
     assert data["max_relative_energy_error"] < 1e-8
     saved = np.load(npz)
     assert np.array_equal(saved["container_energy"], direct.container_energy)
@@ -332,7 +333,7 @@ def test_the_steppers_registry_is_what_simulate_dispatches_on():
     for name, stepper in STEPPERS.items():
         assert stepper.name == name and set(stepper.options) <= keywords
         res = simulate(sink, settings, stepper=name, progress=False)
-        assert (res.method == "adaptive") == (name == "adaptive")
+        assert res.stepper == name
         foreign = {o for other in STEPPERS.values() for o in other.options} - set(stepper.options)
         for option in sorted(foreign):
             with pytest.raises(ParameterError, match=f"^{option} = .*stepper {name!r}"):

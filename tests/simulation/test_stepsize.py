@@ -59,7 +59,7 @@ def test_choice_is_the_cheapest_and_cost_falls_with_tolerance():
         assert all(c.predicted_error <= tol * (1 + 1e-12) for c in table)
         costs.append(best.force_evaluations_per_period)
         # the step really is the scheme's: stages x steps per period
-        s = get_scheme(best.method)
+        s = get_scheme(best.scheme)
         assert best.force_evaluations_per_period == s.stages * best.steps_per_period
         assert best.dt * best.steps_per_period == pytest.approx(2 * math.pi, rel=1e-14)
     assert costs == sorted(costs, reverse=True)
@@ -78,7 +78,7 @@ def test_tol_and_dt_together_are_refused():
 
 def test_forced_method_gets_its_own_step_for_the_tolerance():
     res = simulate(UNSEEN[0], RunSettings(runs=1, periods=20, seed=1), scheme="yoshida4", tol=1e-7)
-    assert res.method == "yoshida4"
+    assert (res.stepper, res.scheme) == ("fixed", "yoshida4")
     assert res.max_relative_energy_error <= 1e-7
 
 
@@ -93,7 +93,7 @@ def test_cli_tol_picks_scheme_and_step_and_reports_them(capsys):
     assert code == 0, err
     data = json.loads(out)
     expected = choose(UNSEEN[0], 0.5, 1e-6)
-    assert (data["method"], data["tol"]) == (expected.method, 1e-6)
+    assert (data["scheme"], data["tol"]) == (expected.scheme, 1e-6)
     assert data["steps_per_period"] == expected.steps_per_period
     assert data["max_relative_energy_error"] <= 1e-6
     code, out, err = run_cli([*argv, "--tol", "1e-2"], capsys)

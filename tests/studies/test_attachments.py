@@ -207,7 +207,7 @@ def test_leaving_the_line_follows_the_transverse_exponent():
         q, v = split_values(start_rows(att, st))
         m, dt, steps, _ = resolve_step(att.sink, E, tol=1e-8)
         lam = indicators(engine_name(att.sink), q, v, engine_params(att.sink), dt=dt,
-                         steps=steps, segments=P, method=m,
+                         steps=steps, segments=P, scheme=m,
                          transverse=(q, v, transverse_mask(1))).transverse  # fmt: skip
         res = impulse_response(att, E, damping=0.0, periods=P, runs=2, line_offset=1e-12)
         left = res.time_leaving_line(1e-6)

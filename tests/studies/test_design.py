@@ -34,7 +34,7 @@ from sinktheory.sweep import kinds
 from sinktheory.sweep.grid import point_seed
 
 #: The paper's Fig. 8 well (flat, alpha = 1/2, beta = 0.3, n = 4, m = 0.2, E0 = 0.5).
-FIG8 = {"shape": "flat", "alpha": 0.5, "beta": 0.3, "n": 4, "mass": 0.2, "energy": 0.5}
+FIG8 = {"shape": "flat", "alpha": 0.5, "beta": 0.3, "n": 4, "mass": 0.2, "container_energy": 0.5}
 TINY = {"runs": 3, "periods": 40, "lyapunov_runs": 2, "lyapunov_periods": 5, "bootstrap": 10}
 
 
@@ -164,7 +164,7 @@ def test_designs_that_never_reach_half_are_never_on_the_front():
             **{name: ("k", np.zeros(4)) for name in zeros},
         },
         coords={"k": ["A", "B", "C", "D"], "level": [0.5, 0.8], "horizon": [10]},
-        attrs={"energy": 0.5},
+        attrs={"container_energy": 0.5},
     )
     ranked = rank(ds)
     assert [r["k"] for r in ranked] == ["A", "C", "B", "D"]

@@ -52,7 +52,7 @@ def test_default_is_the_well_bitwise():
     b = _explore({**BASE, "particles": [1, 2], "attachment": "well"}, seed=2).dataset
     for name in a.data_vars:
         np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=name)
-    point = {"shape": "flat", "alpha": 0.5, "gamma": 1.0, "mass": 0.2, "energy": 0.5,
+    point = {"shape": "flat", "alpha": 0.5, "gamma": 1.0, "mass": 0.2, "container_energy": 0.5,
              "box": 0.01, "tol": 1e-6, "energy_bound": None, "transient": None,
              "sigmas": 3.0, "risk_level": 0.5, "rqa_eps": 0.01, "lyapunov_periods": 100,
              "damping": 0.0, "replica": 0, **BASE, "particles": 1}  # fmt: skip
@@ -146,7 +146,7 @@ def test_damping_kind_viscous_gives_the_well_the_same_dashpot():
     ds = _explore(params, seed=3).dataset
     viscous, contact = ds.sel(damping_kind="viscous"), ds.sel(damping_kind="contact")
     assert float(viscous.dashpot) == 1.0 and float(contact.dashpot) == 0.0
-    p = {"shape": "flat", "alpha": 0.5, "gamma": 1.0, "mass": 0.2, "energy": 0.5,
+    p = {"shape": "flat", "alpha": 0.5, "gamma": 1.0, "mass": 0.2, "container_energy": 0.5,
          "box": 0.01, **BASE, "particles": 2}  # fmt: skip
     res = simulate_inelastic(sink_of(p), settings_of(p, point_seed(3, 1)), damping=0.025,
                              damping_kind="viscous", tol=1e-6)  # fmt: skip

@@ -27,7 +27,7 @@ def test_zero_damping_is_bitwise_the_simulator():
     on = simulate_inelastic(SINK2, settings, damping=0.0, tol=1e-6)
     off = simulate_inelastic(SINK2, settings, dissipative_stage=False, tol=1e-6)
     ref = simulate(SINK2, settings, tol=1e-6, progress=False)
-    assert (on.method, on.dt) == (ref.method, ref.dt)
+    assert (on.scheme, on.dt) == (ref.scheme, ref.dt)
     assert on.container_energy.tobytes() == off.container_energy.tobytes()
     assert on.total_energy.tobytes() == off.total_energy.tobytes()
     assert on.container_energy.tobytes() == ref.container_energy.tobytes()
@@ -41,7 +41,7 @@ def test_zero_viscous_damping_is_bitwise_the_simulator():
     settings = RunSettings(runs=3, periods=3, seed=4)
     on = simulate_inelastic(SINK2, settings, damping=0.0, damping_kind="viscous", tol=1e-6)
     ref = simulate(SINK2, settings, tol=1e-6, progress=False)
-    assert (on.method, on.dt, on.damping_kind) == (ref.method, ref.dt, "viscous")
+    assert (on.scheme, on.dt, on.damping_kind) == (ref.scheme, ref.dt, "viscous")
     assert on.container_energy.tobytes() == ref.container_energy.tobytes()
     assert not on.dissipated.any() and on.sample_times is None
 

@@ -123,7 +123,7 @@ def test_point_seed_is_the_spawned_child():
         ({**BIF, "beta": [0.1, 0.5]}, "bifurcation", "beta = 0.5 .* < alpha"),
         ({**BIF, "shape": "round"}, "bifurcation", "shape = 'round'"),
         (BIF, "orbit", "kind = 'orbit'"),
-        ({"alpha": 0.5, "beta": 0.1, "n": 4, "method": "euler"}, "ensemble", "method = 'euler'"),
+        ({"alpha": 0.5, "beta": 0.1, "n": 4, "scheme": "euler"}, "ensemble", "scheme = 'euler'"),
         ({"alpha": 0.5, "beta": 0.1, "n": 4, "periods": [2, 3]}, "ensemble", "periods"),
     ],
 )
@@ -150,7 +150,8 @@ def test_bifurcation_diagram_view_equals_the_serial_diagram():
     view = bifurcation_diagram(run_sweep("bifurcation", BIF, workers=2, progress=False))
     assert np.array_equal(view.section, serial.section)
     assert np.array_equal(view.beta, serial.beta)
-    fields = ("quantity", "alpha", "n", "gamma", "shape", "mass", "energy", "transient", "count")
+    fields = ("quantity", "alpha", "n", "gamma", "shape", "mass", "container_energy", "transient",
+              "count")  # fmt: skip
     assert [getattr(view, f) for f in fields] == [getattr(serial, f) for f in fields]
     with pytest.raises(ParameterError, match="a bifurcation sweep over beta alone"):
         bifurcation_diagram(run_sweep("floquet", {"alpha": 0.5, "beta": [0.1, 0.2], "n": 4}))
