@@ -110,16 +110,14 @@ def _is_symbolic_int_pow(e) -> bool:
     return e.is_Pow and e.exp.is_integer and not e.exp.is_number
 
 
-def lowest_powers(outputs: Sequence[sp.Expr], nonnegative=lambda exponent: True) -> dict:
+def lowest_powers(outputs: Sequence[sp.Expr]) -> dict:
     """For each base raised to a symbolic integer power in ``outputs``, the lowest of its
-    exponents (among those ``nonnegative`` accepts) that the others exceed by a whole
-    number: the one power of that base a kernel computes at run time."""
+    exponents that the others exceed by a whole number: the one power of that base a
+    kernel computes at run time."""
     lowest: dict[sp.Expr, sp.Expr] = {}
     for expr in outputs:
         for p in expr.atoms(sp.Pow):
             if _is_symbolic_int_pow(p) and not p.exp.could_extract_minus_sign():
-                if not nonnegative(p.exp):
-                    continue
                 e0 = lowest.get(p.base)
                 if e0 is None or ((p.exp - e0).is_number and (p.exp - e0) < 0):
                     lowest[p.base] = p.exp

@@ -116,15 +116,17 @@ _USER_WELLS: dict[str, object] = {}
 def well_name(well) -> str:
     """Engine name of the container with particles in a user's ``well`` (a
     :class:`~sinktheory.symbolic.WellDefinition`), ``well_<digest>``: the digest is that of
-    the definition (the potential and the parameters' names in order), so the same well
-    typed again, in any process, finds its machine code in the cache, and any change makes
-    a new engine.  Registers the well, so that :func:`load` can print its engine.
+    the definition (the potential and the parameters' names in order; not the well's name
+    nor the defaults), so the same well typed again, in any process, finds its machine
+    code in the cache, and any change of the potential makes a new engine.  Registers the
+    well, so that :func:`load` can print its engine.
 
     Examples
     --------
     >>> from sinktheory.userwell import UserWell
-    >>> well_name(UserWell("bowl", "k*(x**2 + y**2)/2", {"k": 1}))
-    'well_9f6bd4ba0ded'
+    >>> bowl = well_name(UserWell("bowl", "k*(x**2 + y**2)/2", {"k": 1}))
+    >>> bowl.startswith("well_"), bowl == well_name(UserWell("dish", "k*(y**2 + x**2)/2", {"k": 3}))
+    (True, True)
     """
     import sympy as sp
 
