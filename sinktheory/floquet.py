@@ -70,6 +70,15 @@ beta) (tests/oscillator/test_floquet_vs_simulation.py, agreement 4e-6).  How far
 predict the chaos of the oscillating container (mu = 0.2, Figs. 3 and 11) is measured
 by ``sinktheory reproduce`` and stated in its report.
 
+A user's well (:func:`well_floquet`).  When y = 0 is invariant (decided symbolically,
+:func:`sinktheory.symbolic.normal_mode`), the orbit x'' = -dV/dx(x, 0) started at rest at
+x = A and Hill's equation y'' + V_yy(x(t), 0) y = 0 are integrated together (DOP853 of
+:func:`scipy.integrate.solve_ivp`, mass 1: the mass only rescales time).  The
+reversibility argument above holds about every turning point, so without any symmetry
+phi_T = y1 y2' + y2 y1' at the other turning point (half a period); when V(x, 0) and V_yy(x,
+0) are both even in x (decided symbolically) the quarter-period formulas hold at x = 0
+and give phi_half, as for the registered shapes.
+
 Examples
 --------
 >>> chart = pure_hill([0.5], n=2)
@@ -121,6 +130,8 @@ __all__ = [
     "ROOT_XTOL",
     "scan",
     "StabilityScan",
+    "well_floquet",
+    "WellFloquet",
 ]
 
 #: Largest |lambda| A0^2 accepted: at 1e10 one quarter period takes about 1 s; at 1e12
@@ -832,3 +843,190 @@ def point(p: dict, seed: int) -> dict:
     )
     items = c.items()  # the chart's quantities (sinktheory.results protocol)
     return {name: items["lambda" if name == "lam" else name][0] for name in POINT_QUANTITIES}
+
+
+# ----------------------------------------------------------------- a user's well
+#: Per-step relative tolerance of :func:`well_floquet`'s integration.
+WELL_RTOL = 1e-13
+#: Points of the check that V(x, 0) grows from the centre to the amplitude.
+_AXIS_POINTS = 1024
+
+
+@dataclass(frozen=True)
+class WellFloquet(Result):
+    """Floquet data of the normal mode y = 0 of a user's well at one amplitude
+    (:func:`well_floquet`).
+
+    Attributes
+    ----------
+    name : the well's name
+    parameters : its parameter values by name
+    amplitude : A, the turning point x = A > 0 of the orbit on y = 0 (started at rest)
+    particle_energy : V(A, 0) - V(0, 0)
+    period : T of the orbit, for mass 1 (x'' = -dV/dx; a mass mu multiplies it by sqrt(mu)
+        and changes no multiplier)
+    hill_coefficient : q(x) = V_yy(x, 0), as text
+    symmetric : V(x, 0) and q even in x (symbolic): the quarter-period formulas hold
+    phi_half : half trace of M(T/2) (symmetric wells; NaN otherwise)
+    phi : half trace of M(T)
+    stable : |phi_half| < 1 from the factors' signs (symmetric), |phi| < 1 otherwise
+    multipliers : rho_1, rho_2 over T (complex)
+    growth_per_period : ln of the largest |rho| (0 where stable)
+    """
+
+    name: str
+    parameters: dict
+    amplitude: float
+    particle_energy: float
+    period: float
+    hill_coefficient: str
+    symmetric: bool
+    phi_half: float
+    phi: float
+    stable: bool
+    multipliers: np.ndarray
+
+    @property
+    def growth_per_period(self) -> float:
+        """ln of the largest |multiplier| over T (0 where stable)."""
+        return float(np.log(np.max(np.abs(self.multipliers)))) if not self.stable else 0.0
+
+    DIMS = {"multipliers": ("multiplier",)}
+
+    def items(self) -> dict:
+        """The fields and the growth per period."""
+        return {**super().items(), "growth_per_period": self.growth_per_period}
+
+
+def _even(expr) -> bool:
+    """expr(-x) == expr(x) identically (SymPy)."""
+    import sympy as sp
+
+    from .symbolic import x
+
+    return sp.simplify(expr.subs(x, -x) - expr) == 0
+
+
+def well_floquet(
+    well, amplitude: float, values=None, *, well_check=None, rtol: float = WELL_RTOL
+) -> WellFloquet:
+    """Floquet multipliers of the normal mode y = 0 of a user's well (a
+    :class:`~sinktheory.userwell.UserWell` at its parameter ``values`` by name, defaults for
+    the others; ``well_check``: its :func:`~sinktheory.userwell.check_well` there, if run)
+    on the orbit with turning point x = ``amplitude`` (module docstring).
+
+    Raises
+    ------
+    ParameterError
+        y = 0 is not invariant (the reason is given), or the amplitude is not > 0, or its
+        orbit does not stay in the basin (V(x, 0) must grow from the centre to it, below
+        the escape energy); a refused well (WellDefinitionError).
+    NumericalError
+        The integration failed or the solutions left float range.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> ellipse = UserWell("ellipse", "(x**2 + 0.64*y**2)/2", {})  # x = A cos t
+    >>> f = well_floquet(ellipse, 0.5)  # y'' + 0.64 y = 0: phi_half = cos(0.8 pi)
+    >>> f.symmetric, round(f.phi_half, 10), round(math.cos(0.8 * math.pi), 10), f.stable
+    (True, -0.8090169944, -0.8090169944, True)
+    """
+    import sympy as sp
+    from scipy.integrate import solve_ivp
+
+    from .errors import NumericalError
+    from .symbolic import mu, normal_mode, y
+    from .userwell import UserWell, check_well
+
+    if not isinstance(well, UserWell):
+        raise ParameterError("well", well, "a sinktheory.userwell.UserWell")
+    given = dict(values or {})
+    report = check_well(well, **given) if well_check is None else well_check
+    exact = well.values(**given)
+    mode = normal_mode(well, exact)
+    if not mode.invariant:
+        raise ParameterError(
+            "well", well.name, "a well whose line y = 0 is invariant, for Floquet multipliers",
+            why=mode.reason,
+        )  # fmt: skip
+    a = v.positive("amplitude", amplitude)
+    rtol = v.positive("rtol", rtol)
+    numeric_well = report.basin.well
+    on_axis = well.potential.subs(exact).subs(y, 0)
+    q = sp.simplify(mode.hill_coefficient.subs(exact) * mu)
+    symmetric = _even(on_axis) and _even(q)
+    xs = np.linspace(0.0, a, _AXIS_POINTS + 1)
+    axis = numeric_well.f(xs, np.zeros_like(xs)) - numeric_well.v0
+    energy = float(axis[-1])
+    if not (np.all(np.diff(axis) > 0) and energy < report.basin.escape_energy):
+        raise ParameterError(
+            "amplitude", a, f"a turning point of an orbit on y = 0 inside the basin of the "
+            f"{well.name} well (V(x, 0) growing from the centre to it, below the escape "
+            f"energy {report.basin.escape_energy:.6g})",
+            why=f"V(A, 0) - V(0, 0) = {energy:.6g}",
+        )  # fmt: skip
+
+    def rhs(t, s):
+        gx = numeric_well.gradient(s[0], 0.0)[0]
+        qx = numeric_well.hessian(s[0], 0.0)[1, 1]
+        return [s[1], -gx, s[3], -qx * s[2], s[5], -qx * s[4]]
+
+    if symmetric:  # x = 0: a quarter period
+
+        def event(t, s):
+            return s[0]
+
+        event.direction = -1.0
+    else:  # x' = 0 again: the other turning point, half a period
+
+        def event(t, s):
+            return s[1]
+
+        event.direction = 1.0
+    event.terminal = True
+    start = [a, 0.0, 1.0, 0.0, 0.0, 1.0]
+    # a bound of the time to the event: 1000 times the flight over 2 A at the speed
+    # sqrt(2 e) of the centre (a power-law well takes less than 1.6 flights over A)
+    horizon = 2e3 * a / math.sqrt(2.0 * energy)
+    kwargs = dict(method="DOP853", rtol=rtol, atol=rtol * 1e-3)
+    first = solve_ivp(rhs, (0.0, horizon), start, events=event, **kwargs)
+    if first.status != 1:
+        raise NumericalError(
+            f"Floquet of the {well.name} well at amplitude {a:g}: the orbit on y = 0 did "
+            f"not reach {'x = 0' if symmetric else 'its other turning point'} by t = "
+            f"{horizon:.6g} ({first.message})"
+        )
+    t_event = float(first.t_events[0][0])
+    # integrated again to that time, so that the last step ends on it (no interpolation)
+    end = solve_ivp(rhs, (0.0, t_event), start, **kwargs).y[:, -1]
+    if not np.all(np.isfinite(end)):
+        raise NumericalError(
+            f"Floquet of the {well.name} well at amplitude {a:g}: the solutions left float range"
+        )
+    y1, dy1, y2, dy2 = end[2:]
+    trace_half = y1 * dy2 + y2 * dy1
+    if symmetric:
+        phi_half = float(trace_half)
+        phi = 2.0 * phi_half * phi_half - 1.0
+        stable = bool(y2 * dy1 < 0 < y1 * dy2)
+        period = 4.0 * t_event
+    else:
+        phi_half, phi = math.nan, float(trace_half)
+        stable = bool(abs(phi) < 1)
+        period = 2.0 * t_event
+    root = np.sqrt(complex(phi * phi - 1.0))
+    multipliers = np.array([phi + root, phi - root])
+    return WellFloquet(
+        name=well.name,
+        parameters={k.name: float(val) for k, val in exact.items()},
+        amplitude=a,
+        particle_energy=energy,
+        period=period,
+        hill_coefficient=str(q),
+        symmetric=symmetric,
+        phi_half=phi_half,
+        phi=phi,
+        stable=stable,
+        multipliers=multipliers,
+    )
