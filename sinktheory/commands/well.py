@@ -1,12 +1,25 @@
-"""``sinktheory well``: describe a well (wall distance, curvature, reach) and draw it."""
+"""``sinktheory well``: describe a well (wall distance, curvature, reach) and draw it.
+
+With ``--well FILE`` a user's well file instead (:func:`sinktheory.model.user_well_summary`:
+its minimum, escape energy and normal mode y = 0 with how each was found, and the reach,
+energies measured from V(0, 0))."""
 
 from __future__ import annotations
 
 import argparse
 
+from ..errors import ParameterError
 from ..validation import positive
 from . import HELP as HELPS
-from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
+from ._common import (
+    Output,
+    add_json,
+    add_well_arguments,
+    number,
+    png_path,
+    user_well_from_args,
+    well_from_args,
+)
 
 __all__ = ["add_arguments", "HELP", "NAME", "run"]
 
@@ -15,7 +28,7 @@ HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser)
+    add_well_arguments(parser, well_file=True)
     parser.add_argument(
         "--particle-energy",
         type=number,
@@ -26,7 +39,34 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_json(parser)
 
 
+def _user_well(args: argparse.Namespace, user) -> Output:
+    from ..model import user_well_summary
+
+    well, given, check = user
+    if args.plot is not None:
+        raise ParameterError("plot", args.plot, "left out with --well (not drawn for well files)")
+    s = user_well_summary(well, args.particle_energy, given, well_check=check)
+    values = " ".join(f"{k}={v:g}" for k, v in s.parameters.items()) or "no parameters"
+    text = "\n".join(
+        [
+            f"{s.name} well  {values}",
+            f"  V(x, y)               {s.potential}",
+            f"  minimum at (0, 0)     {s.minimum}",
+            f"  {s.escape}",
+            f"  y = 0                 {'invariant' if s.y_invariant else 'not invariant'} "
+            f"({s.normal_mode})",
+            f"  wall ratios           {', '.join(s.wall_ratios) or 'none'}",
+            f"  reach at E = {s.particle_energy:g}     |x| <= {s.reach.x:.6g}, "
+            f"|y| <= {s.reach.y:.6g} (E from V(0, 0))",
+        ]
+    )
+    return Output(s.as_dict(), text)
+
+
 def run(args: argparse.Namespace) -> Output:
+    user = user_well_from_args(args)
+    if user is not None:
+        return _user_well(args, user)
     well = well_from_args(args)
     energy = positive("particle_energy", args.particle_energy)
     plot = png_path("plot", args.plot)
