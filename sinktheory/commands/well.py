@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import argparse
 
-from ..errors import ParameterError
 from ..validation import positive
 from . import HELP as HELPS
 from ._common import (
@@ -43,8 +42,7 @@ def _user_well(args: argparse.Namespace, user) -> Output:
     from ..model import user_well_summary
 
     well, given, check = user
-    if args.plot is not None:
-        raise ParameterError("plot", args.plot, "left out with --well (not drawn for well files)")
+    plot = png_path("plot", args.plot)
     s = user_well_summary(well, args.particle_energy, given, well_check=check)
     values = " ".join(f"{k}={v:g}" for k, v in s.parameters.items()) or "no parameters"
     text = "\n".join(
@@ -60,7 +58,15 @@ def _user_well(args: argparse.Namespace, user) -> Output:
             f"|y| <= {s.reach.y:.6g} (E from V(0, 0))",
         ]
     )
-    return Output(s.as_dict(), text)
+    out = Output(s.as_dict(), text)
+    if plot is not None:
+        from ..plot.well import plot_user_well
+
+        numeric = check.basin.well  # V - V(0, 0) on arrays
+        fig = plot_user_well(s, lambda x, y: numeric.f(x, y) - numeric.v0)
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        out.data["plot"] = str(plot)
+    return out
 
 
 def run(args: argparse.Namespace) -> Output:

@@ -49,11 +49,10 @@ def plot_law(summary, ax=None):
     ax.set_xlim(0, 1)
     ax.set_xlabel("$s = E_c / E$")
     ax.set_ylabel("density of $s$")
-    well = (
-        ", ".join(f"{k}={v:g}" for k, v in law.parameters.items())  # a user's well
-        if law.parameters
-        else f"$\\alpha$={law.alpha:g}, $\\beta$={law.beta:g}"
-    )
+    if np.isnan(law.alpha):  # a user's well: its own parameters
+        well = ", ".join(f"{k}={v:g}" for k, v in law.parameters.items()) or "(no parameters)"
+    else:
+        well = f"$\\alpha$={law.alpha:g}, $\\beta$={law.beta:g}"
     ax.set_title(
         f"{law.shape} well {well}, $n$={law.n}, $k$={law.particles}, $E$={law.energy:g}",
         fontsize=9,

@@ -52,6 +52,13 @@ def test_well_reports_the_henon_heiles_saddle_and_reach(files, capsys):
     assert data["reach"]["y"] == pytest.approx(max(abs(r) for r in y_roots), rel=1e-12)
 
 
+def test_well_draws_the_level_lines_of_a_well_file(files, capsys, tmp_path):
+    path = tmp_path / "hh.png"
+    data = cli_json(["well", "--well", files["hh"], "--particle-energy", "0.15", "--plot",
+                     str(path)], capsys)  # fmt: skip
+    assert data["plot"] == str(path) and path.read_bytes().startswith(b"\x89PNG")
+
+
 @pytest.mark.parametrize("shape,beta", [("flat", -0.2), ("circular", 0.3)])
 def test_well_gives_the_registry_reach(shape, beta, files, capsys):
     user = cli_json(["well", "--well", files[shape], "--well-param", f"beta={beta}"], capsys)
