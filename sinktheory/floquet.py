@@ -869,9 +869,9 @@ class WellFloquet(Result):
     symmetric : V(x, 0) and q even in x (symbolic): the quarter-period formulas hold
     phi_half : half trace of M(T/2) (symmetric wells; NaN otherwise)
     phi : half trace of M(T)
-    stable : |phi_half| < 1 from the factors' signs (symmetric), |phi| < 1 otherwise
+    stable : abs(phi_half) < 1 from the factors' signs (symmetric), abs(phi) < 1 otherwise
     multipliers : rho_1, rho_2 over T (complex)
-    growth_per_period : ln of the largest |rho| (0 where stable)
+    growth_per_period : ln of the largest abs(rho) (0 where stable)
     """
 
     name: str
@@ -888,7 +888,7 @@ class WellFloquet(Result):
 
     @property
     def growth_per_period(self) -> float:
-        """ln of the largest |multiplier| over T (0 where stable)."""
+        """ln of the largest abs(rho) over T (0 where stable)."""
         return float(np.log(np.max(np.abs(self.multipliers)))) if not self.stable else 0.0
 
     DIMS = {"multipliers": ("multiplier",)}
