@@ -149,6 +149,37 @@ def test_floquet_without_symmetry_is_the_full_period_monodromy(c, tmp_path, caps
     assert data["phi"] == pytest.approx((end[0] + end[3]) / 2, abs=1e-12)
 
 
+def test_floquet_of_henon_heiles_turned_is_the_monodromy_over_the_quadrature_period(
+    tmp_path, capsys
+):
+    # Henon-Heiles with x and y swapped: y = 0 is one of its invariant lines; on it
+    # x'' = -(x - x^2) (V = x^2/2 - x^3/3, no symmetry) and y'' + (1 + 2 x) y = 0.  The
+    # period from the energy integral (an independent quadrature), then the monodromy over
+    # that whole period, without the reversibility the command uses
+    path = write_well_file(tmp_path, "hh_turned", "(x**2 + y**2)/2 + y**2*x - x**3/3")
+    A = 0.3
+    data = cli_json(["floquet", "--well", str(path), "--amplitude", str(A)], capsys)
+    e = A * A / 2 - A**3 / 3
+    B = optimize.brentq(lambda x: x * x / 2 - x**3 / 3 - e, -1.0, 0.0, xtol=1e-16)
+    mid, half = (A + B) / 2, (A - B) / 2
+
+    def dt(phi):  # x = mid - half cos(phi): the square roots at the turning points cancel
+        x = mid - half * math.cos(phi)
+        return half * math.sin(phi) / math.sqrt(2 * max(e - x * x / 2 + x**3 / 3, 1e-300))
+
+    period = 2 * integrate.quad(dt, 0.0, math.pi, epsabs=0, epsrel=1e-13)[0]  # open ends
+
+    def rhs(t, s):
+        x = s[0]
+        return [s[1], -(x - x * x), s[3], -(1 + 2 * x) * s[2], s[5], -(1 + 2 * x) * s[4]]
+
+    end = integrate.solve_ivp(rhs, (0, period), [A, 0, 1, 0, 0, 1], method="DOP853",
+                              rtol=1e-13, atol=1e-16).y[:, -1]  # fmt: skip
+    assert not data["symmetric"]
+    assert data["period"] == pytest.approx(period, rel=1e-12)  # measured 8e-15
+    assert data["phi"] == pytest.approx((end[2] + end[5]) / 2, abs=1e-12)  # measured 9e-15
+
+
 def test_floquet_refuses_henon_heiles_with_the_reason(files, capsys, tmp_path, monkeypatch):
     refused_well(["floquet", "--well", files["hh"], "--amplitude", "0.1"], capsys, tmp_path,
                  monkeypatch, "dV/dy(x, 0) = x**2, not identically 0")  # fmt: skip
