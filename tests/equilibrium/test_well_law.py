@@ -121,3 +121,24 @@ def test_the_built_in_shapes_typed_as_expressions_give_the_registry_law(shape, b
     assert user.mean_fraction == pytest.approx(registry.mean_fraction, rel=1e-12)
     f = [0.1, 0.5, 0.8]
     assert user.tail(f) == pytest.approx(registry.tail(f), rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "potential,n", [("Abs(x)**3 + 2*Abs(y)**3", 1.5), ("sqrt(x**2 + 4*y**2)", 0.5)]
+)
+def test_a_leading_degree_that_is_not_even_gives_a_half_integer_n(potential, n):
+    # homogeneous of degree 3 and 1: A(e) ~ e^(2/3), e^2, and the law is Beta(1, k (1 + 1/n))
+    law = well_law(UserWell("w", potential, {}), 2, 0.5)
+    b = 2 * (1 + 1 / n)
+    assert law.n == n and law.mean_fraction == pytest.approx(1 / (1 + b), rel=1e-12)
+
+
+def test_energies_are_measured_from_the_centre():
+    # V = exp(x^2 + y^2), V(0, 0) = 1: the basin of e is r^2 < log(1 + e), A = pi log(1 + e)
+    E = 0.3
+    law = well_law(UserWell("w", "exp(x**2 + y**2)", {}), 1, E)
+    area = WellArea.of(UserWell("w", "exp(x**2 + y**2)", {}))
+    assert area.area(0.2) == pytest.approx(math.pi * math.log1p(0.2), rel=1e-12)
+    num = integrate.quad(lambda v: v * math.log1p(E * (1 - v)), 0, 1, epsrel=1e-13)[0]
+    den = integrate.quad(lambda v: math.log1p(E * (1 - v)), 0, 1, epsrel=1e-13)[0]
+    assert law.mean_fraction == pytest.approx(num / den, rel=1e-12)
