@@ -304,6 +304,17 @@ def user_well_from_args(args: argparse.Namespace):
     return well, given, check_well(well, **given)
 
 
+def parameters_text(parameters: dict[str, float]) -> str:
+    """A user's well's parameter values as the commands print them.
+
+    Examples
+    --------
+    >>> parameters_text({"a": 0.3, "n": 4.0}), parameters_text({})
+    ('a=0.3 n=4', '(no parameters)')
+    """
+    return " ".join(f"{k}={v:g}" for k, v in parameters.items()) or "(no parameters)"
+
+
 def well_from_args(args: argparse.Namespace):
     """The :class:`~sinktheory.model.Well` of the well options (for a command that also
     takes ``--well``, when it is not given: --alpha, --beta and --n are required then)."""

@@ -24,6 +24,7 @@ from ._common import (
     add_well_file,
     add_work_limit,
     number,
+    parameters_text,
     png_path,
     user_well_from_args,
 )
@@ -95,7 +96,7 @@ def run(args: argparse.Namespace) -> Output:
     else:
         well_file, given, _ = user
         result = well_billiard(well_file, given, **runs)
-        well = " ".join(f"{k}={v:g}" for k, v in result.table.parameters.items())
+        well = parameters_text(result.table.parameters)
     data = result.as_dict()
     t = result.table
     kmin, kmax = t.curvature_range()

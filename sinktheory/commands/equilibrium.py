@@ -14,6 +14,7 @@ from ._common import (
     add_json,
     add_well_arguments,
     number,
+    parameters_text,
     png_path,
     user_well_from_args,
     well_from_args,
@@ -70,8 +71,7 @@ def run(args: argparse.Namespace) -> Output:
     else:
         well_file, given, check = user
         law = well_law(well_file, args.particles, args.total_energy, given, well_check=check)
-        values = " ".join(f"{k}={v:g}" for k, v in law.parameters.items()) or "(no parameters)"
-        well = f"{values}, leading degree 2n = {2 * law.n:g} at the centre"
+        well = f"{parameters_text(law.parameters)}, leading degree 2n = {2 * law.n:g} at the centre"
     s = law.summary(fractions=fractions)
     data = s.as_dict()
     del data["s"], data["pdf"], data["cdf"], data["law"]["log_density"]

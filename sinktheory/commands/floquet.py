@@ -24,7 +24,15 @@ import argparse
 from .._generated.shapes import NAMES as SHAPE_NAMES
 from ..errors import ParameterError
 from . import HELP as HELPS
-from ._common import Output, add_json, add_well_file, number, png_path, user_well_from_args
+from ._common import (
+    Output,
+    add_json,
+    add_well_file,
+    number,
+    parameters_text,
+    png_path,
+    user_well_from_args,
+)
 
 __all__ = ["add_arguments", "HELP", "NAME", "run"]
 
@@ -82,12 +90,12 @@ def _user_well(args: argparse.Namespace, user) -> Output:
     well, given, check = user
     f = well_floquet(well, args.amplitude, given, well_check=check)
     data = f.as_dict()
-    values = " ".join(f"{k}={v:g}" for k, v in f.parameters.items()) or "no parameters"
     state = "stable" if f.stable else "unstable"
     rho = ", ".join(f"{complex(r):.12g}" for r in f.multipliers)
     lines = [
-        f"{f.name} well {values}: orbit on y = 0 from x = {f.amplitude:g} (energy "
-        f"{f.particle_energy:.12g} above V(0, 0)), period {f.period:.12g} (mass 1)",
+        f"{f.name} well {parameters_text(f.parameters)}: orbit on y = 0 from x = "
+        f"{f.amplitude:g} (energy {f.particle_energy:.12g} above V(0, 0)), period "
+        f"{f.period:.12g} (mass 1)",
         f"  Hill's coefficient V_yy(x, 0) = {f.hill_coefficient}",
         (f"  phi_T/2 = {f.phi_half:.12g}  " if f.symmetric else "  ")
         + f"phi = {f.phi:.12g}  ({state})",

@@ -15,6 +15,7 @@ from ._common import (
     add_json,
     add_well_arguments,
     number,
+    parameters_text,
     png_path,
     user_well_from_args,
     well_from_args,
@@ -44,10 +45,9 @@ def _user_well(args: argparse.Namespace, user) -> Output:
     well, given, check = user
     plot = png_path("plot", args.plot)
     s = user_well_summary(well, args.particle_energy, given, well_check=check)
-    values = " ".join(f"{k}={v:g}" for k, v in s.parameters.items()) or "no parameters"
     text = "\n".join(
         [
-            f"{s.name} well  {values}",
+            f"{s.name} well  {parameters_text(s.parameters)}",
             f"  V(x, y)               {s.potential}",
             f"  minimum at (0, 0)     {s.minimum}",
             f"  {s.escape}",
