@@ -159,6 +159,7 @@ GLOSSARY: dict[str, str] = {
     "omega": "the frequency grid (LO, HI, COUNT) of a wavelet map",
     "run": "which run",
     "amplitude": "A0: the amplitude of the oscillator x(t)",
+    "amplitude_range": "A0 grid: amplitudes LO, HI, COUNT of a Floquet chart of a well file",
     "order": "the highest order i of the successive approximations",
     "lam": "Lam: the coefficient of the pure Hill equation",
     "beta_range": "beta grid LO HI COUNT",

@@ -8,7 +8,9 @@ Modes (exactly one of):
   stability intervals whose ends are located by root finding (not read off the grid);
 * ``--well FILE`` (``--well-param NAME=VALUE``): a user's well file, on the orbit along
   y = 0 with turning point x = ``--amplitude`` (:func:`sinktheory.floquet.well_floquet`),
-  refused with the reason when y = 0 is not invariant.
+  or a chart over ``--amplitude-range LO HI COUNT`` with located boundaries
+  (:func:`sinktheory.floquet.well_scan`); refused with the reason when y = 0 is not
+  invariant.
 
 Huge numbers.  In deeply unstable zones phi and the multipliers can exceed float range.
 A value whose magnitude is below 1e300 (and, for the small multiplier, above 1e-300) is
@@ -61,6 +63,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--amplitude", type=number, default=1.0, help="amplitude A0 of x(t) (default 1; with "
         "--well the turning point x = A0 of the orbit on y = 0)",
     )  # fmt: skip
+    parser.add_argument(
+        "--amplitude-range", nargs=3, type=number, metavar=("LO", "HI", "COUNT"),
+        help="with --well: a chart over the amplitude, boundaries located",
+    )  # fmt: skip
     parser.add_argument("--plot", metavar="FILE.png", help="chart phi_{T/2} (range modes)")
     add_json(parser)
 
@@ -83,12 +89,24 @@ def _problem(args: argparse.Namespace, beta_mode: bool):
 
 
 def _user_well(args: argparse.Namespace, user) -> Output:
-    from ..floquet import well_floquet
+    from ..floquet import well_hill, well_scan
 
     if args.plot is not None:
         raise ParameterError("plot", args.plot, "used with --beta-range or --lam-range")
     well, given, check = user
-    f = well_floquet(well, args.amplitude, given, well_check=check)
+    hill = well_hill(well, given, well_check=check)
+    if args.amplitude_range is not None:
+        lo, hi, count = args.amplitude_range
+        if not isinstance(count, int):
+            raise ParameterError("COUNT", count, "an integer >= 2")
+        chart = well_scan(hill, lo, hi, count)
+        which = "phi_T/2" if chart.symmetric else "phi"
+        lines = [f"{chart.name} well {parameters_text(chart.parameters)}: {which} over the "
+                 f"amplitude in [{lo:g}, {hi:g}]"]  # fmt: skip
+        lines += [f"  stable  [{a:.12g}, {b:.12g}]" for a, b in chart.stable_intervals]
+        lines += [f"  {which} = {t:g} at A = {a:.12g}" for a, t in chart.boundaries]
+        return Output(chart.as_dict(), "\n".join(lines))
+    f = hill.at(args.amplitude)
     data = f.as_dict()
     state = "stable" if f.stable else "unstable"
     rho = ", ".join(f"{complex(r):.12g}" for r in f.multipliers)
@@ -108,6 +126,8 @@ def run(args: argparse.Namespace) -> Output:
     user = user_well_from_args(args)
     if user is not None:
         return _user_well(args, user)
+    if args.amplitude_range is not None:
+        raise ParameterError("amplitude_range", args.amplitude_range, "used with --well FILE")
     if not (args.beta is not None or args.lam is not None or args.beta_range or args.lam_range):
         raise ParameterError(
             "beta", None, "one of --beta, --lam, --beta-range, --lam-range or --well given"

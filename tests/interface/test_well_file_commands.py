@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 from _cli import BUILT_IN, ELLIPTIC, HH, PAPER, refused_well, run_cli, write_well_file
-from scipy import integrate, optimize
+from scipy import integrate, optimize, special
 
 ELLIPSE = {"a": 0.3, "b": 0.25, "gamma": 1.0, "n": (4, (1, 20))}
 #: the built-in shapes' rigid walls, as wall ratios (level 1 on the wall)
@@ -177,6 +177,21 @@ def test_floquet_of_henon_heiles_turned_is_the_monodromy_over_the_quadrature_per
     assert not data["symmetric"]
     assert data["period"] == pytest.approx(period, rel=1e-12)  # measured 8e-15
     assert data["phi"] == pytest.approx((end[2] + end[5]) / 2, abs=1e-12)  # measured 9e-15
+
+
+def test_floquet_amplitude_chart_finds_the_mathieu_tongue(tmp_path, capsys):
+    # V = (x^2 + k y^2)/2 + c x y^2: x = A cos t and y'' + (k + 2 c A cos t) y = 0, in
+    # t = 2 tau Mathieu's y'' + (a - 2 q cos 2 tau) y = 0 with a = 4 k, q = -4 c A; at
+    # k = 1.2 the motion is stable until a_2(q) = a (SciPy's characteristic value)
+    path = write_well_file(tmp_path, "tilted", "(x**2 + k*y**2)/2 + c*x*y**2",
+                           {"k": 1.2, "c": 0.3})  # fmt: skip
+    data = cli_json(["floquet", "--well", str(path), "--amplitude-range", "0.5", "1.5", "5"],
+                    capsys)  # fmt: skip
+    q = optimize.brentq(lambda q: special.mathieu_a(2, q) - 4.8, 0.1, 3.0, xtol=1e-15)
+    assert [b[1] for b in data["boundaries"]] == [1.0]
+    assert data["boundaries"][0][0] == pytest.approx(q / 1.2, rel=1e-11)  # measured 6e-14
+    assert data["stable_intervals"] == [[0.5, data["boundaries"][0][0]]]
+    assert data["stable"] == [True, True, True, True, False]  # A = 0.5, 0.75, ..., 1.5
 
 
 def test_floquet_refuses_henon_heiles_with_the_reason(files, capsys, tmp_path, monkeypatch):
