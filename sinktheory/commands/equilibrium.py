@@ -56,13 +56,12 @@ def run(args: argparse.Namespace) -> Output:
     from ..equilibrium import equilibrium_law, well_law
     from ..equilibrium.law import check_fractions
     from ..model import Sink
-    from ..validation import positive
 
     user = user_well_from_args(args)
     if user is None:
         sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
-    else:
-        positive("mass", args.mass)  # validated, though the law does not depend on it
+    else:  # k and m validated as for a Sink, though the law does not depend on m
+        Sink.check_particles(args.particles, args.mass)
     fractions = check_fractions(args.fractions)
     plot = png_path("plot", args.plot)
     if user is None:
