@@ -53,6 +53,16 @@ r*(theta) of V = e along each ray (bisection to rounding, a scan that checks the
 star-shaped from the centre), the trapezoid rule with the rays doubled until two sums
 agree to :data:`AREA_RTOL`; :mod:`sinktheory.equilibrium.area` uses the same quadrature.
 
+Small energies (:func:`leading_order`)
+--------------------------------------
+Near the centre V - V(0, 0) = lambda^d c(x, y) + o(lambda^d) on the points (lambda x,
+lambda y), lambda -> 0, where d and the homogeneous form c are found symbolically (the
+leading term in lambda, :meth:`sympy.Expr.as_leading_term`).  When c > 0 in every
+direction the basin at small e is the region c < e scaled by e^(1/d), so
+A(e) = A_c e^(2/d) (1 + o(1)): the exponent 2/d is what the equilibrium law needs.  A form
+that vanishes along a direction (x^2 + y^4: leading x^2) has a basin that is not such a
+scaling, and is refused.
+
 Examples
 --------
 >>> from sinktheory.userwell import UserWell
@@ -72,7 +82,7 @@ import numpy as np
 import sympy as sp
 from scipy import ndimage, optimize
 
-from .errors import NumericalError, WellDefinitionError
+from .errors import NumericalError, ParameterError, WellDefinitionError
 from .symbolic import AtomForm, gradient_in_ratios, hessian_in_ratios, lift_powers, x, y
 
 __all__ = [
@@ -82,8 +92,11 @@ __all__ = [
     "escape",
     "FAR_RADIUS",
     "FIRST_BOX",
+    "FORM_DIRECTIONS",
     "GRID",
     "guards",
+    "leading_order",
+    "LeadingOrder",
     "MAX_RAYS",
     "numeric",
     "NumericWell",
@@ -113,6 +126,116 @@ _EIGHT = np.ones((3, 3), dtype=bool)
 _SCAN, _REACH_STEPS = 65, 16
 #: Most pass nodes of one grid from which Newton's method looks for the saddle.
 _NEWTON_TRIES = 64
+
+
+@dataclass(frozen=True)
+class LeadingOrder:
+    """V - V(0, 0) = lambda^degree form(x, y) + o(lambda^degree) on (lambda x, lambda y),
+    with ``form`` > 0 in every direction (:func:`leading_order`)."""
+
+    degree: sp.Rational
+    form: sp.Expr
+
+    @property
+    def area_exponent(self) -> sp.Rational:
+        """2 / degree: A(e) ~ e^(2/degree) as e -> 0."""
+        return 2 / self.degree
+
+    def describe(self) -> str:
+        """One line: the leading term and what it gives."""
+        return (
+            f"V - V(0, 0) = lambda^{self.degree} ({self.form}) + o(lambda^{self.degree}) at "
+            f"(lambda x, lambda y), the form > 0 in every direction: "
+            f"A(e) ~ e^({self.area_exponent})"
+        )
+
+
+#: Directions on which the leading form must be positive (:func:`leading_order`).
+FORM_DIRECTIONS = 256
+
+
+def leading_order(V: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None,
+                  name: str = "V") -> LeadingOrder:  # fmt: skip
+    """The leading term of V - V(0, 0) at the centre (module docstring), at ``values``.
+
+    Raises
+    ------
+    WellDefinitionError
+        SymPy cannot find the leading term, its degree is not a positive number, or the
+        form is not positive in every direction (exactly for a polynomial form, else on
+        :data:`FORM_DIRECTIONS` directions): A(e) is then not a power of e at small e.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> hh = UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})
+    >>> order = leading_order(hh.potential)
+    >>> order.degree, order.form, order.area_exponent
+    (2, x**2/2 + y**2/2, 1)
+    >>> leading_order(UserWell("q", "x**2 + y**4", {}).potential)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.WellDefinitionError: well V: 'x**2' is refused: the leading term ...
+    """
+    lam = sp.Dummy("lambda", positive=True)
+    V = V.subs(dict(values or {}))
+    where = f"well {name}"
+    scaled = V.subs({x: lam * x, y: lam * y}, simultaneous=True) - V.subs({x: 0, y: 0})
+    try:
+        lead = scaled.as_leading_term(lam)
+        # lambda L'/L constant: L = form lambda^degree (Euler), form = L at lambda = 1
+        degree = sp.nsimplify(sp.simplify(lam * sp.diff(lead, lam) / lead))
+        form = sp.simplify(lead.subs(lam, 1))
+    except (NotImplementedError, ValueError, TypeError, ZeroDivisionError) as exc:
+        raise WellDefinitionError(
+            where, str(V)[:40], f"the leading term of V at the centre is not found ({exc})"
+        ) from None
+    if not (degree.is_Rational and degree > 0) or form.free_symbols - {x, y}:
+        raise WellDefinitionError(
+            where, str(lead.subs(lam, sp.Symbol("lambda"))), "the leading term of V at the "
+            "centre is not a positive power of lambda times a form in x, y",
+        )  # fmt: skip
+    zero = _vanishing_direction(form)
+    if zero is not None:
+        raise WellDefinitionError(
+            where, str(form), f"the leading term of V - V(0, 0) at the centre, of degree "
+            f"{degree}, is not positive along the direction {zero}: the basin at small "
+            "energy is not a scaled copy of one region, and A(e) not a power of e",
+        )  # fmt: skip
+    return LeadingOrder(degree, form)
+
+
+def _vanishing_direction(form: sp.Expr) -> str | None:
+    """A direction (x, y) where ``form`` is not > 0, as text, or None: exactly for a
+    polynomial (a real root of form(t, 1), or form(1, 0) <= 0), else on
+    :data:`FORM_DIRECTIONS` directions with the axes and diagonals exact."""
+    if form.is_polynomial(x, y):
+        t = sp.Dummy("t", real=True)
+        if not form.subs({x: 1, y: 0}) > 0:
+            return "(1, 0)"
+        on_line = sp.Poly(sp.expand(form.subs({x: t, y: 1})), t)
+        if on_line.is_zero:
+            return "(t, 1)"
+        roots = sp.real_roots(on_line)
+        if roots:
+            return f"({roots[0]}, 1)"
+        if not form.subs({x: 0, y: 1}) > 0:
+            return "(0, 1)"
+        return None
+    k = np.arange(FORM_DIRECTIONS)
+    theta = 2 * np.pi * k / FORM_DIRECTIONS
+    cos, sin = np.cos(theta), np.sin(theta)
+    quarter = FORM_DIRECTIONS // 4
+    cos[k % (2 * quarter) == quarter] = 0.0  # the y axis
+    sin[k % (2 * quarter) == 0] = 0.0  # the x axis
+    diagonal = k % quarter == quarter // 2
+    cos[diagonal] = np.sign(cos[diagonal]) * np.sqrt(0.5)
+    sin[diagonal] = np.sign(sin[diagonal]) * np.sqrt(0.5)
+    bad = ~(numeric(form)(cos, sin) > 0)
+    if bad.any():
+        i = int(np.argmax(bad))
+        return f"({cos[i]:.6g}, {sin[i]:.6g})"
+    return None
 
 
 def numeric(expr: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None):
@@ -607,8 +730,32 @@ class Basin:
         """Bounds of |x|, |y| over the basin at ``energy`` (:func:`reach`)."""
         return reach(self.well, energy, self.escape)
 
-    def area(self, energy: float) -> float:
-        """A(e), the area of the basin at ``energy`` (:func:`star_area`, a full turn)."""
-        r = self.reach(energy)
-        r_max = 1.000001 * math.hypot(r.x_max, r.y_max)
-        return star_area(self.well.f, r.energy, r_max, f"{self.well.name}")
+    @property
+    def escape_energy(self) -> float:
+        """The escape energy measured from V(0, 0) (inf: bounded as far as float64 reaches)."""
+        return self.escape.energy - self.well.v0
+
+    def check_energy(self, energy: float, *, name: str = "particle_energy") -> float:
+        """``energy``, measured from V(0, 0), if it lies in (0, :attr:`escape_energy`);
+        else a ParameterError naming ``name``."""
+        try:
+            e = float(energy)
+        except (TypeError, ValueError):
+            e = math.nan
+        if not (e > 0 and e < self.escape_energy) or isinstance(energy, bool):
+            raise ParameterError(
+                name, energy, f"in (0, {self.escape_energy:.9g}): above V(0, 0) and below the "
+                f"escape energy of the {self.well.name} well (measured from V(0, 0))",
+                why=self.escape.describe(),
+            )  # fmt: skip
+        return e
+
+    def area(self, energy: float, *, within: float | None = None) -> float:
+        """A(e), the area of the basin at ``energy`` (:func:`star_area`, a full turn).
+
+        ``within``: the rays end at that radius instead of past this energy's reach (for
+        many energies below one whose reach has been found once: the basins nest)."""
+        if within is None:
+            r = self.reach(energy)
+            within, energy = 1.000001 * math.hypot(r.x_max, r.y_max), r.energy
+        return star_area(self.well.f, energy, within, f"{self.well.name}")

@@ -70,6 +70,15 @@ beta) (tests/oscillator/test_floquet_vs_simulation.py, agreement 4e-6).  How far
 predict the chaos of the oscillating container (mu = 0.2, Figs. 3 and 11) is measured
 by ``sinktheory reproduce`` and stated in its report.
 
+A user's well (:func:`well_floquet`).  When y = 0 is invariant (decided symbolically,
+:func:`sinktheory.symbolic.normal_mode`), the orbit x'' = -dV/dx(x, 0) started at rest at
+x = A and Hill's equation y'' + V_yy(x(t), 0) y = 0 are integrated together (DOP853 of
+:func:`scipy.integrate.solve_ivp`, mass 1: the mass only rescales time).  The
+reversibility argument above holds about every turning point, so without any symmetry
+phi_T = y1 y2' + y2 y1' at the other turning point (half a period); when V(x, 0) and V_yy(x,
+0) are both even in x (decided symbolically) the quarter-period formulas hold at x = 0
+and give phi_half, as for the registered shapes.
+
 Examples
 --------
 >>> chart = pure_hill([0.5], n=2)
@@ -121,6 +130,12 @@ __all__ = [
     "ROOT_XTOL",
     "scan",
     "StabilityScan",
+    "well_floquet",
+    "well_hill",
+    "WellFloquet",
+    "WellHill",
+    "well_scan",
+    "WellScan",
 ]
 
 #: Largest |lambda| A0^2 accepted: at 1e10 one quarter period takes about 1 s; at 1e12
@@ -761,18 +776,9 @@ def scan(problem: HillProblem, lo: float, hi: float, count: int) -> StabilitySca
             root = _brentq(f, grid[i], grid[i + 1], f"{name}(Q)")
             boundaries.append(Boundary(root, name, phi_value))
     boundaries.sort(key=lambda b: b.value)
-    cuts = [lo] + [b.value for b in boundaries if lo < b.value < hi] + [hi]
-    cuts = sorted(set(cuts))
-    mids = np.array([(a + b) / 2 for a, b in zip(cuts[:-1], cuts[1:], strict=True)])
-    stable_mid = problem.evaluate(mids).stable if mids.size else np.zeros(0, bool)
-    intervals: list[tuple[float, float]] = []
-    for (a, b), ok in zip(zip(cuts[:-1], cuts[1:], strict=True), stable_mid, strict=True):
-        if not ok:
-            continue
-        if intervals and intervals[-1][1] == a:
-            intervals[-1] = (intervals[-1][0], b)
-        else:
-            intervals.append((a, b))
+    intervals = _stable_intervals(
+        lo, hi, [b.value for b in boundaries], lambda mids: problem.evaluate(mids).stable
+    )
     resonances: list[float] = []
     f_phi = _scalar(one, "phi_half")
     h = chart.phi_half
@@ -784,6 +790,23 @@ def scan(problem: HillProblem, lo: float, hi: float, count: int) -> StabilitySca
             if vals[k] * vals[k + 1] < 0:
                 resonances.append(_brentq(f_phi, pts[k], pts[k + 1], "phi_half"))
     return StabilityScan(chart, boundaries, intervals, resonances)
+
+
+def _stable_intervals(lo: float, hi: float, cuts, stable_at) -> list[tuple[float, float]]:
+    """The maximal stable intervals of [lo, hi] cut at the boundaries ``cuts``, each piece
+    decided at its midpoint by ``stable_at(midpoints)`` (an array of bools)."""
+    cuts = sorted({lo, hi, *(c for c in cuts if lo < c < hi)})
+    mids = np.array([(a + b) / 2 for a, b in zip(cuts[:-1], cuts[1:], strict=True)])
+    stable_mid = stable_at(mids) if mids.size else np.zeros(0, bool)
+    intervals: list[tuple[float, float]] = []
+    for (a, b), ok in zip(zip(cuts[:-1], cuts[1:], strict=True), stable_mid, strict=True):
+        if not ok:
+            continue
+        if intervals and intervals[-1][1] == a:
+            intervals[-1] = (intervals[-1][0], b)
+        else:
+            intervals.append((a, b))
+    return intervals
 
 
 def rigid_limit_phi_half(lam, amplitude: float = 1.0) -> np.ndarray:
@@ -832,3 +855,301 @@ def point(p: dict, seed: int) -> dict:
     )
     items = c.items()  # the chart's quantities (sinktheory.results protocol)
     return {name: items["lambda" if name == "lam" else name][0] for name in POINT_QUANTITIES}
+
+
+# ----------------------------------------------------------------- a user's well
+#: Per-step relative tolerance of :func:`well_floquet`'s integration.
+WELL_RTOL = 1e-13
+#: Points of the check that V(x, 0) grows from the centre to the amplitude.
+_AXIS_POINTS = 1024
+
+
+@dataclass(frozen=True)
+class WellFloquet(Result):
+    """Floquet data of the normal mode y = 0 of a user's well at one amplitude
+    (:func:`well_floquet`).
+
+    Attributes
+    ----------
+    name : the well's name
+    parameters : its parameter values by name
+    amplitude : A, the turning point x = A > 0 of the orbit on y = 0 (started at rest)
+    particle_energy : V(A, 0) - V(0, 0)
+    period : T of the orbit, for mass 1 (x'' = -dV/dx; a mass mu multiplies it by sqrt(mu)
+        and changes no multiplier)
+    hill_coefficient : q(x) = V_yy(x, 0), as text
+    symmetric : V(x, 0) and q even in x (symbolic): the quarter-period formulas hold
+    phi_half : half trace of M(T/2) (symmetric wells; NaN otherwise)
+    phi : half trace of M(T)
+    stable : abs(phi_half) < 1 from the factors' signs (symmetric), abs(phi) < 1 otherwise
+    multipliers : rho_1, rho_2 over T (complex)
+    growth_per_period : ln of the largest abs(rho) (0 where stable)
+    """
+
+    name: str
+    parameters: dict
+    amplitude: float
+    particle_energy: float
+    period: float
+    hill_coefficient: str
+    symmetric: bool
+    phi_half: float
+    phi: float
+    stable: bool
+    multipliers: np.ndarray
+
+    @property
+    def growth_per_period(self) -> float:
+        """ln of the largest abs(rho) over T (0 where stable)."""
+        return float(np.log(np.max(np.abs(self.multipliers)))) if not self.stable else 0.0
+
+    DIMS = {"multipliers": ("multiplier",)}
+
+    def items(self) -> dict:
+        """The fields and the growth per period."""
+        return {**super().items(), "growth_per_period": self.growth_per_period}
+
+
+def _even(expr) -> bool:
+    """expr(-x) == expr(x) identically (SymPy)."""
+    import sympy as sp
+
+    from .symbolic import x
+
+    return sp.simplify(expr.subs(x, -x) - expr) == 0
+
+
+def well_floquet(
+    well, amplitude: float, values=None, *, well_check=None, rtol: float = WELL_RTOL
+) -> WellFloquet:
+    """Floquet multipliers of the normal mode y = 0 of a user's well (a
+    :class:`~sinktheory.userwell.UserWell` at its parameter ``values`` by name, defaults for
+    the others; ``well_check``: its :func:`~sinktheory.userwell.check_well` there, if run)
+    on the orbit with turning point x = ``amplitude`` (module docstring):
+    ``well_hill(...).at(amplitude)``.
+
+    Raises
+    ------
+    ParameterError
+        y = 0 is not invariant (the reason is given), or the amplitude is not > 0, or its
+        orbit does not stay in the basin (V(x, 0) must grow from the centre to it, below
+        the escape energy); a refused well (WellDefinitionError).
+    NumericalError
+        The integration failed or the solutions left float range.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> ellipse = UserWell("ellipse", "(x**2 + 0.64*y**2)/2", {})  # x = A cos t
+    >>> f = well_floquet(ellipse, 0.5)  # y'' + 0.64 y = 0: phi_half = cos(0.8 pi)
+    >>> f.symmetric, round(f.phi_half, 10), round(math.cos(0.8 * math.pi), 10), f.stable
+    (True, -0.8090169944, -0.8090169944, True)
+    """
+    return well_hill(well, values, well_check=well_check, rtol=rtol).at(amplitude)
+
+
+def well_hill(well, values=None, *, well_check=None, rtol: float = WELL_RTOL) -> WellHill:
+    """The :class:`WellHill` of a user's well: checked, y = 0 decided invariant (else a
+    ParameterError with the reason), its symmetry decided, ready to be evaluated at
+    amplitudes (arguments as :func:`well_floquet`)."""
+    import sympy as sp
+
+    from .symbolic import mu, normal_mode, y
+    from .userwell import UserWell, check_well
+
+    if not isinstance(well, UserWell):
+        raise ParameterError("well", well, "a sinktheory.userwell.UserWell")
+    given = dict(values or {})
+    report = check_well(well, **given) if well_check is None else well_check
+    exact = well.values(**given)
+    mode = normal_mode(well, exact)
+    if not mode.invariant:
+        raise ParameterError(
+            "well", well.name, "a well whose line y = 0 is invariant, for Floquet multipliers",
+            why=mode.reason,
+        )  # fmt: skip
+    on_axis = well.potential.subs(exact).subs(y, 0)
+    q = sp.simplify(mode.hill_coefficient.subs(exact) * mu)
+    return WellHill(
+        name=well.name,
+        parameters={k.name: float(val) for k, val in exact.items()},
+        basin=report.basin,
+        hill_coefficient=str(q),
+        symmetric=_even(on_axis) and _even(q),
+        rtol=v.positive("rtol", rtol),
+    )
+
+
+@dataclass(frozen=True)
+class WellHill:
+    """Hill's equation on the normal mode y = 0 of a user's well, as a family in the
+    amplitude (:func:`well_hill`; fields as in :class:`WellFloquet`, ``basin`` the well's
+    :class:`~sinktheory.basin.Basin`)."""
+
+    name: str
+    parameters: dict
+    basin: object
+    hill_coefficient: str
+    symmetric: bool
+    rtol: float
+
+    def _factors(self, amplitude) -> tuple[float, float, float, float, float, float]:
+        """(A, energy, time to the event, y1, y1', y2, y2' there) for a checked A."""
+        from scipy.integrate import solve_ivp
+
+        from .errors import NumericalError
+
+        a = v.positive("amplitude", amplitude)
+        well = self.basin.well
+        xs = np.linspace(0.0, a, _AXIS_POINTS + 1)
+        axis = well.f(xs, np.zeros_like(xs)) - well.v0
+        energy = float(axis[-1])
+        if not (np.all(np.diff(axis) > 0) and energy < self.basin.escape_energy):
+            raise ParameterError(
+                "amplitude", a, f"a turning point of an orbit on y = 0 inside the basin of "
+                f"the {self.name} well (V(x, 0) growing from the centre to it, below the "
+                f"escape energy {self.basin.escape_energy:.6g})",
+                why=f"V(A, 0) - V(0, 0) = {energy:.6g}",
+            )  # fmt: skip
+
+        def rhs(t, s):
+            gx = well.gradient(s[0], 0.0)[0]
+            qx = well.hessian(s[0], 0.0)[1, 1]
+            return [s[1], -gx, s[3], -qx * s[2], s[5], -qx * s[4]]
+
+        if self.symmetric:  # x = 0: a quarter period
+
+            def event(t, s):
+                return s[0]
+
+            event.direction = -1.0
+        else:  # x' = 0 again: the other turning point, half a period
+
+            def event(t, s):
+                return s[1]
+
+            event.direction = 1.0
+        event.terminal = True
+        start = [a, 0.0, 1.0, 0.0, 0.0, 1.0]
+        # a bound of the time to the event: 1000 times the flight over 2 A at the speed
+        # sqrt(2 e) of the centre (a power-law well takes less than 1.6 flights over A)
+        horizon = 2e3 * a / math.sqrt(2.0 * energy)
+        kwargs = dict(method="DOP853", rtol=self.rtol, atol=self.rtol * 1e-3)
+        first = solve_ivp(rhs, (0.0, horizon), start, events=event, **kwargs)
+        where = f"Floquet of the {self.name} well at amplitude {a:g}"
+        if first.status != 1:
+            raise NumericalError(
+                f"{where}: the orbit on y = 0 did not reach "
+                f"{'x = 0' if self.symmetric else 'its other turning point'} by t = "
+                f"{horizon:.6g} ({first.message})"
+            )
+        t_event = float(first.t_events[0][0])
+        # integrated again to that time, so that the last step ends on it (no interpolation)
+        end = solve_ivp(rhs, (0.0, t_event), start, **kwargs).y[:, -1]
+        if not np.all(np.isfinite(end)):
+            raise NumericalError(f"{where}: the solutions left float range")
+        return (a, energy, t_event, *(float(f) for f in end[2:]))
+
+    def trace(self, amplitude: float) -> float:
+        """phi_half (symmetric) or phi (otherwise) at ``amplitude``: +-1 on the boundaries
+        of stability."""
+        _, _, _, y1, dy1, y2, dy2 = self._factors(amplitude)
+        return y1 * dy2 + y2 * dy1
+
+    def at(self, amplitude: float) -> WellFloquet:
+        """The :class:`WellFloquet` at ``amplitude``."""
+        a, energy, t_event, y1, dy1, y2, dy2 = self._factors(amplitude)
+        trace_half = y1 * dy2 + y2 * dy1
+        if self.symmetric:
+            phi_half = float(trace_half)
+            phi = 2.0 * phi_half * phi_half - 1.0
+            stable = bool(y2 * dy1 < 0 < y1 * dy2)
+            period = 4.0 * t_event
+        else:
+            phi_half, phi = math.nan, float(trace_half)
+            stable = bool(abs(phi) < 1)
+            period = 2.0 * t_event
+        root = np.sqrt(complex(phi * phi - 1.0))
+        return WellFloquet(
+            name=self.name,
+            parameters=self.parameters,
+            amplitude=a,
+            particle_energy=energy,
+            period=period,
+            hill_coefficient=self.hill_coefficient,
+            symmetric=self.symmetric,
+            phi_half=phi_half,
+            phi=phi,
+            stable=stable,
+            multipliers=np.array([phi + root, phi - root]),
+        )
+
+
+@dataclass(frozen=True)
+class WellScan(Result):
+    """A chart of a user's well's Floquet data over the amplitude (:func:`well_scan`).
+
+    Attributes
+    ----------
+    name, parameters, symmetric : as in :class:`WellFloquet`
+    amplitude : the grid of amplitudes A
+    trace : phi_half (symmetric wells) or phi at each A
+    stable : at each A
+    boundaries : amplitudes where the trace crosses +1 or -1, located by brentq to
+        :data:`ROOT_XTOL`, each with that value
+    stable_intervals : maximal stable intervals of the range (an end equal to the range's
+        end is not a boundary)
+    """
+
+    name: str
+    parameters: dict
+    symmetric: bool
+    amplitude: np.ndarray
+    trace: np.ndarray
+    stable: np.ndarray
+    boundaries: list
+    stable_intervals: list
+
+    DIMS = {"amplitude": ("amplitude",), "trace": ("amplitude",), "stable": ("amplitude",)}
+
+
+def well_scan(hill: WellHill, lo: float, hi: float, count: int) -> WellScan:
+    """The Floquet chart of ``hill`` (:func:`well_hill`) on ``count`` amplitudes over
+    [lo, hi], with the stability boundaries between them located: each sign change of
+    trace - 1 or trace + 1 between neighbouring grid points is refined by brentq (two
+    crossings within one cell are missed).
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> tilted = well_hill(UserWell("tilted", "(x**2 + 1.2*y**2)/2 + 0.3*x*y**2", {}))
+    >>> chart = well_scan(tilted, 0.5, 1.5, 5)  # y'' + (1.2 + 0.6 A cos t) y = 0
+    >>> [(round(a, 6), round(b, 6)) for a, b in chart.stable_intervals]
+    [(0.5, 1.303935)]
+    """
+    if not isinstance(hill, WellHill):
+        raise ParameterError("hill", hill, "a WellHill (from well_hill)")
+    lo, hi = v.positive("lo", lo), v.finite("hi", hi)
+    count = v.positive_int("count", count, minimum=2, maximum=10_000)
+    if not lo < hi:
+        raise ParameterError("hi", hi, f"> lo = {lo!r}")
+    grid = np.linspace(lo, hi, count)
+    points = [hill.at(a) for a in grid]
+    trace = np.array([p.phi_half if hill.symmetric else p.phi for p in points])
+    boundaries = []
+    for target in (1.0, -1.0):
+        side = np.sign(trace - target)
+        for i in np.nonzero(side[:-1] * side[1:] < 0)[0]:
+            root = _brentq(
+                lambda a, target=target: hill.trace(a) - target, grid[i], grid[i + 1],
+                f"trace = {target:g}",
+            )  # fmt: skip
+            boundaries.append((root, target))
+    boundaries.sort()
+    intervals = _stable_intervals(
+        lo, hi, [b for b, _ in boundaries], lambda mids: [hill.at(m).stable for m in mids]
+    )
+    return WellScan(
+        hill.name, hill.parameters, hill.symmetric, grid, trace,
+        np.array([p.stable for p in points]), boundaries, intervals,
+    )  # fmt: skip

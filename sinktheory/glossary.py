@@ -88,8 +88,8 @@ GLOSSARY: dict[str, str] = {
     "n": "n: the wall stiffness (exponent of the walls; inf is the rigid limit)",
     "gamma": "gamma: the well strength",
     "shape": "the well's shape (flat, symmetric, circular)",
-    "values": "numbers for a well's symbolic parameters, where its general form leaves a "
-    "question open",
+    "values": "numbers for a well's symbolic parameters: a user's well's values by name "
+    "(its defaults for the others), or where a general form leaves a question open",
     "nes_n": "the wall exponent of the 1-D NES",
     # --- particles and runs
     "particles": "k: the number of particles",
@@ -110,6 +110,10 @@ GLOSSARY: dict[str, str] = {
     "sink": "Sink: the well, the particles and their mass",
     "well": "the particles' well: a Well (shape, alpha, beta, n, gamma), a user's well "
     "definition, or on the command line a well file (--well FILE)",
+    "well_param": "NAME=VALUE: a value for a parameter of a well file (--well), within its "
+    "range; the file's defaults otherwise",
+    "well_check": "a user's well as sinktheory.userwell.check_well found it at the given "
+    "values (so that it is not checked twice)",
     # --- analyses
     "spectrum": "the Lyapunov spectrum (QR): all exponents or the D largest",
     "gali": "GALI_K order K",
@@ -160,6 +164,7 @@ GLOSSARY: dict[str, str] = {
     "omega": "the frequency grid (LO, HI, COUNT) of a wavelet map",
     "run": "which run",
     "amplitude": "A0: the amplitude of the oscillator x(t)",
+    "amplitude_range": "A0 grid: amplitudes LO, HI, COUNT of a Floquet chart of a well file",
     "order": "the highest order i of the successive approximations",
     "lam": "Lam: the coefficient of the pure Hill equation",
     "beta_range": "beta grid LO HI COUNT",

@@ -55,6 +55,8 @@ __all__ = [
     "SHAPES",
     "Sink",
     "SinkSummary",
+    "user_well_summary",
+    "UserWellSummary",
     "Well",
     "WellSummary",
 ]
@@ -435,18 +437,31 @@ class Sink:
     def __post_init__(self) -> None:
         if not isinstance(self.well, Well):
             raise ParameterError("well", self.well, "a sinktheory.model.Well")
-        object.__setattr__(
-            self, "particles", v.positive_int("particles", self.particles, maximum=1000)
-        )
-        object.__setattr__(self, "mass", v.positive("mass", self.mass))
-        if self.mass / self.particles < MIN_MU:
+        particles, mass = self.check_particles(self.particles, self.mass)
+        object.__setattr__(self, "particles", particles)
+        object.__setattr__(self, "mass", mass)
+
+    @staticmethod
+    def check_particles(particles: int, mass: float) -> tuple[int, float]:
+        """(k, m) validated: k in [1, 1000], m > 0 and m / k >= :data:`MIN_MU` (also for
+        the particles of a user's well, which is not a :class:`Well`).
+
+        Examples
+        --------
+        >>> Sink.check_particles(4, 0.2)
+        (4, 0.2)
+        """
+        particles = v.positive_int("particles", particles, maximum=1000)
+        mass = v.positive("mass", mass)
+        if mass / particles < MIN_MU:
             raise ParameterError(
                 "mass",
-                self.mass,
-                f">= {MIN_MU:g} x particles = {MIN_MU * self.particles:g}",
+                mass,
+                f">= {MIN_MU:g} x particles = {MIN_MU * particles:g}",
                 why=f"each particle's mass m / k must be >= {MIN_MU:g}: lighter ones make "
                 "the accelerations and the stiffness of the walls overflow",
             )
+        return particles, mass
 
     @property
     def mu(self) -> float:
@@ -667,3 +682,62 @@ class SinkSummary(Result):
     periods: int
     seed: int
     reach: Reach
+
+
+@dataclass(frozen=True)
+class UserWellSummary(Result):
+    """What :func:`user_well_summary` reports of a user's well at its parameter values:
+    the potential, how its minimum at the centre and its escape energy (measured from
+    V(0, 0)) were found, whether y = 0 is a normal mode (and why), its wall ratios, and the
+    reach of a particle of ``particle_energy`` (measured from V(0, 0))."""
+
+    name: str
+    potential: str
+    parameters: dict
+    minimum: str
+    escape_energy: float
+    escape: str
+    y_invariant: bool
+    normal_mode: str
+    wall_ratios: list
+    particle_energy: float
+    reach: Reach
+
+
+def user_well_summary(
+    well, particle_energy: float = 0.5, values=None, *, well_check=None
+) -> UserWellSummary:
+    """The :class:`UserWellSummary` of a user's well (a
+    :class:`~sinktheory.userwell.UserWell`) at its parameter ``values`` by name (its
+    defaults for the others); ``well_check``: its
+    :func:`~sinktheory.userwell.check_well` at those values, if already run.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> s = user_well_summary(UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {}), 0.1)
+    >>> round(s.escape_energy * 6, 12), s.y_invariant, round(s.reach.y, 9)  # y^2/2 - y^3/3 = 0.1
+    (1.0, False, 0.567068923)
+    """
+    from .userwell import UserWell, check_well
+
+    if not isinstance(well, UserWell):
+        raise ParameterError("well", well, "a sinktheory.userwell.UserWell")
+    given = dict(values or {})
+    report = check_well(well, **given) if well_check is None else well_check
+    basin = report.basin
+    e = basin.check_energy(particle_energy)
+    r = basin.reach(basin.well.v0 + e)
+    return UserWellSummary(
+        name=well.name,
+        potential=str(well.potential),
+        parameters={name: float(value) for name, value in report.values.items()},
+        minimum=report.minimum,
+        escape_energy=basin.escape_energy,
+        escape=report.confinement,
+        y_invariant=report.y_invariant,
+        normal_mode=report.y_invariant_reason,
+        wall_ratios=[str(ratio) for ratio in well.wall_ratios],
+        particle_energy=e,
+        reach=Reach(float(r.x_max), float(r.y_max)),
+    )

