@@ -232,8 +232,14 @@ def map_split(ds) -> list[Split]:
     return [split(r, p, s) for r, p, s in zip(runs, span, starts, strict=True)]
 
 
-def stored_split(regular: int, runs: int, periods: float, regular_lambda1: tuple,
-                 chaotic_lambda1: tuple, starts: str = "") -> Split:
+def stored_split(
+    regular: int,
+    runs: int,
+    periods: float,
+    regular_lambda1: tuple,
+    chaotic_lambda1: tuple,
+    starts: str = "",
+) -> Split:
     """A :class:`Split` from what a sweep stores of it (the count of regular runs and each
     group's (mean, standard error); the per-run values, hence the gap, are not kept).
 

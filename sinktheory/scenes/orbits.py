@@ -270,8 +270,11 @@ def generic_runs(cmap) -> str:
             f"regular and chaotic at {mixed.size} and every run regular at "
             f"{int((calls == -1).sum())} of {calls.size} betas")  # fmt: skip
     if mixed.size and mixed.size <= 6:
-        text += " (regular fraction " + ", ".join(
-            f"{100 * frac[j]:.0f} % at {beta[j]:.3f}" for j in mixed) + ")"
+        text += (
+            " (regular fraction "
+            + ", ".join(f"{100 * frac[j]:.0f} % at {beta[j]:.3f}" for j in mixed)
+            + ")"
+        )
     elif mixed.size:
         text += (f" (regular fraction {100 * frac[mixed].min():.0f}-"
                  f"{100 * frac[mixed].max():.0f} %, at beta {beta[mixed].min():.3f} to "
@@ -304,9 +307,12 @@ def _claims(panels, label_of) -> list[Claim]:
                 HOLDS if neg and pos else FAILS,
                 f"Generic starts give chaotic runs at {int(irregular.sum())} of "
                 f"{irregular.size} betas, "
-                + ("on both sides of beta = 0, as the paper says." if neg and pos else
-                   f"only at beta {'< 0' if neg else '> 0' if pos else 'nowhere'}: on the "
-                   "other side every run stays regular over the span."),  # fmt: skip
+                + (
+                    "on both sides of beta = 0, as the paper says."
+                    if neg and pos
+                    else f"only at beta {'< 0' if neg else '> 0' if pos else 'nowhere'}: on the "
+                    "other side every run stays regular over the span."
+                ),  # fmt: skip
             )
         )
         claims.append(_floquet_claim(label, floq, mode))
