@@ -165,7 +165,7 @@ def split_summary(points: list) -> tuple[list[str], dict]:
     >>> lines, data = split_summary(points)
     >>> print("\\n".join(lines))  # doctest: +NORMALIZE_WHITESPACE
     lambda_1 run by run: 1 of 2 point(s) mixed (regular and chaotic runs: their mean
-    lambda_1 depends on the starts), 1 every run chaotic, 0 every run regular
+    lambda_1 depends on the starts), 1 with every run chaotic, 0 with every run regular
       beta=-0.3: runs: 2 of 4 regular (lambda_1 <= 3 ln t/t = 0.017), regular 0.0015 +-
       0.0005, chaotic 0.45 +- 0.05
     >>> data["mixed_points"], data["mixed"][0]["beta"], data["mixed"][0]["regular_fraction"]
@@ -180,8 +180,8 @@ def split_summary(points: list) -> tuple[list[str], dict]:
     lines = [
         f"lambda_1 run by run: {len(mixed)} of {len(points)} point(s) mixed (regular and "
         "chaotic runs: their mean lambda_1 depends on the starts), "
-        f"{len(points) - len(mixed) - regular} every run chaotic, {regular} every run regular"
-        + (f"; starts: {next(iter(starts))}" if once else "")
+        f"{len(points) - len(mixed) - regular} with every run chaotic, {regular} with every "
+        "run regular" + (f"; starts: {next(iter(starts))}" if once else "")
     ]
     for where, s in mixed[:LISTED]:
         at = " ".join(f"{name}={value:g}" if isinstance(value, float) else f"{name}={value}"
