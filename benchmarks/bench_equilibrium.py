@@ -18,10 +18,8 @@ Usage::
    (:mod:`sinktheory.equilibrium.relaxation`; ``bench_relaxation.py`` for more runs).
 4. Kac's predicted return times 1/P(E_c >= f E) for k = 1..5: for which k and f the
    container stays drained longer than 10^4 periods on average.
-5. With ``--map FILE.png``: the ergodicity map (k = 1, 8 runs x 1500 periods after 500,
-   lambda_1 from 4 runs x 200 periods) over the beta ranges of Fig. 3 (flat, alpha 0.5,
-   n = 2 and 10, beta in [-0.7, 0.45]) and Fig. 11 (symmetric, alpha 1, n = 6, the
-   confining beta), 12 beta per panel; a table of the verdicts and the chart.
+5. The ergodicity maps over the beta ranges of Figs. 3 and 11 (lambda_1's runs split
+   into regular and chaotic ones) are ``docs/guide/make_ergodicity.py``.
 
 ``--quick`` divides the periods by 5 (figures then only show that the script runs).
 ``--png`` writes the lifetime chart (Kac against f for k = 1..5 with the k = 1, 2
@@ -187,56 +185,6 @@ def kac_table():
     print("   longer than 10^4 periods: " + ", ".join(f"k={k} f={f:g}" for k, f in held))
 
 
-def ergodicity_maps(path: str, scale: float, seed: int) -> None:
-    from matplotlib.figure import Figure
-
-    from sinktheory.equilibrium.ergodicity import ergodicity_map
-    from sinktheory.model import confining_betas
-    from sinktheory.plot.equilibrium import plot_ergodicity
-
-    panels = [
-        ("Fig. 3a flat n=2", {"alpha": 0.5, "n": 2, "shape": "flat"}, (-0.7, 0.45)),
-        ("Fig. 3b flat n=10", {"alpha": 0.5, "n": 10, "shape": "flat"}, (-0.7, 0.45)),
-        ("Fig. 11 symmetric n=6", {"alpha": 1.0, "n": 6, "shape": "symmetric"}, (-0.6, 1.0)),
-    ]
-    fig = Figure(figsize=(7.0 * len(panels), 5.5), layout="constrained")
-    axes = fig.subplots(2, len(panels))
-    print(
-        "\n5. ergodicity maps (verdict 2: chaotic and sampling the law, 1: chaotic, not "
-        "sampling it, 0: regular)"
-    )
-    for j, (name, well, (lo, hi)) in enumerate(panels):
-        valid = confining_betas(well["alpha"], well["n"], 0.5, shape=well["shape"], lo=lo, hi=hi)
-        betas = np.concatenate(
-            [
-                np.linspace(
-                    a + 0.01, b - 0.01, max(2, round(12 * (b - a) / sum(y - x for x, y in valid)))
-                )
-                for a, b in valid
-            ]
-        )
-        t = time.perf_counter()
-        m = ergodicity_map(
-            betas,
-            seed=seed,
-            progress=False,
-            runs=8,
-            periods=int(2000 * scale),
-            transient=int(500 * scale),
-            **well,
-        )
-        print(f"   {name} ({time.perf_counter() - t:.0f} s)")
-        print("   beta    " + " ".join(f"{b:6.3f}" for b in m.beta))
-        print("   KS      " + " ".join(f"{d:6.3f}" for d in m.ks_distance))
-        print("   p       " + " ".join(f"{p:6.3f}" for p in m.ks_pvalue))
-        print("   lambda1 " + " ".join(f"{x:6.3f}" for x in m.lambda1))
-        print("   verdict " + " ".join(f"{int(x):6d}" for x in m.verdict))
-        plot_ergodicity(m, ax=(axes[0, j], axes[1, j]))
-        axes[0, j].set_title(name, fontsize=9)
-    fig.savefig(path, dpi=120)
-    print(f"   wrote {path}")
-
-
 def main() -> None:
     from machine import describe  # benchmarks/ is on sys.path when run as a script
 
@@ -245,7 +193,6 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--png", default=None)
     parser.add_argument("--seed", type=int, default=1)
-    parser.add_argument("--map", default=None, help="draw the ergodicity maps into this PNG")
     args = parser.parse_args()
     scale = 0.2 if args.quick else 1.0
     print(
@@ -264,8 +211,6 @@ def main() -> None:
         ]
     relaxation_table(scale, args.seed)
     kac_table()
-    if args.map:
-        ergodicity_maps(args.map, scale, args.seed)
     if args.png:
         from sinktheory.plot.equilibrium import plot_lifetimes
 

@@ -13,7 +13,7 @@ import numpy as np
 
 from ..results import Result, plain
 from ..runstats import ensemble_mean
-from .verdicts import Split, split
+from .verdicts import Split, box_starts, split
 
 __all__ = ["ChaosResult", "PER_RUN_NOTE", "sali_from_gali2", "time_average"]
 
@@ -148,10 +148,7 @@ class ChaosResult(Result):
     def starts(self) -> str:
         """The start distribution, in words (the sink's runs: from their parameters)."""
         p = self.parameters
-        if "box" not in p:
-            return "start states given to indicators"
-        return (f"particles at rest, uniform in (-{p['box']:g}, {p['box']:g})^2 around the "
-                "centre; container at X = sqrt(2 E0) at rest")  # fmt: skip
+        return box_starts(p["box"]) if "box" in p else "start states given to indicators"
 
     def split(self) -> Split:
         """:attr:`lambda1` split into regular and chaotic runs

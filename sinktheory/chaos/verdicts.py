@@ -9,9 +9,11 @@ by two standard errors:
 
 and *regular* otherwise.  The Floquet theory predicts regular motion where y = 0 is stable
 (with the container fixed); :func:`agreement` gives the share of betas of a chaos map
-(:func:`sinktheory.sweep.chaosmap.chaos_map`) where the two verdicts coincide.  The
-transverse exponent's verdict (the same test on it) measures how much of the chaos comes
-from the instability of y = 0 itself.
+(:func:`sinktheory.sweep.chaosmap.chaos_map`) where the two coincide, judging the map run
+by run (:func:`map_calls`: every run regular, every run chaotic, or mixed, which is
+listed with its regular fraction and not scored).  The transverse exponent's verdict
+(the test above on its mean) measures how much of the chaos comes from the instability
+of y = 0 itself.
 
 **Mixed ensembles are split, not averaged.**  Where the phase space holds islands, some
 runs of an ensemble are regular and the others chaotic, and the mean lambda_1 depends on
@@ -54,9 +56,13 @@ __all__ = [
     "THRESHOLD_FACTOR",
     "Split",
     "agreement",
+    "box_starts",
     "chaotic",
+    "map_calls",
     "map_split",
+    "point_values",
     "split",
+    "stored_split",
     "threshold",
     "verdicts",
 ]
@@ -197,19 +203,75 @@ def split(lambda1, periods: float, starts: str = "") -> Split:
                  gap, starts)  # fmt: skip
 
 
+def point_values(ds, name: str, default):
+    """Parameter ``name`` of each point of a sweep, in the order of
+    ``ds.lambda1.values.ravel()``: its coordinate where it was swept, else its fixed value
+    (an attribute), else ``default``."""
+    if name in ds.coords and ds[name].dims:
+        return ds[name].broadcast_like(ds.lambda1).transpose(*ds.lambda1.dims).values.ravel()
+    return np.full(ds.lambda1.size, ds.attrs.get(name, default), dtype=object)
+
+
+def box_starts(box) -> str:
+    """The sink's start distribution in words, for a start box of half-width ``box``."""
+    return "" if box is None else (
+        f"particles at rest, uniform in (-{box:g}, {box:g})^2 around the centre; container "
+        "at X = sqrt(2 E0) at rest")  # fmt: skip
+
+
 def map_split(ds) -> list[Split]:
     """:func:`split` at every point of a chaos map (the ``chaos`` sweep kind; its per-run
     ``lambda1_runs``), in the order of ``ds.lambda1.values.ravel()``.  Each point's span
-    is the periods its lambda_1 ran less the transient; the starts are the map's box."""
+    is the periods its lambda_1 ran less the transient; the starts are the map's box
+    (transient and box read per point where they were swept)."""
     runs = ds.lambda1_runs.transpose(..., "run").values
     runs = runs.reshape(-1, runs.shape[-1])
     ran = np.broadcast_to(ds.lambda1_periods.values, ds.lambda1.shape).ravel()
-    span = ran - float(ds.attrs.get("transient", 0))
-    box = ds.attrs.get("box")
-    starts = "" if box is None else (
-        f"particles at rest, uniform in (-{box:g}, {box:g})^2 around the centre; container "
-        "at X = sqrt(2 E0) at rest")  # fmt: skip
-    return [split(r, p, starts) for r, p in zip(runs, span, strict=True)]
+    span = ran - point_values(ds, "transient", 0).astype(float)
+    starts = [box_starts(b) for b in point_values(ds, "box", None)]
+    return [split(r, p, s) for r, p, s in zip(runs, span, starts, strict=True)]
+
+
+def stored_split(
+    regular: int,
+    runs: int,
+    periods: float,
+    regular_lambda1: tuple,
+    chaotic_lambda1: tuple,
+    starts: str = "",
+) -> Split:
+    """A :class:`Split` from what a sweep stores of it (the count of regular runs and each
+    group's (mean, standard error); the per-run values, hence the gap, are not kept).
+
+    >>> s = stored_split(3, 4, 200, (0.01, 0.001), (0.4, float("nan")))
+    >>> s.mixed, s.fraction, round(s.fraction_se, 3), s.gap
+    (True, 0.75, 0.25, (nan, nan))
+    """
+    regular, runs = int(regular), int(runs)
+    if not 0 <= regular <= runs or runs < 1:
+        raise ParameterError("regular", regular, f"a count of runs in [0, {runs}]")
+    fraction, fraction_se = mean_stderr([1.0] * regular + [0.0] * (runs - regular))
+    return Split(threshold(periods), runs, regular, fraction, fraction_se,
+                 *map(float, regular_lambda1), *map(float, chaotic_lambda1),
+                 (math.nan, math.nan), starts)  # fmt: skip
+
+
+def map_calls(ds) -> dict:
+    """A chaos map judged run by run (:func:`map_split`): per point, +1 where every run is
+    chaotic, -1 where every run is regular, 0 where the runs split (``calls``, shaped as
+    ``ds.lambda1``), the regular fraction (``regular_fraction``) and the splits.
+
+    A mixed point has no single verdict: its mean lambda_1 depends on how many runs start
+    in an island, that is on the start distribution.
+    """
+    groups = map_split(ds)
+    shape = ds.lambda1.shape
+    calls = np.array([0 if g.mixed else (-1 if g.regular else 1) for g in groups])
+    return {
+        "calls": calls.reshape(shape),
+        "regular_fraction": np.array([g.fraction for g in groups]).reshape(shape),
+        "splits": groups,
+    }
 
 
 def verdicts(ds) -> dict:
@@ -231,15 +293,37 @@ def verdicts(ds) -> dict:
 
 
 def agreement(ds, stable: np.ndarray) -> dict:
-    """Shares of betas where the chaos map agrees with (a) Floquet stability of y = 0
-    (stable <-> regular) and (b) the transverse exponent's verdict."""
-    v = verdicts(ds)
+    """How a theory's stability (``stable`` per beta) matches a chaos map judged run by run
+    (:func:`map_calls`): stable <-> every run regular, unstable <-> every run chaotic.
+
+    Returns the counts of betas whose runs are all chaotic (``chaotic``), all regular
+    (``regular``) and split (``mixed``), and ``floquet``: the share of the ``scored``
+    betas, those not mixed, where the theory matches (NaN when every beta is mixed).  A
+    mixed beta is not scored but listed (``mixed_beta``, ``regular_fraction``): its
+    runs are partly regular, so neither call fits it, and its mean lambda_1 is set by the
+    start distribution.  With the transverse exponents, ``transverse``: the share of the
+    scored betas where the transverse exponent's verdict (:func:`chaotic`, on its mean)
+    calls chaotic exactly where every run is.
+    """
+    c = map_calls(ds)
+    calls = c["calls"].ravel()
+    stable = np.asarray(stable, dtype=bool).ravel()
+    scored = calls != 0
+    beta = np.asarray(ds.beta.values, dtype=float).ravel()
     out = {
-        "threshold": v["threshold"],
+        "threshold": threshold(int(ds.attrs["periods"])),
         "betas": int(ds.beta.size),
-        "chaotic": int(v["chaotic"].sum()),
-        "floquet": float(np.mean(np.asarray(stable) == ~v["chaotic"])),
-    }
+        "chaotic": int((calls == 1).sum()),
+        "regular": int((calls == -1).sum()),
+        "mixed": int((~scored).sum()),
+        "mixed_beta": beta[~scored].tolist(),
+        "regular_fraction": c["regular_fraction"].ravel()[~scored].tolist(),
+        "scored": int(scored.sum()),
+        "floquet": float(np.mean(stable[scored] == (calls[scored] == -1)))
+        if scored.any() else math.nan,
+    }  # fmt: skip
+    v = verdicts(ds)
     if "transverse_chaotic" in v:
-        out["transverse"] = float(np.mean(v["transverse_chaotic"] == v["chaotic"]))
+        t = v["transverse_chaotic"].ravel()[scored]
+        out["transverse"] = float(np.mean(t == (calls[scored] == 1))) if scored.any() else math.nan
     return out

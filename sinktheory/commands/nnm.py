@@ -204,8 +204,9 @@ def _agreement(args, sink, energy, lo, hi, plot) -> Output:
             chaos=(
                 betas,
                 chaos.lambda1.values,
-                r"$\lambda_1$ of the chaos map (chaotic where "
-                f"mean - 2 s.e. > {report['threshold']:.3g})",
+                r"mean $\lambda_1$ of the chaos map; runs split into regular ($\lambda_1 \leq$ "
+                f"{report['threshold']:.3g}) and chaotic at {report['mixed']} of "
+                f"{report['betas']} betas",
             ),  # fmt: skip
         )
         out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)

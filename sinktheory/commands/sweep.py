@@ -6,6 +6,10 @@ every model or run setting of the kind can be given (see :mod:`sinktheory.sweep.
 Everything is checked before the store is created, so bad input writes nothing.  A
 killed sweep is continued by the same command with ``--resume``: only the points not yet
 flagged done are computed.  The store opens with ``xarray.open_zarr(STORE)``.
+
+A ``chaos`` or ``ergodicity`` sweep's report says where a point's lambda_1 runs split into
+regular and chaotic ones (:func:`split_summary`), since there the stored mean lambda_1
+depends on the start distribution.
 """
 
 from __future__ import annotations
@@ -21,7 +25,7 @@ from ..validation import writable_directory
 from . import HELP as HELPS
 from ._common import Output, add_json, damage_note, interruptible, number, resume_hint
 
-__all__ = ["add_arguments", "estimate_line", "HELP", "NAME", "params_of", "run"]
+__all__ = ["add_arguments", "estimate_line", "HELP", "NAME", "params_of", "run", "split_summary"]
 
 NAME = "sweep"
 HELP = HELPS[NAME]
@@ -134,4 +138,62 @@ def _run(args: argparse.Namespace) -> Output:
             f"results: {done.store} (xarray.open_zarr)",
         ]
     )
+    from ..sweep.views import split_points
+
+    points = split_points(done.dataset)
+    if points:
+        lines, data["split_lambda1"] = split_summary(points)
+        text += "\n" + "\n".join(lines)
     return Output(data, text)
+
+
+#: Mixed points listed one by one in the text (all of them are in --json).
+LISTED = 12
+
+
+def split_summary(points: list) -> tuple[list[str], dict]:
+    """The text lines and the JSON of :func:`sinktheory.sweep.views.split_points`: how many
+    points have every run regular, every run chaotic or both kinds (mixed), and for each
+    mixed point its regular fraction and each group's lambda_1 (the first LISTED in the
+    text).
+
+    Examples
+    --------
+    >>> from sinktheory.chaos.verdicts import split
+    >>> points = [({"beta": -0.3}, split([0.001, 0.002, 0.4, 0.5], 200)),
+    ...           ({"beta": 0.3}, split([0.4, 0.5, 0.6, 0.5], 200))]
+    >>> lines, data = split_summary(points)
+    >>> print("\\n".join(lines))  # doctest: +NORMALIZE_WHITESPACE
+    lambda_1 run by run: 1 of 2 point(s) mixed (regular and chaotic runs: their mean
+    lambda_1 depends on the starts), 1 with every run chaotic, 0 with every run regular
+      beta=-0.3: runs: 2 of 4 regular (lambda_1 <= 3 ln t/t = 0.017), regular 0.0015 +-
+      0.0005, chaotic 0.45 +- 0.05
+    >>> data["mixed_points"], data["mixed"][0]["beta"], data["mixed"][0]["regular_fraction"]
+    (1, -0.3, 0.5)
+    """
+    from dataclasses import replace
+
+    mixed = [(where, s) for where, s in points if s.mixed]
+    regular = sum(s.regular == s.runs for _, s in points)
+    starts = {s.starts for _, s in points}
+    once = len(starts) == 1 and "" not in starts  # the same starts everywhere: say it once
+    lines = [
+        f"lambda_1 run by run: {len(mixed)} of {len(points)} point(s) mixed (regular and "
+        "chaotic runs: their mean lambda_1 depends on the starts), "
+        f"{len(points) - len(mixed) - regular} with every run chaotic, {regular} with every "
+        "run regular" + (f"; starts: {next(iter(starts))}" if once else "")
+    ]
+    for where, s in mixed[:LISTED]:
+        at = " ".join(f"{name}={value:g}" if isinstance(value, float) else f"{name}={value}"
+                      for name, value in where.items())  # fmt: skip
+        lines.append(f"  {at or 'the point'}: {(replace(s, starts='') if once else s).text()}")
+    if len(mixed) > LISTED:
+        lines.append(f"  ... {len(mixed) - LISTED} more mixed point(s): --json lists them all")
+    data = {
+        "points": len(points),
+        "mixed_points": len(mixed),
+        "regular_points": regular,
+        "chaotic_points": len(points) - len(mixed) - regular,
+        "mixed": [{**where, **s.as_dict()} for where, s in mixed],
+    }
+    return lines, data

@@ -17,10 +17,13 @@ particle guess of :func:`~sinktheory.nnm.modes.mode_guess`.  That orbit is conti
 beta at fixed E (:func:`transverse_chart`) and corrected by shooting at each beta of the
 grid; its transverse (y) multipliers decide stability: |phi_T/2| <= 1 is stable.
 
-Agreement (:func:`agreement_report`).  On one beta grid, the chaos map's verdict per beta
-(:func:`sinktheory.chaos.verdicts.verdicts`: chaotic when mean lambda_1 - 2 s.e. exceeds
-3 ln t / t) is compared with each theory's prediction (stable <-> regular): the share of
-grid betas where they coincide, by :func:`sinktheory.chaos.verdicts.agreement` for both.
+Agreement (:func:`agreement_report`).  On one beta grid, the chaos map is judged run by
+run (:func:`sinktheory.chaos.verdicts.map_calls`: a run is regular when its lambda_1 <=
+3 ln t / t) and each theory's prediction is compared with it (stable <-> every run
+regular, unstable <-> every run chaotic): the share of those betas where they coincide,
+by :func:`sinktheory.chaos.verdicts.agreement` for both.  A beta whose runs split is
+reported as mixed, with its fraction of regular runs, and not scored: a mean over its
+runs would be set by how many start in an island.
 
 Examples
 --------
@@ -36,6 +39,7 @@ Examples
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -225,15 +229,17 @@ def agreement_report(
     Returns
     -------
     dict
-        ``nnm`` and ``floquet``: the shares (0..1) where the coupled mode's transverse
+        ``nnm`` and ``floquet``: the shares (0..1) of the ``scored`` betas (those whose
+        runs are all regular or all chaotic) where the coupled mode's transverse
         stability, respectively the fixed-container Floquet stability of
         :func:`sinktheory.floquet.model_problem` (amplitude A0 = 1), predicts the chaos
-        map's verdict (stable <-> regular); ``betas``, ``chaotic`` (count), ``threshold``,
-        the charts' stable intervals, ``statement`` (one sentence), and the arrays
-        ``beta``, ``phi_half_nnm``, ``phi_half_floquet``, ``lambda1``, ``lambda1_se``,
-        ``chaotic_verdict`` for plotting.
+        map (stable <-> regular); ``betas``; the counts ``chaotic``, ``regular`` and
+        ``mixed``; ``mixed_beta`` with each one's ``regular_fraction``; ``threshold``;
+        the charts' stable intervals; ``statement`` (one sentence); and the arrays
+        ``beta``, ``phi_half_nnm``, ``phi_half_floquet``, ``lambda1``, ``lambda1_se``
+        and ``calls`` (+1 every run chaotic, -1 every run regular, 0 mixed) for plotting.
     """
-    from ..chaos.verdicts import agreement, verdicts
+    from ..chaos.verdicts import agreement, map_calls
     from ..floquet import model_problem
     from ..sweep.chaosmap import chaos_map
 
@@ -254,40 +260,59 @@ def agreement_report(
     fixed = model_problem(w.alpha, w.n, gamma=w.gamma, shape=w.shape).evaluate(betas)
     a_nnm = agreement(chaos, chart.stable)
     a_fix = agreement(chaos, fixed.stable)
-    v = verdicts(chaos)
     report = {
         "betas": int(betas.size),
-        "chaotic": a_nnm["chaotic"],
-        "threshold": a_nnm["threshold"],
+        **{key: a_nnm[key] for key in ("chaotic", "regular", "mixed", "scored", "mixed_beta",
+                                       "regular_fraction", "threshold")},
         "nnm": a_nnm["floquet"],
         "floquet": a_fix["floquet"],
         "periods": int(chaos.attrs["periods"]),
         "runs": int(chaos.sizes.get("run", 0)),
         "nnm_stable": chart.stable_intervals(),
-        "statement": statement(
-            a_nnm["floquet"], a_fix["floquet"], int(betas.size), float(betas[0]), float(betas[-1])
-        ),  # fmt: skip
+        "statement": statement(a_nnm, a_fix["floquet"], float(betas[0]), float(betas[-1])),
         "beta": betas.tolist(),
         "phi_half_nnm": chart.phi_half[:, 0].tolist(),
         "phi_half_floquet": np.asarray(fixed.phi_half, float).tolist(),
         "lambda1": chaos.lambda1.values.tolist(),
         "lambda1_se": chaos.lambda1_se.values.tolist(),
-        "chaotic_verdict": v["chaotic"].tolist(),
-    }
+        "calls": map_calls(chaos)["calls"].tolist(),
+    }  # fmt: skip
     return report
 
 
-def statement(nnm: float, fixed: float, count: int, lo: float, hi: float) -> str:
-    """The agreement sentence of the report.
+def statement(scores: dict, fixed: float, lo: float, hi: float) -> str:
+    """The agreement sentence of the report: ``scores`` is the coupled mode's
+    :func:`sinktheory.chaos.verdicts.agreement`, ``fixed`` the fixed-container share.
 
     Examples
     --------
-    >>> statement(0.583, 0.542, 48, -0.7, 0.45)[:80]
-    'NNM transverse stability predicts the chaotic beta intervals at 58 % of beta val'
+    >>> a = {"floquet": 0.6, "scored": 45, "betas": 48, "mixed": 3, "chaotic": 40,
+    ...      "regular": 5, "mixed_beta": [-0.3, -0.2, -0.1],
+    ...      "regular_fraction": [0.25, 0.5, 0.125]}
+    >>> print(statement(a, 0.55, -0.7, 0.45))  # doctest: +NORMALIZE_WHITESPACE
+    NNM transverse stability predicts the chaos map at 60 % of the 45 betas whose runs are
+    all regular or all chaotic, the fixed-container Floquet theory at 55 % (48 betas in
+    [-0.7, 0.45]: 40 all chaotic, 5 all regular, 3 mixed; a run is regular when its
+    lambda_1 <= 3 ln t / t; stable counts as right where every run is regular, unstable
+    where every run is chaotic); not scored, the runs split at beta = -0.3 (25 % regular),
+    -0.2 (50 %), -0.1 (12 %)
     """
-    return (
-        f"NNM transverse stability predicts the chaotic beta intervals at {100 * nnm:.0f} % "
-        f"of beta values, the fixed-container Floquet theory at {100 * fixed:.0f} % "
-        f"({count} betas in [{lo:g}, {hi:g}]; a beta counts when the theory's stable/unstable "
-        "matches the chaos map's regular/chaotic verdict, mean lambda_1 - 2 s.e. > 3 ln t / t)"
+
+    def pct(x):
+        return "no" if math.isnan(x) else f"{100 * x:.0f} %"
+
+    a = scores
+    text = (
+        f"NNM transverse stability predicts the chaos map at {pct(a['floquet'])} of the "
+        f"{a['scored']} betas whose runs are all regular or all chaotic, the fixed-container "
+        f"Floquet theory at {pct(fixed)} ({a['betas']} betas in [{lo:g}, {hi:g}]: "
+        f"{a['chaotic']} all chaotic, {a['regular']} all regular, {a['mixed']} mixed; a run "
+        "is regular when its lambda_1 <= 3 ln t / t; stable counts as right where every run "
+        "is regular, unstable where every run is chaotic)"
     )
+    if a["mixed"]:
+        parts = [f"{b:g} ({100 * f:.0f} %{' regular' if i == 0 else ''})"
+                 for i, (b, f) in enumerate(zip(a["mixed_beta"], a["regular_fraction"],
+                                                strict=True))]  # fmt: skip
+        text += "; not scored, the runs split at beta = " + ", ".join(parts)
+    return text

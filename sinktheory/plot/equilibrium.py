@@ -160,7 +160,9 @@ def plot_ergodicity(result, ax=None):
     """An :class:`~sinktheory.equilibrium.ergodicity.ErgodicityMap`: the KS distance of the
     runs from the law (top) and lambda_1 with its errors (bottom) against beta, each point
     coloured by its verdict; where the Lyapunov runs split into regular and chaotic ones,
-    the lambda_1 of each group (crosses) and the regular count beside them.  ``ax``: a
+    the lambda_1 of each group (crosses) and the regular count beside them; where every
+    run is regular, a ring (the verdict's rule, lambda_1 - 3 s.e. > 0, can still call such
+    a point chaotic: a regular run's finite-time lambda_1 is ~ ln t / t, not 0).  ``ax``: a
     pair of Axes (top, bottom) to draw into; a new Figure otherwise.
 
     Examples
@@ -202,6 +204,11 @@ def plot_ergodicity(result, ax=None):
                         va="bottom")  # fmt: skip
     if mixed.any():
         bottom.plot([], [], "x", color="k", label="mixed: each group's $\\lambda_1$")
+    regular = result.regular_runs == runs  # every run within the envelope 3 ln t / t
+    if runs and regular.any():
+        bottom.plot(beta[regular], result.lambda1[regular], "o", mfc="none", mec="k", ms=9,
+                    label=r"every run regular ($\lambda_1 \leq 3 \ln t / t$)")  # fmt: skip
+    if mixed.any() or (runs and regular.any()):
         bottom.legend(fontsize=7)
     top.plot(beta, result.ks_distance, color="0.7", lw=0.8, zorder=0)
     top.set_ylabel("KS distance to the law")

@@ -1,4 +1,5 @@
-"""Sweep results back as the analyses' own types, so plotting code can stay as it is.
+"""Sweep results back as the analyses' own types, so plotting code can stay as it is;
+and the lambda_1 runs of chaos and ergodicity sweeps split into regular and chaotic ones.
 
 Examples
 --------
@@ -18,7 +19,7 @@ import xarray as xr
 from ..bifurcation import BifurcationDiagram
 from ..errors import ParameterError
 
-__all__ = ["bifurcation_diagram"]
+__all__ = ["bifurcation_diagram", "split_points"]
 
 
 def bifurcation_diagram(dataset: xr.Dataset) -> BifurcationDiagram:
@@ -45,3 +46,41 @@ def bifurcation_diagram(dataset: xr.Dataset) -> BifurcationDiagram:
         attrs["transient"],
         attrs["count"],
     )
+
+
+def split_points(dataset: xr.Dataset) -> list[tuple[dict, object]]:
+    """Every point of a finished ``chaos`` or ``ergodicity`` sweep with its lambda_1 runs
+    split into regular and chaotic ones (a :class:`~sinktheory.chaos.verdicts.Split`;
+    a run is regular when its lambda_1 <= 3 ln t / t), as (swept coordinates, split) in
+    C order; [] for other kinds and for ergodicity points without Lyapunov runs.
+
+    A chaos point is split from its stored per-run exponents
+    (:func:`~sinktheory.chaos.verdicts.map_split`); an ergodicity point from the counts
+    and group means it stores (:func:`~sinktheory.chaos.verdicts.stored_split`: no gap).
+    """
+    from ..chaos.verdicts import box_starts, map_split, point_values, stored_split
+
+    kind = dataset.attrs.get("sweep_kind")
+    if kind == "chaos":
+        splits = map_split(dataset)
+    elif kind == "ergodicity":
+        count = point_values(dataset, "lyapunov_runs", 0)
+        periods = point_values(dataset, "lyapunov_periods", 0)
+        box = point_values(dataset, "box", None)
+        cols = [dataset[name].values.ravel() for name in (
+            "regular_runs", "lambda1_regular", "lambda1_regular_se", "lambda1_chaotic",
+            "lambda1_chaotic_se")]  # fmt: skip
+        splits = [
+            None if not r > 0 or not np.isfinite(reg) else
+            stored_split(reg, r, p, (rm, rse), (cm, cse), box_starts(b))
+            for r, p, b, reg, rm, rse, cm, cse in zip(count, periods, box, *cols, strict=True)
+        ]  # fmt: skip
+    else:
+        return []
+    dims = dataset.lambda1.dims
+    out = []
+    for index, s in zip(np.ndindex(dataset.lambda1.shape), splits, strict=True):
+        if s is not None:
+            where = {d: dataset[d].values[i].item() for d, i in zip(dims, index, strict=True)}
+            out.append((where, s))
+    return out

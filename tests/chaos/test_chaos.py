@@ -343,28 +343,35 @@ def test_chaos_sweep_kind_is_the_api_at_the_point_seed():
 
 
 def test_chaos_map_verdicts_and_agreement():
-    """The verdict rule on a synthetic map: chaotic iff mean - 2 s.e. > 3 ln t / t."""
+    """The mean verdict rule on a synthetic map: chaotic iff mean - 2 s.e. > 3 ln t / t;
+    the agreement with a theory judged run by run (each run regular iff its lambda_1 <=
+    3 ln t / t), its mixed beta left unscored."""
     import xarray as xr
 
-    from sinktheory.chaos.verdicts import agreement, threshold
+    from sinktheory.chaos.verdicts import agreement, threshold, verdicts
 
     thr = threshold(100)
     assert thr == pytest.approx(3 * math.log(200 * math.pi) / (200 * math.pi))
+    runs = [[0.49, 0.51], [0.0, 4 * thr], [0.5 * thr, 0.5 * thr], [0.39, 0.41]]
     ds = xr.Dataset(
         {
             "lambda1": ("beta", [0.5, 2 * thr, 0.5 * thr, 0.4]),
-            "lambda1_se": ("beta", [0.01, thr, 0.0, 0.01]),
+            "lambda1_se": ("beta", [0.01, 2 * thr, 0.0, 0.01]),
+            "lambda1_runs": (("beta", "run"), runs),
+            "lambda1_periods": ("beta", [100.0] * 4),
             "transverse": ("beta", [0.5, 0.0, 0.0, 0.0]),
             "transverse_se": ("beta", [0.01, 0.0, 0.0, 0.0]),
         },
-        coords={"beta": [0.0, 0.1, 0.2, 0.3]},
+        coords={"beta": [0.0, 0.1, 0.2, 0.3], "run": [0, 1]},
         attrs={"periods": 100},
     )
+    # mean rule: chaotic at betas 0 and 3 (beta 1 is within 2 s.e. of the threshold)
+    assert verdicts(ds)["chaotic"].tolist() == [True, False, False, True]
     a = agreement(ds, stable=np.array([False, True, True, True]))
-    # chaotic: betas 0 and 3 (beta 1 is within 2 s.e. of the threshold)
-    assert a["chaotic"] == 2
-    assert a["floquet"] == 0.75  # beta 3 chaotic although Floquet-stable
-    assert a["transverse"] == 0.75  # beta 3 chaotic with a regular transverse exponent
+    assert (a["chaotic"], a["regular"], a["mixed"], a["scored"]) == (2, 1, 1, 3)
+    assert a["mixed_beta"] == [0.1] and a["regular_fraction"] == [0.5]
+    assert a["floquet"] == pytest.approx(2 / 3)  # beta 3 chaotic although Floquet-stable
+    assert a["transverse"] == pytest.approx(2 / 3)  # beta 3 chaotic, transverse regular
 
 
 def test_tol_sets_the_step_and_is_refused_with_dt():

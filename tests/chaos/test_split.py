@@ -116,3 +116,69 @@ def test_chaos_map_splits_each_beta():
     ax = Figure().subplots()
     draw_map(ds, [], ax)
     assert [t.get_text() for t in ax.texts] == ["2/4 reg."]
+
+
+@pytest.fixture(scope="module")
+def table_map():
+    """A chaos map over three betas made of the rigid fixed tables' runs (their lambda_1
+    per run), with each run's wall-1 impacts: the focusing table (-0.3) mixed, the
+    rectangle (0) all regular, the dispersing table (+0.3) all chaotic."""
+    import xarray as xr
+
+    betas = [-0.3, 0.0, 0.3]
+    results = [_fixed(b, 24) for b in betas]
+    runs = np.array([r.lambda1 for r in results])
+    se = runs.std(axis=1, ddof=1) / np.sqrt(runs.shape[1])
+    ds = xr.Dataset(
+        {
+            "lambda1": ("beta", runs.mean(axis=1)),
+            "lambda1_se": ("beta", se),
+            "lambda1_runs": (("beta", "run"), runs),
+            "lambda1_periods": ("beta", [float(PERIODS)] * 3),
+        },
+        coords={"beta": betas, "run": np.arange(runs.shape[1])},
+        attrs={"periods": PERIODS, "transient": 0, "box": 0.1, "runs": runs.shape[1]},
+    )
+    return ds, np.array([r.collisions[:, 1] == 0 for r in results])
+
+
+def test_agreement_scores_only_unmixed_betas(table_map):
+    """A theory is scored run by run: the island table is reported as mixed with the
+    fraction of runs that never reach the flat walls (the independent count), not
+    averaged into a verdict."""
+    from sinktheory.chaos.verdicts import agreement, map_calls
+
+    ds, island = table_map
+    c = map_calls(ds)
+    assert c["calls"].tolist() == [0, -1, 1]
+    assert c["regular_fraction"][0] == island[0].mean() and 0 < island[0].mean() < 1
+    # the old mean rule called the focusing table chaotic: its mean is far above the cut
+    assert ds.lambda1.values[0] - 2 * ds.lambda1_se.values[0] > threshold(PERIODS)
+    a = agreement(ds, stable=np.array([True, True, False]))
+    assert (a["chaotic"], a["regular"], a["mixed"], a["scored"]) == (1, 1, 1, 2)
+    assert a["mixed_beta"] == [-0.3] and a["regular_fraction"] == [island[0].mean()]
+    assert a["floquet"] == 1.0  # right at both scored betas; the mean rule would give 2/3
+    assert agreement(ds, stable=np.array([False, False, False]))["floquet"] == 0.5
+
+
+def test_orbit_and_nnm_reports_name_the_mixed_beta(table_map):
+    """Fig. 3/11's generic-start text and the NNM agreement statement give the mixed beta
+    with its regular fraction (the island runs' share) instead of a mean verdict."""
+    from sinktheory import Sink, Well
+    from sinktheory.nnm.agreement import TransverseChart, agreement_report
+    from sinktheory.scenes.orbits import generic_runs
+
+    ds, island = table_map
+    pct = f"{100 * island[0].mean():.0f} %"
+    assert generic_runs(ds) == (
+        "have every run chaotic at 1, their runs split into regular and chaotic at 1 and "
+        f"every run regular at 1 of 3 betas (regular fraction {pct} at -0.300)"
+    )
+    betas = np.array([-0.3, 0.0, 0.3])
+    chart = TransverseChart(betas, np.zeros((3, 1)), np.array([True, True, False]),
+                            np.ones(3), branch=None)  # fmt: skip
+    sink = Sink(Well(0.5, 0.0, 4), particles=1, mass=0.2)
+    r = agreement_report(sink, 0.5, betas, chaos=ds, chart=chart)
+    assert r["calls"] == [0, -1, 1] and r["mixed_beta"] == [-0.3] and r["nnm"] == 1.0
+    assert f"the runs split at beta = -0.3 ({pct} regular)" in r["statement"]
+    assert "at 100 % of the 2 betas whose runs are all regular or all chaotic" in r["statement"]

@@ -70,6 +70,9 @@ def test_chart_shows_both_groups_of_a_mixed_point():
                     lambda1_chaotic=np.array([0.4]))  # fmt: skip
     texts = [t.get_text() for t in plot_ergodicity(mixed).axes[1].texts]
     assert texts == ["1/2 reg."]
+    regular = replace(m, regular_runs=np.array([2.0]))
+    legend = plot_ergodicity(regular).axes[1].get_legend().get_texts()
+    assert [t.get_text() for t in legend] == [r"every run regular ($\lambda_1 \leq 3 \ln t / t$)"]
 
 
 def test_bad_points_are_refused_before_running():

@@ -468,3 +468,58 @@ def test_cli_text_summary(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "floquet sweep over beta (2)" in out and "2 point(s) computed" in out
     assert xr.open_zarr(store).stable.values.tolist() == [True, False]  # lam 0.28, -0.12
+
+
+def test_cli_chaos_sweep_reports_its_mixed_points(tmp_path, capsys):
+    """A chaos sweep's report says where a point's runs split into regular and chaotic
+    ones: the counts and fractions are recomputed here from the stored per-run exponents
+    by the rule itself (regular when lambda_1 <= 3 ln t / t, t the span), and the text
+    gives each mixed point instead of its mean.  Over 40 periods the beta = 0 runs'
+    exponents (0.04-0.13, seed 0, third point) straddle the envelope 0.066 (over 300
+    periods all eight runs tried are chaotic, 0.10-0.17: a split of this span, not an
+    island); the other betas have every run chaotic."""
+    store = tmp_path / "c.zarr"
+    args = ["chaos", "--param", "alpha=0.5", "--param", "beta=-0.4:0.2:4", "--param", "n=4",
+            "--param", "runs=6", "--param", "periods=40", "--param", "box=0.1"]  # fmt: skip
+    assert main(["sweep", *args, "--out", str(store), "--workers", "1", "--quiet"]) == 0
+    text = capsys.readouterr().out
+    assert main(["sweep", *args, "--out", str(store), "--resume", "--quiet", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)["split_lambda1"]
+    ds = xr.open_zarr(store)
+    t = ds.lambda1_periods.values * 2 * np.pi  # no transient
+    regular = (ds.lambda1_runs.values <= (3 * np.log(t) / t)[:, None]).sum(axis=1)
+    mixed = [b for b, r in zip(ds.beta.values, regular, strict=True) if 0 < r < 6]
+    assert mixed, "the sweep was chosen to have a mixed point"
+    assert data["mixed_points"] == len(mixed) and data["points"] == ds.beta.size
+    assert data["regular_points"] == int((regular == 6).sum())
+    assert [m["beta"] for m in data["mixed"]] == mixed
+    for m in data["mixed"]:
+        r = int(regular[list(ds.beta.values).index(m["beta"])])
+        assert m["regular"] == r and m["regular_fraction"] == pytest.approx(r / 6)
+        assert f"beta={m['beta']:g}: runs: {r} of 6 regular" in text
+    assert f"lambda_1 run by run: {len(mixed)} of {ds.beta.size} point(s) mixed" in text
+    assert "starts: particles at rest, uniform in (-0.1, 0.1)^2" in text
+
+
+def test_ergodicity_sweep_splits_like_the_chaos_sweep():
+    """An ergodicity sweep keeps only counts and group means of its Lyapunov runs; its
+    split (sinktheory.sweep.views.split_points) must match the one a chaos sweep gets from
+    per-run exponents of the same starts (same point seeds), integrated with another step
+    (the chaos kind's ladder step, the ergodicity kind's tol 1e-8)."""
+    from sinktheory.sweep.views import split_points
+
+    common = {"alpha": 0.5, "beta": [-0.4, -0.2, 0.0, 0.2], "n": 4, "box": 0.1}
+    chaos = run_sweep("chaos", {**common, "runs": 6, "periods": 40}, workers=1, progress=False)
+    ergo = run_sweep("ergodicity", {**common, "runs": 2, "periods": 30, "transient": 10,
+                                    "lyapunov_runs": 6, "lyapunov_periods": 40},
+                     workers=1, progress=False)  # fmt: skip
+    a, b = split_points(chaos), split_points(ergo)
+    assert [w for w, _ in a] == [w for w, _ in b] == [{"beta": x} for x in common["beta"]]
+    assert [s.regular for _, s in a] == [s.regular for _, s in b] == [0, 0, 3, 0]
+    for (_, s), (_, t) in zip(a, b, strict=True):
+        assert (s.runs, s.threshold, s.starts) == (t.runs, t.threshold, t.starts)
+        for x, y in ((s.regular_mean, t.regular_mean), (s.chaotic_mean, t.chaotic_mean)):
+            assert (np.isnan(x) and np.isnan(y)) or abs(x - y) < 0.1 * x
+    assert a[2][1].gap[0] < a[2][1].threshold < a[2][1].gap[1] and np.isnan(b[2][1].gap[0])
+    assert split_points(run_sweep("floquet", {"alpha": 0.5, "beta": 0.1, "n": 4},
+                                  workers=1, progress=False)) == []  # fmt: skip
