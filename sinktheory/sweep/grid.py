@@ -67,7 +67,13 @@ def parse_range(name: str, text: str) -> list[int | float]:
     """``LO:HI:COUNT`` -> COUNT evenly spaced values from LO to HI (both included).
 
     The values are ints when LO and HI are int literals and every value is a whole number
-    (``n=2:10:5`` gives 2, 4, 6, 8, 10).  COUNT = 1 needs LO = HI.
+    (``n=2:10:5`` gives 2, 4, 6, 8, 10).  COUNT = 1 needs LO = HI.  A value within 1e-12
+    of the range's size from zero is zero.
+
+    Examples
+    --------
+    >>> parse_range("beta", "-0.4:0.2:4")[2]  # not 5.55e-17
+    0.0
     """
     allowed = "LO:HI:COUNT with finite numbers LO <= HI and an integer COUNT >= 1"
     parts = text.split(":")
@@ -91,6 +97,8 @@ def parse_range(name: str, text: str) -> list[int | float]:
     if count == 1 and lo != hi:
         raise ParameterError(name, text, "LO:HI:COUNT with COUNT >= 2 when LO < HI")
     values = np.linspace(lo, hi, count)
+    # lo + i step misses zero by a rounding (-0.4:0.2:4 gave 5.55e-17): zero it is
+    values[np.abs(values) < 1e-12 * max(abs(lo), abs(hi))] = 0.0
     if isinstance(lo, int) and isinstance(hi, int) and np.all(values == np.round(values)):
         return [int(x) for x in np.round(values)]
     return [float(x) for x in values]
