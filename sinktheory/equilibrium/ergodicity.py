@@ -7,8 +7,10 @@ run-bootstrap p-value, the mean's z, the tail ratios occupation / P with errors)
 with ``lyapunov_runs`` > 0, computes the maximal Lyapunov exponent lambda_1 of a small
 ensemble (:func:`sinktheory.chaos.chaos`).  The verdict, a stated rule:
 
-* **chaotic** when lambda_1 - 3 se(lambda_1) > 0 (se over the Lyapunov runs), else
-  **regular**; where the Lyapunov runs split into regular and chaotic ones
+* **chaotic** when lambda_1 - 2 se(lambda_1) > 3 ln t / t (se over the Lyapunov runs, t
+  their time: :func:`sinktheory.chaos.verdicts.chaotic`, the chaos map's rule; a regular
+  orbit's finite-time exponent decays like ln t / t, so "> 0" called regular runs
+  chaotic), else **regular**; where the Lyapunov runs split into regular and chaotic ones
   (:func:`sinktheory.chaos.verdicts.split`: a run is regular when its lambda_1 <=
   3 ln t / t), the point also reports how many are regular and lambda_1 of each group,
   since their mean depends on the starts (the box, :data:`DEFAULTS`);
@@ -167,11 +169,21 @@ def check_point(p: dict) -> None:
             raise named from None
 
 
-def verdict(lambda1: float, lambda1_se: float, ks_pvalue: float, mean_z: float) -> int:
-    """The rule of the module docstring."""
+def verdict(
+    lambda1: float, lambda1_se: float, periods: int, ks_pvalue: float, mean_z: float
+) -> int:
+    """The rule of the module docstring (``periods``: the Lyapunov runs' length).
+
+    Examples
+    --------
+    >>> verdict(0.0036, 0.0003, 600, 0.5, 0.1), verdict(0.3, 0.01, 600, 0.5, 0.1)
+    (0, 2)
+    """
+    from ..chaos.verdicts import chaotic
+
     if not (math.isfinite(lambda1) and math.isfinite(lambda1_se)):
         return -1  # no exponent, or one run: no standard error to judge it by
-    if not lambda1 - 3 * lambda1_se > 0:
+    if not chaotic(lambda1, lambda1_se, periods):
         return 0
     return 2 if ks_pvalue > P_LEVEL and abs(mean_z) < 3 else 1
 
@@ -232,7 +244,7 @@ def ergodicity_point(p: dict, seed: int) -> dict:
         "lambda1": lam,
         "lambda1_se": lam_se,
         **groups,
-        "verdict": verdict(lam, lam_se, c.ks_pvalue, mean_z),
+        "verdict": verdict(lam, lam_se, p["lyapunov_periods"], c.ks_pvalue, mean_z),
     }
 
 

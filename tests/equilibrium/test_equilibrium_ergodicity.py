@@ -26,11 +26,17 @@ SMALL = {
 
 
 def test_verdict_rule():
-    assert verdict(math.nan, math.nan, 0.5, 0.0) == -1
-    assert verdict(0.01, 0.01, 0.5, 0.0) == 0  # lambda_1 within 3 se of zero: regular
-    assert verdict(0.3, 0.01, 0.5, 0.5) == 2
-    assert verdict(0.3, 0.01, 0.001, 0.5) == 1  # the KS test rejects the law
-    assert verdict(0.3, 0.01, 0.5, 4.0) == 1  # the mean misses the law's
+    """Chaotic as the chaos map says: lambda_1 - 2 se above 3 ln t / t (0.0093 over 400
+    periods), so a regular orbit's small positive finite-time exponent is regular."""
+    t = 400 * 2 * math.pi
+    assert 3 * math.log(t) / t == pytest.approx(0.009346, abs=1e-6)
+    assert verdict(math.nan, math.nan, 400, 0.5, 0.0) == -1
+    assert verdict(0.01, 0.01, 400, 0.5, 0.0) == 0  # lambda_1 within 2 se of zero: regular
+    assert verdict(0.0036, 0.0003, 400, 0.5, 0.0) == 0  # all-regular runs (n = 2, beta -0.074)
+    assert verdict(0.02, 0.003, 400, 0.5, 0.0) == 2  # 0.014 above the threshold 0.0093
+    assert verdict(0.3, 0.01, 400, 0.5, 0.5) == 2
+    assert verdict(0.3, 0.01, 400, 0.001, 0.5) == 1  # the KS test rejects the law
+    assert verdict(0.3, 0.01, 400, 0.5, 4.0) == 1  # the mean misses the law's
 
 
 def test_sweep_points_equal_the_point_function():
