@@ -113,10 +113,12 @@ __all__ = [
     "MAX_LAMBDA",
     "model_hill",
     "model_problem",
+    "model_scan",
     "point",
     "POINT_QUANTITIES",
     "pure_hill",
     "pure_problem",
+    "pure_scan",
     "rigid_limit_phi_half",
     "ROOT_XTOL",
     "scan",
@@ -784,6 +786,52 @@ def scan(problem: HillProblem, lo: float, hi: float, count: int) -> StabilitySca
             if vals[k] * vals[k + 1] < 0:
                 resonances.append(_brentq(f_phi, pts[k], pts[k + 1], "phi_half"))
     return StabilityScan(chart, boundaries, intervals, resonances)
+
+
+def pure_scan(
+    lam_range, n: int, amplitude: float = 1.0, *, rtol: float = DEFAULT_RTOL
+) -> StabilityScan:
+    """:func:`scan` of y'' + Lam x^(2n) y = 0 over ``lam_range`` = (LO, HI, COUNT), as
+    :func:`pure_hill` is its chart at given Lams (``floquet --lam-range``).
+
+    Examples
+    --------
+    >>> [(round(a, 9), round(b, 9)) for a, b in pure_scan((0.0, 3.0, 31), 1).stable_intervals]
+    [(0.0, 1.316022911)]
+    """
+    return scan(pure_problem(n, amplitude, rtol=rtol), *_grid("lam_range", lam_range))
+
+
+def model_scan(
+    alpha: float,
+    beta_range,
+    n: int,
+    *,
+    gamma: float = 1.0,
+    shape: str = "flat",
+    amplitude: float = 1.0,
+    rtol: float = DEFAULT_RTOL,
+) -> StabilityScan:
+    """:func:`scan` of the model's Hill equation over ``beta_range`` = (LO, HI, COUNT), as
+    :func:`model_hill` is its chart at given betas (``floquet --beta-range``).
+
+    Examples
+    --------
+    >>> s = model_scan(0.5, (-0.4, 0.2, 7), 10)  # beta = 0 is lambda = 0, a boundary
+    >>> [(round(a, 12), round(b, 12)) for a, b in s.stable_intervals]
+    [(-0.4, 0.0)]
+    """
+    problem = model_problem(alpha, n, gamma=gamma, shape=shape, amplitude=amplitude, rtol=rtol)
+    return scan(problem, *_grid("beta_range", beta_range))
+
+
+def _grid(name: str, grid) -> tuple:
+    """(LO, HI, COUNT) of a range, refused naming ``name`` unless it is three values."""
+    try:
+        lo, hi, count = grid
+    except (TypeError, ValueError):
+        raise ParameterError(name, grid, "three values LO, HI, COUNT") from None
+    return lo, hi, count
 
 
 def rigid_limit_phi_half(lam, amplitude: float = 1.0) -> np.ndarray:
