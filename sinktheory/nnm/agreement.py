@@ -88,7 +88,7 @@ def reach_energy(
                             f"{energy:g} ({branch.stop_reason})")  # fmt: skip
     # the last two points bracket the target: start Newton from the nearer one
     near = min(branch.orbits[-2:], key=lambda o: abs(o.energy - energy))
-    return shoot(system, near.z0, near.period, steps=steps, energy=energy, subspace="plane")
+    return shoot(system, near.z0, near.period, steps=steps, total_energy=energy, subspace="plane")
 
 
 @dataclass(frozen=True)
@@ -172,7 +172,7 @@ def transverse_chart(
         o0, o1 = branch.orbits[i], branch.orbits[i + 1]
         z = (1 - w) * o0.z0 + w * o1.z0
         T = (1 - w) * o0.period + w * o1.period
-        o = shoot(system.with_param("beta", b), z, T, steps=orbit.steps, energy=energy,
+        o = shoot(system.with_param("beta", b), z, T, steps=orbit.steps, total_energy=energy,
                   subspace="plane")  # fmt: skip
         phi.append(o.transverse_half_traces())
         stable.append(o.floquet.stable_transverse)

@@ -14,7 +14,7 @@ def test_energy_continuation_json_and_plot(tmp_path, capsys):
     code, out, err = run_cli(argv + ["--points", "60", "--plot", str(png), "--json"], capsys)
     assert code == 0, err
     data = json.loads(out)
-    assert data["parameter"] == "energy" and png.stat().st_size > 10_000
+    assert data["continue_in"] == "energy" and png.stat().st_size > 10_000
     assert data["max_trivial_error"] < 1e-5 and data["max_abs_sigma"] < 1e-12
     assert min(data["frequency"]) == pytest.approx(1.0, abs=1e-3)  # container mode, low H
     assert any(e["kind"] == "fold" for e in data["events"])
