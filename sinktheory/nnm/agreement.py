@@ -61,22 +61,24 @@ __all__ = [
 LOW_ENERGY = 1e-4
 
 
+@renamed(energy="total_energy")
 def reach_energy(
-    sink: Sink, energy: float, *, steps: int = 400, ds: float = 0.2, max_points: int = 400
+    sink: Sink, total_energy: float, *, steps: int = 400, ds: float = 0.2, max_points: int = 400
 ) -> Orbit:
     """The normal mode that is the container's linear mode at low energy, followed by
-    pseudo-arclength continuation in energy (through its folds) up to ``energy`` and
-    corrected there exactly.
+    pseudo-arclength continuation in energy (through its folds) up to ``total_energy``
+    and corrected there exactly.
 
     Raises
     ------
     ParameterError
-        Unless LOW_ENERGY < energy.
+        Unless LOW_ENERGY < total_energy.
     ShootingError
-        If the branch ends before reaching ``energy``.
+        If the branch ends before reaching ``total_energy``.
     """
-    if not v.positive("energy", energy) > LOW_ENERGY:
-        raise ParameterError("energy", energy, f"a finite energy > {LOW_ENERGY:g}")
+    energy = total_energy
+    if not v.positive("total_energy", energy) > LOW_ENERGY:
+        raise ParameterError("total_energy", energy, f"a finite energy > {LOW_ENERGY:g}")
     system = sink_flow(sink)
     z0, T = mode_guess(sink, "container", LOW_ENERGY)
     branch = continue_orbits(system, z0, T, steps=steps, total_energy=LOW_ENERGY,

@@ -156,7 +156,11 @@ def entries():
                 half_traces=False,
             ),
         ),  # fmt: skip
-        ("reach_energy", reach_energy, dict(sink=_sink(), energy=2e-4, steps=200, max_points=20)),
+        (
+            "reach_energy",
+            reach_energy,
+            dict(sink=_sink(), total_energy=2e-4, steps=200, max_points=20),
+        ),
         ("sink_flow", sink_flow, dict(sink=_sink())),
         ("floquet", floquet, dict(M=M, f=np.array([1.0, 0, 0, 0]), g=np.array([0, 1.0, 0, 0]))),
         *_rigid_and_equilibrium_entries(small),
@@ -339,8 +343,8 @@ def test_named_cases_of_the_issue():
         (lambda: FlowSystem("nosuch", []), "system"),
         (lambda: FlowSystem(3, []), "system"),
         (lambda: floquet(np.full((4, 4), np.nan), np.ones(4), np.ones(4)), "M"),
-        (lambda: mode_guess(_sink(), "container", True), "energy"),
-        (lambda: mode_guess(_sink(), "container", 1e308), "energy"),
+        (lambda: mode_guess(_sink(), "container", True), "total_energy"),
+        (lambda: mode_guess(_sink(), "container", 1e308), "total_energy"),
         (lambda: continue_orbits(_flow(), *duffing, steps=64, interval=stop, ds=0), "ds"),
         (lambda: continue_orbits(_flow(), *duffing, steps=64, interval=stop, ds=-1), "ds"),
         (
