@@ -197,17 +197,19 @@ def _mean_se(x: np.ndarray) -> tuple[float, float]:
     return mean_stderr(x[np.isfinite(x)])
 
 
-def steps_per_period(att, energy: float, *, runs: int, periods: int, tol=None) -> int:
-    """Integration steps per period of ``att`` after an impulse of ``energy``: the step
-    :func:`sinktheory.stepsize.step_of` picks for the start's total energy bound (a well
-    too stiff to integrate is refused naming its parameter); the vibro-impact flow is
-    exact between impacts and is counted as one step per recorded sample."""
+@renamed(energy="container_energy")
+def steps_per_period(att, container_energy: float, *, runs: int, periods: int, tol=None) -> int:
+    """Integration steps per period of ``att`` after an impulse of E0 =
+    ``container_energy``: the step :func:`sinktheory.stepsize.step_of` picks for the
+    start's total energy bound (a well too stiff to integrate is refused naming its
+    parameter); the vibro-impact flow is exact between impacts and is counted as one step
+    per recorded sample."""
     from ..model import RunSettings
     from ..stepsize import step_of
 
     if att.kind == "impact":
         return 0
-    settings = RunSettings(container_energy=energy, runs=runs, periods=periods)
+    settings = RunSettings(container_energy=container_energy, runs=runs, periods=periods)
     settings.check(att.sink)
     return step_of(att.sink, settings.total_energy_bound(att.sink), tol=tol, settings=settings)[2]
 

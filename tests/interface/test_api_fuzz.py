@@ -140,7 +140,7 @@ def entries():
                 direction=1,
             ),
         ),  # fmt: skip
-        ("mode_guess", mode_guess, dict(sink=_sink(), mode="container", energy=0.5)),
+        ("mode_guess", mode_guess, dict(sink=_sink(), mode="container", total_energy=0.5)),
         (
             "continue_both",
             continue_both,
@@ -269,8 +269,8 @@ def _newer_entries():
         ("equipartition_container_energy", equipartition_container_energy,
          dict(total_energy=0.5, particles=1, n=4, dimension=2)),
         ("rqa", rqa, dict(series=runs[0], eps=None, theiler=1, l_min=2, v_min=2)),
-        ("recurrence_rate", recurrence_rate, dict(energy=runs[0], eps=0.05)),
-        ("epsilon_for_rate", epsilon_for_rate, dict(energy=runs[0], rate=0.05)),
+        ("recurrence_rate", recurrence_rate, dict(series=runs[0], eps=0.05)),
+        ("epsilon_for_rate", epsilon_for_rate, dict(series=runs[0], rate=0.05)),
     ]  # fmt: skip
 
 
