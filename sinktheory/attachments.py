@@ -60,7 +60,7 @@ import numpy as np
 from . import validation as v
 from .ensemble import random_positions
 from .errors import ParameterError
-from .glossary import renamed
+from .glossary import old_attribute, renamed
 from .layout import StateLayout
 from .model import SHAPES, RunSettings, Sink, Well
 from .results import Result
@@ -144,6 +144,7 @@ class Attachment:
         return f"well {self.shape} k = {self.particles}"
 
 
+@renamed(energy="impulse_energy")
 @dataclass(frozen=True)
 class ImpulseResponse(Result):
     """The response of the container to an impulse, R runs sampled at S instants.
@@ -162,8 +163,8 @@ class ImpulseResponse(Result):
         Largest |H + W - H(0)| / H(0) checked (the engine at period ends, the
         vibro-impact integrator at every sample).
     attachment : Attachment
-    damping, energy : float
-        Total dashpot coefficient c and the impulse's container energy E.
+    damping, impulse_energy : float
+        Total dashpot coefficient c and the impulse's container energy E0.
     transverse : ndarray (R, S) or None
         max_j |y_j| (None for ``"impact"``): how far the particles are from y = 0.
     impacts : ndarray (R,) or None
@@ -183,7 +184,7 @@ class ImpulseResponse(Result):
     max_audit_error: float
     attachment: Attachment
     damping: float
-    energy: float
+    impulse_energy: float
     transverse: np.ndarray | None = None
     impacts: np.ndarray | None = None
     integrator: str = ""
@@ -199,6 +200,8 @@ class ImpulseResponse(Result):
         "impacts": ("run",),
     }
     COORDS = {"t": "time"}
+
+    energy = old_attribute("impulse_energy")
 
     def fraction_dissipated(self) -> np.ndarray:
         """W / H(0) of each run at the end of the window, (R,)."""
@@ -321,7 +324,7 @@ def impulse_response(
         raise ParameterError("line_offset", offset, "0 unless the attachment is an 'nes'")
     rows = start_rows(att, settings)
     rows[:, StateLayout(att.particles).y] += offset
-    common = {"attachment": att, "damping": damping, "energy": settings.container_energy}
+    common = {"attachment": att, "damping": damping, "impulse_energy": settings.container_energy}
     if att.kind == "impact":
         from .vibroimpact import simulate_vibroimpact
 

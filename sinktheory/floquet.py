@@ -122,10 +122,12 @@ __all__ = [
     "MAX_LAMBDA",
     "model_hill",
     "model_problem",
+    "model_scan",
     "point",
     "POINT_QUANTITIES",
     "pure_hill",
     "pure_problem",
+    "pure_scan",
     "rigid_limit_phi_half",
     "ROOT_XTOL",
     "scan",
@@ -809,6 +811,52 @@ def _stable_intervals(lo: float, hi: float, cuts, stable_at) -> list[tuple[float
     return intervals
 
 
+def pure_scan(
+    lam_range, n: int, amplitude: float = 1.0, *, rtol: float = DEFAULT_RTOL
+) -> StabilityScan:
+    """:func:`scan` of y'' + Lam x^(2n) y = 0 over ``lam_range`` = (LO, HI, COUNT), as
+    :func:`pure_hill` is its chart at given Lams (``floquet --lam-range``).
+
+    Examples
+    --------
+    >>> [(round(a, 9), round(b, 9)) for a, b in pure_scan((0.0, 3.0, 31), 1).stable_intervals]
+    [(0.0, 1.316022911)]
+    """
+    return scan(pure_problem(n, amplitude, rtol=rtol), *_grid("lam_range", lam_range))
+
+
+def model_scan(
+    alpha: float,
+    beta_range,
+    n: int,
+    *,
+    gamma: float = 1.0,
+    shape: str = "flat",
+    amplitude: float = 1.0,
+    rtol: float = DEFAULT_RTOL,
+) -> StabilityScan:
+    """:func:`scan` of the model's Hill equation over ``beta_range`` = (LO, HI, COUNT), as
+    :func:`model_hill` is its chart at given betas (``floquet --beta-range``).
+
+    Examples
+    --------
+    >>> s = model_scan(0.5, (-0.4, 0.2, 7), 10)  # beta = 0 is lambda = 0, a boundary
+    >>> [(round(a, 12), round(b, 12)) for a, b in s.stable_intervals]
+    [(-0.4, 0.0)]
+    """
+    problem = model_problem(alpha, n, gamma=gamma, shape=shape, amplitude=amplitude, rtol=rtol)
+    return scan(problem, *_grid("beta_range", beta_range))
+
+
+def _grid(name: str, grid) -> tuple:
+    """(LO, HI, COUNT) of a range, refused naming ``name`` unless it is three values."""
+    try:
+        lo, hi, count = grid
+    except (TypeError, ValueError):
+        raise ParameterError(name, grid, "three values LO, HI, COUNT") from None
+    return lo, hi, count
+
+
 def rigid_limit_phi_half(lam, amplitude: float = 1.0) -> np.ndarray:
     """phi_half of the rigid-wall limit n -> oo: 1 - 2 Lam A0^2 (see the module docstring).
 
@@ -1113,9 +1161,10 @@ class WellScan(Result):
     DIMS = {"amplitude": ("amplitude",), "trace": ("amplitude",), "stable": ("amplitude",)}
 
 
-def well_scan(hill: WellHill, lo: float, hi: float, count: int) -> WellScan:
-    """The Floquet chart of ``hill`` (:func:`well_hill`) on ``count`` amplitudes over
-    [lo, hi], with the stability boundaries between them located: each sign change of
+def well_scan(hill: WellHill, amplitude_range) -> WellScan:
+    """The Floquet chart of ``hill`` (:func:`well_hill`) on COUNT amplitudes over [LO, HI]
+    (``amplitude_range`` = (LO, HI, COUNT), as ``floquet --amplitude-range``), with the
+    stability boundaries between them located: each sign change of
     trace - 1 or trace + 1 between neighbouring grid points is refined by brentq (two
     crossings within one cell are missed).
 
@@ -1123,12 +1172,13 @@ def well_scan(hill: WellHill, lo: float, hi: float, count: int) -> WellScan:
     --------
     >>> from sinktheory.userwell import UserWell
     >>> tilted = well_hill(UserWell("tilted", "(x**2 + 1.2*y**2)/2 + 0.3*x*y**2", {}))
-    >>> chart = well_scan(tilted, 0.5, 1.5, 5)  # y'' + (1.2 + 0.6 A cos t) y = 0
+    >>> chart = well_scan(tilted, (0.5, 1.5, 5))  # y'' + (1.2 + 0.6 A cos t) y = 0
     >>> [(round(a, 6), round(b, 6)) for a, b in chart.stable_intervals]
     [(0.5, 1.303935)]
     """
     if not isinstance(hill, WellHill):
         raise ParameterError("hill", hill, "a WellHill (from well_hill)")
+    lo, hi, count = _grid("amplitude_range", amplitude_range)
     lo, hi = v.positive("lo", lo), v.finite("hi", hi)
     count = v.positive_int("count", count, minimum=2, maximum=10_000)
     if not lo < hi:

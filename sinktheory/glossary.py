@@ -147,7 +147,7 @@ GLOSSARY: dict[str, str] = {
     "lo": "the low end of an interval",
     "hi": "the high end of an interval",
     "problem": "a HillProblem: Hill's equation of the normal mode y = 0",
-    "betas": "a grid of betas",
+    "betas": "a grid of betas (on the command line COUNT betas over the interval)",
     "chaos": "a chaos map over the same betas",
     "chart": "a transverse chart over the same betas",
     "half_traces": "the transverse half-period half-traces phi_T/2 at every point",
@@ -175,7 +175,6 @@ GLOSSARY: dict[str, str] = {
     "interval": "[LO, HI]: the interval a continuation stays in",
     "points": "points per direction of a continuation",
     "ds": "the first arclength step of a continuation",
-    "agreement": "betas scored against a chaos map",
     "damping": "damping coefficient (what it acts on: damping_kind)",
     "damping_kind": "what damping of the 2-D well is (contact or dashpot)",
     "attachment": "the absorber attached (well, nes, impact)",
@@ -238,7 +237,12 @@ RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
     "simulate": {"--energy": "--container-energy", "--method": _stepper_or_scheme},
     "well": {"--energy": "--particle-energy"},
     "equilibrium": {"--energy": "--total-energy", "--fraction": "--fractions"},
-    "nnm": {"--energy": "--total-energy", "--continue": "--continue-in", "--range": "--interval"},
+    "nnm": {
+        "--energy": "--total-energy",
+        "--continue": "--continue-in",
+        "--range": "--interval",
+        "--agreement": "--betas",
+    },
     "chaos": {"--energy": "--container-energy", "--method": "--scheme"},
 }
 

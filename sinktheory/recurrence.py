@@ -56,8 +56,8 @@ __all__ = [
 DEFAULT_RATE = 0.05
 
 
-def _series(energy, name: str = "energy") -> np.ndarray:
-    e = v.real_array(name, energy, "a 1-D series of length >= 2")
+def _series(series, name: str = "series") -> np.ndarray:
+    e = v.real_array(name, series, "a 1-D series of length >= 2")
     if e.ndim != 1 or e.size < 2:
         raise ParameterError(name, f"array of shape {e.shape}", "a 1-D series of length >= 2")
     if not np.all(np.isfinite(e)):
@@ -77,7 +77,8 @@ def _pairs_within(sorted_e, eps):
     return count
 
 
-def recurrence_rate(energy, eps: float) -> float:
+@renamed(energy="series")
+def recurrence_rate(series, eps: float) -> float:
     """RR with the main diagonal excluded (Theiler window 1), in O(N log N).
 
     Examples
@@ -85,19 +86,20 @@ def recurrence_rate(energy, eps: float) -> float:
     >>> recurrence_rate([0.0, 0.1, 0.5, 0.55], eps=0.1)
     0.3333333333333333
     """
-    e = np.sort(_series(energy))
+    e = np.sort(_series(series))
     eps = v.nonnegative("eps", eps)
     n = e.size
     return _pairs_within(e, eps) / (n * (n - 1) / 2)
 
 
-def epsilon_for_rate(energy, rate: float = DEFAULT_RATE) -> float:
+@renamed(energy="series")
+def epsilon_for_rate(series, rate: float = DEFAULT_RATE) -> float:
     """The smallest eps whose recurrence rate (diagonal excluded) is at least ``rate``.
 
     Exact: the candidate values are the pairwise distances, searched by bisection on the
     sorted series.
     """
-    e = np.sort(_series(energy))
+    e = np.sort(_series(series))
     if not (isinstance(rate, int | float) and 0 < rate <= 1):
         raise ParameterError("rate", rate, "a number in (0, 1]")
     n = e.size
@@ -289,7 +291,7 @@ def rqa(
     >>> r.recurrence_rate, r.determinism, r.laminarity, r.mean_recurrence_time
     (0.4, 1.0, 0.0, 2.0)
     """
-    e = _series(series, "series")
+    e = _series(series)
     eps = epsilon_for_rate(e) if eps is None else v.nonnegative("eps", eps)
     theiler, l_min, v_min = _settings(e.size, theiler, l_min, v_min)
     dummy = np.zeros((1, 1), np.bool_)
@@ -336,12 +338,13 @@ def _binned_recurrence(e, eps, size):
     return img / cnt
 
 
-def recurrence_image(energy, eps: float, max_pixels: int = 1500) -> np.ndarray:
+@renamed(energy="series")
+def recurrence_image(series, eps: float, max_pixels: int = 1500) -> np.ndarray:
     """R(i, j) for plotting: exact 0/1 if N <= max_pixels, else block-averaged fractions.
 
     The image has at most ``max_pixels`` rows, so N = 10^4 needs no N x N array.
     """
-    e = _series(energy)
+    e = _series(series)
     eps = v.nonnegative("eps", eps)
     size = min(e.size, v.positive_int("max_pixels", max_pixels))
     return _binned_recurrence(e, eps, size)

@@ -67,8 +67,8 @@ def verdicts(c) -> list[str]:
                 continue
             diff = c.efficiency[i] - c.efficiency[k]
             se = np.hypot(c.efficiency_se[i], c.efficiency_se[k])
-            win = c.energy[diff > SIGMAS * se]
-            lose = c.energy[diff < -SIGMAS * se]
+            win = c.container_energy[diff > SIGMAS * se]
+            lose = c.container_energy[diff < -SIGMAS * se]
             lines.append(
                 f"{name} against {nes}: more at E0 = {_list(win)}; less at E0 = "
                 f"{_list(lose)}; difference {np.min(diff):+.3f} to {np.max(diff):+.3f}"
@@ -98,7 +98,7 @@ def table(c, seconds: float, machine: str) -> str:
     cells = range(len(c.attachment))
     efficiency = [
         [f"{e:.3g}", *(f"{c.efficiency[i, j]:.3f} ± {c.efficiency_se[i, j]:.3f}" for i in cells)]
-        for j, e in enumerate(c.energy)
+        for j, e in enumerate(c.container_energy)
     ]
 
     def t90(i, j):
@@ -106,7 +106,7 @@ def table(c, seconds: float, machine: str) -> str:
             return "never"
         return f"{c.t90[i, j]:.0f} ({c.reached[i, j]}/{c.runs})"
 
-    times = [[f"{e:.3g}", *(t90(i, j) for i in cells)] for j, e in enumerate(c.energy)]
+    times = [[f"{e:.3g}", *(t90(i, j) for i in cells)] for j, e in enumerate(c.container_energy)]
     out = [
         ".. This file is written by docs/guide/make_compare.py; do not edit it by hand.",
         "",

@@ -41,6 +41,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import renamed
 from .table import Table
 
 __all__ = ["kinetic_coefficients", "kinetic_relaxation", "wall_moment"]
@@ -66,13 +67,14 @@ def wall_moment(table: Table) -> float:
     return total
 
 
-def kinetic_coefficients(table: Table, particles: int, mass: float, energy: float,
+@renamed(energy="total_energy")
+def kinetic_coefficients(table: Table, particles: int, mass: float, total_energy: float,
                          container_energies) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
     """(D1, D2) of the container energy per period (module docstring) at the given E_c, for
     k = ``particles`` of total mass ``mass`` in the rigid ``table`` at total energy E."""
     k = v.positive_int("particles", particles)
     m = v.positive("mass", mass)
-    e = v.positive("energy", energy)
+    e = v.positive("total_energy", total_energy)
     ec = np.asarray(container_energies, dtype=float)
     if not np.all((ec >= 0) & (ec <= e)):
         raise ParameterError("container_energies", ec.tolist(), f"energies in [0, {e:g}]")
@@ -86,7 +88,8 @@ def kinetic_coefficients(table: Table, particles: int, mass: float, energy: floa
     return d1, d2
 
 
-def kinetic_relaxation(table: Table, particles: int, mass: float, energy: float = 0.5, *,
+@renamed(energy="total_energy")
+def kinetic_relaxation(table: Table, particles: int, mass: float, total_energy: float = 0.5, *,
                        fraction: float = 0.05, start: float = 1 - 1e-3,
                        cells: int = 300) -> tuple[float, float]:  # fmt: skip
     """(settling time, slowest relaxation time), in periods, of the Fokker-Planck equation
@@ -107,7 +110,7 @@ def kinetic_relaxation(table: Table, particles: int, mass: float, energy: float 
     from ..equilibrium.prediction import law_chain
 
     k = v.positive_int("particles", particles)
-    e = v.positive("energy", energy)
+    e = v.positive("total_energy", total_energy)
     law = stats.beta(1, k)
     s = np.linspace(0.0, 1.0, 201)
     d1 = kinetic_coefficients(table, k, mass, e, e * s)[0] / e

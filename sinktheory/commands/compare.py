@@ -121,7 +121,6 @@ def run(args: argparse.Namespace) -> Output:
         mass=args.mass,
     )
     energies = energies_of(*args.energies)
-    w_energy = None
     if wavelet is not None and not (
         isinstance(args.samples_per_period, int) and args.samples_per_period >= 6
     ):
@@ -129,11 +128,10 @@ def run(args: argparse.Namespace) -> Output:
         raise ParameterError(
             "samples_per_period", args.samples_per_period, "an integer >= 6 with --wavelet"
         )
-    if wavelet is not None:
-        given = args.wavelet_energy
-        w_energy = float(energies[-1]) if given is None else v.positive("wavelet-energy", given)
-    elif args.wavelet_energy is not None:
-        raise ParameterError("wavelet-energy", args.wavelet_energy, "given with --wavelet only")
+    if wavelet is None and args.wavelet_energy is not None:
+        raise ParameterError("wavelet_energy", args.wavelet_energy, "given with --wavelet only")
+    if args.wavelet_energy is not None:  # refused before the comparison runs
+        v.positive("wavelet_energy", args.wavelet_energy)
     result = compare(
         atts,
         energies,
@@ -154,45 +152,38 @@ def run(args: argparse.Namespace) -> Output:
         fig = plot_comparison(result)
         writers[plot] = lambda path: fig.savefig(path, dpi=110)
     if wavelet is not None:
-        fig_w, notes = _transfer_figure(atts, w_energy, args, energies)
+        fig_w, notes = _transfer_figure(atts, args, energies)
         data["wavelet_notes"] = notes
         writers[wavelet] = lambda path: fig_w.savefig(path, dpi=90)
     return Output(data, _text(result, data["half_dissipated"]), writers)
 
 
-def _transfer_figure(atts, energy: float, args, energies):
-    """The wavelet maps of run 0 of each attachment and their backbones (one per kind of
-    sink: the in-plane normal modes do not depend on the particle count or the shape)."""
-    from ..compare.transfer import backbone, transfer_map
+def _transfer_figure(atts, args, energies):
+    """The wavelet maps of run 0 of each attachment over their backbones
+    (:func:`sinktheory.compare.transfer.transfer_maps`)."""
+    from ..compare.transfer import transfer_maps
     from ..plot.compare import plot_transfer
 
-    lo = float(min(energies[0], energy)) / 2
-    hi = 2.0 * float(max(energies[-1], energy))
-    maps, bones, notes, cache = [], [], [], {}
-    for att in atts:
-        maps.append(transfer_map(att, energy, damping=args.damping, periods=args.periods,
-                                 seed=args.seed, samples_per_period=args.samples_per_period,
-                                 tol=args.tol))  # fmt: skip
-        key = (att.kind, att.n, att.shape)
-        if key not in cache:
-            cache[key] = backbone(att, lo, hi)
-            notes += [f"{att.label}: {note}" for note in cache[key][1]]
-        bones.append(cache[key][0])
+    maps, bones, notes = transfer_maps(atts, args.wavelet_energy, energies=energies,
+                                       damping=args.damping, periods=args.periods,
+                                       seed=args.seed, samples_per_period=args.samples_per_period,
+                                       tol=args.tol)  # fmt: skip
+    energy = maps[0].impulse_energy
     title = f"container wavelet maps after an impulse E0 = {energy:g}, dashpot c = {args.damping:g}"
     return plot_transfer(maps, bones, title=title), notes
 
 
 def _text(c, spans: dict) -> str:
     lines = [
-        f"impulse responses: {len(c.attachment)} attachment(s) x {c.energy.size} energies, "
-        f"{c.runs} runs x {c.periods} periods, dashpot c = {c.damping:g}, seed {c.seed} "
+        f"impulse responses: {len(c.attachment)} attachment(s) x {c.container_energy.size} "
+        f"energies, {c.runs} runs x {c.periods} periods, dashpot c = {c.damping:g}, seed {c.seed} "
         f"({c.seconds:.1f} s)",
         "fraction of the initial energy dissipated (mean +- s.e.; 90 % time in periods, "
         "runs reaching it):",
     ]
     head = "  E0        " + "".join(f"{name:>26}" for name in c.attachment)
     lines.append(head)
-    for j, e in enumerate(c.energy):
+    for j, e in enumerate(c.container_energy):
         cells = []
         for i in range(len(c.attachment)):
             t = c.t90[i, j]

@@ -71,21 +71,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_json(parser)
 
 
-def _problem(args: argparse.Namespace, beta_mode: bool):
+def _check_alpha(args: argparse.Namespace, beta_mode: bool) -> None:
+    """Refuse alpha where the mode has none (and a missing one or a missing n)."""
     if beta_mode and args.alpha is None:
         raise ParameterError("alpha", None, "given with --beta or --beta-range")
     if not beta_mode and args.alpha is not None:
         raise ParameterError("alpha", args.alpha, "omitted for the pure equation (--lam)")
     if args.n is None:
         raise ParameterError("n", None, "given (or --well FILE)")
-    from ..floquet import model_problem, pure_problem  # numpy and numba: after those checks
-
-    if beta_mode:
-        gamma = 1.0 if args.gamma is None else args.gamma
-        shape = "flat" if args.shape is None else args.shape
-        return model_problem(args.alpha, args.n, gamma=gamma, shape=shape,
-                             amplitude=args.amplitude)  # fmt: skip
-    return pure_problem(args.n, args.amplitude)
 
 
 def _user_well(args: argparse.Namespace, user) -> Output:
@@ -99,7 +92,7 @@ def _user_well(args: argparse.Namespace, user) -> Output:
         lo, hi, count = args.amplitude_range
         if not isinstance(count, int):
             raise ParameterError("COUNT", count, "an integer >= 2")
-        chart = well_scan(hill, lo, hi, count)
+        chart = well_scan(hill, args.amplitude_range)
         which = "phi_T/2" if chart.symmetric else "phi"
         lines = [f"{chart.name} well {parameters_text(chart.parameters)}: {which} over the "
                  f"amplitude in [{lo:g}, {hi:g}]"]  # fmt: skip
@@ -134,17 +127,26 @@ def run(args: argparse.Namespace) -> Output:
         )
     ranged = args.beta_range or args.lam_range
     beta_mode = args.beta is not None or args.beta_range is not None
-    problem = _problem(args, beta_mode)
+    _check_alpha(args, beta_mode)
     plot = png_path("plot", args.plot)
-    key = problem.parameter
+    if plot is not None and not ranged:
+        raise ParameterError("plot", args.plot, "used with --beta-range or --lam-range")
+    from .. import floquet  # numpy and numba: after those checks
+
+    gamma = 1.0 if args.gamma is None else args.gamma  # None: refused beside --well
+    shape = "flat" if args.shape is None else args.shape
+    well = {"gamma": gamma, "shape": shape, "amplitude": args.amplitude}
+    key = "beta" if beta_mode else "lam"
     if not ranged:
-        if plot is not None:
-            raise ParameterError("plot", args.plot, "used with --beta-range or --lam-range")
+        if beta_mode:
+            chart = floquet.model_hill(args.alpha, [args.beta], args.n, **well)
+        else:
+            chart = floquet.pure_hill([args.lam], args.n, args.amplitude)
         value = args.beta if beta_mode else args.lam
-        data = problem.evaluate([value]).as_dict(point=0)
+        data = chart.as_dict(point=0)
         state = "stable" if data["stable"] else "unstable"
         text = (
-            f"{key} = {value:g}, n = {problem.n}: lambda = {data['lambda']:.12g}\n"
+            f"{key} = {value:g}, n = {chart.problem.n}: lambda = {data['lambda']:.12g}\n"
             f"  phi_T/2 = {data['phi_half']}  phi = {data['phi']}  ({state})\n"
             f"  rotation number {data['rotation_number']:.12g}, "
             f"growth per period {data['growth_per_period']:.12g}"
@@ -153,9 +155,11 @@ def run(args: argparse.Namespace) -> Output:
     lo, hi, count = ranged
     if not isinstance(count, int):
         raise ParameterError("COUNT", count, "an integer >= 2")
-    from ..floquet import scan
-
-    result = scan(problem, lo, hi, count)
+    if beta_mode:
+        result = floquet.model_scan(args.alpha, args.beta_range, args.n, **well)
+    else:
+        result = floquet.pure_scan(args.lam_range, args.n, args.amplitude)
+    problem = result.chart.problem
     data = result.as_dict()
     lines = [f"{problem.kind} Hill equation, n = {problem.n}, {key} in [{lo:g}, {hi:g}]"]
     lines += [f"  stable  [{a:.12g}, {b:.12g}]" for a, b in result.stable_intervals]

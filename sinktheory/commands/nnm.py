@@ -11,9 +11,9 @@ symmetry-breaking points.
   amplitude A0 = 1 of the paper's fixed-container mode), from ``--beta`` over
   ``--interval LO HI`` (betas); each point carries the transverse half-period half-trace
   phi_T/2; ``--plot`` draws it beside the paper's fixed-container phi_T/2(beta) (Fig. 7).
-* ``--continue-in beta --agreement POINTS``: the chaos map's setting instead (total energy
+* ``--continue-in beta --betas COUNT``: the chaos map's setting instead (total energy
   default 0.5, the container started at X = 1): the mode reached from the container's
-  low-energy mode (:mod:`sinktheory.nnm.agreement`), corrected on POINTS betas of
+  low-energy mode (:mod:`sinktheory.nnm.agreement`), corrected on COUNT betas of
   ``--interval``, a chaos map (``--runs``, ``--periods``) on the same betas, and the share of
   betas where the coupled mode's transverse stability and the fixed-container Floquet
   theory each predict the chaos map's verdict; ``--plot`` adds lambda_1(beta) below.
@@ -74,11 +74,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--ds", type=number, default=0.1, help="first arclength step (0.1)")
     g.add_argument("--plot", metavar="FILE.png", help="frequency-energy / transverse chart")
     g.add_argument(
-        "--agreement",
+        "--betas",
         type=number,
-        metavar="POINTS",
-        help="with --continue-in beta: score the transverse stability on POINTS betas against "
-        "a chaos map (energy default 0.5)",
+        metavar="COUNT",
+        help="with --continue-in beta: score the transverse stability on COUNT betas of "
+        "--interval against a chaos map (total energy default 0.5)",
     )
     g.add_argument("--runs", type=number, default=8, help="chaos map runs per beta (8)")
     g.add_argument("--periods", type=number, default=200, help="chaos map periods (200)")
@@ -100,11 +100,11 @@ def _check(args) -> None:
     if not isinstance(args.points, int) or not 2 <= args.points <= 10_000:
         raise ParameterError("points", args.points, "an integer in [2, 10000]")
     check_ds(args.ds)
-    if args.agreement is not None:
+    if args.betas is not None:
         if args.continue_in != "beta":
-            raise ParameterError("agreement", args.agreement, "only with --continue-in beta")
-        if not isinstance(args.agreement, int) or not 2 <= args.agreement <= 1000:
-            raise ParameterError("agreement", args.agreement, "an integer in [2, 1000]")
+            raise ParameterError("betas", args.betas, "only with --continue-in beta")
+        if not isinstance(args.betas, int) or not 2 <= args.betas <= 1000:
+            raise ParameterError("betas", args.betas, "an integer in [2, 1000]")
     for name in ("runs", "periods"):
         v = getattr(args, name)
         if not isinstance(v, int) or not 2 <= v <= 100_000:
@@ -136,14 +136,14 @@ def run(args: argparse.Namespace) -> Output:
         if not lo <= energy <= hi:
             raise ParameterError("total_energy", energy, f"inside --interval [{lo:g}, {hi:g}]")
     else:
-        default_energy = 0.5 if args.agreement else sink.particles * well.gamma / (2 * well.n)
+        default_energy = 0.5 if args.betas else sink.particles * well.gamma / (2 * well.n)
         energy = args.total_energy if args.total_energy is not None else default_energy
         start = getattr(well, param)
         default = {"beta": (-1.0, well.alpha - 0.02), "alpha": (well.beta + 0.02, 2.0)}
         lo, hi = args.interval if args.interval is not None else default.get(param, (0.1, 10.0))
         if not lo <= start <= hi:
             raise ParameterError(param, start, f"inside --interval [{lo:g}, {hi:g}]")
-    if args.agreement:
+    if args.betas:
         return _agreement(args, sink, energy, lo, hi, plot)
     from ..nnm.continuation import continue_both
 
@@ -181,12 +181,12 @@ def _fixed_scan(well, result):
 
 
 def _agreement(args, sink, energy, lo, hi, plot) -> Output:
-    """--agreement: the chart on a beta grid scored against a chaos map."""
+    """--betas: the chart on a beta grid scored against a chaos map."""
     from ..nnm.agreement import agreement_report, transverse_chart
     from ..sweep.chaosmap import beta_grid, chaos_map
 
     well = sink.well
-    betas = beta_grid([(lo, hi)], args.agreement)
+    betas = beta_grid([(lo, hi)], args.betas)
     chart = transverse_chart(sink, energy, betas, steps=args.steps, ds=args.ds)
     chaos = chaos_map(well.alpha, well.n, betas, shape=well.shape, particles=sink.particles,
                       mass=sink.mass, container_energy=energy, runs=args.runs,

@@ -32,6 +32,7 @@ import numpy as np
 from .. import validation as v
 from ..attachments import KINDS, Attachment
 from ..errors import ParameterError
+from ..glossary import old_attribute, renamed
 from ..results import Result
 from ..runstats import mean_stderr
 
@@ -127,6 +128,7 @@ LO HI COUNT with 0 < LO <= HI (LO = HI only with COUNT = 1)
     return np.geomspace(lo, hi, count)
 
 
+@renamed(energy="container_energy")
 @dataclass(frozen=True)
 class Comparison(Result):
     """Efficiency and 90 % time of each attachment at each initial container energy.
@@ -134,7 +136,7 @@ class Comparison(Result):
     Attributes
     ----------
     attachment : (A,) labels (``Attachment.label``)
-    energy : (E,) initial container energies E0
+    container_energy : (E,) initial container energies E0 (the ``energies`` compared)
     efficiency, efficiency_se : (A, E) fraction of the initial energy dissipated by the
         end of the window: mean over the runs and its standard error
     t90, t90_se : (A, E) periods until 90 % is dissipated: mean and standard error over
@@ -147,7 +149,7 @@ class Comparison(Result):
     """
 
     attachment: tuple
-    energy: np.ndarray
+    container_energy: np.ndarray
     efficiency: np.ndarray
     efficiency_se: np.ndarray
     t90: np.ndarray
@@ -164,12 +166,14 @@ class Comparison(Result):
 
     DIMS = {
         "attachment": ("attachment",),
-        "energy": ("energy",),
+        "container_energy": ("container_energy",),
         **dict.fromkeys(
             ("efficiency", "efficiency_se", "t90", "t90_se", "reached", "max_audit_error"),
-            ("attachment", "energy"),
+            ("attachment", "container_energy"),
         ),
     }
+
+    energy = old_attribute("container_energy")
 
     def span(self, index: int, level: float = 0.5) -> tuple[float, float] | None:
         """(lowest, highest) energy of the grid at which attachment ``index`` dissipates
@@ -185,7 +189,7 @@ class Comparison(Result):
         above = np.flatnonzero(self.efficiency[index] >= level)
         if not above.size:
             return None
-        return float(self.energy[above[0]]), float(self.energy[above[-1]])
+        return float(self.container_energy[above[0]]), float(self.container_energy[above[-1]])
 
 
 def _mean_se(x: np.ndarray) -> tuple[float, float]:
@@ -193,17 +197,19 @@ def _mean_se(x: np.ndarray) -> tuple[float, float]:
     return mean_stderr(x[np.isfinite(x)])
 
 
-def steps_per_period(att, energy: float, *, runs: int, periods: int, tol=None) -> int:
-    """Integration steps per period of ``att`` after an impulse of ``energy``: the step
-    :func:`sinktheory.stepsize.step_of` picks for the start's total energy bound (a well
-    too stiff to integrate is refused naming its parameter); the vibro-impact flow is
-    exact between impacts and is counted as one step per recorded sample."""
+@renamed(energy="container_energy")
+def steps_per_period(att, container_energy: float, *, runs: int, periods: int, tol=None) -> int:
+    """Integration steps per period of ``att`` after an impulse of E0 =
+    ``container_energy``: the step :func:`sinktheory.stepsize.step_of` picks for the
+    start's total energy bound (a well too stiff to integrate is refused naming its
+    parameter); the vibro-impact flow is exact between impacts and is counted as one step
+    per recorded sample."""
     from ..model import RunSettings
     from ..stepsize import step_of
 
     if att.kind == "impact":
         return 0
-    settings = RunSettings(container_energy=energy, runs=runs, periods=periods)
+    settings = RunSettings(container_energy=container_energy, runs=runs, periods=periods)
     settings.check(att.sink)
     return step_of(att.sink, settings.total_energy_bound(att.sink), tol=tol, settings=settings)[2]
 

@@ -45,6 +45,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import renamed
 
 __all__ = [
     "AVERAGED_HORIZON",
@@ -68,10 +69,12 @@ def _check(mu: float, k3: float) -> tuple[float, float]:
     return v.positive("mu", mu), v.positive("k3", k3)
 
 
-def averaged_share(mu: float, k3: float, energy, horizon: float = AVERAGED_HORIZON):
-    """Largest share of the impulse energy ``energy`` (a number or an array) that the
-    particle takes in the undamped 1:1-averaged flow (module docstring) over ``horizon``
-    time units, the container started with |phi_1|^2 = 2 E and the particle at rest:
+@renamed(energy="container_energy")
+def averaged_share(mu: float, k3: float, container_energy, horizon: float = AVERAGED_HORIZON):
+    """Largest share of the impulse energy E0 = ``container_energy`` (a number or an
+    array) that the particle takes in the undamped 1:1-averaged flow (module docstring)
+    over ``horizon`` time units, the container started with |phi_1|^2 = 2 E0 and the
+    particle at rest:
 
         phi_1' = -(3i k3/8) |phi_2|^2 phi_2,
         phi_u' = -(i/2) phi_u + (3i k3/(8 mu)) |phi_2|^2 phi_2,   phi_2 = phi_u - phi_1,
@@ -85,16 +88,16 @@ def averaged_share(mu: float, k3: float, energy, horizon: float = AVERAGED_HORIZ
     True
     """
     mu, k3 = _check(mu, k3)
-    e = v.real_array("energy", energy, "energies > 0")
+    e = v.real_array("container_energy", container_energy, "energies > 0")
     if not (np.all(np.isfinite(e)) and np.all(e > 0)):
-        raise ParameterError("energy", energy, "finite energies > 0")
+        raise ParameterError("container_energy", container_energy, "finite energies > 0")
     horizon = v.positive("horizon", horizon)
     amp = np.sqrt(2 * e.ravel())
     # in units of the start amplitude: the cubic term's coefficient carries amp^2
     low = _lowest_container_share(0.375 * k3 * amp**2, mu, AVERAGED_STEP,
                                   int(math.ceil(horizon / AVERAGED_STEP)))  # fmt: skip
     out = 1 - low
-    return float(out[0]) if np.ndim(energy) == 0 else out.reshape(e.shape)
+    return float(out[0]) if np.ndim(container_energy) == 0 else out.reshape(e.shape)
 
 
 @numba.njit(cache=True)

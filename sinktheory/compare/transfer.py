@@ -29,7 +29,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
-from ..glossary import renamed
+from ..glossary import old_attribute, renamed
 from ..results import Result
 from .wavelet import DEFAULT_WAVELET, WaveletMap, wavelet_map
 
@@ -39,6 +39,7 @@ __all__ = [
     "BACKBONE_STEPS",
     "START_TRIES",
     "transfer_map",
+    "transfer_maps",
     "TransferMap",
 ]
 
@@ -49,6 +50,7 @@ BACKBONE_POINTS = 150
 START_TRIES = 4
 
 
+@renamed(energy="impulse_energy")
 @dataclass(frozen=True)
 class TransferMap(Result):
     """One run's wavelet map and its ridge against the energy left.
@@ -61,8 +63,8 @@ class TransferMap(Result):
     container_energy : (S,) the container's energy (X^2 + Xdot^2) / 2
     label : str
         The attachment's label.
-    energy, damping : float
-        The impulse's container energy and the dashpot coefficient.
+    impulse_energy, damping : float
+        The impulse's container energy E0 and the dashpot coefficient.
     run : int
         Which run of the seeded ensemble.
     """
@@ -71,11 +73,13 @@ class TransferMap(Result):
     energy_left: np.ndarray
     container_energy: np.ndarray
     label: str
-    energy: float
+    impulse_energy: float
     damping: float
     run: int
 
     DIMS = {"energy_left": ("t",), "container_energy": ("t",)}
+
+    energy = old_attribute("impulse_energy")
 
 
 @renamed(energy="container_energy")
@@ -135,10 +139,64 @@ def transfer_map(
         left,
         res.container_energy[run],
         att.label,
-        float(res.energy),
+        float(res.impulse_energy),
         float(res.damping),
         run,
     )
+
+
+def transfer_maps(
+    attachments,
+    wavelet_energy: float | None = None,
+    *,
+    energies=(),
+    damping: float,
+    periods: int,
+    seed: int = 0,
+    samples_per_period: int = 16,
+    tol: float | None = None,
+) -> tuple[list[TransferMap], list[list], list[str]]:
+    """What ``compare --wavelet`` draws: the map of run 0 of each attachment after an
+    impulse E0 = ``wavelet_energy`` (:func:`transfer_map`), and the backbones of each
+    kind of sink (:func:`backbone`; the in-plane normal modes do not depend on the particle
+    count or the shape) over total energies from half the lowest to twice the highest of
+    ``wavelet_energy`` and ``energies`` (the grid the maps are set beside).
+
+    Parameters
+    ----------
+    attachments : sequence of Attachment
+    wavelet_energy : float > 0, optional
+        E0 of the maps' impulse (default the highest of ``energies``).
+    energies : sequence of float > 0
+        Initial container energies the backbones must cover too.
+    damping, periods, seed, samples_per_period, tol
+        As :func:`transfer_map`.
+
+    Returns
+    -------
+    (maps, backbones, notes)
+        One map and one list of branches per attachment (:func:`plot.compare.plot_transfer
+        <sinktheory.plot.compare.plot_transfer>` draws them); ``notes`` names each mode left
+        out, prefixed by its attachment's label.
+    """
+    grid = [float(e) for e in energies]
+    if wavelet_energy is None:
+        if not grid:
+            raise ParameterError("wavelet_energy", None, "given when energies is empty")
+        wavelet_energy = max(grid)
+    energy = v.positive("wavelet_energy", wavelet_energy)
+    lo = min([energy, *grid]) / 2
+    hi = 2.0 * max([energy, *grid])
+    maps, bones, notes, cache = [], [], [], {}
+    for att in attachments:
+        maps.append(transfer_map(att, energy, damping=damping, periods=periods, seed=seed,
+                                 samples_per_period=samples_per_period, tol=tol))  # fmt: skip
+        key = (att.kind, att.n, att.shape)
+        if key not in cache:
+            cache[key] = backbone(att, lo, hi)
+            notes += [f"{att.label}: {note}" for note in cache[key][1]]
+        bones.append(cache[key][0])
+    return maps, bones, notes
 
 
 def backbone(att, lo: float, hi: float, *, points: int = BACKBONE_POINTS) -> tuple[list, list]:

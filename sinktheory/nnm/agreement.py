@@ -65,22 +65,24 @@ __all__ = [
 LOW_ENERGY = 1e-4
 
 
+@renamed(energy="total_energy")
 def reach_energy(
-    sink: Sink, energy: float, *, steps: int = 400, ds: float = 0.2, max_points: int = 400
+    sink: Sink, total_energy: float, *, steps: int = 400, ds: float = 0.2, max_points: int = 400
 ) -> Orbit:
     """The normal mode that is the container's linear mode at low energy, followed by
-    pseudo-arclength continuation in energy (through its folds) up to ``energy`` and
-    corrected there exactly.
+    pseudo-arclength continuation in energy (through its folds) up to ``total_energy``
+    and corrected there exactly.
 
     Raises
     ------
     ParameterError
-        Unless LOW_ENERGY < energy.
+        Unless LOW_ENERGY < total_energy.
     ShootingError
-        If the branch ends before reaching ``energy``.
+        If the branch ends before reaching ``total_energy``.
     """
-    if not v.positive("energy", energy) > LOW_ENERGY:
-        raise ParameterError("energy", energy, f"a finite energy > {LOW_ENERGY:g}")
+    energy = total_energy
+    if not v.positive("total_energy", energy) > LOW_ENERGY:
+        raise ParameterError("total_energy", energy, f"a finite energy > {LOW_ENERGY:g}")
     system = sink_flow(sink)
     z0, T = mode_guess(sink, "container", LOW_ENERGY)
     branch = continue_orbits(system, z0, T, steps=steps, total_energy=LOW_ENERGY,
@@ -92,7 +94,7 @@ def reach_energy(
                             f"{energy:g} ({branch.stop_reason})")  # fmt: skip
     # the last two points bracket the target: start Newton from the nearer one
     near = min(branch.orbits[-2:], key=lambda o: abs(o.energy - energy))
-    return shoot(system, near.z0, near.period, steps=steps, energy=energy, subspace="plane")
+    return shoot(system, near.z0, near.period, steps=steps, total_energy=energy, subspace="plane")
 
 
 @dataclass(frozen=True)
@@ -176,7 +178,7 @@ def transverse_chart(
         o0, o1 = branch.orbits[i], branch.orbits[i + 1]
         z = (1 - w) * o0.z0 + w * o1.z0
         T = (1 - w) * o0.period + w * o1.period
-        o = shoot(system.with_param("beta", b), z, T, steps=orbit.steps, energy=energy,
+        o = shoot(system.with_param("beta", b), z, T, steps=orbit.steps, total_energy=energy,
                   subspace="plane")  # fmt: skip
         phi.append(o.transverse_half_traces())
         stable.append(o.floquet.stable_transverse)

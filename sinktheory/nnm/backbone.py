@@ -53,6 +53,7 @@ from scipy.optimize import brentq
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import renamed
 from ..model import Sink
 from .continuation import Branch, check_stop, continue_orbits, merge
 
@@ -105,11 +106,12 @@ def harmonic_balance(sink: Sink, omega: float) -> tuple[float, float, float]:
     return A, B, 0.5 * A**2 + well
 
 
-def harmonic_balance_frequency(sink: Sink, energy: float) -> float:
-    """The one-harmonic in-phase frequency at total ``energy`` (E rises monotonically
+@renamed(energy="total_energy")
+def harmonic_balance_frequency(sink: Sink, total_energy: float) -> float:
+    """The one-harmonic in-phase frequency at ``total_energy`` (E rises monotonically
     with omega from 0 to infinity as omega goes from 0 to 1 / sqrt(1 + m))."""
     _line_force(sink)
-    energy = v.positive("energy", energy)
+    energy = v.positive("total_energy", total_energy)
     top = 1 / math.sqrt(1 + sink.mass)
 
     def gap(omega):
@@ -117,7 +119,7 @@ def harmonic_balance_frequency(sink: Sink, energy: float) -> float:
 
     lo, hi = 1e-9 * top, top * (1 - 1e-15)
     if gap(lo) > 0 or gap(hi) < 0:
-        raise ParameterError("energy", energy, "an energy the one-harmonic balance reaches "
+        raise ParameterError("total_energy", energy, "an energy the one-harmonic balance reaches "
                              f"in ({math.exp(gap(lo)) * energy:.3g}, "
                              f"{math.exp(gap(hi)) * energy:.3g})")  # fmt: skip
     return float(brentq(gap, lo, hi, xtol=1e-15, rtol=1e-14))

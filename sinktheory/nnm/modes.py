@@ -35,6 +35,7 @@ import numpy as np
 from .. import validation as v
 from .._generated import oscillator as _osc
 from ..errors import ParameterError
+from ..glossary import renamed
 from ..model import Sink
 from .system import FlowSystem
 
@@ -54,27 +55,29 @@ def sink_flow(sink: Sink, scheme: str | None = None) -> FlowSystem:
     return FlowSystem(engine_name(sink), engine_params(sink), members=sink.particles, **kw)
 
 
-def fixed_container_amplitude(sink: Sink, energy: float) -> float:
-    """A0 of the particle mode at total ``energy`` shared by k particles, container at rest."""
+@renamed(energy="total_energy")
+def fixed_container_amplitude(sink: Sink, total_energy: float) -> float:
+    """A0 of the particle mode at ``total_energy`` shared by k particles, container at rest."""
     w = sink.well
-    return (2 * w.n * energy / (sink.particles * w.gamma)) ** (1 / (2 * w.n))
+    return (2 * w.n * total_energy / (sink.particles * w.gamma)) ** (1 / (2 * w.n))
 
 
-def mode_guess(sink: Sink, mode: str, energy: float) -> tuple[np.ndarray, float]:
+@renamed(energy="total_energy")
+def mode_guess(sink: Sink, mode: str, total_energy: float) -> tuple[np.ndarray, float]:
     """(z0, T): a start state at a turning point and a period guess for ``mode``.
 
     Parameters
     ----------
     sink : Sink
     mode : "container" or "particle"
-    energy : float > 0
+    total_energy : float > 0
         Total energy H.
     """
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     v.choice("mode", mode, MODES)
-    energy = v.positive("energy", energy)
-    sink.well.check_energy(energy, name="energy")  # no particle can hold more than the total
+    energy = v.positive("total_energy", total_energy)
+    sink.well.check_energy(energy, name="total_energy")  # no particle can hold more than the total
     w, k = sink.well, sink.particles
     L = w.alpha - w.beta
     z0 = np.zeros(2 * (1 + 2 * k))

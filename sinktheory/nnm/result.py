@@ -32,7 +32,8 @@ class BranchResult(Result):
     Attributes
     ----------
     meta : dict
-        system, parameters, continuation parameter, steps, scheme, stop reason, ...;
+        system, params, continue_in (the continuation parameter), total_energy (when
+        that is a well parameter: the fixed total energy), steps, scheme, stop_reason, ...;
         ``as_dict()`` and ``to_dataset()`` list its entries beside the arrays (as keys,
         as attributes), followed by ``max_trivial_error`` and ``max_abs_sigma``.
     value : (P,) continuation parameter (energy or the well parameter)
@@ -107,14 +108,14 @@ class BranchResult(Result):
         info = {
             "system": p.system.system,
             "params": dict(zip(p.system.parameter_names, p.system.params.tolist(), strict=True)),
-            "parameter": p.continue_in,
+            "continue_in": p.continue_in,
             "steps": p.steps,
             "scheme": p.system.scheme,
             "free": [int(i) for i in p.free],
             "stop_reason": branch.stop_reason,
         }
         if p.continue_in != "energy":
-            info["energy"] = p.total_energy
+            info["total_energy"] = p.total_energy
         info.update(meta)
         events = [
             {
@@ -156,7 +157,7 @@ class BranchResult(Result):
 
     def items(self) -> dict:
         out = super().items()
-        out = {**out.pop("meta"), **out}  # the array "energy" wins over a fixed meta energy
+        out = {**out.pop("meta"), **out}
         out["max_trivial_error"] = float(np.max(self.trivial_error)) if self.points else None
         out["max_abs_sigma"] = float(np.max(np.abs(self.sigma))) if self.points else None
         return out

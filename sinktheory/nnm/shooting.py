@@ -45,7 +45,7 @@ Examples
 >>> import numpy as np
 >>> from sinktheory.nnm.system import FlowSystem
 >>> s = FlowSystem("duffing2", [])
->>> orbit = shoot(s, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=128, energy=0.01)
+>>> orbit = shoot(s, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=128, total_energy=0.01)
 >>> round(orbit.frequency, 6), bool(abs(orbit.energy - 0.01) < 1e-14)
 (1.000933, True)
 >>> bool(orbit.residual < 1e-12 and abs(orbit.sigma) < 1e-10)
@@ -401,18 +401,19 @@ integer in [2, 1000000]
     return v.positive_int("steps", steps, minimum=2, maximum=MAX_SHOOT_STEPS), v.positive("T", T)
 
 
+@renamed(energy="total_energy")
 def shoot(
     system: FlowSystem,
     z0,
     T: float,
     *,
     steps: int,
-    energy: float | None = None,
+    total_energy: float | None = None,
     subspace: str | None = None,
     phase: str = "velocity",
     phase_index: int = 0,
 ) -> Orbit:
-    """The periodic orbit near (z0, T) at energy ``energy`` (default H(z0)).
+    """The periodic orbit near (z0, T) at total energy ``total_energy`` (default H(z0)).
 
     Parameters
     ----------
@@ -423,8 +424,8 @@ def shoot(
         Guess of the period.
     steps : int
         Steps per period N (dt = T / N); choose dt small against the fastest motion.
-    energy : float, optional
-        Energy h of the orbit.
+    total_energy : float, optional
+        The orbit's total energy h = H(z0, v0).
     subspace : None, "full" or "plane"
         Invariant subspace to stay in (see :func:`subspace_indices`).
     phase, phase_index
@@ -439,7 +440,7 @@ def shoot(
     ShootingError
         If Newton does not converge.
     """
-    z0, h = checked_start(system, z0, energy)
+    z0, h = checked_start(system, z0, total_energy, "total_energy")
     steps, T = checked_steps(steps, T)
     free = subspace_indices(system, subspace)
     problem = ShootingProblem(

@@ -58,9 +58,9 @@ def draw_efficiency(ax, comparison) -> None:
         style = _style(i, name)
         mean = c.efficiency[i]
         se = np.nan_to_num(c.efficiency_se[i])
-        ax.plot(c.energy, mean, label=name, **style)
-        ax.fill_between(c.energy, mean - BAND * se, mean + BAND * se, color=style["color"],
-                        alpha=0.2, lw=0)  # fmt: skip
+        ax.plot(c.container_energy, mean, label=name, **style)
+        ax.fill_between(c.container_energy, mean - BAND * se, mean + BAND * se,
+                        color=style["color"], alpha=0.2, lw=0)  # fmt: skip
     ax.set_xscale("log")
     ax.set_ylim(-0.02, 1.02)
     ax.set_xlabel("initial container energy $E_0$")
@@ -78,7 +78,7 @@ def draw_t90(ax, comparison) -> None:
             ax.plot([], [], label=f"{name}: never", **style)
             continue
         err = BAND * np.nan_to_num(c.t90_se[i][ok])
-        ax.errorbar(c.energy[ok], c.t90[i][ok], yerr=err, label=name, capsize=2, **style)
+        ax.errorbar(c.container_energy[ok], c.t90[i][ok], yerr=err, label=name, capsize=2, **style)
     ax.set_xscale("log")
     ax.set_xlabel("initial container energy $E_0$")
     ax.set_ylabel("time to dissipate 90 % (periods T)")
@@ -157,7 +157,7 @@ def plot_transfer(maps, backbones=(), *, title: str | None = None):
         top.set_yscale("log")
         top.set_xlabel("time t / T")
         top.set_ylabel(r"frequency $\omega$")
-        top.set_title(f"{m.label}: $E_0$ = {m.energy:g}", fontsize=10)
+        top.set_title(f"{m.label}: $E_0$ = {m.impulse_energy:g}", fontsize=10)
         fig.colorbar(mesh, ax=top, label="|W| / sqrt(scale)")
         if backbones[j]:
             draw_frequency_energy(bottom, backbones[j])

@@ -170,7 +170,7 @@ def plot_transverse(result, scan=None, *, chaos=None, title: str | None = None):
     ax.set_title(
         title
         or f"transverse stability of the coupled normal mode, {m.get('system')}, "
-        f"H = {m.get('energy', float('nan')):.4g}",
+        f"H = {m.get('total_energy', float('nan')):.4g}",
         fontsize=10,
     )
     if chaos is not None:
@@ -199,7 +199,7 @@ def plot_nnm(results, beta_result=None, scan=None, *, chaos=None):
         bx = fig.add_subplot(1, cols, 2)
         draw_transverse(bx, beta_result, scan)
         bx.set_title(
-            f"transverse stability against beta, H = {beta_result.meta.get('energy', 0):.4g}",
+            f"transverse stability against beta, H = {beta_result.meta.get('total_energy', 0):.4g}",
             fontsize=10,
         )
         if chaos is not None and callable(chaos):

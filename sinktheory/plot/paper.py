@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..glossary import renamed
 from ..sinkstats import running_mean
 from .bifurcation import plot_bifurcation
 from .chaos import draw_map
@@ -41,13 +42,15 @@ def _figure(figsize):
     return Figure(figsize=figsize, layout="constrained")
 
 
-def well_panels(wells, ncols: int, energy: float, title: str):
-    """Level lines of each (label, Well) of ``wells`` up to ``energy`` (Figs. 2 and 10)."""
+@renamed(energy="particle_energy")
+def well_panels(wells, ncols: int, particle_energy: float, title: str):
+    """Level lines of each (label, Well) of ``wells`` up to ``particle_energy`` (Figs. 2
+    and 10)."""
     nrows = int(np.ceil(len(wells) / ncols))
     fig = _figure((4.2 * ncols, 4.0 * nrows))
     axes = fig.subplots(nrows, ncols, squeeze=False).ravel()
     for ax, (label, well) in zip(axes, wells, strict=False):
-        plot_well(well, particle_energy=energy, ax=ax, points=201)
+        plot_well(well, particle_energy=particle_energy, ax=ax, points=201)
         ax.set_title(f"{label}  $n$={well.n}, $\\beta$={well.beta:g}", fontsize=10)
     fig.suptitle(title)
     return fig

@@ -11,16 +11,18 @@ Examples
 
 from __future__ import annotations
 
+from ..glossary import renamed
 from ..recurrence import epsilon_for_rate, recurrence_image
 
 __all__ = ["plot_recurrence"]
 
 
-def plot_recurrence(energy, eps: float | None = None, ax=None, title: str | None = None):
-    """Draw the recurrence plot of ``energy`` (ones dark, zeros white); return the Figure."""
-    eps = epsilon_for_rate(energy) if eps is None else eps
-    img = recurrence_image(energy, eps)  # checks the series and eps
-    last = len(energy) - 1
+@renamed(energy="series")
+def plot_recurrence(series, eps: float | None = None, ax=None, title: str | None = None):
+    """Draw the recurrence plot of ``series`` (ones dark, zeros white); return the Figure."""
+    eps = epsilon_for_rate(series) if eps is None else eps
+    img = recurrence_image(series, eps)  # checks the series and eps
+    last = len(series) - 1
     if ax is None:
         from matplotlib.figure import Figure
 

@@ -99,7 +99,7 @@ def _coupled_mode(alpha, n, shape, ranges, quick):
     sink = Sink(Well(alpha, MODE_START, n, shape=shape), particles=1, mass=0.2)
     try:
         z0, T = mode_guess(sink, "particle", 0.5)
-        start = shoot(sink_flow(sink), z0, T, steps=400, energy=0.5, subspace="plane")
+        start = shoot(sink_flow(sink), z0, T, steps=400, total_energy=0.5, subspace="plane")
         return transverse_chart(sink, 0.5, np.linspace(lo, hi, MODE_POINTS), start=start)
     except NumericalError as e:  # ShootingError: the branch cannot be followed
         return f"the coupled normal mode could not be followed at E = 0.5 ({e})"

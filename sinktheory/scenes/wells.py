@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from .._generated import oscillator as _osc
+from ..glossary import renamed
 from ..model import Well
 from ..plot.paper import well_panels
 from .base import FAILS, HOLDS, Claim, Scene, SceneResult
@@ -13,10 +14,12 @@ __all__ = ["ENERGY", "FIG10", "FIG2", "level_line_curvature"]
 ENERGY = 0.5
 
 
-def level_line_curvature(well: Well, energy: float, h: float = 1e-3) -> float:
-    """Curvature of the level line V = energy at y = 0 (x > 0), by central differences.
+@renamed(energy="particle_energy")
+def level_line_curvature(well: Well, particle_energy: float, h: float = 1e-3) -> float:
+    """Curvature of the level line V = ``particle_energy`` at y = 0 (x > 0), by central
+    differences.
 
-    The level line x(y) is found by bisection on V(x, y) = energy at y = 0, +-h; an
+    The level line x(y) is found by bisection on V(x, y) = particle_energy at y = 0, +-h; an
     independent, purely numerical view of the wall's bending at finite n.
     """
 
@@ -24,7 +27,7 @@ def level_line_curvature(well: Well, energy: float, h: float = 1e-3) -> float:
         lo, hi = 0.0, 10.0
         for _ in range(200):
             mid = 0.5 * (lo + hi)
-            if float(well.potential(mid, y)) < energy:
+            if float(well.potential(mid, y)) < particle_energy:
                 lo = mid
             else:
                 hi = mid

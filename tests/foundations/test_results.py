@@ -151,7 +151,8 @@ def test_nnm_branch_follows_the_protocol(capsys):
                         half_traces=True)  # fmt: skip
     assert isinstance(res, Result)
     d = res.as_dict()
-    assert roundtrip(d) == d and d["parameter"] == "beta" and d["steps"] == 100
+    assert roundtrip(d) == d and d["continue_in"] == "beta" and d["steps"] == 100
+    assert d["total_energy"] == 0.125  # the fixed energy of a continuation in beta
     assert d["max_trivial_error"] == max(d["trivial_error"])
     ds = res.to_dataset()
     assert ds.transverse.dims == ("point", "transverse_multiplier")

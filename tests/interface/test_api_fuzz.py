@@ -125,7 +125,7 @@ def entries():
         ("random_vectors", random_vectors, dict(dim=2, count=1, runs=2, seed=0, mask=None)),
         ("beta_grid", beta_grid, dict(ranges=[(0.0, 0.2)], points=4)),
         ("FlowSystem", FlowSystem, dict(system="duffing2", params=[], members=0)),
-        ("shoot", shoot, dict(system=_flow(), **duffing, steps=64, energy=0.01)),
+        ("shoot", shoot, dict(system=_flow(), **duffing, steps=64, total_energy=0.01)),
         (
             "continue_orbits",
             continue_orbits,
@@ -140,7 +140,7 @@ def entries():
                 direction=1,
             ),
         ),  # fmt: skip
-        ("mode_guess", mode_guess, dict(sink=_sink(), mode="container", energy=0.5)),
+        ("mode_guess", mode_guess, dict(sink=_sink(), mode="container", total_energy=0.5)),
         (
             "continue_both",
             continue_both,
@@ -156,7 +156,11 @@ def entries():
                 half_traces=False,
             ),
         ),  # fmt: skip
-        ("reach_energy", reach_energy, dict(sink=_sink(), energy=2e-4, steps=200, max_points=20)),
+        (
+            "reach_energy",
+            reach_energy,
+            dict(sink=_sink(), total_energy=2e-4, steps=200, max_points=20),
+        ),
         ("sink_flow", sink_flow, dict(sink=_sink())),
         ("floquet", floquet, dict(M=M, f=np.array([1.0, 0, 0, 0]), g=np.array([0, 1.0, 0, 0]))),
         *_rigid_and_equilibrium_entries(small),
@@ -228,7 +232,7 @@ def _newer_entries():
     runs = 0.5 * np.abs(np.sin(np.arange(60.0)))[None, :] * np.array([[1.0], [0.9], [0.8]])
     y0 = start_state(_sink(), 0.5, np.array([[[0.003, -0.004]]]))
     return [
-        ("simulate", simulate, dict(sink=_sink(), settings=small, method=None, dt=None,
+        ("simulate", simulate, dict(sink=_sink(), settings=small, scheme=None, dt=None,
                                     tol=None, record=("container",), progress=False)),
         ("controller_steps", controller_steps, dict(sink=_sink(), values=y0, count=3,
                                                     eps=0.2, rho=None)),
@@ -237,8 +241,8 @@ def _newer_entries():
               periods=2, samples_per_period=4, energy_bound=None)),
         ("modes", modes, dict(mass=0.2, damping=0.05)),
         ("impulse_response", impulse_response,
-         dict(att=Attachment("impact"), energy=0.1, damping=0.05, periods=2, runs=2, seed=0,
-              samples_per_period=4, tol=None, dt=None, box=0.01, energy_bound=None,
+         dict(att=Attachment("impact"), container_energy=0.1, damping=0.05, periods=2, runs=2,
+              seed=0, samples_per_period=4, tol=None, dt=None, box=0.01, energy_bound=None,
               line_offset=0.0)),
         ("compare", compare, dict(attachments=[Attachment("impact")], energies=[0.1],
                                   damping=0.05, periods=2, runs=2)),
@@ -264,9 +268,9 @@ def _newer_entries():
                                                     e0=0.5)),
         ("equipartition_container_energy", equipartition_container_energy,
          dict(total_energy=0.5, particles=1, n=4, dimension=2)),
-        ("rqa", rqa, dict(energy=runs[0], eps=None, theiler=1, l_min=2, v_min=2)),
-        ("recurrence_rate", recurrence_rate, dict(energy=runs[0], eps=0.05)),
-        ("epsilon_for_rate", epsilon_for_rate, dict(energy=runs[0], rate=0.05)),
+        ("rqa", rqa, dict(series=runs[0], eps=None, theiler=1, l_min=2, v_min=2)),
+        ("recurrence_rate", recurrence_rate, dict(series=runs[0], eps=0.05)),
+        ("epsilon_for_rate", epsilon_for_rate, dict(series=runs[0], rate=0.05)),
     ]  # fmt: skip
 
 
@@ -335,12 +339,12 @@ def test_named_cases_of_the_issue():
         (lambda: simulate(Sink(Well(0.5, 0.3, 4, gamma=1e308)), small), "gamma"),
         (lambda: shoot(_flow(), duffing[0], -1.0, steps=400), "T"),
         (lambda: shoot(_flow(), *duffing, steps=10**12), "steps"),
-        (lambda: shoot(_flow(), *duffing, steps=64, energy=-1.0), "energy"),
+        (lambda: shoot(_flow(), *duffing, steps=64, total_energy=-1.0), "total_energy"),
         (lambda: FlowSystem("nosuch", []), "system"),
         (lambda: FlowSystem(3, []), "system"),
         (lambda: floquet(np.full((4, 4), np.nan), np.ones(4), np.ones(4)), "M"),
-        (lambda: mode_guess(_sink(), "container", True), "energy"),
-        (lambda: mode_guess(_sink(), "container", 1e308), "energy"),
+        (lambda: mode_guess(_sink(), "container", True), "total_energy"),
+        (lambda: mode_guess(_sink(), "container", 1e308), "total_energy"),
         (lambda: continue_orbits(_flow(), *duffing, steps=64, interval=stop, ds=0), "ds"),
         (lambda: continue_orbits(_flow(), *duffing, steps=64, interval=stop, ds=-1), "ds"),
         (

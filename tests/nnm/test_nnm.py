@@ -46,7 +46,7 @@ def test_small_mass_limit_reproduces_fixed_container_phi_half(beta):
     sink = Sink(Well(ALPHA, beta, N), particles=1, mass=mu)
     h = 1.0 / (2 * N)  # gamma A0^(2n) / (2n) with A0 = 1, the amplitude of floquet
     z0, T = mode_guess(sink, "particle", h)
-    orbit = shoot(sink_flow(sink), z0, T, steps=500, energy=h, subspace="plane")
+    orbit = shoot(sink_flow(sink), z0, T, steps=500, total_energy=h, subspace="plane")
     phi = orbit.transverse_half_traces()[0]
     ref = model_hill(ALPHA, [beta], N).phi_half[0]
     assert abs(phi - ref) < 1e-6 * max(1.0, abs(ref)), (phi, ref)
@@ -61,7 +61,7 @@ def test_recoil_correction_is_first_order_in_the_mass():
     for mu in (1e-4, 1e-5):
         sink = Sink(Well(ALPHA, 0.2, N), particles=1, mass=mu)
         z0, T = mode_guess(sink, "particle", 0.125)
-        o = shoot(sink_flow(sink), z0, T, steps=500, energy=0.125, subspace="plane")
+        o = shoot(sink_flow(sink), z0, T, steps=500, total_energy=0.125, subspace="plane")
         diffs.append(o.transverse_half_traces()[0] - model_hill(ALPHA, [0.2], N).phi_half[0])
     assert 9 < diffs[0] / diffs[1] < 11, diffs
 
@@ -72,7 +72,7 @@ def test_linear_limit_gives_the_linear_normal_modes(duffing):
     assert np.allclose(w, [1.0, math.sqrt(3.0)], atol=1e-8)
     for k, target in enumerate((1.0, math.sqrt(3.0))):
         z0 = np.concatenate([1e-4 * shapes[:, k] / np.abs(shapes[:, k]).max(), [0, 0]])
-        o = shoot(duffing, z0, 2 * math.pi / w[k], steps=128, energy=1e-8)
+        o = shoot(duffing, z0, 2 * math.pi / w[k], steps=128, total_energy=1e-8)
         assert abs(o.frequency - target) < 1e-6, (o.frequency, target)
         assert np.all(np.abs(np.abs(o.floquet.nontrivial) - 1) < 1e-9)  # stable, elliptic
 
@@ -80,7 +80,7 @@ def test_linear_limit_gives_the_linear_normal_modes(duffing):
 def test_container_mode_frequency_tends_to_one():
     sink = Sink(Well(ALPHA, 0.3, N), particles=1, mass=0.2)
     z0, T = mode_guess(sink, "container", 1e-6)
-    o = shoot(sink_flow(sink), z0, T, steps=200, energy=1e-6, subspace="plane")
+    o = shoot(sink_flow(sink), z0, T, steps=200, total_energy=1e-6, subspace="plane")
     # the particle's force ~ (x / 0.2)^7 with |x| ~ 1.4e-3: frequency 1 to ~1e-12
     assert abs(o.frequency - 1.0) < 1e-9
 
@@ -159,7 +159,7 @@ def test_multipliers_match_a_finite_difference_monodromy(duffing, energy):
     )  # fmt: skip
     last = b.orbits[-1]
     o = shoot(duffing, last.z0 * (energy / last.energy) ** 0.25, last.period, steps=256,
-              energy=energy)  # fmt: skip
+              total_energy=energy)  # fmt: skip
     M = _fd_monodromy(duffing, o.z0, o.period)
     ref = floquet(M, duffing.vector_field(o.z0), duffing.gradient(o.z0))
     assert np.allclose(np.sort_complex(ref.nontrivial), np.sort_complex(o.floquet.nontrivial),
@@ -172,7 +172,7 @@ def test_transverse_multipliers_of_the_sink_match_finite_differences():
     sink = Sink(Well(ALPHA, 0.2, N), particles=1, mass=0.2)
     system = sink_flow(sink)
     z0, T = mode_guess(sink, "particle", 0.125)
-    o = shoot(system, z0, T, steps=600, energy=0.125, subspace="plane")
+    o = shoot(system, z0, T, steps=600, total_energy=0.125, subspace="plane")
     M = _fd_monodromy(system, o.z0, o.period)
     # transverse block (y, dy/dt) = indices 2, 5
     blk = M[np.ix_([2, 5], [2, 5])]

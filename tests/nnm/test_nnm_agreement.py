@@ -38,7 +38,7 @@ def test_small_mass_chart_reproduces_the_fixed_container_verdicts():
     mu, h = 1e-4, 1.0 / (2 * N)
     sink = Sink(Well(ALPHA, -0.2, N), particles=1, mass=mu)
     z0, T = mode_guess(sink, "particle", h)
-    start = shoot(sink_flow(sink), z0, T, steps=500, energy=h, subspace="plane")
+    start = shoot(sink_flow(sink), z0, T, steps=500, total_energy=h, subspace="plane")
     chart = transverse_chart(sink, h, betas, start=start, steps=500)
     ref = model_problem(ALPHA, N).evaluate(betas)
     assert chart.stable.tolist() == ref.stable.tolist() == [False, True, True, False, False]
@@ -70,7 +70,7 @@ def test_reached_mode_is_the_particle_mode():
     sink = Sink(Well(ALPHA, 0.2, N), particles=1, mass=MASS)
     o = reach_energy(sink, ENERGY)
     z0, T = mode_guess(sink, "particle", ENERGY)
-    p = shoot(sink_flow(sink), z0, T, steps=400, energy=ENERGY, subspace="plane")
+    p = shoot(sink_flow(sink), z0, T, steps=400, total_energy=ENERGY, subspace="plane")
     assert abs(o.period - p.period) < 1e-9 * p.period
     zh, _, _ = p.half_period()
     assert min(np.max(np.abs(o.z0 - p.z0)), np.max(np.abs(o.z0 - zh))) < 1e-9
@@ -81,7 +81,7 @@ def test_perturbed_orbit_grows_at_the_predicted_transverse_multiplier(chart, i):
     beta = chart.beta[i]
     sink = Sink(Well(ALPHA, beta, N), particles=1, mass=MASS)
     z0, T = mode_guess(sink, "particle", ENERGY)
-    o = shoot(sink_flow(sink), z0, T, steps=400, energy=ENERGY, subspace="plane")
+    o = shoot(sink_flow(sink), z0, T, steps=400, total_energy=ENERGY, subspace="plane")
     assert abs(o.transverse_half_traces()[0] - chart.phi_half[i, 0]) < 1e-9
     z = o.z0.copy()
     z[2] = 1e-9

@@ -149,7 +149,7 @@ def test_transverse_touch_of_minus_one_is_reported():
     beta = touches[0].value
     assert -0.3 < beta < -0.26
     s = sink_flow(Sink(Well(0.5, beta, 4), particles=1, mass=0.2))
-    o = shoot(s, touches[0].orbit.z0, touches[0].orbit.period, steps=400, energy=0.5,
+    o = shoot(s, touches[0].orbit.z0, touches[0].orbit.period, steps=400, total_energy=0.5,
               subspace="plane")  # fmt: skip
     assert abs(o.transverse_half_traces()[0]) < 1e-6
     assert abs(touches[0].multiplier + 1) < 1e-6

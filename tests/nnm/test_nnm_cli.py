@@ -14,7 +14,7 @@ def test_energy_continuation_json_and_plot(tmp_path, capsys):
     code, out, err = run_cli(argv + ["--points", "60", "--plot", str(png), "--json"], capsys)
     assert code == 0, err
     data = json.loads(out)
-    assert data["parameter"] == "energy" and png.stat().st_size > 10_000
+    assert data["continue_in"] == "energy" and png.stat().st_size > 10_000
     assert data["max_trivial_error"] < 1e-5 and data["max_abs_sigma"] < 1e-12
     assert min(data["frequency"]) == pytest.approx(1.0, abs=1e-3)  # container mode, low H
     assert any(e["kind"] == "fold" for e in data["events"])
@@ -28,7 +28,7 @@ def test_energy_continuation_json_and_plot(tmp_path, capsys):
         (["--beta", "0.2", "--continue-in", "energy", "--interval", "1", "0.1"], "interval"),
         (["--beta", "0.6", "--continue-in", "energy"], "beta"),
         (["--beta", "0.2", "--continue-in", "beta", "--interval", "0.3", "0.4"], "beta"),
-        (["--beta", "0.2", "--continue-in", "energy", "--agreement", "8"], "agreement"),
+        (["--beta", "0.2", "--continue-in", "energy", "--betas", "8"], "betas"),
     ],
 )
 def test_bad_input_is_one_line_exit_2_no_file(tmp_path, capsys, extra, name):
@@ -39,11 +39,11 @@ def test_bad_input_is_one_line_exit_2_no_file(tmp_path, capsys, extra, name):
 
 
 def test_agreement_with_a_small_chaos_map(tmp_path, capsys):
-    """--agreement on 4 betas (2 runs x 20 periods: a smoke-size chaos map): the shares
+    """--betas 4 (2 runs x 20 periods: a smoke-size chaos map): the shares
     are recomputed here from the JSON's own verdict and stability arrays."""
     png = tmp_path / "agree.png"
     argv = BASE + ["--beta", "-0.2", "--continue-in", "beta", "--interval", "-0.6", "0.2",
-                   "--agreement", "4", "--runs", "2", "--periods", "20"]  # fmt: skip
+                   "--betas", "4", "--runs", "2", "--periods", "20"]  # fmt: skip
     code, out, err = run_cli(argv + ["--plot", str(png), "--json"], capsys)
     assert code == 0, err
     a = json.loads(out)["agreement"]

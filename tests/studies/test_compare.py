@@ -113,7 +113,7 @@ REFUSALS = [
     (["--damping", "0.01", "--mass", "0"], "mass"),
     (["--damping", "0.01", "--periods", "1e15"], "periods"),
     (["--damping", "0.01", "--plot", "out.txt"], "--plot"),
-    (["--damping", "0.01", "--wavelet-energy", "0.1"], "wavelet-energy"),
+    (["--damping", "0.01", "--wavelet-energy", "0.1"], "wavelet_energy"),
     (
         ["--damping", "0.01", "--wavelet", "w.png", "--samples-per-period", "4"],
         "samples_per_period",
@@ -137,7 +137,7 @@ def test_cli_json_and_plot(capsys, tmp_path):
     assert code == 0, err
     d = json.loads(out)
     assert d["attachment"] == ["NES n = 2", "well flat k = 1", "well flat k = 2"]
-    assert d["energy"] == pytest.approx([0.01, 0.1])
+    assert d["container_energy"] == pytest.approx([0.01, 0.1])
     for key in ("efficiency", "efficiency_se", "t90", "t90_se", "reached", "max_audit_error"):
         assert np.array(d[key], dtype=float).shape == (3, 2), key
     assert set(d["half_dissipated"]) == set(d["attachment"])
