@@ -147,6 +147,7 @@ GLOSSARY: dict[str, str] = {
     "lo": "the low end of an interval",
     "hi": "the high end of an interval",
     "problem": "a HillProblem: Hill's equation of the normal mode y = 0",
+    "hill": "a WellHill: Hill's equation along y = 0 of a user's well (well_hill)",
     "betas": "a grid of betas (on the command line COUNT betas over the interval)",
     "chaos": "a chaos map over the same betas",
     "chart": "a transverse chart over the same betas",
