@@ -44,6 +44,7 @@ def rigid_shell_states(table: Table, particles: int, mass: float, energy: float,
     mass ``mass``."""
     k, e = v.positive_int("particles", particles), v.positive("energy", energy)
     mu = v.positive("mass", mass) / k
+    runs = v.positive_int("runs", runs)
     if not 0 <= s < 1:
         raise ParameterError("s", s, "a fraction in [0, 1)")
     bx, by = table.box
@@ -92,9 +93,11 @@ def predict_rigid_relaxation(
     """
     from scipy import stats
 
-    from ..equilibrium.prediction import shell_lags, shell_prediction
+    from ..equilibrium.prediction import check_fraction, shell_lags, shell_prediction
     from .table import rigid_table
 
+    fraction = check_fraction(fraction)
+    mass = v.positive("mass", mass)
     k = v.positive_int("particles", particles)
     e = v.positive("container_energy", container_energy)
     points = v.positive_int("shell_energies", shell_energies, minimum=3)

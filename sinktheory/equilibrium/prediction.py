@@ -81,6 +81,7 @@ from .kramers import measure_kramers_moyal
 from .law import equilibrium_law
 
 __all__ = [
+    "check_fraction",
     "EXTRAPOLATION",
     "fit_line",
     "LADDER",
@@ -392,9 +393,7 @@ def predict_relaxation(
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     start = v.positive("container_energy", container_energy)  # E0
-    fraction = v.positive("fraction", fraction)
-    if not fraction < 1:
-        raise ParameterError("fraction", fraction, "a number in (0, 1)")
+    fraction = check_fraction(fraction)
     points = v.positive_int("shell_energies", shell_energies, minimum=3)
     runs = v.positive_int("shell_runs", shell_runs, minimum=4)
     lag = v.positive_int("lag", lag, minimum=8)
@@ -415,6 +414,14 @@ def predict_relaxation(
         lag=lag, coefficients=km.message, fraction=fraction, periods=periods, seed=seed,
         level=level, resamples=resamples, cells=cells,
     )  # fmt: skip
+
+
+def check_fraction(fraction) -> float:
+    """``fraction``, the relative excess that counts as settled, checked to lie in (0, 1)."""
+    fraction = v.positive("fraction", fraction)
+    if not fraction < 1:
+        raise ParameterError("fraction", fraction, "a number in (0, 1)")
+    return fraction
 
 
 def shell_lags(lag: int) -> list[int]:

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from sinktheory.billiard.relaxation import rigid_shell_states
+from sinktheory.billiard.relaxation import predict_rigid_relaxation, rigid_shell_states
 from sinktheory.billiard.run import simulate_billiard
 from sinktheory.billiard.table import rigid_table
 from sinktheory.errors import ParameterError
@@ -51,3 +51,19 @@ def test_the_shell_with_the_rigid_law_is_invariant_under_billiards():
 def test_container_energy_fraction_is_checked():
     with pytest.raises(ParameterError, match="^s = "):
         rigid_shell_states(TABLE, 1, 0.2, 0.5, 1.0, 4, np.random.default_rng(0))
+
+
+@pytest.mark.parametrize(
+    "kwargs,name",
+    [
+        ({"fraction": 1.0}, "fraction"),
+        ({"mass": -0.2}, "mass"),
+        ({"particles": 0}, "particles"),
+        ({"container_energy": 0.0}, "container_energy"),
+        ({"shell_runs": 3}, "shell_runs"),
+        ({"lag": 4}, "lag"),
+    ],
+)
+def test_bad_arguments_of_the_rigid_prediction_are_named(kwargs, name):
+    with pytest.raises(ParameterError, match=f"^{name} = "):
+        predict_rigid_relaxation("flat", 0.5, 0.3, **kwargs)
