@@ -11,6 +11,11 @@
   (:func:`sinktheory.plot.design.heatmap`);
 * ``energy.png`` -- <E>(jT) of the recommended designs.
 
+Beside each recommended design's measures the report gives its predicted settling time
+(:mod:`.settling`: when the mean container energy comes within 5 % of the exact law,
+predicted from short runs on the energy shell, with the model's interval), unless
+``settling=False``.
+
 Examples
 --------
 >>> rows = [{"rank": 1, "layer": 1, "n": 4, "depth": 0.6, "depth_se": 0.01}]
@@ -22,13 +27,16 @@ from __future__ import annotations
 
 import csv
 import math
+import time
 from pathlib import Path
 
 import numpy as np
 
+from ..equilibrium.prediction import MODEL_FACTOR
 from ..plot.design import label, swept
 from .measures import VERDICTS
 from .ranking import rank
+from .settling import settling_column, settling_text
 
 __all__ = ["damper", "fmt", "is_damped", "report_text", "table_rows", "write_csv", "write_report"]
 
@@ -60,9 +68,10 @@ def damper(r: dict) -> str:
     return "dashpot" if r.get("dashpot") == 1.0 else "contact"
 
 
-def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
+def table_rows(ranked: list, dims: list[str], top: int, settling=None) -> list[str]:
     """The markdown table of the ``top`` ranked designs (with zeta_eq and the dissipated
-    share of H0 when any design has inelastic contact)."""
+    share of H0 when any design has inelastic contact, and the predicted settling time
+    when ``settling`` maps ranks to :func:`~.settling.predicted_settling`)."""
     damped = is_damped(ranked)
     head = (
         ["rank", "layer"]
@@ -80,6 +89,7 @@ def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
             "DET",
         ]
         + (["damper", "zeta_eq", "dissipated / H0"] if damped else [])
+        + (["settles / T (predicted)"] if settling else [])
     )
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in ranked[:top]:
@@ -102,12 +112,17 @@ def table_rows(ranked: list, dims: list[str], top: int) -> list[str]:
                 fmt(r["zeta_eq"], r["zeta_eq_se"], 4),
                 fmt(r["dissipated"], r["dissipated_se"]),
             ]
+        if settling:
+            cells.append(settling_text(settling[r["rank"]]))
         lines.append("| " + " | ".join(cells) + " |")
     return lines
 
 
-def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figures=()) -> str:
-    """The markdown report of a design sweep (see the module docstring)."""
+def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figures=(),
+                settling=None, settling_seconds: float = 0.0) -> str:  # fmt: skip
+    """The markdown report of a design sweep (see the module docstring); ``settling``:
+    rank -> predicted settling (:func:`~.settling.settling_column`), made in
+    ``settling_seconds``."""
     ranked = rank(ds) if ranked is None else ranked
     dims = swept(ds)
     a = ds.attrs
@@ -142,7 +157,7 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
     if not ranked:
         lines += ["No design has been computed yet.", ""]
     else:
-        lines += table_rows(ranked, dims, top) + [""]
+        lines += table_rows(ranked, dims, top, settling) + [""]
         lines += [
             "Ranking: Pareto layers of (speed = t50, depth, reliability = spread / E0), "
             "then depth (deepest first), then speed.  Layer 1 is the Pareto front: no other "
@@ -198,6 +213,18 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
         "- lambda_1: mean ± s.e. over runs of the largest Lyapunov exponent from the tangent "
         "map (sinktheory.chaos), same start positions as the first runs of the ensemble.",
     ]
+    if settling:
+        lines += [
+            "- settles / T (predicted): periods until the ensemble mean of the container "
+            "energy, started as the ensemble is, comes within 5 % of the mean of the exact "
+            "equilibrium law (sinktheory.equilibrium.settling_periods): a slow-mode model "
+            "fitted to short runs on the energy shell, not measured on this design's runs; "
+            "the interval is the bootstrap interval widened by the model's known error, a "
+            f"factor {MODEL_FACTOR:g} either way; '+': a slow relaxation, which the model "
+            "predicts short (measure it: sinktheory relaxation --measure); n/a for 1-D "
+            "attachments and damped contact (no law to settle to); "
+            f"{len(settling)} prediction(s) in {settling_seconds:.0f} s;",
+        ]
     if ranked and is_damped(ranked):
         lines += [
             "- damping > 0 (inelastic wall contact, sinktheory.damped): a viscous "
@@ -234,9 +261,11 @@ def write_csv(ranked: list, dims: list[str], path: Path) -> None:
             w.writerow([r.get(k) for k in keys])
 
 
-def write_report(ds, directory, *, ranked: list | None = None, top: int = 10, run=None) -> Path:
+def write_report(ds, directory, *, ranked: list | None = None, top: int = 10, run=None,
+                 settling: bool = True) -> Path:  # fmt: skip
     """Write the charts, ``designs.csv`` and ``report.md`` of a design sweep into
-    ``directory`` (created if needed).  Returns the path of ``report.md``."""
+    ``directory`` (created if needed), with the predicted settling time of the ``top``
+    designs unless ``settling`` is False.  Returns the path of ``report.md``."""
     from ..plot import design as plots
 
     out = Path(directory)
@@ -255,6 +284,11 @@ def write_report(ds, directory, *, ranked: list | None = None, top: int = 10, ru
                 fig.savefig(out / name, dpi=110)
                 figures.append(name)
     write_csv(ranked, dims, out / "designs.csv")
+    predicted, start = None, time.perf_counter()
+    if settling and ranked:
+        predicted = settling_column(ranked, ds.attrs, top)
     path = out / "report.md"
-    path.write_text(report_text(ds, ranked, top=top, run=run, figures=figures))
+    path.write_text(report_text(ds, ranked, top=top, run=run, figures=figures,
+                                settling=predicted,
+                                settling_seconds=time.perf_counter() - start))  # fmt: skip
     return path

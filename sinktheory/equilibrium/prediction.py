@@ -81,6 +81,7 @@ from .kramers import measure_kramers_moyal
 from .law import equilibrium_law
 
 __all__ = [
+    "check_fraction",
     "EXTRAPOLATION",
     "fit_line",
     "LADDER",
@@ -94,6 +95,8 @@ __all__ = [
     "Settling",
     "settling_periods",
     "settling_time",
+    "shell_lags",
+    "shell_prediction",
     "slow_mode",
     "start_total_energy",
 ]
@@ -390,9 +393,7 @@ def predict_relaxation(
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     start = v.positive("container_energy", container_energy)  # E0
-    fraction = v.positive("fraction", fraction)
-    if not fraction < 1:
-        raise ParameterError("fraction", fraction, "a number in (0, 1)")
+    fraction = check_fraction(fraction)
     points = v.positive_int("shell_energies", shell_energies, minimum=3)
     runs = v.positive_int("shell_runs", shell_runs, minimum=4)
     lag = v.positive_int("lag", lag, minimum=8)
@@ -404,12 +405,49 @@ def predict_relaxation(
         periods = v.positive_int("periods", periods)
     total = start_total_energy(sink, start, seed)
     law = equilibrium_law(sink, total)  # checks the energy against the well
-    lags = sorted({max(1, round(lag * x)) for x in LADDER})
+    lags = shell_lags(lag)
     km = measure_kramers_moyal(sink, total, points=points, lags=lags, runs=runs, seed=seed,
                                tol=tol)  # fmt: skip
-    s = km.container_energies / total
-    s0, mu = start / total, law.mean_fraction
-    inc = km.increments / total
+    return shell_prediction(
+        km.container_energies / total, km.increments / total, km.lags, law.pdf,
+        law.mean_fraction, start=start, total=total, particles=sink.particles, mass=sink.mass,
+        lag=lag, coefficients=km.message, fraction=fraction, periods=periods, seed=seed,
+        level=level, resamples=resamples, cells=cells,
+    )  # fmt: skip
+
+
+def check_fraction(fraction) -> float:
+    """``fraction``, the relative excess that counts as settled, checked to lie in (0, 1)."""
+    fraction = v.positive("fraction", fraction)
+    if not fraction < 1:
+        raise ParameterError("fraction", fraction, "a number in (0, 1)")
+    return fraction
+
+
+def shell_lags(lag: int) -> list[int]:
+    """The lags of the regressions for the largest lag ``lag`` (:data:`LADDER`).
+
+    Examples
+    --------
+    >>> shell_lags(128)
+    [16, 32, 64, 128]
+    """
+    return sorted({max(1, round(lag * x)) for x in LADDER})
+
+
+def shell_prediction(s, increments, lags, pdf, mu, *, start: float, total: float,
+                     particles: int, mass: float, lag: int, coefficients: str,
+                     fraction: float = 0.05, periods: int | None = None, seed: int = 0,
+                     level: float = 0.95, resamples: int = 199,
+                     cells: int = 150) -> RelaxationPrediction:  # fmt: skip
+    """The slow-mode prediction (module docstring) from shell runs of any engine: the
+    starting fractions ``s`` = E_c / E (points,), their ``increments`` of s (point, lag,
+    run) at ``lags`` (periods, ascending), the law's density ``pdf`` of s and its mean
+    ``mu``; the start E0 = ``start`` of total energy E = ``total``.  The other arguments
+    are those of :func:`predict_relaxation` (``coefficients``: one line on the runs)."""
+    s, inc, lags = np.asarray(s, float), np.asarray(increments, float), np.asarray(lags)
+    points, _, runs = inc.shape
+    s0 = start / total
     spread_runs = np.maximum(inc.std(axis=2, ddof=1), 1e-12) / math.sqrt(runs)
     rng = np.random.default_rng([seed, 1])
     boot_lambda = np.array([
@@ -425,17 +463,17 @@ def predict_relaxation(
     if use.size < 2 or np.any(np.diff(use) != 1):
         raise NumericalError(
             f"predict_relaxation: the conditional mean of E_c is not resolved at lags "
-            f"{lags} (ln lambda = {np.round(log_lambda, 3).tolist()} ± "
+            f"{lags.tolist()} (ln lambda = {np.round(log_lambda, 3).tolist()} ± "
             f"{np.round(stderr, 3).tolist()}); a shorter lag if it has decayed, more runs "
             f"if it is noise"
         )  # fmt: skip
-    rate, visible = slow_mode(km.lags[use], log_lambda[use], stderr[use])
+    rate, visible = slow_mode(lags[use], log_lambda[use], stderr[use])
     if not math.isfinite(rate):
         raise NumericalError(
-            f"predict_relaxation: ln lambda does not fall over the lags {km.lags[use].tolist()} "
+            f"predict_relaxation: ln lambda does not fall over the lags {lags[use].tolist()} "
             f"({np.round(log_lambda[use], 3).tolist()}); more runs or a longer lag"
         )
-    modes = np.array([slow_mode(km.lags[use], row[use], stderr[use])
+    modes = np.array([slow_mode(lags[use], row[use], stderr[use])
                       if np.all(np.isfinite(row[use])) else (math.inf, 1.0)
                       for row in boot_lambda])  # fmt: skip
     q = (1 - level) / 2
@@ -452,10 +490,10 @@ def predict_relaxation(
 
     finite = modes[np.isfinite(modes[:, 0])]
     curves = np.array([curve(t, c) for t, c in finite])
-    chain = law_chain(law.pdf, s, -(s - mu) / rate, cells=cells)
+    chain = law_chain(pdf, s, -(s - mu) / rate, cells=cells)
     spread = chain.moments(s0, times)[1]
     model = (
-        f"slow mode t_r from the shell's conditional mean at lags {km.lags[use].tolist()} "
+        f"slow mode t_r from the shell's conditional mean at lags {lags[use].tolist()} "
         f"periods, seen through fast noise; spread from a 1-D diffusion with the law as its "
         "stationary "
         f"state; an estimate within a factor of ~{MODEL_FACTOR:g} (docs/guide/equilibrium.rst)"
@@ -463,9 +501,9 @@ def predict_relaxation(
     return RelaxationPrediction(
         energy=start,
         total_energy=total,
-        particles=sink.particles,
-        mass=sink.mass,
-        target=law.mean,
+        particles=particles,
+        mass=mass,
+        target=total * mu,
         fraction=fraction,
         times=times,
         means=total * curve(rate, visible),
@@ -480,7 +518,7 @@ def predict_relaxation(
         rate_high=rate_high,
         visible=visible,
         visible_stderr=float(np.std(finite[:, 1], ddof=1)),
-        lags=km.lags,
+        lags=lags,
         log_lambda=log_lambda,
         log_lambda_stderr=stderr,
         extrapolated=rate > EXTRAPOLATION * lag,
@@ -489,7 +527,7 @@ def predict_relaxation(
         points=points,
         runs=runs,
         seed=seed,
-        coefficients=km.message,
+        coefficients=coefficients,
         model=model,
     )
 
@@ -527,14 +565,18 @@ def settling_periods(
     *,
     fraction: float = 0.05,
     measure: tuple[int, int] | None = None,
+    shell_energies: int = POINTS,
+    shell_runs: int = RUNS,
+    lag: int = LAG,
     seed: int = 0,
     tol: float = 1e-6,
 ) -> Settling:
     """How many periods an ensemble of ``sink`` started at E0 = ``container_energy`` (particles at
     rest) takes until its mean E_c is within ``fraction`` of the law's mean.
 
-    Without ``measure`` the answer is predicted (:func:`predict_relaxation` with its
-    defaults: seconds to a minute, k = 1 to 5) and its interval is widened by the model's
+    Without ``measure`` the answer is predicted (:func:`predict_relaxation` with
+    ``shell_energies``, ``shell_runs`` and ``lag``; with their defaults seconds to a minute,
+    k = 1 to 5) and its interval is widened by the model's
     known error, a factor :data:`MODEL_FACTOR` either way: a scene that must show the
     settled state should run at least ``high`` periods.  With ``measure = (runs, periods)``
     that ensemble is simulated (at ``tol``) and the settling time read by
@@ -551,7 +593,16 @@ def settling_periods(
     ('measured', True)
     """
     if measure is None:
-        p = predict_relaxation(sink, container_energy, fraction=fraction, seed=seed, tol=tol)
+        p = predict_relaxation(
+            sink,
+            container_energy,
+            fraction=fraction,
+            seed=seed,
+            tol=tol,
+            shell_energies=shell_energies,
+            shell_runs=shell_runs,
+            lag=lag,
+        )
         return Settling(
             periods=p.settle_time,
             low=p.settle_low / MODEL_FACTOR,

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..canonical import FIG8_WELL
+from ..equilibrium.prediction import Settling
 from ..model import RunSettings, Sink, Well
 from ..plot.paper import energy_curves, energy_panels, recurrence_columns, running_and_recurrence
 from ..recurrence import rqa
@@ -15,7 +16,7 @@ from ..runstats import ensemble_mean
 from ..simulate import simulate
 from ..sinkstats import SinkMeasures, sink_measures
 from .base import BEYOND, FAILS, HOLDS, UNDECIDED, Claim, Scene, SceneResult
-from .horizons import FACTOR, MAX_HORIZON, Settling, horizon, settling_time
+from .horizons import E0, FACTOR, MASS, MAX_HORIZON, describe, horizon, settling_time
 
 __all__ = [
     "ensemble",
@@ -35,7 +36,7 @@ __all__ = [
     "FIG9_EPS",
 ]
 
-E0, MASS, SEED = 0.5, 0.2, 2016
+SEED = 2016
 
 
 @functools.lru_cache(maxsize=32)
@@ -126,9 +127,7 @@ def long_time(label, shape, alpha, beta, n, k, quick, paper_runs, paper_periods)
     base = dict(label=label, horizon=periods, runs=runs, stored=stored)
     if own and (quick or H > MAX_HORIZON):
         law = equilibrium_law(sink, ensemble(shape, alpha, beta, n, k, paper_runs, 1)[2])
-        why = (f"{FACTOR} settling times are {H} periods (settling {stored.periods}, "
-               f"{stored.low}-{stored.high}{', extrapolated' if stored.extrapolated else ''}"
-               f", on {stored.source} runs), "
+        why = (f"{FACTOR} settling times are {H} periods (settling {describe(stored)}), "
                + ("which a --quick preview does not run" if quick else
                   f"beyond the {MAX_HORIZON} periods the main job's budget allows"))  # fmt: skip
         return LongTime(law=law.mean, equipartition=float("nan"), reason=why, **base)
@@ -169,8 +168,8 @@ def _long_text(lt: LongTime, paper_periods: int) -> str:
         f"paper's {paper_periods})"
     )
     return (
-        f"{where}, horizon {FACTOR} x {lt.stored.periods} periods (settling measured on "
-        f"{lt.stored.source} runs): mean over periods {lt.horizon // FACTOR}-{lt.horizon} "
+        f"{where}, horizon {FACTOR} x {lt.stored.periods:.0f} periods (settling "
+        f"{describe(lt.stored)}): mean over periods {lt.horizon // FACTOR}-{lt.horizon} "
         f"{lt.mean:.4f} +- {lt.se:.4f} (s.e. over the runs' time averages; 3 s.e. = "
         f"{100 * lt.resolution():.0f} % of the law {lt.law:.4f}); this run {lt.settle_text()}"
     )

@@ -13,6 +13,7 @@ from sinktheory.canonical import FIG8_WELL
 from sinktheory.equilibrium import equilibrium_law, measure_relaxation
 from sinktheory.equilibrium.kramers import gauss_grid, jacobi_increments
 from sinktheory.equilibrium.prediction import (
+    MODEL_FACTOR,
     law_chain,
     log_lambdas,
     measure_settling,
@@ -119,6 +120,15 @@ def test_bad_arguments_are_named(kwargs, name):
 def test_bad_energy_is_named():
     with pytest.raises(ParameterError, match="^container_energy = "):
         predict_relaxation(Sink(FIG8_WELL), -1.0)
+
+
+def test_predicted_settling_is_the_prediction_widened_by_the_model_factor():
+    sink = Sink(FIG8_WELL, particles=1, mass=0.2)
+    shell = dict(shell_energies=4, shell_runs=16, lag=64, seed=1)
+    p = predict_relaxation(sink, 0.5, **shell)
+    s = settling_periods(sink, 0.5, **shell)
+    assert s.source == "predicted" and s.periods == p.settle_time
+    assert (s.low, s.high) == (p.settle_low / MODEL_FACTOR, p.settle_high * MODEL_FACTOR)
 
 
 def test_measured_settling_is_the_relaxation_of_the_same_runs():

@@ -10,7 +10,7 @@ from sinktheory.equilibrium import measure_relaxation
 from sinktheory.report import SceneOutcome, render
 from sinktheory.scenes.base import BEYOND, Claim, Scene, SceneResult
 from sinktheory.scenes.ensembles import LongTime, _level_verdict
-from sinktheory.scenes.horizons import FACTOR, SETTLING, horizon
+from sinktheory.scenes.horizons import FACTOR, SETTLING, describe, horizon, settling_time
 from sinktheory.scenes.orbits import _window
 
 LAW, TAU, AMPLITUDE = 0.2, 100.0, 3.0
@@ -35,6 +35,20 @@ def test_horizon_spans_three_measured_settling_times():
     for key, s in SETTLING.items():
         h = horizon(*key)
         assert h % 50 == 0 and FACTOR * s.periods <= h < FACTOR * s.periods + 50
+
+
+def test_a_setup_without_a_stored_measurement_is_predicted_and_says_so():
+    """Fig. 8's well with two particles is not stored: its settling time is predicted, and
+    the prediction's interval covers the one measured in docs/guide/relaxation.inc (1146,
+    789-1612, 32 runs x 3905 periods, seed 1)."""
+    key = ("flat", 0.5, 0.3, 4, 2)
+    assert key not in SETTLING
+    s = settling_time(*key)
+    assert s.source == "predicted" and describe(s).startswith("predicted ")
+    assert s.low <= 789 and 1612 <= s.high
+    h = horizon(*key)
+    assert h % 50 == 0 and max(FACTOR * s.periods, s.high) <= h
+    assert describe(SETTLING[("flat", 0.5, 0.3, 4, 5)]).startswith("measured 5241 ")
 
 
 def test_far_from_the_law_is_a_failure_only_on_a_run_long_enough():

@@ -280,6 +280,27 @@ def test_resume_after_interruption_gives_the_same_store(tmp_path, monkeypatch, c
     assert f"{top['depth']:.3f} ± {top['depth_se']:.3f}" in text
 
 
+def test_report_gives_the_predicted_settling_of_each_design(tmp_path):
+    """The report's predicted settling time of Fig. 8's k = 1 design covers the settling
+    times measured from the paper's start (docs/guide/relaxation.inc: 349, 281-441, 32 runs;
+    sinktheory.scenes.horizons: 657, 202-1156, 16 runs); the 1-D NES gets n/a."""
+    params = {**FIG8, "particles": 1, "attachment": ["well", "nes"], "runs": 2,
+              "periods": 12, "horizons": "12", "lyapunov_runs": 0, "bootstrap": 4}  # fmt: skip
+    run = _explore(params, report=tmp_path / "rep")
+    text = (tmp_path / "rep" / "report.md").read_text()
+    table = text.split("## Recommended designs\n\n")[1].split("\n\n")[0].splitlines()
+    assert table[0].rstrip(" |").endswith("settles / T (predicted)")
+    rank = {r["attachment"]: str(r["rank"]) for r in run.ranked}
+    rows = {line.split("|")[1].strip(): line for line in table[2:]}
+    well, nes = rows[rank["well"]], rows[rank["nes"]]
+    assert nes.rstrip(" |").endswith("n/a: 1-D attachment")
+    number, interval = well.rstrip(" |").rsplit("|", 1)[1].split()
+    low, high = (float(x) for x in interval.strip("()+").split("-"))
+    assert low <= float(number) <= high
+    assert low <= 281 and 1156 <= high
+    assert "predicted" in text and "factor 2.5" in text
+
+
 def test_resume_with_a_swept_shape(tmp_path):
     """The done-when command sweeps --shape flat,symmetric: a string coordinate, which the
     store reads back as numpy's StringDType; resuming must accept it, not call it damaged.
