@@ -152,10 +152,11 @@ def cost_table_path(name: str, coordinates: int) -> Path:
 
 
 #: Wall seconds to print and compile one engine on its first use (numba compiles its
-#: ``advance`` and every kernel under it), as ``reproduce`` adds it to its estimates:
-#: 22-30 s per engine on a 2-core AVX2 EPYC (an earlier session's measurement), 12-16 s
-#: on a 2-core AVX-512 Xeon (the quick Figs. 3, 8, 12 with an empty cache, 2026-11-26).
-COMPILE_SECONDS = 20.0
+#: ``advance`` and every kernel under it, each kernel with run-time powers once per bit
+#: class), as ``reproduce`` adds it to its estimates: 22 s on a quiet 2-core AVX-512 Xeon
+#: and 28 s at a load average of 2.8 (``benchmarks/bench_any_well.py``, 2026-11-26); one
+#: engine now serves every n of its well, where one per (shape, n) took 12-16 s.
+COMPILE_SECONDS = 25.0
 
 
 def compiled(name: str) -> bool:
