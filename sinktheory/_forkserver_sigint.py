@@ -7,6 +7,10 @@ ended it with a traceback of 36 lines, and the driver's next ``submit`` failed w
 EOFError instead of stopping with one line.  Its workers ignore SIGINT as well
 (:func:`sinktheory.sweep.runner._start_worker`): the driver alone ends them.
 
+The driver starts the forkserver with SIGINT already ignored
+(:func:`sinktheory.sweep.runner._start_forkserver`), which covers the interpreter's own
+start-up, before this module runs; a forkserver started otherwise is covered from here on.
+
 Only the forkserver is affected: the module looks for ``multiprocessing.forkserver.main``
 among its callers, so importing it anywhere else (a doctest collector, an import test)
 changes nothing.  An ignored SIGINT would otherwise stay ignored in that process and in

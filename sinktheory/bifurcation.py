@@ -99,6 +99,10 @@ def sampled_run(sink: Sink, settings: RunSettings, start, *, per_period: int) ->
     ``per_period`` steps, so the samples fall on t = jT / per_period.
     """
     per_period = v.positive_int("per_period", per_period)
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    if not isinstance(settings, RunSettings):
+        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
     dt, steps = default_step(sink, settings.total_energy_bound(sink))
     steps = per_period * -(-steps // per_period)  # round up to a multiple
     res = simulate(
@@ -141,6 +145,8 @@ def section_step(sink: Sink, container_energy: float = 0.5) -> tuple[float, int]
     """(dt, steps per period) of a section run: the default scheme's step for the default
     tolerance at the start's energy, taken down to the ladder of
     :func:`sinktheory.stepsize.ladder_step` so that neighbouring betas share it."""
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     settings = RunSettings(container_energy=container_energy, runs=1, periods=1)
     bound = settings.total_energy_bound(sink)
     return ladder_step(default_step(sink, bound)[0])
@@ -254,7 +260,7 @@ def bifurcation(
 
     Raises ParameterError naming ``beta`` if a value gives an invalid well.
     """
-    betas = np.asarray(betas, dtype=float)
+    betas = v.real_array("betas", betas, "a non-empty 1-D array of numbers")
     if betas.ndim != 1 or betas.size == 0:
         raise ParameterError("betas", f"array of shape {betas.shape}", "a non-empty 1-D array")
     sinks = [Sink(Well(alpha, b, n, gamma=gamma, shape=shape), 1, mass) for b in betas]

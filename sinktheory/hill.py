@@ -69,14 +69,18 @@ from ._generated.oscillator import oscillator_acceleration
 from .dop853 import DEFAULT_RTOL
 from .errors import HillIntegrationError, NonFiniteStateError, ParameterError
 from .glossary import renamed
+from .limits import MAX_DPS, MAX_N
 from .twins import python_kernel
 
 __all__ = [
     "check_amplitude",
     "integrate_quarter_period",
     "IMPLEMENTATIONS",
+    "IVP_CALLS",
     "METHODS",
     "monodromy_solve_ivp",
+    "MPMATH_MAX_LAM",
+    "MPMATH_MAX_N",
     "PURE",
     "PYTHON_CALLS",
     "PYTHON_STEPS",
@@ -88,6 +92,12 @@ __all__ = [
 
 #: Solution pairs are divided by 2^RENORM_BITS when their size exceeds 2^RENORM_BITS.
 RENORM_BITS = 400
+#: Bounds of the mpmath reference :func:`quarter_period_mpmath` (about a second at n = 10,
+#: |lam| = 25; its Taylor steps shrink like 1 / sqrt(n) and 1 / sqrt|lam|).
+MPMATH_MAX_N = 200
+MPMATH_MAX_LAM = 1e4
+#: Right-hand-side evaluations :func:`monodromy_solve_ivp` may use (tens of seconds).
+IVP_CALLS = 2_000_000
 
 
 #: What runs the loop of :func:`integrate_quarter_period` (its ``implementation``).
@@ -109,7 +119,6 @@ PURE = _osc.pure_hill_coefficient
 _python_calls = [0]  # single-value integrations interpreted by implementation="auto" so far
 
 
-@functools.cache
 def quarter_period_length(n: int) -> float:
     """Q = T_n(A0 = 1) / 4, the quarter period in the normalised time (generated formula).
 
@@ -118,6 +127,11 @@ def quarter_period_length(n: int) -> float:
     >>> round(quarter_period_length(1), 12)  # pi / 2
     1.570796326795
     """
+    return _quarter_period_length(v.positive_int("n", n, maximum=MAX_N))
+
+
+@functools.cache
+def _quarter_period_length(n: int) -> float:
     return float(python_kernel(_osc.period)(n, 1.0)) / 4.0
 
 
@@ -138,15 +152,16 @@ def check_amplitude(n: int, amplitude: float) -> float:
     sinktheory.errors.ParameterError: amplitude = 1e-100 is not allowed: must be in [1e-50, 1e+50] \
 for n = 4 (A0^6 and A0^2 must stay within float range)
     """
+    n = v.positive_int("n", n, maximum=MAX_N)
     a = v.positive("amplitude", amplitude)
-    power = max(2, 2 * int(n) - 2)
+    power = max(2, 2 * n - 2)
     bound = 10.0 ** (300 / power)
     if not 1.0 / bound <= a <= bound:
         raise ParameterError(
             "amplitude",
             amplitude,
             f"in [{1.0 / bound:.6g}, {bound:.6g}] for n = {n}",
-            why=f"A0^{2 * int(n) - 2} and A0^2 must stay within float range",
+            why=f"A0^{2 * n - 2} and A0^2 must stay within float range",
         )
     return a
 
@@ -380,6 +395,15 @@ def _interpret(q, args, max_steps):
         return python_kernel(_quarter_loop)(python_kernel(q), *args, max_steps, _A, _E3, _E5)
 
 
+def _check_coefficient(coefficient) -> None:
+    """Refuse a coefficient that is not a compiled kernel (which the loop is typed for)."""
+    if not hasattr(coefficient, "py_func"):
+        raise ParameterError(
+            "coefficient", coefficient,
+            "a compiled kernel q(x, alpha, p, n): hill.PURE or a well's kernels.hill_coefficient",
+        )  # fmt: skip
+
+
 def _label(coefficient) -> str:
     """``<module>.<function>`` of a coefficient kernel, for messages (``flat.hill_coefficient``)."""
     return f"{coefficient.__module__.rsplit('.', 1)[-1]}.{coefficient.__name__}"
@@ -448,10 +472,12 @@ def integrate_quarter_period(
         raise ParameterError("rtol", rtol, "in [1e-15, 1e-3]")
     # a fresh writable copy: the compiled loop is typed for writable arrays, and callers
     # may pass read-only views (frozen results)
-    params = np.array(np.atleast_1d(params), dtype=float)
+    params = np.array(np.atleast_1d(v.real_array("params", params)), dtype=float)
     if params.ndim != 1 or not np.all(np.isfinite(params)):
         raise ParameterError("params", params, "a 1-d array of finite numbers")
     max_steps = v.positive_int("max_steps", max_steps)
+    alpha = v.finite("alpha", alpha)
+    _check_coefficient(coefficient)
     method = implementation
     if method not in IMPLEMENTATIONS:
         raise ParameterError("implementation", method, f"one of {', '.join(IMPLEMENTATIONS)}")
@@ -508,9 +534,14 @@ def quarter_period_mpmath(n: int, lam: float, *, dps: int = 30) -> tuple:
     """
     import mpmath
 
-    n = v.positive_int("n", n)
+    n = v.positive_int("n", n, maximum=MPMATH_MAX_N)
     lam_f = v.finite("lam", lam)
-    dps = v.positive_int("dps", dps, minimum=15)
+    if abs(lam_f) > MPMATH_MAX_LAM:
+        raise ParameterError(
+            "lam", lam, f"in [-{MPMATH_MAX_LAM:g}, {MPMATH_MAX_LAM:g}]",
+            why="the Taylor steps shrink like 1 / sqrt|lam|: a reference, not a survey",
+        )  # fmt: skip
+    dps = v.positive_int("dps", dps, minimum=15, maximum=MAX_DPS)
     with mpmath.workdps(dps + 10):
         lam_mp = mpmath.mpf(lam_f)
         q_end = _osc.period_mp(n, mpmath.mpf(1)) / 4
@@ -561,10 +592,22 @@ def monodromy_solve_ivp(
     amplitude = check_amplitude(n, amplitude)
     scale = amplitude ** (2 - 2 * n)
     param = v.finite("param", param)
-    half_periods = v.positive_int("half_periods", half_periods)
+    alpha = v.finite("alpha", alpha)
+    _check_coefficient(coefficient)
+    half_periods = v.positive_int("half_periods", half_periods, maximum=10**4)
+    rtol = v.positive("rtol", rtol)
+    if not 1e-15 <= rtol <= 1e-3:
+        raise ParameterError("rtol", rtol, "in [1e-15, 1e-3]")
     t_end = half_periods * float(_osc.period(n, 1.0)) / 2.0
+    calls = [0]
 
-    def rhs(_t, u):
+    def rhs(t, u):
+        calls[0] += 1
+        if calls[0] > IVP_CALLS:
+            raise HillIntegrationError(
+                f"solve_ivp used its {IVP_CALLS} evaluations at t = {t:.6g} of {t_end:.6g} "
+                f"(n = {n}, param = {param:g}): |q| is too large for this reference"
+            )
         c = scale * coefficient(amplitude * u[0], alpha, param, n)
         acc = _osc.oscillator_acceleration(u[0], n)
         return [u[1], acc, u[3], -c * u[2], u[5], -c * u[4]]

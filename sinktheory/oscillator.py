@@ -154,6 +154,9 @@ def significant(x: mpmath.mpf, digits: int) -> str:
     >>> significant(mpmath.mpf(123456), 2), significant(mpmath.mpf("0.000012345"), 3)
     ('1.2e+5', '1.23e-5')
     """
+    if not isinstance(x, mpmath.mpf) or not mpmath.isfinite(x):
+        raise ParameterError("x", x, "a finite mpmath.mpf")
+    digits = _check_dps(digits, "digits")
     text = mpmath.nstr(x, digits, strip_zeros=False, min_fixed=-4, max_fixed=digits)
     mantissa, e, exponent = text.partition("e")
     return mantissa.rstrip(".") + e + exponent
@@ -258,7 +261,7 @@ def triangle_wave(phase):
     if isinstance(phase, mpmath.mpf):
         p = phase - mpmath.floor(phase)
         return 4 * p if p <= 0.25 else (2 - 4 * p if p <= 0.75 else 4 * p - 4)
-    p = np.mod(np.asarray(phase, dtype=float), 1.0)
+    p = np.mod(v.finite_array("phase", phase), 1.0)
     return np.where(p <= 0.25, 4 * p, np.where(p <= 0.75, 2 - 4 * p, 4 * p - 4))
 
 
@@ -273,7 +276,7 @@ def triangle_wave_derivative(phase):
     >>> triangle_wave_derivative(np.array([0.1, 0.3, 0.8])).tolist()
     [4.0, -4.0, 4.0]
     """
-    p = np.mod(np.asarray(phase, dtype=float), 1.0)
+    p = np.mod(v.finite_array("phase", phase), 1.0)
     return np.where((p < 0.25) | (p >= 0.75), 4.0, -4.0)
 
 

@@ -284,6 +284,16 @@ def triangle_series(n: int | sympy.Symbol, order: int) -> TriangleSeries:
 
 
 # --- the paper's bounds ---------------------------------------------------------------------
+def _sequence(name: str, values) -> list:
+    """``values`` as a non-empty list (ParameterError naming ``name`` otherwise)."""
+    if isinstance(values, str | bytes) or not isinstance(values, Sequence | np.ndarray):
+        raise ParameterError(name, values, "a non-empty list of integers")
+    values = list(np.ravel(values)) if isinstance(values, np.ndarray) else list(values)
+    if not values:
+        raise ParameterError(name, "[]", "a non-empty list of integers")
+    return values
+
+
 def bound(tau, n: int, i: int) -> np.ndarray:
     """The paper's estimate (2n-1) |tau|^(2n+1) / (2^(i-1) (2n+1)^2) for |R_i|.
 
@@ -293,13 +303,12 @@ def bound(tau, n: int, i: int) -> np.ndarray:
     0.05555555555555555
     """
     n = v.positive_int("n", n, maximum=MAX_N)
-    i = v.positive_int("i", i)
+    i = v.positive_int("i", i, maximum=MAX_ORDER)
+    tau = v.finite_array("tau", tau, "values of the triangle wave, in [-1, 1]")
+    if not np.all(np.abs(tau) <= 1):
+        raise ParameterError("tau", f"values up to {np.abs(tau).max():g}", "values in [-1, 1]")
     with np.errstate(under="ignore"):
-        return (
-            (2 * n - 1)
-            * np.abs(np.asarray(tau, dtype=float)) ** (2 * n + 1)
-            / (2 ** (i - 1) * (2 * n + 1) ** 2)
-        )
+        return (2 * n - 1) * np.abs(tau) ** (2 * n + 1) / (2 ** (i - 1) * (2 * n + 1) ** 2)
 
 
 @dataclass(frozen=True)
@@ -333,7 +342,11 @@ def check_bounds(n_values: Sequence[int], orders: Sequence[int]) -> list[BoundCh
     >>> [(c.i, round(c.max_ratio, 4), c.holds) for c in check_bounds([2], [2, 3])]
     [(2, 1.0, True), (3, 0.7111, True)]
     """
-    top = max(v.positive_int("order", i, maximum=MAX_ORDER) for i in orders)
+    orders = [v.positive_int("orders", i, maximum=MAX_ORDER) for i in _sequence("orders", orders)]
+    n_values = [
+        v.positive_int("n_values", n, maximum=MAX_N) for n in _sequence("n_values", n_values)
+    ]
+    top = max(orders)
     out = []
     for n in n_values:
         series = triangle_series(n, top)

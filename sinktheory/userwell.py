@@ -266,6 +266,8 @@ class _Builder:
 def _declared(parameters: Iterable[str], where: str = "parameters") -> dict[str, sp.Symbol]:
     """x, y and the parameter symbols by name (real symbols; names checked)."""
     symbols = {"x": x, "y": y}
+    if isinstance(parameters, str | bytes) or not isinstance(parameters, Iterable):
+        raise WellDefinitionError(where, parameters, "must be a list of parameter names")
     for name in parameters:
         if not isinstance(name, str) or not _NAME.fullmatch(name):
             raise WellDefinitionError(
@@ -476,6 +478,8 @@ class UserWell:
         params = self.parameters
         if isinstance(params, Mapping):
             params = tuple(_parameter(k, v) for k, v in params.items())
+        if isinstance(params, str | bytes) or not isinstance(params, Iterable):
+            raise WellDefinitionError("parameters", params, "must be a mapping or Parameters")
         params = tuple(params)
         if not all(isinstance(p, Parameter) for p in params):
             raise WellDefinitionError("parameters", params, "must be Parameter objects")
@@ -650,10 +654,18 @@ def _directions() -> tuple[np.ndarray, np.ndarray]:
     return cos, sin
 
 
+def _radius(radius: object) -> float:
+    """The radius of the checks: a finite number > 0 whose grids stay finite."""
+    radius = _number("radius", radius)
+    if not 0 < radius <= 1e300:
+        raise WellDefinitionError("radius", radius, "must be in (0, 1e300]")
+    return radius
+
+
 def disc_grid(radius: float) -> tuple[np.ndarray, np.ndarray]:
     """Points (x, y) of the disc r <= radius: the centre and radii radius k/16,
     k = 1..16, on :data:`DIRECTIONS` directions (1025 points)."""
-    r = radius * np.arange(1, 17) / 16
+    r = _radius(radius) * np.arange(1, 17) / 16
     cos, sin = _directions()
     xs = np.concatenate([[0.0], np.outer(r, cos).ravel()])
     ys = np.concatenate([[0.0], np.outer(r, sin).ravel()])
@@ -662,7 +674,7 @@ def disc_grid(radius: float) -> tuple[np.ndarray, np.ndarray]:
 
 def ring_grid(radius: float) -> tuple[np.ndarray, np.ndarray]:
     """Rings r = radius 2^-k, k = 1..20, on :data:`DIRECTIONS` directions."""
-    r = radius * 2.0 ** -np.arange(1, 21)
+    r = _radius(radius) * 2.0 ** -np.arange(1, 21)
     cos, sin = _directions()
     return np.outer(r, cos), np.outer(r, sin)
 
@@ -772,6 +784,8 @@ def y_invariant(V: sp.Expr) -> tuple[bool, str]:
     >>> y_invariant(parse_potential("x**2 + y**2 + x**2*y", ()))
     (False, 'dV/dy(x, 0) = x**2, not identically 0')
     """
+    if not isinstance(V, sp.Expr):  # sympify would evaluate a string as Python
+        raise WellDefinitionError("V", type(V).__name__, "must be a SymPy expression")
     return y_invariance(V)
 
 
@@ -795,9 +809,9 @@ def check_well(well: UserWell, radius: float = 1.0, **given: float) -> WellCheck
 confining: at every energy above V(0, 0) the basin reaches (0, -1.04858e+06) on the edge of \
 the box |x|, |y| <= 1.04858e+06
     """
-    radius = _number("radius", radius)
-    if radius <= 0:
-        raise WellDefinitionError("radius", radius, "must be > 0")
+    if not isinstance(well, UserWell):
+        raise WellDefinitionError("well", type(well).__name__, "must be a UserWell")
+    radius = _radius(radius)
     values = well.values(**given)
     V = well.potential.subs(values)
     where = f"well {well.name}"

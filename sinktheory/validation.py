@@ -31,6 +31,7 @@ __all__ = [
     "BOOLS",
     "choice",
     "finite",
+    "finite_array",
     "fits_memory",
     "flag",
     "MAX_STEPS_PER_PERIOD",
@@ -291,3 +292,33 @@ def real_array(name: str, value: object, allowed: str = "an array of real number
     except (TypeError, ValueError, np.exceptions.ComplexWarning):
         shown = value if isinstance(value, str | int | float | type(None)) else type(value).__name__
         raise ParameterError(name, shown, allowed) from None
+
+
+def finite_array(name: str, value: object, allowed: str = "an array of finite real numbers",
+                 ndim: int | None = None):  # fmt: skip
+    """``value`` as a float ndarray of finite numbers (``ndim`` dimensions if given), else
+    ParameterError naming ``name`` (None, text, complex numbers, NaN and infinities too).
+
+    Examples
+    --------
+    >>> finite_array("tau", [0.5, 1]).tolist()
+    [0.5, 1.0]
+    >>> finite_array("tau", None)
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: tau = None is not allowed: must be an array of finite \
+real numbers
+    """
+    import numpy as np
+
+    if value is None or _is_bool(value):
+        raise ParameterError(name, value, allowed)
+    out = real_array(name, value, allowed)
+    if (
+        out.dtype == object
+        or not np.all(np.isfinite(out))
+        or (ndim is not None and out.ndim != ndim)
+    ):
+        shown = value if isinstance(value, str | int | float) else f"an array of shape {out.shape}"
+        raise ParameterError(name, shown, allowed)
+    return out

@@ -1,13 +1,21 @@
 """Shared by the tests: run ``sinktheory`` in-process and capture its output, check a
-clean refusal (exit 2, one line naming the parameter, nothing written); and wells typed
-as a user would, independently of the registry."""
+clean refusal (exit 2, one line naming the parameter, nothing written); call an API entry
+point with one hostile argument; and wells typed as a user would, independently of the
+registry."""
 
+import dataclasses
+import math
+import os
+import signal
 import subprocess
 import sys
 import warnings
 from pathlib import Path
 
+import numpy as np
+
 from sinktheory.cli import main
+from sinktheory.errors import NumericalError, ParameterError, WellDefinitionError
 
 
 def run_cli(argv, capsys):
@@ -113,3 +121,102 @@ def refused_well(argv, capsys, tmp_path, monkeypatch, reason: str) -> str:
     assert reason in lines[0], lines[0]
     assert snapshot(tmp_path) == before, "a file was written"
     return lines[0]
+
+
+#: Hostile values tried for every argument of an API entry point (valid ones among them
+#: are fine too): wrong types, bools, NaN, infinities, huge and tiny numbers, negative
+#: counts, wrong shapes, text, complex numbers.
+HOSTILE = [
+    None, True, np.True_, -1, 0, 1, 2, 2.5, -0.5, 10**12, 1e12, 1e308, -1e308, 1e-300,
+    math.nan, math.inf, -math.inf, "x", "", [], [1.0, 2.0], [[5.0, 5.0]], [[math.nan]],
+    {"a": 1}, object(), 3 + 1j,
+]  # fmt: skip
+
+#: Examples per fuzzed entry point are multiplied by this (environment variable
+#: SINKTHEORY_FUZZ_SCALE, default 1): CI runs the small fuzz, a larger run sets it.
+FUZZ_SCALE = max(1, int(os.environ.get("SINKTHEORY_FUZZ_SCALE", "1")))
+#: Estimated seconds of work a hostile call may start (the interactive limit lowered to
+#: this, so a huge but valid size is refused by the work estimate, as it would be at its
+#: own scale): the fuzz stays fast, and the estimates are tried too.
+FUZZ_WORK_SECONDS = 2.0
+#: Seconds one hostile call may take before it counts as a hang (work started beyond its
+#: estimate, or a loop no estimate covers).
+HANG_SECONDS = 60
+
+
+class Hang(AssertionError):
+    """A call with one hostile argument ran past :data:`HANG_SECONDS`."""
+
+
+def non_finite(value, depth: int = 0) -> str | None:
+    """Where ``value`` (a number, array, sequence, mapping or dataclass result) holds a
+    NaN, an infinity or a complex number, or None if nowhere."""
+    if depth > 4 or isinstance(value, str | bytes | bool | np.bool_):
+        return None
+    if isinstance(value, complex | np.complexfloating):
+        return f"complex {value}"
+    if isinstance(value, float | np.floating):
+        return None if math.isfinite(value) else f"{value}"
+    if isinstance(value, np.ndarray):
+        if value.dtype.kind == "c":
+            return f"a complex array {value.shape}"
+        if value.dtype.kind == "f" and not np.all(np.isfinite(value)):
+            return f"an array {value.shape} holding NaN or inf"
+        return None
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        items = {f.name: getattr(value, f.name) for f in dataclasses.fields(value)}.items()
+    elif isinstance(value, dict):
+        items = value.items()
+    elif isinstance(value, list | tuple):
+        items = enumerate(value)
+    else:
+        return None
+    for key, item in items:
+        where = non_finite(item, depth + 1)
+        if where:
+            return f"{key}: {where}"
+    return None
+
+
+def call_hostile(function, valid: dict, argument: str, value):
+    """``function(**valid)`` with ``argument`` replaced by ``value``, under the work limit
+    :data:`FUZZ_WORK_SECONDS`: the result, or None if it was refused as documented -- a
+    one-line ParameterError naming its parameter first, or a NumericalError.  Any other
+    exception escapes; a call running past :data:`HANG_SECONDS` raises :class:`Hang`.  A
+    result holding NaN, inf or a complex number where the valid call's result holds none
+    is a silently wrong number (see :func:`fuzz_one`)."""
+
+    def alarm(*_):
+        raise Hang(f"{argument} = {value!r}: still running after {HANG_SECONDS} s")
+
+    from sinktheory.worklimit import interactive_limit
+
+    previous = signal.signal(signal.SIGALRM, alarm)
+    signal.alarm(HANG_SECONDS)
+    try:
+        with interactive_limit(hours=FUZZ_WORK_SECONDS / 3600):
+            return function(**{**valid, argument: value})
+    except ParameterError as e:
+        text = str(e)
+        lead = f"{e.name}: " if isinstance(e, WellDefinitionError) else f"{e.name} = "
+        assert e.name and text.startswith(lead) and "\n" not in text, text
+    except NumericalError as e:
+        assert "\n" not in str(e), str(e)
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)
+    return None
+
+
+def fuzz_one(function, valid: dict, data, values=HOSTILE, baseline=None) -> None:
+    """Draw one argument of ``valid`` and one of ``values`` (hypothesis ``data``) and call
+    :func:`call_hostile`; a result with a NaN, inf or complex number fails unless
+    ``baseline`` (the valid call's :func:`non_finite`) has one too."""
+    from hypothesis import strategies as st
+
+    argument = data.draw(st.sampled_from(sorted(valid)), label="argument")
+    value = data.draw(st.sampled_from(values), label="value")
+    result = call_hostile(function, valid, argument, value)
+    if result is not None and baseline is None:
+        where = non_finite(result)
+        assert where is None, f"{argument} = {value!r} returned {where} silently"

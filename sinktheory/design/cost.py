@@ -38,7 +38,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import validation as v
 from ..ensemble import settings_of, sink_of
+from ..errors import ParameterError
 from ..stepsize import choose
 from ..worklimit import duration
 
@@ -219,9 +221,22 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     """
     import numba
 
+    from ..sweep.plan import Sweep
+
+    if not isinstance(sweep, Sweep) or sweep.kind.name != "design":
+        raise ParameterError("sweep", type(sweep).__name__, "a design Sweep (explorer.plan)")
+    workers = None if workers is None else v.positive_int("workers", workers)
+    seconds = v.positive("seconds", seconds)
+    if seconds > 3600:
+        raise ParameterError("seconds", seconds, "at most 3600 (seconds of timing)")
+    size = sweep.grid.size
+    if todo is not None:
+        todo = np.atleast_1d(v.finite_array("todo", todo, f"indices of points in [0, {size})"))
+        if todo.ndim > 1 or not np.all((todo >= 0) & (todo < size) & (todo == np.round(todo))):
+            raise ParameterError("todo", f"{todo.size} value(s)", f"indices in [0, {size})")
     started = time.perf_counter()
     workers = workers or os.cpu_count() or 1
-    todo = np.arange(sweep.grid.size) if todo is None else np.asarray(todo, dtype=int)
+    todo = np.arange(size) if todo is None else todo.astype(int)
     points = [sweep.grid.point(int(i)) for i in todo]
     if not points:
         return Estimate(0, 0.0, np.zeros(0), 0.0, 0.0, 0.0, TANGENT, {}, 0.0, workers)

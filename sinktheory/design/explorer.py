@@ -153,8 +153,17 @@ def explore(
     -------
     DesignRun
     """
+    from .. import validation as v
+    from ..errors import ParameterError
     from ..sweep.runner import execute
 
+    for name, value in (("progress", progress), ("estimate_first", estimate_first)):
+        v.flag(name, value)
+    top = v.positive_int("top", top)
+    if report is not None:  # refused before the work, not after it
+        if not isinstance(report, str | Path) or not str(report).strip():
+            raise ParameterError("report", report, "the path of a directory (a str or Path)")
+        v.writable_directory("report", report, Path(report).parent)
     sweep = plan(params, seed)
     todo, repaired = todo_of(sweep, store, resume, repair)
     est = None

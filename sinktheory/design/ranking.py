@@ -41,6 +41,9 @@ import math
 
 import numpy as np
 
+from .. import validation as v
+from ..errors import ParameterError
+
 __all__ = ["DESIGN_PARAMS", "design_table", "pareto_front", "pareto_layers", "rank"]
 
 #: The design parameters a user sweeps (any other parameter of the kind may be given too).
@@ -65,10 +68,17 @@ def pareto_layers(speed, depth, spread) -> np.ndarray:
     the module docstring).  A non-finite depth or spread counts as the worst value of its
     objective.
     """
-    reached = np.isfinite(np.asarray(speed, dtype=float))
-    s = np.where(reached, speed, np.inf).astype(float)
-    d = np.where(np.isfinite(depth), depth, -np.inf).astype(float)
-    r = np.where(np.isfinite(spread), spread, np.inf).astype(float)
+    speed, depth, spread = (
+        v.real_array(name, x, "a 1-d array of real numbers, one per design")
+        for name, x in (("speed", speed), ("depth", depth), ("spread", spread))
+    )
+    for name, x in (("speed", speed), ("depth", depth), ("spread", spread)):
+        if x.ndim != 1 or x.shape != speed.shape:
+            raise ParameterError(name, f"an array of shape {x.shape}", f"{speed.size} values")
+    reached = np.isfinite(speed)
+    s = np.where(reached, speed, np.inf)
+    d = np.where(np.isfinite(depth), depth, -np.inf)
+    r = np.where(np.isfinite(spread), spread, np.inf)
     costs = np.stack([s, -d, r], axis=1)  # all minimised
     layer = np.zeros(len(s), dtype=int)
     current = 1

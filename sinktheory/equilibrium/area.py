@@ -86,7 +86,11 @@ def scaled_energy(well: Well, energy: float) -> float:
     1.0
     """
     _check_well(well)
-    return (2 * well.n * v.positive("energy", energy) / well.gamma) ** (1.0 / well.n)
+    ratio = 2 * well.n * v.positive("energy", energy) / well.gamma
+    if not math.isfinite(ratio) or ratio == 0:  # (2 n e / gamma)^(1/n) would be inf or 0
+        raise v.ParameterError("energy", energy, f"with 2 n e / gamma a positive float (gamma = "
+                             f"{well.gamma:g}, n = {well.n})")  # fmt: skip
+    return ratio ** (1.0 / well.n)
 
 
 def _beta_function(a: float, b: float) -> float:

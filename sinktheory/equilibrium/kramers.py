@@ -61,9 +61,11 @@ from numpy.polynomial import legendre as L
 from scipy import stats
 
 from .. import validation as v
-from ..errors import ParameterError
+from ..errors import NonFiniteStateError, NumericalError, ParameterError
+from ..limits import MAX_PERIODS
 from ..model import RunSettings, Sink
 from ..results import Result
+from ..worklimit import check_particle_steps
 from .law import EquilibriumLaw
 from .microcanonical import shell_states
 
@@ -76,6 +78,9 @@ __all__ = [
     "KramersMoyal",
     "LAGS",
     "measure_kramers_moyal",
+    "MAX_CELLS",
+    "MAX_POINTS",
+    "MAX_SUBSTEPS",
     "TOP_GAP",
     "solve_fokker_planck",
 ]
@@ -85,6 +90,23 @@ LAGS = (1, 2, 4, 8)
 #: Smallest share of the total energy left to the particles at the top grid point (the top
 #: Gauss node of s = 1 - w^n is 1 to rounding for n >= 10).
 TOP_GAP = 1e-9
+#: Most grid points (the Gauss-Legendre nodes cost points^2 memory; 12 are the default).
+MAX_POINTS = 1000
+#: Most finite-volume cells of :func:`solve_fokker_planck` (1000 are the default).
+MAX_CELLS = 10**6
+#: Most implicit Euler steps per period of :func:`solve_fokker_planck` (4 are the default).
+MAX_SUBSTEPS = 10**4
+
+
+def _lags(lags) -> np.ndarray:
+    """``lags`` as a 1-d array of integers >= 1 (ParameterError naming ``lags``)."""
+    allowed = "a non-empty list of integers >= 1 (periods)"
+    values = v.finite_array("lags", lags, allowed)
+    if values.ndim > 1 or values.size == 0:
+        raise ParameterError("lags", f"an array of shape {values.shape}", allowed)
+    return np.array(
+        [v.positive_int("lags", x, maximum=MAX_PERIODS) for x in values.ravel()], dtype=int
+    )
 
 
 def gauss_grid(points: int, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -97,7 +119,7 @@ def gauss_grid(points: int, n: int) -> tuple[np.ndarray, np.ndarray]:
     >>> round(float(W @ (1 - s) ** 0.25), 12)  # \\int (1 - s)^(1/4) ds = 0.8
     0.8
     """
-    points = v.positive_int("points", points, minimum=2)
+    points = v.positive_int("points", points, minimum=2, maximum=MAX_POINTS)
     n = v.positive_int("n", n)
     x, w = L.leggauss(points)
     w_nodes, w_weights = 0.5 * (x + 1), 0.5 * w
@@ -164,7 +186,7 @@ class KramersMoyal(Result):
         """Index of ``lag`` in :attr:`lags` (None: the middle one)."""
         if lag is None:
             return len(self.lags) // 2
-        hits = np.flatnonzero(self.lags == lag)
+        hits = np.flatnonzero(self.lags == v.positive_int("lag", lag))
         if not hits.size:
             raise ParameterError("lag", lag, f"one of the measured lags {self.lags.tolist()}")
         return int(hits[0])
@@ -196,9 +218,12 @@ def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base
     >>> kramers_moyal([0.2, 0.7], 1.0, 1, [1, 2], inc, [0.5, 0.5], base_lag=1).drift.ravel()
     array([0.5, 0.5])
     """
-    s = np.asarray(s, dtype=float)
-    lags = np.asarray(lags, dtype=int)
-    inc = np.asarray(increments, dtype=float)
+    s = v.finite_array("s", s, "grid energies s = E_c / E: a 1-d array of finite numbers", 1)
+    energy = v.positive("energy", energy)
+    n = v.positive_int("n", n)
+    lags = _lags(lags)
+    base_lag = v.positive_int("base_lag", base_lag, minimum=0, maximum=MAX_PERIODS)
+    inc = v.real_array("increments", increments)
     if inc.ndim != 3 or inc.shape[:2] != (s.size, lags.size) or inc.shape[2] < 2:
         raise ParameterError(
             "increments", f"an array of shape {inc.shape}",
@@ -206,7 +231,11 @@ def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base
         )  # fmt: skip
     if not np.all(np.isfinite(inc)):
         raise ParameterError("increments", "non-finite values", "finite numbers")
-    if weights is None:
+    if weights is not None:
+        weights = v.finite_array("weights", weights, f"{s.size} finite quadrature weights")
+        if weights.shape != s.shape:
+            raise ParameterError("weights", f"{weights.size} weight(s)", f"{s.size} weights")
+    else:
         grid, weights = gauss_grid(s.size, n)
         if not np.allclose(grid, s, rtol=0, atol=1e-12):
             raise ParameterError("s", s.tolist(), f"the Gauss grid of {s.size} points, n = {n}")
@@ -300,9 +329,13 @@ def measure_kramers_moyal(
     e = v.positive("energy", energy)
     points = v.positive_int("points", points, minimum=2)
     runs = v.positive_int("runs", runs, minimum=2)
-    lags = {v.positive_int("lag", x) for x in np.atleast_1d(lags)}
-    base_lag = v.positive_int("base_lag", base_lag, minimum=0)
+    seed = v.positive_int("seed", seed, minimum=0)
+    lags = set(_lags(lags).tolist())
+    base_lag = v.positive_int("base_lag", base_lag, minimum=0, maximum=MAX_PERIODS)
     lags = np.array(sorted(lags | {base_lag} - {0}), dtype=int)
+    width = 2 + 4 * sink.particles + int(lags.max()) + 1  # a state and its E_c record
+    v.fits_memory("runs", runs, 16.0 * points * runs * width,
+                  f"{points} point(s) x {runs} run(s) x {width} numbers", "fewer")  # fmt: skip
     s, weights = gauss_grid(points, sink.well.n)
     s = np.minimum(s, 1 - TOP_GAP)  # 1 - w^n rounds to 1 at the top node of stiff walls
     children = np.random.SeedSequence(seed).spawn(points)
@@ -396,7 +429,11 @@ def check_fluctuation_dissipation(
         raise ParameterError("km", km, "a KramersMoyal result")
     if not isinstance(law, EquilibriumLaw):
         raise ParameterError("law", law, "an EquilibriumLaw")
-    tests = v.positive_int("tests", tests)
+    most = 2 * km.container_energies.size  # two moments per grid point
+    tests = v.positive_int(
+        "tests", tests, maximum=most, why=lambda t: f"{most // 2} grid points give at most "
+        f"{most} independent test integrals",
+    )  # fmt: skip
     if not math.isclose(law.total_energy, km.energy, rel_tol=1e-12):
         raise ParameterError("law", f"a law at E = {law.total_energy:g}",
                              f"the law at E = {km.energy:g}")  # fmt: skip
@@ -452,7 +489,13 @@ def _verdict(km: KramersMoyal, law: EquilibriumLaw, j: int, integrals, cov, scal
     """The chi-square of the test integrals (zero if the law is stationary) against their
     covariance, as a :class:`FluctuationDissipation` at lag ``km.lags[j]``."""
     tests = integrals.size
-    chi2 = float(integrals @ np.linalg.solve(cov, integrals))
+    try:
+        chi2 = float(integrals @ np.linalg.solve(cov, integrals))
+    except np.linalg.LinAlgError:
+        raise NumericalError(
+            f"fluctuation-dissipation check at lag {km.lags[j]}: the covariance of the "
+            f"{tests} test integrals is singular (fewer tests, or more runs)"
+        ) from None
     return FluctuationDissipation(
         lag=int(km.lags[j]),
         tests=tests,
@@ -499,18 +542,30 @@ def solve_fokker_planck(
     True
     """
     e = v.positive("energy", energy)
-    cells = v.positive_int("cells", cells, minimum=10)
-    substeps = v.positive_int("substeps", substeps)
+    cells = v.positive_int("cells", cells, minimum=10, maximum=MAX_CELLS)
+    substeps = v.positive_int("substeps", substeps, maximum=MAX_SUBSTEPS)
     periods = v.positive_int("periods", periods, minimum=0)
     x0 = v.finite("start", start)
     if not 0 <= x0 <= e:
         raise ParameterError("start", x0, f"an energy in [0, {e:g}]")
-    points = np.asarray(points, dtype=float)
+    points = v.finite_array("points", points, "an increasing 1-d array of energies", 1)
+    if points.size < 2 or not np.all(np.diff(points) > 0):
+        raise ParameterError("points", f"{points.size} value(s)", "an increasing 1-d array")
+    coefficients = []
+    for name, values in (("drift", drift), ("diffusion", diffusion)):
+        values = v.finite_array(name, values, f"{points.size} finite values, one per point")
+        if values.shape != points.shape:
+            raise ParameterError(name, f"{values.size} value(s)", f"{points.size}, one per point")
+        coefficients.append(values)
+    v.fits_memory("periods", periods, 16.0 * (periods + 1), f"{periods + 1} periods", "fewer")
+    check_particle_steps("periods", periods, float(cells) * substeps * periods,
+                         f"{periods} period(s) x {substeps} step(s) x {cells} cells, a cell "
+                         "step priced as a particle step")  # fmt: skip
     h = e / cells
     centres = (np.arange(cells) + 0.5) * h
     faces = np.arange(1, cells) * h
-    d1 = np.interp(faces, points, np.asarray(drift, dtype=float))
-    d2 = np.clip(np.interp(centres, points, np.asarray(diffusion, dtype=float)), 0.0, None)
+    d1 = np.interp(faces, points, coefficients[0])
+    d2 = np.clip(np.interp(centres, points, coefficients[1]), 0.0, None)
     # J_{i+1/2} = max(d1, 0) p_i + min(d1, 0) p_{i+1} - (d2_{i+1} p_{i+1} - d2_i p_i) / h
     left = np.maximum(d1, 0) + d2[:-1] / h  # coefficient of p_i in J_{i+1/2}
     right = np.minimum(d1, 0) - d2[1:] / h  # coefficient of p_{i+1}
@@ -534,8 +589,13 @@ def solve_fokker_planck(
         if t:
             for _ in range(substeps):
                 p = solve_banded((1, 1), banded, p)
-        m = p @ centres / p.sum()
-        means[t], sds[t] = m, math.sqrt(max(p @ (centres - m) ** 2 / p.sum(), 0.0))
+        with np.errstate(over="ignore", invalid="ignore"):  # refused just below
+            m = p @ centres / p.sum()
+            means[t], sds[t] = m, math.sqrt(max(p @ (centres - m) ** 2 / p.sum(), 0.0))
+        if not (math.isfinite(means[t]) and math.isfinite(sds[t])):
+            raise NonFiniteStateError(
+                f"Fokker-Planck solution on [0, {e:g}]: mean or spread not finite at period {t}"
+            )
     return means, sds
 
 
@@ -552,17 +612,35 @@ def jacobi_increments(s0, lags, runs: int, rng: np.random.Generator, *, a: float
     >>> jacobi_increments([0.5], (1, 2), 3, np.random.default_rng(0), a=1, b=1, c=0.1).shape
     (1, 2, 3)
     """
-    s0 = np.asarray(s0, dtype=float)
-    lags = np.asarray(lags, dtype=int)
+    s0 = v.finite_array("s0", s0, "a 1-d array of start values in [0, 1]", 1)
+    if not np.all((s0 >= 0) & (s0 <= 1)):
+        raise ParameterError("s0", s0.tolist(), "a 1-d array of start values in [0, 1]")
+    lags = _lags(lags)
+    runs = v.positive_int("runs", runs)
+    if not isinstance(rng, np.random.Generator):
+        raise ParameterError("rng", type(rng).__name__, "a numpy.random.Generator")
+    a, b, c = v.nonnegative("a", a), v.nonnegative("b", b), v.positive("c", c)
+    substeps = v.positive_int("substeps", substeps)
+    v.fits_memory("runs", runs, 8.0 * s0.size * runs * (lags.size + 4),
+                  f"{s0.size} point(s) x {runs} run(s)", "fewer")  # fmt: skip
+    steps = float(lags.max()) * substeps * s0.size * runs
+    what = f"{lags.max()} x {substeps} step(s) x {s0.size} x {runs} run(s)"
+    check_particle_steps("lags", int(lags.max()), steps, what)
     dt = 1.0 / substeps
     s = np.repeat(s0[:, None], runs, axis=1)
     out = np.empty((s0.size, lags.size, runs))
-    for step in range(1, lags.max() * substeps + 1):
-        drift = c * (a * (1 - s) - b * s)
-        noise = np.sqrt(2 * c * np.clip(s * (1 - s), 0, None) * dt)
-        s = np.clip(s + drift * dt + noise * rng.standard_normal(s.shape), 0.0, 1.0)
-        if step % substeps == 0:
-            hit = lags == step // substeps
-            if hit.any():
-                out[:, np.flatnonzero(hit)[0]] = s - s0[:, None]
+    with np.errstate(over="ignore", invalid="ignore"):  # a non-finite state is refused below
+        for step in range(1, lags.max() * substeps + 1):
+            drift = c * (a * (1 - s) - b * s)
+            noise = np.sqrt(2 * c * np.clip(s * (1 - s), 0, None) * dt)
+            s = np.clip(s + drift * dt + noise * rng.standard_normal(s.shape), 0.0, 1.0)
+            if step % substeps == 0:
+                hit = lags == step // substeps
+                if hit.any():
+                    out[:, np.flatnonzero(hit)[0]] = s - s0[:, None]
+    if not np.all(np.isfinite(out)):
+        raise NonFiniteStateError(
+            f"Jacobi diffusion (a = {a:g}, b = {b:g}, c = {c:g}): a non-finite state within "
+            f"{lags.max()} time unit(s); c / substeps is too large"
+        )
     return out

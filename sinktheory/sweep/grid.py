@@ -111,6 +111,8 @@ def parse_param(text: str) -> tuple[str, list[Value]]:
     Whether the name and values suit the sweep's kind is checked later
     (:func:`sinktheory.sweep.kinds.get_kind`).
     """
+    if not isinstance(text, str):
+        raise ParameterError("--param", text, "NAME=LO:HI:COUNT, NAME=V1,V2,... or NAME=VALUE")
     name, sep, rhs = text.partition("=")
     name = name.strip()
     if not sep or not name or not rhs.strip():

@@ -283,8 +283,10 @@ class _Engine:
         cheap = self.workers is None and work < POOL_THRESHOLD
         if workers <= 1 or cheap:
             return _run_here(kind.name, tasks)
+        context = _context()
+        _start_forkserver()
         pool = ProcessPoolExecutor(
-            workers, mp_context=_context(), initializer=_start_worker, initargs=(os.getpid(),)
+            workers, mp_context=context, initializer=_start_worker, initargs=(os.getpid(),)
         )
         self._close = lambda: pool.shutdown(wait=True, cancel_futures=True)
         self._abort = lambda: _end_workers(pool)
@@ -299,10 +301,15 @@ class _Engine:
         self._close = self._abort = None  # the pool and its queues can be freed now
 
 
-def _end_workers(pool: ProcessPoolExecutor, grace: float = 2.0) -> None:
+def _end_workers(pool: ProcessPoolExecutor, grace: float = 0.5) -> None:
     """End a pool at once, its running tasks too (an interrupt, a failed point): queued
     tasks are cancelled and the worker processes terminated (SIGTERM, then SIGKILL after
-    ``grace`` seconds), so neither the driver nor its workers wait for tasks in flight."""
+    ``grace`` seconds), so neither the driver nor its workers wait for tasks in flight.
+
+    A worker holds SIGTERM while a compiled call runs (:func:`sinktheory.progress.chunks`,
+    a tenth of a second), but its first task also loads the compiled kernels inside that
+    call (a second or more); the workers hold nothing the driver needs (it alone writes
+    the store), so the grace is short: a 2 s grace made Ctrl-C take 2.5-2.7 s."""
     processes = list((getattr(pool, "_processes", None) or {}).values())
     for process in processes:
         if process.is_alive():
@@ -399,6 +406,31 @@ def _context():
     # SIGINT ignored before the heavy imports (see sinktheory._forkserver_sigint)
     context.set_forkserver_preload(["sinktheory._forkserver_sigint", "sinktheory.sweep.runner"])
     return context
+
+
+def _start_forkserver() -> None:
+    """Start the forkserver (once per process) with SIGINT ignored from its first
+    instruction.
+
+    Ctrl-C reaches the whole process group.  The forkserver ignores SIGINT once it has
+    imported :mod:`sinktheory._forkserver_sigint`, but a Ctrl-C during its start-up (the
+    interpreter and ``multiprocessing`` imports) ended it with a 7-line traceback after
+    the driver's one line (1 try in 8 of benchmarks/bench_interrupt_sweep.py).  An ignored
+    signal stays ignored across exec, and Python leaves an ignored SIGINT alone, so the
+    driver ignores SIGINT while it spawns the forkserver (blocking it would not do: the
+    spawn resets the child's signal mask).  A Ctrl-C within those milliseconds is lost
+    to the driver as well (a second one stops it).  Outside the main thread, where
+    handlers cannot be set, the forkserver starts as it is."""
+    from multiprocessing import forkserver
+
+    if threading.current_thread() is not threading.main_thread():
+        forkserver.ensure_running()
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        forkserver.ensure_running()
+    finally:
+        signal.signal(signal.SIGINT, signal.SIG_DFL if previous is None else previous)
 
 
 def _start_worker(driver: int) -> None:
