@@ -62,6 +62,7 @@ from scipy import stats
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import old_attribute, renamed
 from ..model import RunSettings, Sink
 from ..results import Result
 from .law import EquilibriumLaw
@@ -107,13 +108,14 @@ def gauss_grid(points: int, n: int) -> tuple[np.ndarray, np.ndarray]:
     return s[order], weights[order]
 
 
+@renamed(energy="total_energy")
 @dataclass(frozen=True)
 class KramersMoyal(Result):
     """Kramers-Moyal coefficients of E_c on a grid of starting energies (module docstring).
 
     Attributes
     ----------
-    energy : the total energy E
+    total_energy : the total energy E
     n : the wall exponent the grid was built with (s = 1 - w^n)
     container_energies : starting E_c on the grid (ascending)
     weights : W_i, quadrature weights in s = E_c / E
@@ -130,7 +132,7 @@ class KramersMoyal(Result):
     message : one line on how they were measured
     """
 
-    energy: float
+    total_energy: float
     n: int
     container_energies: np.ndarray
     weights: np.ndarray
@@ -160,6 +162,8 @@ class KramersMoyal(Result):
     }
     COORDS = {"lags": "lag"}
 
+    energy = old_attribute("total_energy")
+
     def lag_index(self, lag: int | None) -> int:
         """Index of ``lag`` in :attr:`lags` (None: the middle one)."""
         if lag is None:
@@ -175,8 +179,9 @@ class KramersMoyal(Result):
         return self.lags - self.base_lag
 
 
-def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base_lag: int = 0,
-                  message: str = "") -> KramersMoyal:  # fmt: skip
+@renamed(energy="total_energy")
+def kramers_moyal(s, total_energy: float, n: int, lags, increments, weights=None,
+                  base_lag: int = 0, message: str = "") -> KramersMoyal:  # fmt: skip
     """:class:`KramersMoyal` from increments Delta E of shape (point, lag, run) started
     at s = E_c / E (grid of :func:`gauss_grid` with this n, unless ``weights`` given).
 
@@ -228,9 +233,9 @@ def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base
     centred = pair - m[..., None]
     cov = np.einsum("...ir,...jr->...ij", centred, centred) / (runs - 1) / runs
     return KramersMoyal(
-        energy=float(energy),
+        total_energy=float(total_energy),
         n=int(n),
-        container_energies=energy * s,
+        container_energies=total_energy * s,
         weights=np.asarray(weights, dtype=float),
         lags=lags,
         base_lag=int(base_lag),
@@ -246,9 +251,10 @@ def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base
     )
 
 
+@renamed(energy="total_energy")
 def measure_kramers_moyal(
     sink: Sink,
-    energy: float,
+    total_energy: float,
     *,
     points: int = 12,
     lags=LAGS,
@@ -267,7 +273,7 @@ def measure_kramers_moyal(
     Parameters
     ----------
     sink : Sink
-    energy : float
+    total_energy : float
         Total energy E.
     points : int >= 2
     lags : sequence of int >= 1
@@ -292,12 +298,13 @@ def measure_kramers_moyal(
     >>> km.drift.shape, bool(np.all(km.diffusion > 0))
     ((3, 1), True)
     """
-    from ..ensemble import SimulationState, total_energy
+    from ..ensemble import SimulationState
+    from ..ensemble import total_energy as energies_of
     from ..simulate import simulate
 
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-    e = v.positive("energy", energy)
+    e = v.positive("total_energy", total_energy)
     points = v.positive_int("points", points, minimum=2)
     runs = v.positive_int("runs", runs, minimum=2)
     lags = {v.positive_int("lag", x) for x in np.atleast_1d(lags)}
@@ -310,7 +317,7 @@ def measure_kramers_moyal(
         [shell_states(sink, e, e * si, runs, np.random.default_rng(c))
          for si, c in zip(s, children, strict=True)]
     )  # fmt: skip
-    h0 = total_energy(sink, rows)
+    h0 = energies_of(sink, rows)
     state = SimulationState(rows, 0.0, h0, 0.0, "")
     res = simulate(
         sink,
@@ -397,14 +404,14 @@ def check_fluctuation_dissipation(
     if not isinstance(law, EquilibriumLaw):
         raise ParameterError("law", law, "an EquilibriumLaw")
     tests = v.positive_int("tests", tests)
-    if not math.isclose(law.total_energy, km.energy, rel_tol=1e-12):
+    if not math.isclose(law.total_energy, km.total_energy, rel_tol=1e-12):
         raise ParameterError("law", f"a law at E = {law.total_energy:g}",
-                             f"the law at E = {km.energy:g}")  # fmt: skip
+                             f"the law at E = {km.total_energy:g}")  # fmt: skip
     j = km.lag_index(lag)
     if v.flag("exact", exact):
         return _exact_check(km, law, j, tests)
     tau = km.spans[j]
-    e = km.energy
+    e = km.total_energy
     s = km.container_energies / e
     density = law.pdf(s) * km.weights  # p(s) ds at the nodes
     x = 2 * s - 1
@@ -424,7 +431,7 @@ def check_fluctuation_dissipation(
 
 
 def _exact_check(km: KramersMoyal, law: EquilibriumLaw, j: int, tests: int):
-    e, runs = km.energy, km.increments.shape[2]
+    e, runs = km.total_energy, km.increments.shape[2]
     s = km.container_energies / e
     density = law.pdf(s) * km.weights
     col = int(np.flatnonzero(km.increment_lags == km.lags[j])[0])
@@ -468,8 +475,9 @@ def _verdict(km: KramersMoyal, law: EquilibriumLaw, j: int, integrals, cov, scal
     )
 
 
+@renamed(energy="total_energy")
 def solve_fokker_planck(
-    energy: float,
+    total_energy: float,
     points,
     drift,
     diffusion,
@@ -498,7 +506,7 @@ def solve_fokker_planck(
     >>> bool(abs(mean[-1] - exact) < 2e-3)
     True
     """
-    e = v.positive("energy", energy)
+    e = v.positive("total_energy", total_energy)
     cells = v.positive_int("cells", cells, minimum=10)
     substeps = v.positive_int("substeps", substeps)
     periods = v.positive_int("periods", periods, minimum=0)

@@ -291,6 +291,38 @@ def test_old_attributes_still_read_with_a_warning():
     law = st.equilibrium_law(st.Sink(st.Well(0.5, 0.0, 4), particles=2), total_energy=0.5)
     with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
         assert law.energy == law.total_energy == 0.5
+    from dataclasses import fields
+
+    from sinktheory.equilibrium.prediction import RelaxationPrediction
+
+    given = {f.name: 0.0 for f in fields(RelaxationPrediction) if f.name != "container_energy"}
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
+        old = RelaxationPrediction(**given, energy=0.7)
+    assert old.container_energy == 0.7
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
+        assert old.energy == 0.7
+
+
+def test_old_equilibrium_keywords_still_work_with_a_warning():
+    """The total energy E and a particle's energy e of the equilibrium functions took the
+    keyword ``energy``; it still works, with a warning naming the new one, and gives the
+    same numbers; the Kramers-Moyal result's old field still reads."""
+    import numpy as np
+
+    from sinktheory.canonical import FIG8_WELL
+    from sinktheory.equilibrium.area import basin_area, scaled_energy
+    from sinktheory.equilibrium.kramers import kramers_moyal
+
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert basin_area(FIG8_WELL, energy=0.1) == basin_area(FIG8_WELL, particle_energy=0.1)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert scaled_energy(FIG8_WELL, energy=0.125) == scaled_energy(FIG8_WELL, 0.125)
+    inc = np.ones((2, 1, 3))
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        km = kramers_moyal([0.2, 0.7], energy=2.0, n=1, lags=[1], increments=inc, weights=[1, 1])
+    assert km.total_energy == 2.0 and km.container_energies.tolist() == [0.4, 1.4]
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert km.energy == 2.0
 
 
 def test_old_impulse_fields_still_read_with_a_warning():
