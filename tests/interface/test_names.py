@@ -325,6 +325,19 @@ def test_old_equilibrium_keywords_still_work_with_a_warning():
         assert km.energy == 2.0
 
 
+def test_old_step_keyword_still_works_with_a_warning():
+    """The step choice's ``energy`` is the total energy E (not the total-energy error
+    bound ``energy_bound``); the old keyword still works, with a warning."""
+    from sinktheory.canonical import FIG8_SINK
+    from sinktheory.stepsize import choose, step_of
+
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        old = choose(FIG8_SINK, energy=0.5, tol=1e-6)
+    assert old == choose(FIG8_SINK, total_energy=0.5, tol=1e-6)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert step_of(FIG8_SINK, energy=0.5) == step_of(FIG8_SINK, 0.5)
+
+
 def test_old_impulse_fields_still_read_with_a_warning():
     """The impulse's E0 of ImpulseResponse and TransferMap is impulse_energy (their
     container_energy is the record E_c(t)); Comparison's E0 grid is container_energy, its
