@@ -338,6 +338,35 @@ def test_old_step_keyword_still_works_with_a_warning():
         assert step_of(FIG8_SINK, energy=0.5) == step_of(FIG8_SINK, 0.5)
 
 
+def test_old_model_and_start_keywords_still_work_with_a_warning():
+    """A particle's energy of the well's checks is particle_energy, the start's E0
+    container_energy, the adaptive estimate's E total_energy; the old ``energy`` still
+    works, with a warning, and gives the same result."""
+    import numpy as np
+
+    from sinktheory.adaptive import estimated_steps
+    from sinktheory.canonical import FIG8_SINK, FIG8_WELL
+    from sinktheory.ensemble import start_state
+    from sinktheory.errors import ParameterError
+    from sinktheory.model import confining_betas
+
+    at = np.array([[[0.003, -0.004]]])
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
+        old = start_state(FIG8_SINK, energy=0.5, positions=at)
+    assert np.array_equal(old, start_state(FIG8_SINK, container_energy=0.5, positions=at))
+    assert old[0, 0] == 1.0  # X = sqrt(2 E0)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        old = confining_betas(1.0, 6, energy=0.5, shape="symmetric", points=41)
+    assert old == confining_betas(1.0, 6, 0.5, shape="symmetric", points=41)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        with pytest.raises(ParameterError, match="particle_energy = 1e[+]308"):
+            FIG8_WELL.check_energy(energy=1e308)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert estimated_steps(FIG8_SINK, energy=0.5, eps=0.25) == estimated_steps(
+            FIG8_SINK, 0.5, 0.25
+        )
+
+
 def test_old_impulse_fields_still_read_with_a_warning():
     """The impulse's E0 of ImpulseResponse and TransferMap is impulse_energy (their
     container_energy is the record E_c(t)); Comparison's E0 grid is container_energy, its
