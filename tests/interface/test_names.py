@@ -367,6 +367,26 @@ def test_old_model_and_start_keywords_still_work_with_a_warning():
         )
 
 
+def test_old_basin_keywords_and_reach_field_still_work_with_a_warning():
+    """The basin's reach, area and check take a particle's energy, particle_energy; the
+    reach keeps it under that name, and ``energy`` still reads, with a warning."""
+    from sinktheory.basin import Basin
+    from sinktheory.userwell import UserWell
+
+    well = UserWell("ellipse", "(x/a)**2 + (y/b)**2", {"a": 0.3, "b": 0.2})
+    basin = Basin.of(well.potential, well.values(), well.name)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        old = basin.reach(energy=1.0)
+    assert old == basin.reach(particle_energy=1.0)
+    assert (old.x_max, old.y_max) == pytest.approx((0.3, 0.2), rel=1e-12)  # the ellipse
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert old.energy == old.particle_energy == 1.0
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert basin.area(energy=1.0) == basin.area(1.0)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert basin.check_energy(energy=0.5) == 0.5
+
+
 def test_old_impulse_fields_still_read_with_a_warning():
     """The impulse's E0 of ImpulseResponse and TransferMap is impulse_energy (their
     container_energy is the record E_c(t)); Comparison's E0 grid is container_energy, its
