@@ -83,6 +83,7 @@ import sympy as sp
 from scipy import ndimage, optimize
 
 from .errors import NumericalError, ParameterError, WellDefinitionError
+from .glossary import old_attribute, renamed
 from .symbolic import AtomForm, gradient_in_ratios, hessian_in_ratios, lift_powers, x, y
 
 __all__ = [
@@ -541,16 +542,19 @@ def escape(well: NumericWell, radius: float = 1.0) -> Escape:
         )
 
 
+@renamed(energy="particle_energy")
 @dataclass(frozen=True)
 class Reach:
-    """Bounds of |x| and |y| over the basin at ``energy``; ``refined`` says whether each
-    is Newton's extreme point (True) or the grid's node plus one cell (False)."""
+    """Bounds of |x| and |y| over the basin at ``particle_energy``; ``refined`` says
+    whether each is Newton's extreme point (True) or the grid's node plus one cell (False)."""
 
-    energy: float
+    particle_energy: float
     x_max: float
     y_max: float
     refined: tuple[bool, bool]
     spacing: float
+
+    energy = old_attribute("particle_energy")
 
 
 def _extreme(well: NumericWell, e: float, X, Y, comp, axis: int, h: float):
@@ -603,13 +607,14 @@ def _extreme(well: NumericWell, e: float, X, Y, comp, axis: int, h: float):
     return best, refined
 
 
-def reach(well: NumericWell, energy: float, limit: Escape) -> Reach:
-    """Bounds of |x|, |y| over the basin at ``energy`` (below ``limit.energy``, the
-    escape energy), refined by Newton's method (module docstring)."""
-    e = float(energy)
+@renamed(energy="particle_energy")
+def reach(well: NumericWell, particle_energy: float, limit: Escape) -> Reach:
+    """Bounds of |x|, |y| over the basin at ``particle_energy`` (below ``limit.energy``,
+    the escape energy), refined by Newton's method (module docstring)."""
+    e = float(particle_energy)
     if not (e > well.v0 and e < limit.energy):
         raise WellDefinitionError(
-            f"well {well.name}: energy", e,
+            f"well {well.name}: particle_energy", e,
             f"must be above V(0, 0) = {well.v0:.9g} and below the escape energy "
             f"{limit.energy:.9g} ({limit.kind})",
         )  # fmt: skip
@@ -726,36 +731,41 @@ class Basin:
         well = NumericWell(V, values, name)
         return cls(well, escape(well, radius))
 
-    def reach(self, energy: float) -> Reach:
-        """Bounds of |x|, |y| over the basin at ``energy`` (:func:`reach`)."""
-        return reach(self.well, energy, self.escape)
+    @renamed(energy="particle_energy")
+    def reach(self, particle_energy: float) -> Reach:
+        """Bounds of |x|, |y| over the basin at ``particle_energy`` (:func:`reach`)."""
+        return reach(self.well, particle_energy, self.escape)
 
     @property
     def escape_energy(self) -> float:
         """The escape energy measured from V(0, 0) (inf: bounded as far as float64 reaches)."""
         return self.escape.energy - self.well.v0
 
-    def check_energy(self, energy: float, *, name: str = "particle_energy") -> float:
-        """``energy``, measured from V(0, 0), if it lies in (0, :attr:`escape_energy`);
-        else a ParameterError naming ``name``."""
+    @renamed(energy="particle_energy")
+    def check_energy(self, particle_energy: float, *, name: str = "particle_energy") -> float:
+        """``particle_energy``, measured from V(0, 0), if it lies in (0,
+        :attr:`escape_energy`); else a ParameterError naming ``name``."""
         try:
-            e = float(energy)
+            e = float(particle_energy)
         except (TypeError, ValueError):
             e = math.nan
-        if not (e > 0 and e < self.escape_energy) or isinstance(energy, bool):
+        if not (e > 0 and e < self.escape_energy) or isinstance(particle_energy, bool):
             raise ParameterError(
-                name, energy, f"in (0, {self.escape_energy:.9g}): above V(0, 0) and below the "
-                f"escape energy of the {self.well.name} well (measured from V(0, 0))",
+                name, particle_energy, f"in (0, {self.escape_energy:.9g}): above V(0, 0) and "
+                f"below the escape energy of the {self.well.name} well (measured from V(0, 0))",
                 why=self.escape.describe(),
             )  # fmt: skip
         return e
 
-    def area(self, energy: float, *, within: float | None = None) -> float:
-        """A(e), the area of the basin at ``energy`` (:func:`star_area`, a full turn).
+    @renamed(energy="particle_energy")
+    def area(self, particle_energy: float, *, within: float | None = None) -> float:
+        """A(e), the area of the basin at ``particle_energy`` (:func:`star_area`, a full
+        turn).
 
         ``within``: the rays end at that radius instead of past this energy's reach (for
         many energies below one whose reach has been found once: the basins nest)."""
+        e = particle_energy
         if within is None:
-            r = self.reach(energy)
-            within, energy = 1.000001 * math.hypot(r.x_max, r.y_max), r.energy
-        return star_area(self.well.f, energy, within, f"{self.well.name}")
+            r = self.reach(e)
+            within, e = 1.000001 * math.hypot(r.x_max, r.y_max), r.particle_energy
+        return star_area(self.well.f, e, within, f"{self.well.name}")

@@ -242,10 +242,12 @@ def random_positions(settings: RunSettings, particles: int) -> np.ndarray:
     )
 
 
-def start_state(sink: Sink, energy: float, positions: np.ndarray) -> np.ndarray:
-    """State rows (R, 2 + 4k): container at X = sqrt(2 E0) at rest, particles at rest at
-    ``positions`` (R, k, 2) relative to the container."""
-    return StateLayout(sink.particles).start(math.sqrt(2.0 * energy), positions)
+@renamed(energy="container_energy")
+def start_state(sink: Sink, container_energy: float, positions: np.ndarray) -> np.ndarray:
+    """State rows (R, 2 + 4k): container at X = sqrt(2 E0) at rest (E0 =
+    ``container_energy``), particles at rest at ``positions`` (R, k, 2) relative to the
+    container."""
+    return StateLayout(sink.particles).start(math.sqrt(2.0 * container_energy), positions)
 
 
 def total_energy(sink: Sink, values: np.ndarray) -> np.ndarray:

@@ -316,10 +316,11 @@ point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
         """Largest wall ratio of the shape at (x, y): < 1 strictly inside the walls."""
         return self.kernels.wall_ratio(float(x), float(y), self.alpha, self.beta)
 
-    def check_energy(self, energy: float, *, name: str = "particle_energy") -> None:
-        """Raise ParameterError naming ``name`` unless a particle holding all of ``energy``
-        stays in a regular well."""
-        self.reach(energy, name=name)
+    @renamed(energy="particle_energy")
+    def check_energy(self, particle_energy: float, *, name: str = "particle_energy") -> None:
+        """Raise ParameterError naming ``name`` unless a particle holding all of
+        ``particle_energy`` stays in a regular well."""
+        self.reach(particle_energy, name=name)
 
     @renamed(energy="particle_energy")
     def summary(self, particle_energy: float = 0.5) -> WellSummary:
@@ -361,10 +362,11 @@ point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
         )
 
 
+@renamed(energy="particle_energy")
 def confining_betas(
     alpha: float,
     n: int,
-    energy: float,
+    particle_energy: float,
     *,
     gamma: float = 1.0,
     shape: str = "flat",
@@ -372,7 +374,8 @@ def confining_betas(
     hi: float | None = None,
     points: int = 2001,
 ) -> list[tuple[float, float]]:
-    """Intervals of beta in [lo, hi] for which the well holds a particle of ``energy``.
+    """Intervals of beta in [lo, hi] for which the well holds a particle of
+    ``particle_energy``.
 
     A beta is valid when :class:`Well` accepts it and :meth:`Well.check_energy` passes
     (positive denominator within reach; below the corner saddle for the symmetric
@@ -388,7 +391,7 @@ def confining_betas(
 
     def ok(beta: float) -> bool:
         try:
-            Well(alpha, beta, n, gamma=gamma, shape=shape).check_energy(energy)
+            Well(alpha, beta, n, gamma=gamma, shape=shape).check_energy(particle_energy)
         except ParameterError:
             return False
         return True

@@ -81,9 +81,10 @@ CALIBRATION: dict[str, tuple[float, float]] = {
 }
 
 
+@renamed(energy="total_energy")
 @functools.lru_cache(maxsize=1024)
-def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float:
-    """Fastest oscillation frequency the total ``energy`` allows (an upper estimate;
+def stiffness_frequency(sink: Sink, total_energy: float, *, angles: int = 46) -> float:
+    """Fastest oscillation frequency the ``total_energy`` allows (an upper estimate;
     remembered per sink and energy, since every ``simulate`` call asks and the search
     costs about 10 ms).
 
@@ -102,7 +103,7 @@ def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float
     >>> 50 < w < 500
     True
     """
-    well = sink.well
+    well, energy = sink.well, total_energy
     x_max, y_max = well.reach(energy)
     theta = np.linspace(0.0, 0.5 * math.pi, angles)[:, None]
     radius = np.linspace(0.0, math.hypot(x_max, y_max), 400)[None, :]
@@ -124,7 +125,7 @@ def stiffness_frequency(sink: Sink, energy: float, *, angles: int = 46) -> float
         largest = max(largest, float(np.linalg.eigvalsh([[vxx, vxy], [vxy, vyy]])[-1]))
     omega = math.sqrt(largest * (1.0 / sink.mu + 1.0))
     if not math.isfinite(omega):
-        raise ParameterError("energy", energy, "an energy whose wall stiffness is finite")
+        raise ParameterError("total_energy", energy, "an energy whose wall stiffness is finite")
     return max(1.0, omega)
 
 
@@ -200,14 +201,14 @@ def step_for(scheme: str, omega: float, tol: float) -> StepChoice:
     )
 
 
-@renamed(method="scheme")
+@renamed(method="scheme", energy="total_energy")
 def default_step(
-    sink: Sink, energy: float, scheme: str = DEFAULT_SCHEME, tol: float = DEFAULT_TOL
+    sink: Sink, total_energy: float, scheme: str = DEFAULT_SCHEME, tol: float = DEFAULT_TOL
 ) -> tuple[float, int]:
     """(dt, steps per period) of ``scheme`` for relative energy error ``tol``.
 
     The step comes from the scheme's calibrated error model at the fastest frequency the
-    total ``energy`` allows (:func:`step_for`); dt is shortened so a
+    ``total_energy`` allows (:func:`step_for`); dt is shortened so a
     period T = 2 pi is a whole number of steps and E(jT) is sampled exactly at t = jT.
 
     Examples
@@ -218,31 +219,31 @@ def default_step(
     >>> abs(dt * steps - 2 * math.pi) < 1e-12
     True
     """
-    choice = choose(sink, energy, tol, scheme)
+    choice = choose(sink, total_energy, tol, scheme)
     return choice.dt, choice.steps_per_period
 
 
-@renamed(methods="schemes")
-def cost_table(sink: Sink, energy: float, tol: float, schemes=None) -> list[StepChoice]:
-    """Each scheme's largest step for ``tol`` at total ``energy`` in ``sink`` (of
+@renamed(methods="schemes", energy="total_energy")
+def cost_table(sink: Sink, total_energy: float, tol: float, schemes=None) -> list[StepChoice]:
+    """Each scheme's largest step for ``tol`` at ``total_energy`` in ``sink`` (of
     ``schemes``, default all), cheapest (fewest force evaluations per period) first."""
     tol = check_tol(tol)
-    omega = stiffness_frequency(sink, energy)
+    omega = stiffness_frequency(sink, total_energy)
     options = [step_for(name, omega, tol) for name in (schemes or SCHEMES)]
     return sorted(options, key=lambda c: (c.force_evaluations_per_period, c.scheme))
 
 
-@renamed(method="scheme")
-def choose(sink: Sink, energy: float, tol: float, scheme: str | None = None) -> StepChoice:
+@renamed(method="scheme", energy="total_energy")
+def choose(sink: Sink, total_energy: float, tol: float, scheme: str | None = None) -> StepChoice:
     """The cheapest scheme and step reaching relative energy error ``tol`` (or the step of
-    ``scheme`` if given), for total ``energy`` in ``sink``."""
-    return cost_table(sink, energy, tol, None if scheme is None else [scheme])[0]
+    ``scheme`` if given), for ``total_energy`` in ``sink``."""
+    return cost_table(sink, total_energy, tol, None if scheme is None else [scheme])[0]
 
 
-@renamed(method="scheme")
+@renamed(method="scheme", energy="total_energy")
 def resolve_step(
     sink: Sink,
-    energy: float,
+    total_energy: float,
     *,
     scheme: str | None = None,
     dt: float | None = None,
@@ -268,7 +269,7 @@ def resolve_step(
         dt, steps = aligned_step(v.time_step("dt", dt))
         return get_scheme(scheme or DEFAULT_SCHEME).name, dt, steps, None
     tol = DEFAULT_TOL if tol is None else check_tol(tol)
-    choice = choose(sink, energy, tol, scheme)
+    choice = choose(sink, total_energy, tol, scheme)
     if choice.steps_per_period > v.MAX_STEPS_PER_PERIOD:
         raise ParameterError(
             "tol", tol, "a tolerance this well reaches in at most 1e9 steps per period"
@@ -277,13 +278,13 @@ def resolve_step(
 
 
 #: Defaults a too-stiff well is tried with, in order, to find the parameter responsible.
-_SUSPECTS = (("gamma", 1.0), ("mass", 0.2), ("energy", 0.5))
+_SUSPECTS = (("gamma", 1.0), ("mass", 0.2), ("total_energy", 0.5))
 
 
-@renamed(method="scheme")
+@renamed(method="scheme", energy="total_energy")
 def step_of(
     sink: Sink,
-    energy: float,
+    total_energy: float,
     *,
     scheme: str | None = None,
     dt: float | None = None,
@@ -313,22 +314,22 @@ that the well can be integrated ... (with gamma = 1 it can)
     from .model import Sink, Well  # the model's kernels load only for a diagnosis
 
     try:
-        return resolve_step(sink, energy, scheme=scheme, dt=dt, tol=tol)
+        return resolve_step(sink, total_energy, scheme=scheme, dt=dt, tol=tol)
     except ParameterError as e:
         if e.name != "tol" or dt is not None:
             raise
         error = e
     limit = tol if tol is not None else DEFAULT_TOL
     w = sink.well
-    e0 = energy if settings is None else settings.container_energy
+    e0 = total_energy if settings is None else settings.container_energy
     for name, default in _SUSPECTS:
-        given = {"gamma": w.gamma, "mass": sink.mass, "energy": e0}[name]
+        given = {"gamma": w.gamma, "mass": sink.mass, "total_energy": e0}[name]
         if given == default:
             continue
-        values = {"gamma": w.gamma, "mass": sink.mass, "energy": e0, name: default}
+        values = {"gamma": w.gamma, "mass": sink.mass, "total_energy": e0, name: default}
         well = Well(w.alpha, w.beta, w.n, gamma=values["gamma"], shape=w.shape)
         trial = Sink(well, particles=sink.particles, mass=values["mass"])
-        total = values["energy"]
+        total = values["total_energy"]
         if settings is not None:
             total = replace(settings, container_energy=total).total_energy_bound(trial)
         try:
@@ -336,7 +337,7 @@ that the well can be integrated ... (with gamma = 1 it can)
             resolve_step(trial, total, scheme=scheme, tol=limit)
         except ParameterError:
             continue
-        if name == "energy" and settings is not None:
+        if name == "total_energy" and settings is not None:
             name = "container_energy"  # E0, as the runs' settings and a sweep name it
         raise ParameterError(
             name,

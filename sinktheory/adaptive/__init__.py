@@ -84,6 +84,7 @@ from ..ensemble import (
     split_values,
 )
 from ..errors import ParameterError, StepControlError
+from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..limits import DEFAULT_EPS, MAX_EPS
 from ..model import RunSettings, Sink
@@ -213,14 +214,15 @@ def kernels(shape: str):
     return import_generated(path, lambda: text, f"sinktheory_{path.stem}")
 
 
-def estimated_steps(sink: Sink, energy: float, eps: float) -> int:
-    """Steps per period for the work limit, counted in fixed steps: the fixed step's count
-    for tol 1e-8 (:func:`sinktheory.stepsize.choose`) times 1.05 (0.25 / eps), above the
-    largest share of it the adaptive step took on average over 10^4 periods of Fig. 8's
-    ensemble (1.02 at n = 4, 0.75 at n = 10, less at n = 100: its steps grow as the sink
-    fills; the count falls with eps no faster than 1/eps), times 3 for a step's extra cost
-    (the rate: 2.6-2.8x a fixed step's time, measured).  An upper estimate where it was
-    measured, several times too high at n = 100 and over short runs.
+@renamed(energy="total_energy")
+def estimated_steps(sink: Sink, total_energy: float, eps: float) -> int:
+    """Steps per period for the work limit at total energy E = ``total_energy``, counted in
+    fixed steps: the fixed step's count for tol 1e-8 (:func:`sinktheory.stepsize.choose`)
+    times 1.05 (0.25 / eps), above the largest share of it the adaptive step took on average
+    over 10^4 periods of Fig. 8's ensemble (1.02 at n = 4, 0.75 at n = 10, less at n = 100:
+    its steps grow as the sink fills; the count falls with eps no faster than 1/eps), times
+    3 for a step's extra cost (the rate: 2.6-2.8x a fixed step's time, measured).  An upper
+    estimate where it was measured, several times too high at n = 100 and over short runs.
 
     Examples
     --------
@@ -228,7 +230,7 @@ def estimated_steps(sink: Sink, energy: float, eps: float) -> int:
     >>> estimated_steps(Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2), 0.5, 0.25)
     3771
     """
-    fixed = choose(sink, energy, DEFAULT_TOL, DEFAULT_SCHEME).steps_per_period
+    fixed = choose(sink, total_energy, DEFAULT_TOL, DEFAULT_SCHEME).steps_per_period
     return max(1, math.ceil(fixed * 3 * 1.05 * 0.25 / eps))
 
 

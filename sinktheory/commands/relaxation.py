@@ -113,7 +113,7 @@ def run(args: argparse.Namespace) -> Output:
     lines = [
         f"relaxation of E_c: {well.shape} well alpha={well.alpha:g} beta={well.beta:g} "
         f"n={well.n} gamma={well.gamma:g}, k={sink.particles}, m={sink.mass:g}, "
-        f"E0={p.energy:g} (total E={p.total_energy:.6g}), particles at rest",
+        f"E0={p.container_energy:g} (total E={p.total_energy:.6g}), particles at rest",
         f"  law's mean <E_c> {p.target:.6g}; settled when within {100 * p.fraction:g} % of it",
         f"  predicted: settles at {p.settle_time:.0f} periods ({level} interval "
         f"{_interval(p.settle_low, p.settle_high)}, statistical), relaxation time "

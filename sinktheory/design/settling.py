@@ -47,7 +47,8 @@ def predicted_settling(point: Mapping, *, seed: int = 0, **shell) -> Settling | 
     from ..ensemble import sink_of
 
     try:
-        return settling_periods(sink_of(point), float(point["container_energy"]), seed=seed, **shell)
+        e0 = float(point["container_energy"])
+        return settling_periods(sink_of(point), e0, seed=seed, **shell)
     except NumericalError as exc:
         return f"not predicted: {str(exc).split(' (')[0]}"
 

@@ -61,6 +61,7 @@ import numpy as np
 from .. import validation as v
 from ..basin import AREA_RTOL, MAX_RAYS, SCAN_POINTS, Basin, LeadingOrder, leading_order, star_area
 from ..errors import ParameterError
+from ..glossary import renamed
 from ..model import Well
 from ..twins import python_kernel
 
@@ -77,7 +78,8 @@ __all__ = [
 ]
 
 
-def scaled_energy(well: Well, energy: float) -> float:
+@renamed(energy="particle_energy")
+def scaled_energy(well: Well, particle_energy: float) -> float:
     """t = c^2 = (2 n e / gamma)^(1/n), the squared reach of energy e in units of the wall.
 
     Examples
@@ -86,10 +88,12 @@ def scaled_energy(well: Well, energy: float) -> float:
     1.0
     """
     _check_well(well)
-    ratio = 2 * well.n * v.positive("energy", energy) / well.gamma
+    ratio = 2 * well.n * v.positive("particle_energy", particle_energy) / well.gamma
     if not math.isfinite(ratio) or ratio == 0:  # (2 n e / gamma)^(1/n) would be inf or 0
-        raise v.ParameterError("energy", energy, f"with 2 n e / gamma a positive float (gamma = "
-                             f"{well.gamma:g}, n = {well.n})")  # fmt: skip
+        raise v.ParameterError(
+            "particle_energy", particle_energy,
+            f"with 2 n e / gamma a positive float (gamma = {well.gamma:g}, n = {well.n})",
+        )  # fmt: skip
     return ratio ** (1.0 / well.n)
 
 
@@ -119,21 +123,22 @@ def _check_well(well: Well) -> None:
         raise v.ParameterError("well", well, "a sinktheory.model.Well")
 
 
-def _check(well: Well, energy: float) -> float:
+def _check(well: Well, particle_energy: float) -> float:
     _check_well(well)
-    e = v.positive("energy", energy)
+    e = v.positive("particle_energy", particle_energy)
     well.check_energy(e)
     return e
 
 
-def basin_area(well: Well, energy: float) -> float:
+@renamed(energy="particle_energy")
+def basin_area(well: Well, particle_energy: float) -> float:
     """A(e): area of the basin {V < e} around the centre (closed form where there is one,
     else :func:`area_quadrature`).
 
     Parameters
     ----------
     well : Well
-    energy : float
+    particle_energy : float
         e > 0, below the shape's escape energy.
 
     Returns
@@ -154,7 +159,7 @@ def basin_area(well: Well, energy: float) -> float:
     >>> round(basin_area(Well(1.0, 0.0, 1), 0.5), 12)  # the unit disc (n = 1, beta = 0)
     3.14159265359
     """
-    e = _check(well, energy)
+    e = _check(well, particle_energy)
     closed = CLOSED_FORMS.get(well.shape)
     if closed is None:
         return area_quadrature(well, e)
@@ -185,7 +190,8 @@ def area_ratio(well: Well, t) -> np.ndarray:
     return np.array([_quadrature(well, e) for e in energies.ravel()]).reshape(t.shape) / t
 
 
-def area_quadrature(well: Well, energy: float) -> float:
+@renamed(energy="particle_energy")
+def area_quadrature(well: Well, particle_energy: float) -> float:
     """A(e) by the trapezoid rule over the rays from the centre (module docstring), for any
     shape; the closed forms are checked against it.
 
@@ -198,7 +204,7 @@ def area_quadrature(well: Well, energy: float) -> float:
     >>> abs(area_quadrature(well, 0.1) / exact - 1) < 1e-12
     True
     """
-    return _quadrature(well, _check(well, energy))
+    return _quadrature(well, _check(well, particle_energy))
 
 
 def _quadrature(well: Well, e: float) -> float:
@@ -263,21 +269,24 @@ class WellArea:
         half = self.order.degree / 2
         return int(half) if half.is_integer else float(half)
 
-    def check_energy(self, energy: float, *, name: str = "particle_energy") -> float:
-        """``energy`` if it lies in (0, escape energy), measured from V(0, 0), else
+    @renamed(energy="particle_energy")
+    def check_energy(self, particle_energy: float, *, name: str = "particle_energy") -> float:
+        """``particle_energy`` if it lies in (0, escape energy), measured from V(0, 0), else
         ParameterError naming ``name`` (:meth:`sinktheory.basin.Basin.check_energy`)."""
-        return self.basin.check_energy(energy, name=name)
+        return self.basin.check_energy(particle_energy, name=name)
 
-    def rays(self, energy: float) -> float:
-        """A radius every ray from the centre crosses the edge of the basin at ``energy``
+    @renamed(energy="particle_energy")
+    def rays(self, particle_energy: float) -> float:
+        """A radius every ray from the centre crosses the edge of the basin at ``particle_energy``
         (and every lower energy) before (the reach, with a margin of 1e-6)."""
-        r = self.basin.reach(self.basin.well.v0 + self.check_energy(energy))
+        r = self.basin.reach(self.basin.well.v0 + self.check_energy(particle_energy))
         return 1.000001 * math.hypot(r.x_max, r.y_max)
 
-    def area(self, energy: float, *, within: float | None = None) -> float:
+    @renamed(energy="particle_energy")
+    def area(self, particle_energy: float, *, within: float | None = None) -> float:
         """A(e); ``within`` as in :meth:`sinktheory.basin.Basin.area` (default: the rays of
         this energy)."""
-        e = self.check_energy(energy)
+        e = self.check_energy(particle_energy)
         within = self.rays(e) if within is None else within
         return self.basin.area(self.basin.well.v0 + e, within=within)
 

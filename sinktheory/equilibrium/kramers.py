@@ -62,6 +62,7 @@ from scipy import stats
 
 from .. import validation as v
 from ..errors import NonFiniteStateError, NumericalError, ParameterError
+from ..glossary import old_attribute, renamed
 from ..limits import MAX_PERIODS
 from ..model import RunSettings, Sink
 from ..results import Result
@@ -129,13 +130,14 @@ def gauss_grid(points: int, n: int) -> tuple[np.ndarray, np.ndarray]:
     return s[order], weights[order]
 
 
+@renamed(energy="total_energy")
 @dataclass(frozen=True)
 class KramersMoyal(Result):
     """Kramers-Moyal coefficients of E_c on a grid of starting energies (module docstring).
 
     Attributes
     ----------
-    energy : the total energy E
+    total_energy : the total energy E
     n : the wall exponent the grid was built with (s = 1 - w^n)
     container_energies : starting E_c on the grid (ascending)
     weights : W_i, quadrature weights in s = E_c / E
@@ -152,7 +154,7 @@ class KramersMoyal(Result):
     message : one line on how they were measured
     """
 
-    energy: float
+    total_energy: float
     n: int
     container_energies: np.ndarray
     weights: np.ndarray
@@ -182,6 +184,8 @@ class KramersMoyal(Result):
     }
     COORDS = {"lags": "lag"}
 
+    energy = old_attribute("total_energy")
+
     def lag_index(self, lag: int | None) -> int:
         """Index of ``lag`` in :attr:`lags` (None: the middle one)."""
         if lag is None:
@@ -197,8 +201,9 @@ class KramersMoyal(Result):
         return self.lags - self.base_lag
 
 
-def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base_lag: int = 0,
-                  message: str = "") -> KramersMoyal:  # fmt: skip
+@renamed(energy="total_energy")
+def kramers_moyal(s, total_energy: float, n: int, lags, increments, weights=None,
+                  base_lag: int = 0, message: str = "") -> KramersMoyal:  # fmt: skip
     """:class:`KramersMoyal` from increments Delta E of shape (point, lag, run) started
     at s = E_c / E (grid of :func:`gauss_grid` with this n, unless ``weights`` given).
 
@@ -219,7 +224,7 @@ def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base
     array([0.5, 0.5])
     """
     s = v.finite_array("s", s, "grid energies s = E_c / E: a 1-d array of finite numbers", 1)
-    energy = v.positive("energy", energy)
+    total_energy = v.positive("total_energy", total_energy)
     n = v.positive_int("n", n)
     lags = _lags(lags)
     base_lag = v.positive_int("base_lag", base_lag, minimum=0, maximum=MAX_PERIODS)
@@ -257,9 +262,9 @@ def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base
     centred = pair - m[..., None]
     cov = np.einsum("...ir,...jr->...ij", centred, centred) / (runs - 1) / runs
     return KramersMoyal(
-        energy=float(energy),
+        total_energy=float(total_energy),
         n=int(n),
-        container_energies=energy * s,
+        container_energies=total_energy * s,
         weights=np.asarray(weights, dtype=float),
         lags=lags,
         base_lag=int(base_lag),
@@ -275,9 +280,10 @@ def kramers_moyal(s, energy: float, n: int, lags, increments, weights=None, base
     )
 
 
+@renamed(energy="total_energy")
 def measure_kramers_moyal(
     sink: Sink,
-    energy: float,
+    total_energy: float,
     *,
     points: int = 12,
     lags=LAGS,
@@ -296,7 +302,7 @@ def measure_kramers_moyal(
     Parameters
     ----------
     sink : Sink
-    energy : float
+    total_energy : float
         Total energy E.
     points : int >= 2
     lags : sequence of int >= 1
@@ -321,12 +327,13 @@ def measure_kramers_moyal(
     >>> km.drift.shape, bool(np.all(km.diffusion > 0))
     ((3, 1), True)
     """
-    from ..ensemble import SimulationState, total_energy
+    from ..ensemble import SimulationState
+    from ..ensemble import total_energy as energies_of
     from ..simulate import simulate
 
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-    e = v.positive("energy", energy)
+    e = v.positive("total_energy", total_energy)
     points = v.positive_int("points", points, minimum=2)
     runs = v.positive_int("runs", runs, minimum=2)
     seed = v.positive_int("seed", seed, minimum=0)
@@ -343,7 +350,7 @@ def measure_kramers_moyal(
         [shell_states(sink, e, e * si, runs, np.random.default_rng(c))
          for si, c in zip(s, children, strict=True)]
     )  # fmt: skip
-    h0 = total_energy(sink, rows)
+    h0 = energies_of(sink, rows)
     state = SimulationState(rows, 0.0, h0, 0.0, "")
     res = simulate(
         sink,
@@ -434,14 +441,14 @@ def check_fluctuation_dissipation(
         "tests", tests, maximum=most, why=lambda t: f"{most // 2} grid points give at most "
         f"{most} independent test integrals",
     )  # fmt: skip
-    if not math.isclose(law.total_energy, km.energy, rel_tol=1e-12):
+    if not math.isclose(law.total_energy, km.total_energy, rel_tol=1e-12):
         raise ParameterError("law", f"a law at E = {law.total_energy:g}",
-                             f"the law at E = {km.energy:g}")  # fmt: skip
+                             f"the law at E = {km.total_energy:g}")  # fmt: skip
     j = km.lag_index(lag)
     if v.flag("exact", exact):
         return _exact_check(km, law, j, tests)
     tau = km.spans[j]
-    e = km.energy
+    e = km.total_energy
     s = km.container_energies / e
     density = law.pdf(s) * km.weights  # p(s) ds at the nodes
     x = 2 * s - 1
@@ -461,7 +468,7 @@ def check_fluctuation_dissipation(
 
 
 def _exact_check(km: KramersMoyal, law: EquilibriumLaw, j: int, tests: int):
-    e, runs = km.energy, km.increments.shape[2]
+    e, runs = km.total_energy, km.increments.shape[2]
     s = km.container_energies / e
     density = law.pdf(s) * km.weights
     col = int(np.flatnonzero(km.increment_lags == km.lags[j])[0])
@@ -511,8 +518,9 @@ def _verdict(km: KramersMoyal, law: EquilibriumLaw, j: int, integrals, cov, scal
     )
 
 
+@renamed(energy="total_energy")
 def solve_fokker_planck(
-    energy: float,
+    total_energy: float,
     points,
     drift,
     diffusion,
@@ -541,7 +549,7 @@ def solve_fokker_planck(
     >>> bool(abs(mean[-1] - exact) < 2e-3)
     True
     """
-    e = v.positive("energy", energy)
+    e = v.positive("total_energy", total_energy)
     cells = v.positive_int("cells", cells, minimum=10, maximum=MAX_CELLS)
     substeps = v.positive_int("substeps", substeps, maximum=MAX_SUBSTEPS)
     periods = v.positive_int("periods", periods, minimum=0)

@@ -45,6 +45,7 @@ from numpy.polynomial import chebyshev as C
 
 from .. import validation as v
 from ..errors import NumericalError, ParameterError
+from ..glossary import renamed
 from ..layout import StateLayout
 from ..model import Sink, Well
 from ..twins import python_kernel
@@ -164,17 +165,18 @@ def basin_points(well: Well, energies, rng: np.random.Generator) -> np.ndarray:
     return out.reshape(e.shape + (2,))
 
 
+@renamed(energy="total_energy")
 def shell_states(
-    sink: Sink, energy: float, container_energy: float, runs: int, rng: np.random.Generator
+    sink: Sink, total_energy: float, container_energy: float, runs: int, rng: np.random.Generator
 ) -> np.ndarray:
-    """State rows (runs, 2 + 4k) drawn from the shell H = ``energy`` given E_c =
+    """State rows (runs, 2 + 4k) drawn from the shell H = ``total_energy`` given E_c =
     ``container_energy`` (module docstring); columns as in
     :class:`~sinktheory.ensemble.SimulationState`.
 
     Parameters
     ----------
     sink : Sink
-    energy : float
+    total_energy : float
         Total energy E > 0 (the well must confine it).
     container_energy : float
         E_c in [0, E).
@@ -188,7 +190,7 @@ def shell_states(
     """
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-    e = v.positive("energy", energy)
+    e = v.positive("total_energy", total_energy)
     ec = v.nonnegative("container_energy", container_energy)
     if not ec < e:
         raise ParameterError("container_energy", ec, f"a number in [0, {e:g}) (below the total)")

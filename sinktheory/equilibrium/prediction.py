@@ -75,6 +75,7 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import NumericalError, ParameterError
+from ..glossary import old_attribute, renamed
 from ..model import RunSettings, Sink
 from ..results import Result
 from .kramers import measure_kramers_moyal
@@ -194,6 +195,7 @@ def law_chain(pdf, s_points, drift, *, cells: int = 150) -> LawChain:
     return LawChain(centres, masses, np.maximum(g, 0.0), shift, clipped)
 
 
+@renamed(energy="container_energy")
 @dataclass(frozen=True)
 class RelaxationPrediction(Result):
     """Predicted <E_c>(t) from the start (E0, particles at rest) by the slow-mode model
@@ -201,7 +203,7 @@ class RelaxationPrediction(Result):
 
     Attributes
     ----------
-    energy : E0, the container's energy at t = 0
+    container_energy : E0, the container's energy at t = 0
     total_energy : E, the start's E0 plus the particles' potential energy
     particles, mass : k and m
     target : the law's mean <E_c>
@@ -223,7 +225,7 @@ class RelaxationPrediction(Result):
     model : one line on what the prediction is and what it is worth
     """
 
-    energy: float
+    container_energy: float
     total_energy: float
     particles: int
     mass: float
@@ -259,6 +261,8 @@ class RelaxationPrediction(Result):
         **{name: ("lag",) for name in ("lags", "log_lambda", "log_lambda_stderr")},
     }
     COORDS = {"times": "time", "lags": "lag"}
+
+    energy = old_attribute("container_energy")
 
 
 def fit_line(x, y, stderr) -> tuple[float, float]:
@@ -499,7 +503,7 @@ def shell_prediction(s, increments, lags, pdf, mu, *, start: float, total: float
         f"state; an estimate within a factor of ~{MODEL_FACTOR:g} (docs/guide/equilibrium.rst)"
     )
     return RelaxationPrediction(
-        energy=start,
+        container_energy=start,
         total_energy=total,
         particles=particles,
         mass=mass,

@@ -114,7 +114,7 @@ def plot_relaxation(prediction, measured=None, ax=None):
     >>> t = np.linspace(0, 100, 5)
     >>> p = NS(times=t, means=0.1 + 0.4 * np.exp(-t / 30), low=0.1 + 0.3 * np.exp(-t / 30),
     ...        high=0.1 + 0.5 * np.exp(-t / 30), spread=0.05 + 0 * t, target=0.1, fraction=0.05,
-    ...        settle_time=60.0, particles=1, mass=0.2, energy=0.5)
+    ...        settle_time=60.0, particles=1, mass=0.2, container_energy=0.5)
     >>> plot_relaxation(p).axes[0].get_xlabel()
     'time (periods $T$)'
     """
@@ -141,8 +141,8 @@ def plot_relaxation(prediction, measured=None, ax=None):
     ax.set_ylim(0, None)
     ax.set_xlabel("time (periods $T$)")
     ax.set_ylabel(r"$E_c$")
-    ax.set_title(f"$k$={p.particles}, $m$={p.mass:g}, $E_0$={p.energy:g}: settling within "
-                 f"{100 * f:g} % of the law's mean", fontsize=9)  # fmt: skip
+    ax.set_title(f"$k$={p.particles}, $m$={p.mass:g}, $E_0$={p.container_energy:g}: settling "
+                 f"within {100 * f:g} % of the law's mean", fontsize=9)  # fmt: skip
     ax.legend(fontsize=8)
     return fig
 

@@ -95,7 +95,7 @@ def test_prediction_settles_where_the_chain_crosses_and_ends_with_the_law_spread
     # the slow mode's excess, a fraction c of it seen, is f of the law's mean
     s = np.linspace(0, 1, 5)
     chain = law_chain(law.pdf, s, -(s - mean) / p.rate_time)
-    s0 = p.energy / p.total_energy
+    s0 = p.container_energy / p.total_energy
     at = chain.moments(s0, np.array([0.0, p.settle_time]))[0]
     excess = p.visible * (s0 - mean) * (at[1] - mean) / (at[0] - mean)
     assert abs(excess / (p.fraction * mean) - 1) < 0.01, excess / mean

@@ -143,7 +143,8 @@ def test_the_henon_heiles_reach_and_area_by_independent_methods():
 def test_energies_outside_the_basin_are_refused_by_name():
     basin = check_well(UserWell("hh", HH, {})).basin
     for e in (1 / 6, 0.2, 0.0, -1.0):
-        with pytest.raises(WellDefinitionError, match=r"well hh: energy: .* must be above V\(0"):
+        refused = r"well hh: particle_energy: .* must be above V\(0"
+        with pytest.raises(WellDefinitionError, match=refused):
             basin.reach(e)
         with pytest.raises(WellDefinitionError, match="below the escape energy 0.16666"):
             basin.area(e)

@@ -165,9 +165,9 @@ def _rigid_and_equilibrium_entries(small):
         ("law.tail", law.tail, dict(f=0.5)),
         ("law.kac_periods", law.kac_periods, dict(f=0.5)),
         ("law.summary", law.summary, dict(fractions=[0.5], levels=[0.5], points=5)),
-        ("scaled_energy", scaled_energy, dict(well=well, energy=0.5)),
+        ("scaled_energy", scaled_energy, dict(well=well, particle_energy=0.5)),
         ("area_ratio", area_ratio, dict(well=well, t=[0.5, 1.0])),
-        ("basin_area", basin_area, dict(well=well, energy=0.5)),
+        ("basin_area", basin_area, dict(well=well, particle_energy=0.5)),
         ("check_fractions", check_fractions, dict(fractions=[0.5])),
     ]  # fmt: skip
 

@@ -291,6 +291,100 @@ def test_old_attributes_still_read_with_a_warning():
     law = st.equilibrium_law(st.Sink(st.Well(0.5, 0.0, 4), particles=2), total_energy=0.5)
     with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
         assert law.energy == law.total_energy == 0.5
+    from dataclasses import fields
+
+    from sinktheory.equilibrium.prediction import RelaxationPrediction
+
+    given = {f.name: 0.0 for f in fields(RelaxationPrediction) if f.name != "container_energy"}
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
+        old = RelaxationPrediction(**given, energy=0.7)
+    assert old.container_energy == 0.7
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
+        assert old.energy == 0.7
+
+
+def test_old_equilibrium_keywords_still_work_with_a_warning():
+    """The total energy E and a particle's energy e of the equilibrium functions took the
+    keyword ``energy``; it still works, with a warning naming the new one, and gives the
+    same numbers; the Kramers-Moyal result's old field still reads."""
+    import numpy as np
+
+    from sinktheory.canonical import FIG8_WELL
+    from sinktheory.equilibrium.area import basin_area, scaled_energy
+    from sinktheory.equilibrium.kramers import kramers_moyal
+
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert basin_area(FIG8_WELL, energy=0.1) == basin_area(FIG8_WELL, particle_energy=0.1)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert scaled_energy(FIG8_WELL, energy=0.125) == scaled_energy(FIG8_WELL, 0.125)
+    inc = np.ones((2, 1, 3))
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        km = kramers_moyal([0.2, 0.7], energy=2.0, n=1, lags=[1], increments=inc, weights=[1, 1])
+    assert km.total_energy == 2.0 and km.container_energies.tolist() == [0.4, 1.4]
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert km.energy == 2.0
+
+
+def test_old_step_keyword_still_works_with_a_warning():
+    """The step choice's ``energy`` is the total energy E (not the total-energy error
+    bound ``energy_bound``); the old keyword still works, with a warning."""
+    from sinktheory.canonical import FIG8_SINK
+    from sinktheory.stepsize import choose, step_of
+
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        old = choose(FIG8_SINK, energy=0.5, tol=1e-6)
+    assert old == choose(FIG8_SINK, total_energy=0.5, tol=1e-6)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert step_of(FIG8_SINK, energy=0.5) == step_of(FIG8_SINK, 0.5)
+
+
+def test_old_model_and_start_keywords_still_work_with_a_warning():
+    """A particle's energy of the well's checks is particle_energy, the start's E0
+    container_energy, the adaptive estimate's E total_energy; the old ``energy`` still
+    works, with a warning, and gives the same result."""
+    import numpy as np
+
+    from sinktheory.adaptive import estimated_steps
+    from sinktheory.canonical import FIG8_SINK, FIG8_WELL
+    from sinktheory.ensemble import start_state
+    from sinktheory.errors import ParameterError
+    from sinktheory.model import confining_betas
+
+    at = np.array([[[0.003, -0.004]]])
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
+        old = start_state(FIG8_SINK, energy=0.5, positions=at)
+    assert np.array_equal(old, start_state(FIG8_SINK, container_energy=0.5, positions=at))
+    assert old[0, 0] == 1.0  # X = sqrt(2 E0)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        old = confining_betas(1.0, 6, energy=0.5, shape="symmetric", points=41)
+    assert old == confining_betas(1.0, 6, 0.5, shape="symmetric", points=41)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        with pytest.raises(ParameterError, match="particle_energy = 1e[+]308"):
+            FIG8_WELL.check_energy(energy=1e308)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert estimated_steps(FIG8_SINK, energy=0.5, eps=0.25) == estimated_steps(
+            FIG8_SINK, 0.5, 0.25
+        )
+
+
+def test_old_basin_keywords_and_reach_field_still_work_with_a_warning():
+    """The basin's reach, area and check take a particle's energy, particle_energy; the
+    reach keeps it under that name, and ``energy`` still reads, with a warning."""
+    from sinktheory.basin import Basin
+    from sinktheory.userwell import UserWell
+
+    well = UserWell("ellipse", "(x/a)**2 + (y/b)**2", {"a": 0.3, "b": 0.2})
+    basin = Basin.of(well.potential, well.values(), well.name)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        old = basin.reach(energy=1.0)
+    assert old == basin.reach(particle_energy=1.0)
+    assert (old.x_max, old.y_max) == pytest.approx((0.3, 0.2), rel=1e-12)  # the ellipse
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert old.energy == old.particle_energy == 1.0
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert basin.area(energy=1.0) == basin.area(1.0)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
+        assert basin.check_energy(energy=0.5) == 0.5
 
 
 def test_old_impulse_fields_still_read_with_a_warning():
