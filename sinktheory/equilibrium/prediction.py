@@ -387,7 +387,7 @@ def predict_relaxation(
     --------
     >>> from sinktheory.canonical import FIG8_WELL
     >>> sink = Sink(FIG8_WELL, particles=1, mass=0.2)
-    >>> pred = predict_relaxation(sink, shell_energies=4, shell_runs=8, lag=32, resamples=20,
+    >>> pred = predict_relaxation(sink, shell_energies=4, shell_runs=64, lag=32, resamples=20,
     ...                           seed=3)
     >>> bool(pred.settle_low <= pred.settle_time <= pred.settle_high)
     True
