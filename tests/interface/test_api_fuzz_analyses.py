@@ -52,14 +52,14 @@ def _kramers():
     return [
         ("gauss_grid", gauss_grid, dict(points=4, n=4)),
         ("kramers_moyal", kramers_moyal,
-         dict(s=s, energy=1.0, n=1, lags=(1, 2), increments=inc, weights=None, base_lag=0)),
+         dict(s=s, total_energy=1.0, n=1, lags=(1, 2), increments=inc, weights=None, base_lag=0)),
         ("measure_kramers_moyal", measure_kramers_moyal,
-         dict(sink=_sink(), energy=0.5, points=2, lags=(1,), runs=2, seed=1, tol=1e-6,
+         dict(sink=_sink(), total_energy=0.5, points=2, lags=(1,), runs=2, seed=1, tol=1e-6,
               base_lag=0)),
         ("check_fluctuation_dissipation", check_fluctuation_dissipation,
          dict(km=km, law=law, lag=None, tests=2, exact=False)),
         ("solve_fokker_planck", solve_fokker_planck,
-         dict(energy=1.0, points=grid, drift=0.01 * (1 - 3 * grid),
+         dict(total_energy=1.0, points=grid, drift=0.01 * (1 - 3 * grid),
               diffusion=0.01 * grid * (1 - grid), start=0.5, periods=3, cells=20, substeps=2)),
         ("jacobi_increments", jacobi_increments,
          dict(s0=[0.5], lags=(1, 2), runs=3, rng=np.random.default_rng(1), a=1.0, b=1.0,
@@ -76,8 +76,8 @@ def _bifurcation():
          dict(betas=[0.3], alpha=0.5, n=4, gamma=1.0, shape="flat", mass=0.2,
               container_energy=0.5, transient=1, count=2, quantity="y")),
         ("section", section, dict(sink=_sink(), transient=1, count=2, quantity="y",
-                                  energy=0.5)),
-        ("section_step", section_step, dict(sink=_sink(), energy=0.5)),
+                                  container_energy=0.5)),
+        ("section_step", section_step, dict(sink=_sink(), container_energy=0.5)),
         ("sampled_run", sampled_run,
          dict(sink=_sink(), settings=RunSettings(runs=1, periods=2), start=(0.0, 0.01),
               per_period=2)),
@@ -332,7 +332,7 @@ def _leaks():
     return [
         (lambda: gauss_grid(10**12, 4), "points"),  # MemoryError
         (lambda: kramers_moyal(**{**moyal, "lags": 1e308}), "lags"),  # OverflowError
-        (lambda: kramers_moyal(**{**moyal, "energy": math.nan}), "energy"),  # NaN stored
+        (lambda: kramers_moyal(**{**moyal, "total_energy": math.nan}), "total_energy"),  # NaN
         (lambda: kramers_moyal(**{**moyal, "weights": [math.nan] * 4}), "weights"),
         (lambda: kramers_moyal(**{**moyal, "s": "x"}), "s"),  # ValueError
         (lambda: check_fluctuation_dissipation(**{**km, "tests": 10**12}), "tests"),  # hang
@@ -400,7 +400,7 @@ def test_numerical_trouble_of_the_fuzz_says_where():
 
     fp = dict(_kramers()[4][2])
     with pytest.raises(NonFiniteStateError, match="Fokker-Planck solution"):
-        solve_fokker_planck(**{**fp, "energy": 1e308, "start": 0.5e308})
+        solve_fokker_planck(**{**fp, "total_energy": 1e308, "start": 0.5e308})
     jacobi = dict(_kramers()[5][2])
     with pytest.raises(NonFiniteStateError, match="Jacobi diffusion"):
         jacobi_increments(**{**jacobi, "c": 1e308})

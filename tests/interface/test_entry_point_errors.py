@@ -75,7 +75,7 @@ API.update(
         "law.kac_periods 1": (lambda: _law().kac_periods(1.0), "f"),  # 1 / 0
         "law.summary points": (lambda: _law().summary(points=10**9), "points"),  # 16 GB
         "law.summary no fractions": (lambda: _law().summary(fractions=[]), "fractions"),
-        "scaled_energy -1": (lambda: _area("scaled_energy", -1), "energy"),  # complex
+        "scaled_energy -1": (lambda: _area("scaled_energy", -1), "particle_energy"),  # complex
         "area_ratio nan": (lambda: _area("area_ratio", math.nan), "t"),  # NaN
         # 0.0027 % below the corner saddle the area's series cannot converge
         "law near the saddle": (lambda: _symmetric_law(75.35), "total_energy"),
