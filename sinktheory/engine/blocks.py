@@ -81,9 +81,11 @@ THREAD_GAIN = 1.15
 #: Runs and steps of each calibration measurement (about 0.2-2 ms each).
 _CALIBRATION_WORK = 8192
 #: Version of :func:`measure`; a cached table measured by another version is measured again
-#: (2: one Verlet step per step; version 1 ran a two-stage scheme that read one kick weight
-#: past its array).
-CALIBRATION = 2
+#: (3: the short and long timings alternate, five of each; 2: one Verlet step per step;
+#: version 1 ran a two-stage scheme that read one kick weight past its array).
+CALIBRATION = 3
+#: Timings of each length per block size (alternating short and long, best kept).
+_REPEATS = 5
 
 
 @dataclass(frozen=True)
@@ -380,8 +382,11 @@ def measure(module, q, v, table) -> dict[int, float]:
 
     Each size runs a block of copies of the one-run state (q, v, table: columns of one run)
     with the Verlet (leapfrog) scheme for s and 2s steps; the difference removes the fixed
-    cost of a call, and the best of three repeats is kept (the least disturbed by other
-    processes).  Returns seconds per run and step (one force evaluation a step).
+    cost of a call, and the best of :data:`_REPEATS` timings of each is kept (the least
+    disturbed by other processes).  The short and long timings alternate, so a stretch of
+    disturbance slows both rather than only the short ones, whose inflated best once made
+    block 24 look a third cheaper than its neighbours and sent 25 runs to blocks of 24 and
+    1.  Returns seconds per run and step (one force evaluation a step).
     """
     import numba
 
@@ -394,33 +399,32 @@ def measure(module, q, v, table) -> dict[int, float]:
         out = {}
         for size in SIZES:
             steps = max(16, _CALIBRATION_WORK // size)
-            reps = [_time(module, q, v, table, size, (a, b), s) for s in (steps, 2 * steps)]
-            best = [min(r) for r in reps]
-            out[size] = max(best[1] - best[0], 1e-12) / (steps * size)
+            short, long = [], []
+            for _ in range(_REPEATS):
+                short.append(_time(module, q, v, table, size, (a, b), steps))
+                long.append(_time(module, q, v, table, size, (a, b), 2 * steps))
+            out[size] = max(min(long) - min(short), 1e-12) / (steps * size)
         return out
     finally:
         numba.set_num_threads(threads)
 
 
-def _time(module, q, v, table, size, weights, steps) -> list[float]:
+def _time(module, q, v, table, size, weights, steps) -> float:
+    """Seconds of one call of ``advance`` on a block of ``size`` copies, ``steps`` steps."""
     D = q.shape[0]
     Q = np.repeat(q, size, axis=1)
     V = np.repeat(v, size, axis=1)
     P = np.repeat(table, size, axis=1)
     empty3 = np.zeros((D, 0, size))
     _, one_block = layout(fixed(size, size, 1), np.full(size, steps), np.full(size, 1e-3))
-    times = []
-    for _ in range(3):
-        Qc, Vc = Q.copy(), V.copy()
-        status = np.zeros(size, dtype=np.int64)
-        audit = (np.zeros(size), math.inf, status, np.zeros(size, dtype=np.int64),
-                 np.zeros(size), np.zeros(size))  # fmt: skip
-        rec = (np.zeros((size, 0)), np.zeros((size, 0, 0)), np.zeros((size, 0, 2 * D)),
-               np.zeros((size, 0, 0)), np.zeros((size, 0)), np.zeros((size, 0)),
-               np.zeros((size, 0)), np.zeros((size, 0)))  # fmt: skip
-        t0 = time.perf_counter()
-        module.advance(Qc, Vc, empty3, empty3.copy(), P, weights, 0, 1, one_block,
-                       (0, 0, 0, False, 0.0), np.zeros((0, size)), np.zeros((2, size)),
-                       audit, rec, (False, 0.0, False, False), np.zeros((2, size)))  # fmt: skip
-        times.append(time.perf_counter() - t0)
-    return times
+    status = np.zeros(size, dtype=np.int64)
+    audit = (np.zeros(size), math.inf, status, np.zeros(size, dtype=np.int64),
+             np.zeros(size), np.zeros(size))  # fmt: skip
+    rec = (np.zeros((size, 0)), np.zeros((size, 0, 0)), np.zeros((size, 0, 2 * D)),
+           np.zeros((size, 0, 0)), np.zeros((size, 0)), np.zeros((size, 0)),
+           np.zeros((size, 0)), np.zeros((size, 0)))  # fmt: skip
+    t0 = time.perf_counter()
+    module.advance(Q, V, empty3, empty3.copy(), P, weights, 0, 1, one_block,
+                   (0, 0, 0, False, 0.0), np.zeros((0, size)), np.zeros((2, size)),
+                   audit, rec, (False, 0.0, False, False), np.zeros((2, size)))  # fmt: skip
+    return time.perf_counter() - t0
