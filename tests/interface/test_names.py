@@ -415,3 +415,33 @@ def test_old_impulse_fields_still_read_with_a_warning():
     with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
         assert c.energy is c.container_energy is grid
     assert c.to_dataset()["efficiency"].dims == ("attachment", "container_energy")
+
+
+def test_old_nnm_attributes_still_read_with_a_warning():
+    """An orbit's, a branch's and a branch result's total energy H was ``energy``, and the
+    flow system's Hamiltonian at a state ``energy(z)``; each still reads, with a warning,
+    and the orbits' H(z0) is the shooting's target."""
+    import numpy as np
+
+    from sinktheory.nnm.continuation import continue_orbits
+    from sinktheory.nnm.shooting import checked_start
+    from sinktheory.nnm.system import FlowSystem
+
+    duffing = FlowSystem("duffing2", [])
+    branch = continue_orbits(duffing, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=64,
+                             total_energy=0.01, interval=(5e-3, 0.02), max_points=3)  # fmt: skip
+    orbit, result = branch.orbits[0], branch.result()
+    assert orbit.total_energy == duffing.hamiltonian(orbit.z0) == result.total_energy[0]
+    assert abs(orbit.total_energy - 0.01) < 1e-14
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert orbit.energy == orbit.total_energy
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert np.array_equal(branch.energy, branch.total_energy)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert result.energy is result.total_energy
+    assert "energy" not in result.as_dict() and len(result.as_dict()["total_energy"]) > 1
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'hamiltonian'"):
+        assert duffing.energy(orbit.z0) == orbit.total_energy
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        old = checked_start(duffing, orbit.z0, energy=0.01)
+    assert old[1] == checked_start(duffing, orbit.z0, 0.01)[1] == 0.01
