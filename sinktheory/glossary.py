@@ -64,6 +64,7 @@ GLOSSARY: dict[str, str] = {
     "particle_energy": "the energy of one particle in the well (kinetic plus potential)",
     "energy": "E_n = A0^(2n)/(2n): the energy of the power-law oscillator x'' + x^(2n-1) = 0 "
     "(no container, no particles)",
+    "escape_potential": "V at the escape point, absolute; escape_energy is it above V(0, 0)",
     "energies": "E0 grid: initial container energies (impulse energies) LO, HI, COUNT log-spaced",
     "wavelet_energy": "E0 of the wavelet maps: the impulse energy of one run",
     "energy_bound": "bound: the largest relative total-energy error |H - H0|/H0 tolerated",

@@ -138,7 +138,8 @@ def renderings() -> dict[str, dict[str, str] | str]:
 def well_renderings(well, given: dict, report) -> dict:
     """The ladder of a user's ``well`` (at the parameter values ``given``, its defaults for
     the others; ``report`` its :func:`~sinktheory.userwell.check_well` there) rendered as
-    :func:`renderings` renders the paper's equations, plus ``escape_energy``, ``escape``
+    :func:`renderings` renders the paper's equations, plus ``escape_energy`` (measured
+    from V(0, 0), as everywhere: :attr:`sinktheory.basin.Basin.escape_energy`), ``escape``
     (how it was found) and ``normal_mode`` (why y = 0 is or is not a normal mode) in the
     JSON."""
     import sympy as sp
@@ -147,7 +148,7 @@ def well_renderings(well, given: dict, report) -> dict:
 
     steps = S.ladder(well, well.values(**given))
     eqs = steps.items()
-    escape = report.basin.escape
+    escape, e_star = report.basin.escape, report.basin.escape_energy
     mode = steps.normal_mode
     why = (
         f"y = 0 is a normal mode ({mode.reason})"
@@ -166,7 +167,7 @@ def well_renderings(well, given: dict, report) -> dict:
     data = {key: sympifiable(expr) for key, expr in eqs.items()}
     data |= {
         "well": well.name,
-        "escape_energy": escape.energy if math.isfinite(escape.energy) else None,
+        "escape_energy": e_star if math.isfinite(e_star) else None,
         "escape": escape.describe(),
         "normal_mode": why,
     }

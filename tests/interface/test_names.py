@@ -385,6 +385,9 @@ def test_old_basin_keywords_and_reach_field_still_work_with_a_warning():
         assert basin.area(energy=1.0) == basin.area(1.0)
     with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
         assert basin.check_energy(energy=0.5) == 0.5
+    escape = basin.escape  # the ellipse never opens: V on the largest box's edge
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'escape_potential'"):
+        assert escape.energy == escape.escape_potential == basin.escape_energy + basin.well.v0
 
 
 def test_old_impulse_fields_still_read_with_a_warning():
