@@ -448,3 +448,27 @@ def test_old_nnm_attributes_still_read_with_a_warning():
     with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
         old = checked_start(duffing, orbit.z0, energy=0.01)
     assert old[1] == checked_start(duffing, orbit.z0, 0.01)[1] == 0.01
+
+
+def test_old_rigid_shell_keyword_still_works_with_a_warning():
+    """The rigid shell's ``energy`` is the total energy E; the old keyword still works,
+    with a warning, and draws the same states from the same seed."""
+    import numpy as np
+
+    from sinktheory.billiard.relaxation import rigid_shell_increments, rigid_shell_states
+    from sinktheory.billiard.table import rigid_table
+    from sinktheory.errors import ParameterError
+
+    table = rigid_table("flat", 0.5, 0.3)
+    new = rigid_shell_states(table, 2, 0.2, 0.5, 0.25, 3, np.random.default_rng(1))
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        old = rigid_shell_states(table, 2, 0.2, energy=0.5, s=0.25, runs=3,
+                                 rng=np.random.default_rng(1))  # fmt: skip
+    assert all(np.array_equal(a, b) for a, b in zip(old, new, strict=True))
+    assert np.allclose(0.5 * (old[2] ** 2).sum(axis=1), 0.25 * 0.5, rtol=1e-14)  # E_c = s E
+    with pytest.raises(ParameterError, match="^total_energy = "):
+        rigid_shell_states(table, 2, 0.2, -0.5, 0.25, 3, np.random.default_rng(1))
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        s, inc, _ = rigid_shell_increments(table, 1, 0.2, energy=0.5, points=3, runs=2,
+                                           lags=[1, 2], seed=0)  # fmt: skip
+    assert np.array_equal(inc, rigid_shell_increments(table, 1, 0.2, 0.5, 3, 2, [1, 2], 0)[1])
