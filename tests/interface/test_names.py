@@ -85,7 +85,7 @@ ENTRY_POINTS = {
 #: Options that shape the command's output or its run and feed no keyword.
 COMMAND_ONLY = {"json", "plot", "out", "quiet", "report", "latex", "fresh", "figure", "quick",
                 "param", "top", "no_estimate", "digits", "max_hours",
-                "well_param"}  # fmt: skip
+                "well_param", "wavelet_plot"}  # fmt: skip
 #: command -> options whose keyword is still named differently (each entry must still be
 #: needed: the test fails when one is fixed, so the list only shrinks).
 KNOWN_DISAGREEMENTS: dict[str, set[str]] = {}
@@ -472,3 +472,13 @@ def test_old_rigid_shell_keyword_still_works_with_a_warning():
         s, inc, _ = rigid_shell_increments(table, 1, 0.2, energy=0.5, points=3, runs=2,
                                            lags=[1, 2], seed=0)  # fmt: skip
     assert np.array_equal(inc, rigid_shell_increments(table, 1, 0.2, 0.5, 3, 2, [1, 2], 0)[1])
+
+
+def test_the_old_wavelet_output_option_is_rewritten_with_a_note():
+    """``compare --wavelet FILE.png`` was the output file (Python's ``wavelet`` is the
+    wavelet's type): it is ``--wavelet-plot`` now; ``--wavelet-energy`` is left alone."""
+    argv, notes = modern_argv(["compare", "--damping", "0.01", "--wavelet", "w.png",
+                               "--wavelet-energy", "0.1", "--wavelet=v.png"])  # fmt: skip
+    assert argv == ["compare", "--damping", "0.01", "--wavelet-plot", "w.png",
+                    "--wavelet-energy", "0.1", "--wavelet-plot=v.png"]  # fmt: skip
+    assert notes == ["--wavelet is now --wavelet-plot"]
