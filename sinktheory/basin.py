@@ -376,8 +376,9 @@ class Escape:
 
     energy = old_attribute("escape_potential")
 
-    def describe(self) -> str:
-        """One line: what e* is and how it was found."""
+    def describe(self, v0: float = 0.0) -> str:
+        """One line: what e* is and how it was found, the escape energy measured from
+        ``v0`` = V(0, 0) (said when it is not 0; the grid bracket is of V itself)."""
         at = f"({self.point[0]:.6g}, {self.point[1]:.6g})"
         what = {
             "saddle": f"the saddle at {at} (Newton's method from the grid's pass)",
@@ -387,7 +388,8 @@ class Escape:
         }[self.kind]
         lo, hi = self.bracket
         return (
-            f"escape energy {self.escape_potential:.15g}: {what}; grid bracket "
+            f"escape energy {self.escape_potential - v0:.15g}"
+            f"{'' if v0 == 0 else f' above V(0, 0) = {v0:.9g}'}: {what}; grid bracket "
             f"[{lo:.9g}, {hi:.9g}] with cell {self.spacing:.3g}"
         )
 
@@ -759,7 +761,7 @@ class Basin:
             raise ParameterError(
                 name, particle_energy, f"in (0, {self.escape_energy:.9g}): above V(0, 0) and "
                 f"below the escape energy of the {self.well.name} well (measured from V(0, 0))",
-                why=self.escape.describe(),
+                why=self.escape.describe(self.well.v0),
             )  # fmt: skip
         return e
 

@@ -832,7 +832,7 @@ the box |x|, |y| <= 1.04858e+06
         {s.name: v for s, v in values.items()},
         radius,
         minimum,
-        basin.escape.describe(),
+        basin.escape.describe(basin.well.v0),
         invariant,
         reason,
         basin,

@@ -159,7 +159,7 @@ def well_renderings(well, given: dict, report) -> dict:
     values = ", ".join(f"{k} = {v}" for k, v in report.values.items()) or "none"
     which = "at their defaults" if not given else "(--well-param, defaults for the others)"
     notes = [f"well {well.name}; parameters {which}: {values}",
-             f"at these values, {escape.describe()}", why]  # fmt: skip
+             f"at these values, {escape.describe(report.basin.well.v0)}", why]  # fmt: skip
     text = "\n\n".join(
         f"{key}:\n{sp.pretty(expr, use_unicode=True, wrap_line=False)}" for key, expr in eqs.items()
     )
@@ -168,7 +168,7 @@ def well_renderings(well, given: dict, report) -> dict:
     data |= {
         "well": well.name,
         "escape_energy": e_star if math.isfinite(e_star) else None,
-        "escape": escape.describe(),
+        "escape": escape.describe(report.basin.well.v0),
         "normal_mode": why,
     }
     return {

@@ -185,7 +185,9 @@ def test_derive_well_prints_the_ladder(tmp_path, capsys, monkeypatch):
     # measured from V(0, 0), as `well` reports it: the saddles stay 1/6 above the centre
     lifted = write_well(tmp_path, "hh1", "1 + " + HH)
     code, out, _ = run_cli(["derive", "--well", str(lifted), "--json"], capsys)
-    assert code == 0 and abs(json.loads(out)["escape_energy"] - 1 / 6) <= 1e-15
+    data = json.loads(out)
+    assert code == 0 and abs(data["escape_energy"] - 1 / 6) <= 1e-15
+    assert data["escape"].startswith("escape energy 0.166666666666667 above V(0, 0) = 1: ")
 
 
 @pytest.mark.parametrize(
