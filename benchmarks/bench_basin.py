@@ -49,11 +49,12 @@ def main() -> None:
     for n in (1, 2, 4, 10):
         saddle = S.symmetric_corner_saddle()[1]
         exact = float(saddle.subs({S.alpha: ALPHA, S.beta: 0.3, S.n: n, S.gamma: 1}))
-        record("escape: symmetric saddle", abs(basin("symmetric", n=n).escape.energy / exact - 1))
+        got = basin("symmetric", n=n).escape.escape_potential
+        record("escape: symmetric saddle", abs(got / exact - 1))
         for shape in ("flat", "symmetric"):
             pole = math.sqrt(1 - ALPHA / -0.7)
             axis = pole / (ALPHA + 0.7) if shape == "symmetric" else pole
-            got = basin(shape, n=n, beta=-0.7).escape.energy
+            got = basin(shape, n=n, beta=-0.7).escape.escape_potential
             record("escape: poles (beta < 0)", abs(got / (axis ** (2 * n) / (2 * n)) - 1))
         cases = (("flat", 0.3), ("flat", -0.7), ("circular", 0.3), ("symmetric", -0.7))
         for shape, beta in cases:
@@ -75,7 +76,7 @@ def main() -> None:
             exact = math.pi * 0.3 * 0.2 * (2 * n * e / 2.0) ** (1 / n)
             record("area: elliptic", abs(b.area(e) / exact - 1))
     hh = UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})
-    record("escape: Henon-Heiles 1/6", abs(check_well(hh).basin.escape.energy * 6 - 1))
+    record("escape: Henon-Heiles 1/6", abs(check_well(hh).basin.escape.escape_potential * 6 - 1))
     print(f"{'largest relative error':32s}")
     for key, value in worst.items():
         print(f"  {key:30s} {value:.2e}")

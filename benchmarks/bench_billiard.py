@@ -179,7 +179,7 @@ def islands(quick: bool) -> None:
         s = RunSettings(runs=runs, periods=periods)
         box = billiard("flat", 0.5, b, particles=1, settings=s, fixed=True, lyapunov=True)
         table = rigid_table("flat", 0.5, b)
-        speed = math.sqrt(2 * s.energy / 0.2)
+        speed = math.sqrt(2 * s.container_energy / 0.2)
         whole = simulate_billiard(table, uniform_positions(table, runs),
                                   speed * start_directions(s, 1), periods=periods,
                                   lyapunov=True)  # fmt: skip

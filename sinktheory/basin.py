@@ -68,7 +68,7 @@ Examples
 >>> from sinktheory.userwell import UserWell
 >>> hh = NumericWell(UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {}).potential)
 >>> e = escape(hh)
->>> e.kind, round(e.energy * 6, 15), [round(c, 15) for c in e.point]  # 3 saddles at 1/6
+>>> e.kind, round(e.escape_potential * 6, 15), [round(c, 15) for c in e.point]  # 3 saddles at 1/6
 ('saddle', 1.0, [-0.866025403784439, -0.5])
 """
 
@@ -345,15 +345,17 @@ class NumericWell:
         return ok
 
 
+@renamed(energy="escape_potential")
 @dataclass(frozen=True)
 class Escape:
     """What limits the basin (module docstring).
 
     Attributes
     ----------
-    energy : float
-        e*: below it the basin is bounded and regular (+inf: bounded as far as float64
-        reaches on the largest box).
+    escape_potential : float
+        e*, the absolute V at the escape point: below it the basin is bounded and regular
+        (+inf: bounded as far as float64 reaches on the largest box);
+        :attr:`Basin.escape_energy` is it measured from V(0, 0).
     kind : str
         "saddle", "singular" or "box".
     point : (x, y)
@@ -365,15 +367,18 @@ class Escape:
         The grid's half side R and its cell R / GRID.
     """
 
-    energy: float
+    escape_potential: float
     kind: str
     point: tuple[float, float]
     bracket: tuple[float, float]
     box: float
     spacing: float
 
-    def describe(self) -> str:
-        """One line: what e* is and how it was found."""
+    energy = old_attribute("escape_potential")
+
+    def describe(self, v0: float = 0.0) -> str:
+        """One line: what e* is and how it was found, the escape energy measured from
+        ``v0`` = V(0, 0) (said when it is not 0; the grid bracket is of V itself)."""
         at = f"({self.point[0]:.6g}, {self.point[1]:.6g})"
         what = {
             "saddle": f"the saddle at {at} (Newton's method from the grid's pass)",
@@ -383,8 +388,9 @@ class Escape:
         }[self.kind]
         lo, hi = self.bracket
         return (
-            f"escape energy {self.energy:.15g}: {what}; grid bracket [{lo:.9g}, {hi:.9g}] "
-            f"with cell {self.spacing:.3g}"
+            f"escape energy {self.escape_potential - v0:.15g}"
+            f"{'' if v0 == 0 else f' above V(0, 0) = {v0:.9g}'}: {what}; grid bracket "
+            f"[{lo:.9g}, {hi:.9g}] with cell {self.spacing:.3g}"
         )
 
 
@@ -482,7 +488,8 @@ def escape(well: NumericWell, radius: float = 1.0) -> Escape:
     --------
     >>> from sinktheory.userwell import UserWell
     >>> e = escape(NumericWell(UserWell("q", "x**2 + y**2 - x**4", {}).potential))
-    >>> e.kind, round(e.energy, 15), round(abs(e.point[0]) - 0.5**0.5, 15)  # 1/4 at x^2 = 1/2
+    >>> # the saddles at x^2 = 1/2, V = 1/4
+    >>> e.kind, round(e.escape_potential, 15), round(abs(e.point[0]) - 0.5**0.5, 15)
     ('saddle', 0.25, 0.0)
     """
     R = FIRST_BOX * radius
@@ -609,14 +616,15 @@ def _extreme(well: NumericWell, e: float, X, Y, comp, axis: int, h: float):
 
 @renamed(energy="particle_energy")
 def reach(well: NumericWell, particle_energy: float, limit: Escape) -> Reach:
-    """Bounds of |x|, |y| over the basin at ``particle_energy`` (below ``limit.energy``,
-    the escape energy), refined by Newton's method (module docstring)."""
+    """Bounds of |x|, |y| over the basin at ``particle_energy`` (below
+    ``limit.escape_potential``, V at the escape point), refined by Newton's method (module
+    docstring)."""
     e = float(particle_energy)
-    if not (e > well.v0 and e < limit.energy):
+    if not (e > well.v0 and e < limit.escape_potential):
         raise WellDefinitionError(
             f"well {well.name}: particle_energy", e,
             f"must be above V(0, 0) = {well.v0:.9g} and below the escape energy "
-            f"{limit.energy:.9g} ({limit.kind})",
+            f"{limit.escape_potential:.9g} ({limit.kind})",
         )  # fmt: skip
     R, m = limit.box * 2.0**-40, GRID
     while R <= 2 * limit.box:
@@ -739,7 +747,7 @@ class Basin:
     @property
     def escape_energy(self) -> float:
         """The escape energy measured from V(0, 0) (inf: bounded as far as float64 reaches)."""
-        return self.escape.energy - self.well.v0
+        return self.escape.escape_potential - self.well.v0
 
     @renamed(energy="particle_energy")
     def check_energy(self, particle_energy: float, *, name: str = "particle_energy") -> float:
@@ -753,7 +761,7 @@ class Basin:
             raise ParameterError(
                 name, particle_energy, f"in (0, {self.escape_energy:.9g}): above V(0, 0) and "
                 f"below the escape energy of the {self.well.name} well (measured from V(0, 0))",
-                why=self.escape.describe(),
+                why=self.escape.describe(self.well.v0),
             )  # fmt: skip
         return e
 

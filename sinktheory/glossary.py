@@ -64,6 +64,7 @@ GLOSSARY: dict[str, str] = {
     "particle_energy": "the energy of one particle in the well (kinetic plus potential)",
     "energy": "E_n = A0^(2n)/(2n): the energy of the power-law oscillator x'' + x^(2n-1) = 0 "
     "(no container, no particles)",
+    "escape_potential": "V at the escape point, absolute; escape_energy is it above V(0, 0)",
     "energies": "E0 grid: initial container energies (impulse energies) LO, HI, COUNT log-spaced",
     "wavelet_energy": "E0 of the wavelet maps: the impulse energy of one run",
     "energy_bound": "bound: the largest relative total-energy error |H - H0|/H0 tolerated",
@@ -180,7 +181,7 @@ GLOSSARY: dict[str, str] = {
     "damping_kind": "what damping of the 2-D well is (contact or dashpot)",
     "attachment": "the absorber attached (well, nes, impact)",
     "attachments": "the absorbers compared (well, nes, impact)",
-    "wavelet": "wavelet maps over the normal modes",
+    "wavelet": "the complex Morlet wavelet of a wavelet map (cmorB-C, e.g. cmor1.5-1.0)",
     "horizons": "periods at which the absorbed fraction is measured",
     "sigmas": "verdict threshold in standard errors",
     "risk_level": "absorbed level whose risk is measured",
@@ -191,6 +192,7 @@ GLOSSARY: dict[str, str] = {
     "top": "designs in the report",
     # --- commands and their outputs
     "plot": "FILE.png: a chart",
+    "wavelet_plot": "FILE.png: wavelet maps over the normal modes",
     "out": "where results are written (a file or a store)",
     "report": "directory of the design report",
     "json": "one JSON object on stdout",
@@ -234,7 +236,11 @@ def stepper_or_scheme(value: object) -> str:
 RENAMED_OPTIONS: dict[str, dict[str, str | Callable[[str], str]]] = {
     **{command: {"--energy": "--container-energy"} for command in ("sink", "billiard", "design")},
     "lifetime": {"--energy": "--container-energy", "--fraction": "--fractions"},
-    "compare": {"--shape": "--shapes", "--samples": "--samples-per-period"},
+    "compare": {
+        "--shape": "--shapes",
+        "--samples": "--samples-per-period",
+        "--wavelet": "--wavelet-plot",
+    },
     "simulate": {"--energy": "--container-energy", "--method": _stepper_or_scheme},
     "well": {"--energy": "--particle-energy"},
     "equilibrium": {"--energy": "--total-energy", "--fraction": "--fractions"},

@@ -800,7 +800,7 @@ def check_well(well: UserWell, radius: float = 1.0, **given: float) -> WellCheck
     Examples
     --------
     >>> hh = UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})
-    >>> round(check_well(hh).basin.escape.energy * 6, 15)  # the saddles' height 1/6
+    >>> round(check_well(hh).basin.escape.escape_potential * 6, 15)  # the saddles' height 1/6
     1.0
     >>> check_well(UserWell("valley", "x**2", {}))  # doctest: +ELLIPSIS
     Traceback (most recent call last):
@@ -832,7 +832,7 @@ the box |x|, |y| <= 1.04858e+06
         {s.name: v for s, v in values.items()},
         radius,
         minimum,
-        basin.escape.describe(),
+        basin.escape.describe(basin.well.v0),
         invariant,
         reason,
         basin,

@@ -31,18 +31,21 @@ import numpy as np
 
 from .. import validation as v
 from ..errors import ParameterError
+from ..glossary import renamed
 from .table import Table
 
 __all__ = ["predict_rigid_relaxation", "rigid_shell_increments", "rigid_shell_states"]
 
 
-def rigid_shell_states(table: Table, particles: int, mass: float, energy: float, s: float,
-                       runs: int, rng: np.random.Generator):  # fmt: skip
+@renamed(energy="total_energy")
+def rigid_shell_states(table: Table, particles: int, mass: float, total_energy: float,
+                       s: float, runs: int, rng: np.random.Generator):  # fmt: skip
     """(positions (R, k, 2) relative to the container, absolute velocities (R, k, 2),
     container (R, 2) as (X, X')) of ``runs`` states drawn from the rigid shell at total
-    energy E = ``energy`` given E_c = s E (module docstring); k = ``particles`` of total
-    mass ``mass``."""
-    k, e = v.positive_int("particles", particles), v.positive("energy", energy)
+    energy E = ``total_energy`` given E_c = s E (module docstring); k = ``particles`` of
+    total mass ``mass``."""
+    k = v.positive_int("particles", particles)
+    e = v.positive("total_energy", total_energy)
     mu = v.positive("mass", mass) / k
     runs = v.positive_int("runs", runs)
     if not 0 <= s < 1:
@@ -111,25 +114,26 @@ def predict_rigid_relaxation(
                             coefficients=message, fraction=fraction, seed=seed)  # fmt: skip
 
 
-def rigid_shell_increments(table: Table, particles: int, mass: float, energy: float,
+@renamed(energy="total_energy")
+def rigid_shell_increments(table: Table, particles: int, mass: float, total_energy: float,
                            points: int, runs: int, lags, seed: int):  # fmt: skip
     """(s (points,), increments of s (point, lag, run), one line on the runs): ``runs``
-    billiards from the rigid shell at each of ``points`` Gauss-Legendre fractions s of
-    [0, 1] (one child of ``SeedSequence(seed)`` per point), at ``lags`` (periods,
-    ascending)."""
+    billiards from the rigid shell at total energy E = ``total_energy`` at each of
+    ``points`` Gauss-Legendre fractions s of [0, 1] (one child of ``SeedSequence(seed)``
+    per point), at ``lags`` (periods, ascending)."""
     from ..equilibrium.kramers import gauss_grid
     from .run import simulate_billiard
 
     s = gauss_grid(points, 1)[0]
     children = np.random.SeedSequence(seed).spawn(points)
-    states = [rigid_shell_states(table, particles, mass, energy, si, runs,
+    states = [rigid_shell_states(table, particles, mass, total_energy, si, runs,
                                  np.random.default_rng(c))
               for si, c in zip(s, children, strict=True)]  # fmt: skip
     pos, vel, box = (np.concatenate(part) for part in zip(*states, strict=True))
     res = simulate_billiard(table, pos, vel, mu=mass / particles, container=box,
                             periods=int(max(lags)), seed=seed)  # fmt: skip
     ec = res.container_energy.reshape(points, runs, -1)
-    inc = np.stack([ec[:, :, j] - ec[:, :, 0] for j in lags], axis=1) / energy
+    inc = np.stack([ec[:, :, j] - ec[:, :, 0] for j in lags], axis=1) / total_energy
     message = (f"{points} points x {runs} rigid billiards from the shell, lags "
                f"{list(lags)} periods (seed {seed}); max relative energy error "
                f"{res.max_relative_energy_error:.2g}")  # fmt: skip

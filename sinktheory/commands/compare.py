@@ -6,7 +6,7 @@ for ``--energies LO HI COUNT`` log-spaced initial container energies, ``--runs``
 impulsive starts run for ``--periods`` periods (:func:`sinktheory.compare.compare`).
 Reported: the fraction of the initial energy dissipated in the window (mean +- standard
 error) and the time to dissipate 90 % (over the runs that reached it).  ``--plot`` draws
-both against the energy; ``--wavelet`` the Morlet wavelet map of the container of run 0
+both against the energy; ``--wavelet-plot`` the Morlet wavelet map of the container of run 0
 of every attachment at ``--wavelet-energy`` with its ridge over the normal modes'
 frequency-energy curves.  Bad input: one line on stderr, exit status 2, nothing written.
 """
@@ -91,7 +91,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     o = parser.add_argument_group("output")
     o.add_argument("--plot", default=None, metavar="FILE", help="efficiency and 90 %% time (PNG)")
     o.add_argument(
-        "--wavelet", default=None, metavar="FILE", help="wavelet maps over the NNMs (PNG)"
+        "--wavelet-plot", default=None, metavar="FILE", help="wavelet maps over the NNMs (PNG)"
     )
     o.add_argument(
         "--wavelet-energy",
@@ -106,7 +106,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> Output:
     plot = png_path("--plot", args.plot)
-    wavelet = png_path("--wavelet", args.wavelet)
+    wavelet = png_path("--wavelet-plot", args.wavelet_plot)
     from .. import validation as v
     from ..compare.efficiency import attachments_of, compare, energies_of
 
@@ -126,10 +126,12 @@ def run(args: argparse.Namespace) -> Output:
     ):
         # the map reaches omega = 3: the Nyquist frequency samples / 2 must too
         raise ParameterError(
-            "samples_per_period", args.samples_per_period, "an integer >= 6 with --wavelet"
+            "samples_per_period", args.samples_per_period, "an integer >= 6 with --wavelet-plot"
         )
     if wavelet is None and args.wavelet_energy is not None:
-        raise ParameterError("wavelet_energy", args.wavelet_energy, "given with --wavelet only")
+        raise ParameterError(
+            "wavelet_energy", args.wavelet_energy, "given with --wavelet-plot only"
+        )
     if args.wavelet_energy is not None:  # refused before the comparison runs
         v.positive("wavelet_energy", args.wavelet_energy)
     result = compare(

@@ -138,7 +138,8 @@ def renderings() -> dict[str, dict[str, str] | str]:
 def well_renderings(well, given: dict, report) -> dict:
     """The ladder of a user's ``well`` (at the parameter values ``given``, its defaults for
     the others; ``report`` its :func:`~sinktheory.userwell.check_well` there) rendered as
-    :func:`renderings` renders the paper's equations, plus ``escape_energy``, ``escape``
+    :func:`renderings` renders the paper's equations, plus ``escape_energy`` (measured
+    from V(0, 0), as everywhere: :attr:`sinktheory.basin.Basin.escape_energy`), ``escape``
     (how it was found) and ``normal_mode`` (why y = 0 is or is not a normal mode) in the
     JSON."""
     import sympy as sp
@@ -147,7 +148,7 @@ def well_renderings(well, given: dict, report) -> dict:
 
     steps = S.ladder(well, well.values(**given))
     eqs = steps.items()
-    escape = report.basin.escape
+    escape, e_star = report.basin.escape, report.basin.escape_energy
     mode = steps.normal_mode
     why = (
         f"y = 0 is a normal mode ({mode.reason})"
@@ -158,7 +159,7 @@ def well_renderings(well, given: dict, report) -> dict:
     values = ", ".join(f"{k} = {v}" for k, v in report.values.items()) or "none"
     which = "at their defaults" if not given else "(--well-param, defaults for the others)"
     notes = [f"well {well.name}; parameters {which}: {values}",
-             f"at these values, {escape.describe()}", why]  # fmt: skip
+             f"at these values, {escape.describe(report.basin.well.v0)}", why]  # fmt: skip
     text = "\n\n".join(
         f"{key}:\n{sp.pretty(expr, use_unicode=True, wrap_line=False)}" for key, expr in eqs.items()
     )
@@ -166,8 +167,8 @@ def well_renderings(well, given: dict, report) -> dict:
     data = {key: sympifiable(expr) for key, expr in eqs.items()}
     data |= {
         "well": well.name,
-        "escape_energy": escape.energy if math.isfinite(escape.energy) else None,
-        "escape": escape.describe(),
+        "escape_energy": e_star if math.isfinite(e_star) else None,
+        "escape": escape.describe(report.basin.well.v0),
         "normal_mode": why,
     }
     return {

@@ -156,7 +156,7 @@ def transfer_maps(
     samples_per_period: int = 16,
     tol: float | None = None,
 ) -> tuple[list[TransferMap], list[list], list[str]]:
-    """What ``compare --wavelet`` draws: the map of run 0 of each attachment after an
+    """What ``compare --wavelet-plot`` draws: the map of run 0 of each attachment after an
     impulse E0 = ``wavelet_energy`` (:func:`transfer_map`), and the backbones of each
     kind of sink (:func:`backbone`; the in-plane normal modes do not depend on the particle
     count or the shape) over total energies from half the lowest to twice the highest of

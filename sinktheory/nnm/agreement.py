@@ -30,7 +30,7 @@ Examples
 >>> from sinktheory import Sink, Well
 >>> sink = Sink(Well(0.5, -0.2, 4), particles=1, mass=0.2)
 >>> orbit = reach_energy(sink, 0.5)
->>> round(orbit.energy, 12), round(orbit.frequency, 4)
+>>> round(orbit.total_energy, 12), round(orbit.frequency, 4)
 (0.5, 3.9667)
 >>> chart = transverse_chart(sink, 0.5, [-0.6, -0.2, 0.2], start=orbit)
 >>> chart.stable.tolist(), bool(abs(chart.phi_half[1, 0]) < 1)
@@ -89,11 +89,11 @@ def reach_energy(
                              interval=(0.1 * LOW_ENERGY, energy), ds=ds,
                              max_points=max_points, subspace="plane")  # fmt: skip
     last = branch.orbits[-1]
-    if last.energy < energy:
-        raise ShootingError(f"energy continuation ended at H = {last.energy:.6g} before "
+    if last.total_energy < energy:
+        raise ShootingError(f"energy continuation ended at H = {last.total_energy:.6g} before "
                             f"{energy:g} ({branch.stop_reason})")  # fmt: skip
     # the last two points bracket the target: start Newton from the nearer one
-    near = min(branch.orbits[-2:], key=lambda o: abs(o.energy - energy))
+    near = min(branch.orbits[-2:], key=lambda o: abs(o.total_energy - energy))
     return shoot(system, near.z0, near.period, steps=steps, total_energy=energy, subspace="plane")
 
 

@@ -131,7 +131,7 @@ def container_share(backbone) -> np.ndarray:
     particle (the phase condition; at low energy the container's X(t) has extra turning
     points).  On a synchronous mode every velocity is 0 there, all energy is potential,
     and the rest is in the particle's well."""
-    return 0.5 * np.asarray(backbone.z0)[:, 0] ** 2 / np.asarray(backbone.energy)
+    return 0.5 * np.asarray(backbone.z0)[:, 0] ** 2 / np.asarray(backbone.total_energy)
 
 
 def localisation_energy(backbone, share: float = 0.5) -> float:
@@ -151,7 +151,7 @@ def localisation_energy(backbone, share: float = 0.5) -> float:
     if not share < 1:
         raise ParameterError("share", share, "a fraction in (0, 1)")
     f = container_share(backbone)
-    logE = np.log(np.asarray(backbone.energy))
+    logE = np.log(np.asarray(backbone.total_energy))
     order = np.argsort(logE)
     f, logE = f[order], logE[order]
     above = np.flatnonzero((f[:-1] - share) * (f[1:] - share) <= 0)
@@ -165,7 +165,7 @@ def localisation_energy(backbone, share: float = 0.5) -> float:
 def _monotone(branch: Branch, start: int) -> Branch:
     """The part of a merged branch around point ``start`` on which the energy is
     monotone: the backbone up to the first fold on each side."""
-    e = branch.energy
+    e = branch.total_energy
     d = np.sign(np.diff(e))
     if d.size == 0:
         return branch
@@ -217,9 +217,9 @@ def inphase_backbone(
     >>> from sinktheory import Sink, Well
     >>> sink = Sink(Well(0.5, 0.3, 2), particles=1, mass=0.2)
     >>> b = inphase_backbone(sink, 1e-5, 1e-4, steps=100, points=20)
-    >>> bool(np.all(np.diff(b.energy) > 0) and np.all(np.diff(b.frequency) > 0))
+    >>> bool(np.all(np.diff(b.total_energy) > 0) and np.all(np.diff(b.frequency) > 0))
     True
-    >>> bool(b.energy[0] <= 1e-5 and b.energy[-1] >= 1e-4)  # the range is covered
+    >>> bool(b.total_energy[0] <= 1e-5 and b.total_energy[-1] >= 1e-4)  # the range is covered
     True
     """
     from .modes import sink_flow
@@ -283,13 +283,13 @@ def inphase_pieces(
         except ShootingError as e:
             notes.append(f"in-phase 1:1 from E = {start:.3g} not converged: {e}")
             continue
-        i = int(np.argmin(np.abs(np.log(b.energy / start))))
-        guess = harmonic_balance_frequency(sink, float(b.energy[i]))
+        i = int(np.argmin(np.abs(np.log(b.total_energy / start))))
+        guess = harmonic_balance_frequency(sink, float(b.total_energy[i]))
         if abs(b.frequency[i] / guess - 1) > HB_AGREEMENT:
             notes.append(f"in-phase 1:1 from E = {start:.3g} converged on a tongue "
                          f"(frequency {b.frequency[i]:.4g}, one harmonic {guess:.4g})")  # fmt: skip
             continue
-        covered.append((float(b.energy.min()), float(b.energy.max())))
+        covered.append((float(b.total_energy.min()), float(b.total_energy.max())))
         if pieces:
             b.meta["label"] = f"in-phase 1:1 (piece {len(pieces) + 1})"
         pieces.append(b)

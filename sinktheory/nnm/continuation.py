@@ -178,8 +178,11 @@ class Branch:
         return np.exp(lam) if self.continue_in == "energy" else lam
 
     @property
-    def energy(self) -> np.ndarray:
-        return np.array([o.energy for o in self.orbits])
+    def total_energy(self) -> np.ndarray:
+        """The total energy H of each orbit."""
+        return np.array([o.total_energy for o in self.orbits])
+
+    energy = old_attribute("total_energy")
 
     @property
     def period(self) -> np.ndarray:
@@ -272,7 +275,7 @@ def continue_orbits(
     -------
     Branch
     """
-    z0, h = checked_start(system, z0, total_energy, "total_energy")
+    z0, h = checked_start(system, z0, total_energy)
     steps, T = checked_steps(steps, T)
     if isinstance(direction, bool) or direction not in (1, -1):
         raise ParameterError("direction", direction, "+1 or -1")

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..glossary import old_attribute
 from ..results import Result
 
 __all__ = ["BranchResult"]
@@ -32,12 +33,14 @@ class BranchResult(Result):
     Attributes
     ----------
     meta : dict
-        system, params, continue_in (the continuation parameter), total_energy (when
-        that is a well parameter: the fixed total energy), steps, scheme, stop_reason, ...;
+        system, params, continue_in (the continuation parameter), steps, scheme,
+        stop_reason, ...;
         ``as_dict()`` and ``to_dataset()`` list its entries beside the arrays (as keys,
         as attributes), followed by ``max_trivial_error`` and ``max_abs_sigma``.
     value : (P,) continuation parameter (energy or the well parameter)
-    energy, period, frequency : (P,)
+    total_energy : (P,) the total energy H of each orbit (the fixed one, at every point,
+        of a branch in a well parameter)
+    period, frequency : (P,)
     sigma, residual, trivial_error : (P,) checks (unfolding parameter, max |Phi(z0) - z0|,
         distance of the trivial multipliers from 1)
     stable, stable_inplane, stable_transverse : (P,) bool
@@ -45,12 +48,12 @@ class BranchResult(Result):
     z0 : (P, 2D) start states
     phi_half : (P, k) transverse half-period half-traces (nan when not computed)
     symmetry_error : (P,) max |z(T/2) + z0| (nan when not computed)
-    events : list of dict (kind, index, value, energy, frequency, multiplier)
+    events : list of dict (kind, index, value, total_energy, frequency, multiplier)
     """
 
     meta: dict
     value: np.ndarray
-    energy: np.ndarray
+    total_energy: np.ndarray
     period: np.ndarray
     frequency: np.ndarray
     sigma: np.ndarray
@@ -67,11 +70,13 @@ class BranchResult(Result):
     symmetry_error: np.ndarray
     events: list = field(default_factory=list)
 
+    energy = old_attribute("total_energy")
+
     DIMS = {
         **dict.fromkeys(
             (
                 "value",
-                "energy",
+                "total_energy",
                 "period",
                 "frequency",
                 "sigma",
@@ -114,15 +119,13 @@ class BranchResult(Result):
             "free": [int(i) for i in p.free],
             "stop_reason": branch.stop_reason,
         }
-        if p.continue_in != "energy":
-            info["total_energy"] = p.total_energy
         info.update(meta)
         events = [
             {
                 "kind": e.kind,
                 "index": e.index,
                 "value": e.value,
-                "energy": e.orbit.energy,
+                "total_energy": e.orbit.total_energy,
                 "frequency": e.orbit.frequency,
                 "multiplier": None
                 if np.isnan(e.multiplier)
@@ -133,7 +136,7 @@ class BranchResult(Result):
         return cls(
             meta=info,
             value=branch.values,
-            energy=branch.energy,
+            total_energy=branch.total_energy,
             period=branch.period,
             frequency=branch.frequency,
             sigma=np.array([o.sigma for o in orbits]),

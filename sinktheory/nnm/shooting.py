@@ -46,7 +46,7 @@ Examples
 >>> from sinktheory.nnm.system import FlowSystem
 >>> s = FlowSystem("duffing2", [])
 >>> orbit = shoot(s, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=128, total_energy=0.01)
->>> round(orbit.frequency, 6), bool(abs(orbit.energy - 0.01) < 1e-14)
+>>> round(orbit.frequency, 6), bool(abs(orbit.total_energy - 0.01) < 1e-14)
 (1.000933, True)
 >>> bool(orbit.residual < 1e-12 and abs(orbit.sigma) < 1e-10)
 True
@@ -169,7 +169,7 @@ class ShootingProblem:
         g = system.gradient(z0)
         fT = system.vector_field(zT)
         c, ref = self.phase_vector(system)
-        G = np.concatenate([(zT - z0 + sigma * g)[F], [c @ (z0 - ref), system.energy(z0) - h]])
+        G = np.concatenate([(zT - z0 + sigma * g)[F], [c @ (z0 - ref), system.hamiltonian(z0) - h]])
         n = F.size
         J = np.zeros((n + 2, n + 3))
         J[:n, :n] = (M - np.eye(M.shape[0]))[np.ix_(F, F)]
@@ -310,9 +310,11 @@ class Orbit:
         return 2 * math.pi / self.period
 
     @property
-    def energy(self) -> float:
-        """H(z0)."""
-        return self.system.energy(self.z0)
+    def total_energy(self) -> float:
+        """The orbit's total energy H(z0)."""
+        return self.system.hamiltonian(self.z0)
+
+    energy = old_attribute("total_energy")
 
     def trajectory(self, samples: int = 200) -> tuple[np.ndarray, np.ndarray]:
         """(t, z(t)) on ``samples`` + 1 equally spaced times over one period (same steps)."""
@@ -371,16 +373,19 @@ def subspace_indices(system: FlowSystem, subspace: str | None) -> np.ndarray:
     raise ParameterError("subspace", subspace, "'full' or 'plane'")
 
 
-def checked_start(system, z0, energy=None, name: str = "energy") -> tuple[np.ndarray, float]:
-    """(z0 as a float state, target energy h): ParameterError unless ``system`` is a
-    :class:`FlowSystem`, z0 a finite state of its length 2D and h (default: the energy
-    of z0) a finite positive number (refused naming ``name``)."""
+@renamed(energy="total_energy")
+def checked_start(
+    system, z0, total_energy=None, name: str = "total_energy"
+) -> tuple[np.ndarray, float]:
+    """(z0 as a float state, target total energy h): ParameterError unless ``system`` is
+    a :class:`FlowSystem`, z0 a finite state of its length 2D and h (default: the total
+    energy of z0) a finite positive number (refused naming ``name``)."""
     if not isinstance(system, FlowSystem):
         raise ParameterError("system", system, "a sinktheory.nnm.system.FlowSystem")
     z0 = v.real_array("z0", z0)
     if z0.shape != (2 * system.dim,) or not np.isfinite(z0).all():
         raise ParameterError("z0", z0.shape, f"a finite state of length {2 * system.dim}")
-    h = v.positive(name, system.energy(z0) if energy is None else energy)
+    h = v.positive(name, system.hamiltonian(z0) if total_energy is None else total_energy)
     return z0, h
 
 
@@ -440,7 +445,7 @@ def shoot(
     ShootingError
         If Newton does not converge.
     """
-    z0, h = checked_start(system, z0, total_energy, "total_energy")
+    z0, h = checked_start(system, z0, total_energy)
     steps, T = checked_steps(steps, T)
     free = subspace_indices(system, subspace)
     problem = ShootingProblem(

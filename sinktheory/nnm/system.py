@@ -43,6 +43,7 @@ from .. import validation as val
 from ..engine.cache import engine_system
 from ..engine.core import Ensemble
 from ..errors import ParameterError
+from ..glossary import old_attribute
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..layout import SINK_PARAMS
 from ..model import MAX_RUNS
@@ -133,13 +134,15 @@ class FlowSystem:
         return names.index(name)
 
     # --- pointwise quantities -----------------------------------------------------
-    def energy(self, z: np.ndarray, params: np.ndarray | None = None) -> float:
-        """Total energy H(z)."""
+    def hamiltonian(self, z: np.ndarray, params: np.ndarray | None = None) -> float:
+        """The Hamiltonian H(z): the total energy at the state z."""
         D = self.dim
         z = np.asarray(z, float)
         p = self.params if params is None else params
         table = self.module.table_of(p, 1)
         return float(self.module.block_energies(z[:D, None], z[D:, None], table)[0][0])
+
+    energy = old_attribute("hamiltonian")
 
     def accelerations(self, q: np.ndarray) -> np.ndarray:
         """Accelerations (D,) at positions q (D,)."""
@@ -244,5 +247,5 @@ class FlowSystem:
             p = p0.copy()
             p[i] += s * h
             out.append(self.propagate(z0, T, steps=steps, jacobian=False, params=p))
-            energies.append(self.energy(z0, p))
+            energies.append(self.hamiltonian(z0, p))
         return (out[0] - out[1]) / (2 * h), (energies[0] - energies[1]) / (2 * h)

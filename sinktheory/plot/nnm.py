@@ -63,7 +63,7 @@ def draw_frequency_energy(ax, results, *, stability: str = "stable_inplane") -> 
         flags = np.asarray(getattr(r, stability), bool)
         for a, b, ok in _runs(flags):
             ax.plot(
-                r.energy[a:b],
+                r.total_energy[a:b],
                 r.frequency[a:b],
                 ls="-" if ok else ":",
                 lw=1.8 if ok else 1.3,
@@ -73,7 +73,7 @@ def draw_frequency_energy(ax, results, *, stability: str = "stable_inplane") -> 
         tu = ~np.asarray(r.stable_transverse, bool)
         if tu.any() and r.transverse.size and stability != "stable":
             ax.plot(
-                r.energy[tu],
+                r.total_energy[tu],
                 r.frequency[tu],
                 "x",
                 color=color,
@@ -85,7 +85,7 @@ def draw_frequency_energy(ax, results, *, stability: str = "stable_inplane") -> 
         for e in r.events:
             marker, c = _MARK.get(e["kind"], ("x", "k"))
             ax.plot(
-                e["energy"],
+                e["total_energy"],
                 e["frequency"],
                 marker,
                 color=c,
@@ -148,6 +148,11 @@ def draw_transverse(ax, result, scan=None) -> None:
     ax.legend(fontsize=7, loc="best")
 
 
+def _fixed_energy(result) -> float:
+    """The total energy H of a branch in a well parameter (the same at every point)."""
+    return float(result.total_energy[0]) if result.points else float("nan")
+
+
 def plot_transverse(result, scan=None, *, chaos=None, title: str | None = None):
     """The coupled mode's transverse stability against beta beside the paper's phi(beta).
 
@@ -170,7 +175,7 @@ def plot_transverse(result, scan=None, *, chaos=None, title: str | None = None):
     ax.set_title(
         title
         or f"transverse stability of the coupled normal mode, {m.get('system')}, "
-        f"H = {m.get('total_energy', float('nan')):.4g}",
+        f"H = {_fixed_energy(result):.4g}",
         fontsize=10,
     )
     if chaos is not None:
@@ -199,7 +204,7 @@ def plot_nnm(results, beta_result=None, scan=None, *, chaos=None):
         bx = fig.add_subplot(1, cols, 2)
         draw_transverse(bx, beta_result, scan)
         bx.set_title(
-            f"transverse stability against beta, H = {beta_result.meta.get('total_energy', 0):.4g}",
+            f"transverse stability against beta, H = {_fixed_energy(beta_result):.4g}",
             fontsize=10,
         )
         if chaos is not None and callable(chaos):

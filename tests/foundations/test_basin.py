@@ -38,7 +38,7 @@ def test_the_symmetric_corner_saddle_is_the_registry_escape_energy(n, gamma):
     exact = float(v_star.subs({S.alpha: 0.5, S.beta: sp.Rational(3, 10), S.n: n, S.gamma: gamma}))
     escape = basin_of("symmetric", 0.3, n, gamma).escape
     assert escape.kind == "saddle"
-    assert abs(escape.energy / exact - 1) <= 1e-12
+    assert abs(escape.escape_potential / exact - 1) <= 1e-12
     assert abs(abs(escape.point[0]) - abs(escape.point[1])) <= 1e-12  # on a diagonal
     assert escape.bracket[0] <= exact  # the grid's basin is closed below the saddle
 
@@ -49,7 +49,7 @@ def test_beta_below_zero_the_poles_close_the_basin_where_the_registry_refuses(sh
     escape = basin_of(shape, -0.7, n).escape
     exact = pole_limit(shape, 0.5, -0.7, n, 1.0)
     assert escape.kind == "singular"
-    assert abs(escape.energy / exact - 1) <= 1e-12
+    assert abs(escape.escape_potential / exact - 1) <= 1e-12
     well = Well(0.5, -0.7, n, shape=shape)  # the registry accepts below, refuses above
     well.reach(exact * (1 - 1e-9))
     with pytest.raises(ParameterError, match="beta"):
@@ -59,7 +59,7 @@ def test_beta_below_zero_the_poles_close_the_basin_where_the_registry_refuses(sh
 @pytest.mark.parametrize("shape,beta", [("flat", 0.3), ("circular", 0.3), ("circular", -0.7)])
 def test_wells_that_confine_every_energy_are_bounded_up_to_the_search_box(shape, beta):
     escape = basin_of(shape, beta, 4).escape
-    assert escape.kind == "box" and escape.energy > 1e30  # the registry: never escapes
+    assert escape.kind == "box" and escape.escape_potential > 1e30  # the registry: never escapes
 
 
 # --- reach ----------------------------------------------------------------------------------
@@ -153,7 +153,7 @@ def test_energies_outside_the_basin_are_refused_by_name():
 def test_a_basin_of_a_well_built_directly():
     # Basin.of without a well file: V = x^2 + y^2 - x^4 has its saddles at (+-1/sqrt 2, 0)
     basin = Basin.of(parse_potential("x**2 + y**2 - x**4", ()))
-    assert basin.escape.kind == "saddle" and abs(basin.escape.energy - 0.25) <= 1e-15
+    assert basin.escape.kind == "saddle" and abs(basin.escape.escape_potential - 0.25) <= 1e-15
 
 
 def test_a_registered_shape_has_the_same_basin_interface():
@@ -161,4 +161,4 @@ def test_a_registered_shape_has_the_same_basin_interface():
     values = {S.alpha: sp.Rational(1, 2), S.beta: sp.Rational(3, 10), S.gamma: 1, S.n: 4}
     basin = Basin.of(S.potential("symmetric"), values, "symmetric")
     exact = float(S.symmetric_corner_saddle()[1].subs(values))
-    assert basin.escape.kind == "saddle" and abs(basin.escape.energy / exact - 1) <= 1e-12
+    assert basin.escape.kind == "saddle" and abs(basin.escape.escape_potential / exact - 1) <= 1e-12

@@ -177,7 +177,7 @@ def test_the_henon_heiles_well_with_a_quartic_term_passes_and_y0_is_not_invarian
     assert report.basin.escape.kind == "box"  # c = 0.1: no critical point but the centre
     # a small c leaves a saddle a little above Henon-Heiles' 1/6 before r^4 wins far out
     weak = check_well(well, c=1e-3).basin.escape
-    assert weak.kind == "saddle" and 1 / 6 < weak.energy < 0.17
+    assert weak.kind == "saddle" and 1 / 6 < weak.escape_potential < 0.17
 
 
 def test_the_plain_henon_heiles_well_is_accepted_below_its_saddles():
@@ -185,7 +185,7 @@ def test_the_plain_henon_heiles_well_is_accepted_below_its_saddles():
     # the triangle through the three saddles (0, 1), (+-sqrt(3)/2, -1/2), each at V = 1/6
     report = check_well(UserWell("hh", HH, {}))
     escape = report.basin.escape
-    assert escape.kind == "saddle" and abs(escape.energy - 1 / 6) <= 1e-15
+    assert escape.kind == "saddle" and abs(escape.escape_potential - 1 / 6) <= 1e-15
     saddles = [(0.0, 1.0), (3**0.5 / 2, -0.5), (-(3**0.5) / 2, -0.5)]
     assert min(np.hypot(escape.point[0] - a, escape.point[1] - b) for a, b in saddles) < 1e-14
     assert report.confinement.startswith("escape energy 0.1666666666666")

@@ -182,6 +182,12 @@ def test_derive_well_prints_the_ladder(tmp_path, capsys, monkeypatch):
     assert sp.expand(V - sp.sympify(HH)) == 0
     code, out, _ = run_cli(["derive", "--well", str(path), "--latex"], capsys)
     assert code == 0 and out.startswith("% well hh") and r"\frac{x^{2}}{2}" in out
+    # measured from V(0, 0), as `well` reports it: the saddles stay 1/6 above the centre
+    lifted = write_well(tmp_path, "hh1", "1 + " + HH)
+    code, out, _ = run_cli(["derive", "--well", str(lifted), "--json"], capsys)
+    data = json.loads(out)
+    assert code == 0 and abs(data["escape_energy"] - 1 / 6) <= 1e-15
+    assert data["escape"].startswith("escape energy 0.166666666666667 above V(0, 0) = 1: ")
 
 
 @pytest.mark.parametrize(

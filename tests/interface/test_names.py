@@ -85,7 +85,7 @@ ENTRY_POINTS = {
 #: Options that shape the command's output or its run and feed no keyword.
 COMMAND_ONLY = {"json", "plot", "out", "quiet", "report", "latex", "fresh", "figure", "quick",
                 "param", "top", "no_estimate", "digits", "max_hours",
-                "well_param"}  # fmt: skip
+                "well_param", "wavelet_plot"}  # fmt: skip
 #: command -> options whose keyword is still named differently (each entry must still be
 #: needed: the test fails when one is fixed, so the list only shrinks).
 KNOWN_DISAGREEMENTS: dict[str, set[str]] = {}
@@ -385,6 +385,9 @@ def test_old_basin_keywords_and_reach_field_still_work_with_a_warning():
         assert basin.area(energy=1.0) == basin.area(1.0)
     with pytest.warns(DeprecationWarning, match="'energy' is now 'particle_energy'"):
         assert basin.check_energy(energy=0.5) == 0.5
+    escape = basin.escape  # the ellipse never opens: V on the largest box's edge
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'escape_potential'"):
+        assert escape.energy == escape.escape_potential == basin.escape_energy + basin.well.v0
 
 
 def test_old_impulse_fields_still_read_with_a_warning():
@@ -415,3 +418,67 @@ def test_old_impulse_fields_still_read_with_a_warning():
     with pytest.warns(DeprecationWarning, match="'energy' is now 'container_energy'"):
         assert c.energy is c.container_energy is grid
     assert c.to_dataset()["efficiency"].dims == ("attachment", "container_energy")
+
+
+def test_old_nnm_attributes_still_read_with_a_warning():
+    """An orbit's, a branch's and a branch result's total energy H was ``energy``, and the
+    flow system's Hamiltonian at a state ``energy(z)``; each still reads, with a warning,
+    and the orbits' H(z0) is the shooting's target."""
+    import numpy as np
+
+    from sinktheory.nnm.continuation import continue_orbits
+    from sinktheory.nnm.shooting import checked_start
+    from sinktheory.nnm.system import FlowSystem
+
+    duffing = FlowSystem("duffing2", [])
+    branch = continue_orbits(duffing, np.array([0.1, 0.1, 0, 0]), 2 * np.pi, steps=64,
+                             total_energy=0.01, interval=(5e-3, 0.02), max_points=3)  # fmt: skip
+    orbit, result = branch.orbits[0], branch.result()
+    assert orbit.total_energy == duffing.hamiltonian(orbit.z0) == result.total_energy[0]
+    assert abs(orbit.total_energy - 0.01) < 1e-14
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert orbit.energy == orbit.total_energy
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert np.array_equal(branch.energy, branch.total_energy)
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        assert result.energy is result.total_energy
+    assert "energy" not in result.as_dict() and len(result.as_dict()["total_energy"]) > 1
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'hamiltonian'"):
+        assert duffing.energy(orbit.z0) == orbit.total_energy
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        old = checked_start(duffing, orbit.z0, energy=0.01)
+    assert old[1] == checked_start(duffing, orbit.z0, 0.01)[1] == 0.01
+
+
+def test_old_rigid_shell_keyword_still_works_with_a_warning():
+    """The rigid shell's ``energy`` is the total energy E; the old keyword still works,
+    with a warning, and draws the same states from the same seed."""
+    import numpy as np
+
+    from sinktheory.billiard.relaxation import rigid_shell_increments, rigid_shell_states
+    from sinktheory.billiard.table import rigid_table
+    from sinktheory.errors import ParameterError
+
+    table = rigid_table("flat", 0.5, 0.3)
+    new = rigid_shell_states(table, 2, 0.2, 0.5, 0.25, 3, np.random.default_rng(1))
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        old = rigid_shell_states(table, 2, 0.2, energy=0.5, s=0.25, runs=3,
+                                 rng=np.random.default_rng(1))  # fmt: skip
+    assert all(np.array_equal(a, b) for a, b in zip(old, new, strict=True))
+    assert np.allclose(0.5 * (old[2] ** 2).sum(axis=1), 0.25 * 0.5, rtol=1e-14)  # E_c = s E
+    with pytest.raises(ParameterError, match="^total_energy = "):
+        rigid_shell_states(table, 2, 0.2, -0.5, 0.25, 3, np.random.default_rng(1))
+    with pytest.warns(DeprecationWarning, match="'energy' is now 'total_energy'"):
+        s, inc, _ = rigid_shell_increments(table, 1, 0.2, energy=0.5, points=3, runs=2,
+                                           lags=[1, 2], seed=0)  # fmt: skip
+    assert np.array_equal(inc, rigid_shell_increments(table, 1, 0.2, 0.5, 3, 2, [1, 2], 0)[1])
+
+
+def test_the_old_wavelet_output_option_is_rewritten_with_a_note():
+    """``compare --wavelet FILE.png`` was the output file (Python's ``wavelet`` is the
+    wavelet's type): it is ``--wavelet-plot`` now; ``--wavelet-energy`` is left alone."""
+    argv, notes = modern_argv(["compare", "--damping", "0.01", "--wavelet", "w.png",
+                               "--wavelet-energy", "0.1", "--wavelet=v.png"])  # fmt: skip
+    assert argv == ["compare", "--damping", "0.01", "--wavelet-plot", "w.png",
+                    "--wavelet-energy", "0.1", "--wavelet-plot=v.png"]  # fmt: skip
+    assert notes == ["--wavelet is now --wavelet-plot"]

@@ -127,7 +127,7 @@ def test_backbone_of_the_first_nnm_matches_harmonic_balance(duffing):
     for o in b.orbits:  # HB started from the fundamental only (amplitudes, frequency)
         guess = np.zeros(2 * harmonics + 1)
         guess[0], guess[harmonics], guess[-1] = o.z0[0], o.z0[1], o.frequency
-        sol = _harmonic_balance(o.energy, guess, harmonics)
+        sol = _harmonic_balance(o.total_energy, guess, harmonics)
         worst = max(worst, abs(o.frequency / sol[-1] - 1))
     assert worst < 1e-9, worst  # measured 8e-13
     assert b.frequency[-1] > 1.25  # hardening: ~1.27 at H = 30
@@ -158,7 +158,7 @@ def test_multipliers_match_a_finite_difference_monodromy(duffing, energy):
         interval=(1e-3, energy), ds=0.3, ds_max=0.3,
     )  # fmt: skip
     last = b.orbits[-1]
-    o = shoot(duffing, last.z0 * (energy / last.energy) ** 0.25, last.period, steps=256,
+    o = shoot(duffing, last.z0 * (energy / last.total_energy) ** 0.25, last.period, steps=256,
               total_energy=energy)  # fmt: skip
     M = _fd_monodromy(duffing, o.z0, o.period)
     ref = floquet(M, duffing.vector_field(o.z0), duffing.gradient(o.z0))
@@ -194,5 +194,5 @@ def test_fold_of_the_sink_branch_is_located():
     assert folds, b.events
     f = folds[0]
     assert 1.5e-3 < f.value < 2.5e-3
-    e = [o.energy for o in b.orbits]
+    e = [o.total_energy for o in b.orbits]
     assert max(e[: f.index + 2]) <= f.value * (1 + 1e-6)

@@ -89,7 +89,7 @@ def test_switching_at_the_period_doubling_gives_a_genuine_period_2T_orbit(y_axis
         assert np.max(np.abs(flow.y[:, -1] - o.z0)) < 1e-8  # periodic with period ~2T
         assert np.max(np.abs(flow.sol(o.period / 2) - o.z0)) > 1e-2  # not period T
         assert abs(o.z0[0]) > 1e-2  # off the invariant line x = 0
-        assert abs(o.energy - (o.z0[2:] @ o.z0[2:] / 2 + o.z0[0] ** 2 / 2 + o.z0[1] ** 2 / 2
+        assert abs(o.total_energy - (o.z0[2:] @ o.z0[2:] / 2 + o.z0[0] ** 2 / 2 + o.z0[1] ** 2 / 2
                                + o.z0[0] ** 2 * o.z0[1] - o.z0[1] ** 3 / 3)) < 1e-14  # fmt: skip
 
 

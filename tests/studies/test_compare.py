@@ -115,7 +115,7 @@ REFUSALS = [
     (["--damping", "0.01", "--plot", "out.txt"], "--plot"),
     (["--damping", "0.01", "--wavelet-energy", "0.1"], "wavelet_energy"),
     (
-        ["--damping", "0.01", "--wavelet", "w.png", "--samples-per-period", "4"],
+        ["--damping", "0.01", "--wavelet-plot", "w.png", "--samples-per-period", "4"],
         "samples_per_period",
     ),  # fmt: skip
 ]
@@ -155,11 +155,11 @@ def test_compare_help_imports_nothing_heavy(tmp_path):
 
 
 def test_cli_wavelet_figure_and_notes(capsys, tmp_path):
-    """--wavelet writes the maps over the backbones and names in the JSON what could not
+    """--wavelet-plot writes the maps over the backbones and names in the JSON what could not
     be drawn: the vibro-impact NES has no smooth normal modes."""
     png = tmp_path / "w.png"
     argv = ["compare", "--attachments", "nes,impact", "--damping", "0.01", *TINY]
-    code, out, err = run_cli([*argv, "--wavelet", str(png), "--json"], capsys)
+    code, out, err = run_cli([*argv, "--wavelet-plot", str(png), "--json"], capsys)
     assert code == 0, err
     notes = json.loads(out)["wavelet_notes"]
     assert any(n.startswith("vibro-impact: ") and "no smooth normal modes" in n for n in notes)
