@@ -256,11 +256,13 @@ def total_energy(sink: Sink, values: np.ndarray) -> np.ndarray:
 
 
 def engine_name(sink: Sink) -> str:
-    """Name of the generated engine of this sink's well shape (n, k and the rest are
-    run-time values)."""
-    from .engine.cache import sink_name  # the engine (numba) loads when first needed
+    """Name of the generated engine of this sink's well: its shape's, or a user's well's
+    (:func:`sinktheory.engine.cache.well_name`); n, k and the rest are run-time values."""
+    from .engine.cache import sink_name, well_name  # numba loads when first needed
 
-    return sink_name(sink.well.shape)
+    if isinstance(sink.well, Well):
+        return sink_name(sink.well.shape)
+    return well_name(sink.well.definition)
 
 
 #: The engine's runtime parameters of a sink, packed (:data:`sinktheory.layout.SINK_PARAMS`).
@@ -291,8 +293,10 @@ def run_parameters(sink: Sink, settings: RunSettings, runs: int) -> dict:
     """What a simulation ran, as its result's ``parameters``: the well, k, m, E0, runs,
     periods, seed, box."""
     w = sink.well
+    well = ({"alpha": w.alpha, "beta": w.beta, "n": w.n, "gamma": w.gamma}
+            if isinstance(w, Well) else dict(w.parameters))  # fmt: skip
     return {
-        "shape": w.shape, "alpha": w.alpha, "beta": w.beta, "n": w.n, "gamma": w.gamma,
+        "shape": w.shape, **well,
         "particles": sink.particles, "mass": sink.mass,
         "container_energy": settings.container_energy, "runs": runs,
         "periods": settings.periods, "seed": settings.seed, "box": settings.box,

@@ -50,8 +50,13 @@ def pack_params(sink) -> np.ndarray:
     >>> from sinktheory import Sink, Well
     >>> pack_params(Sink(Well(0.5, 0.3, 4), particles=2, mass=0.2)).tolist()
     [0.5, 0.3, 1.0, 4.0, 0.1]
+
+    A user's well (:class:`~sinktheory.wellat.WellAt`) packs its own parameters, in
+    declaration order, then mu.
     """
     w = sink.well
+    if hasattr(w, "definition"):  # a user's well
+        return np.array([*w.parameters.values(), sink.mu], dtype=float)
     return np.array([w.alpha, w.beta, w.gamma, w.n, sink.mu], dtype=float)
 
 

@@ -438,8 +438,12 @@ class Sink:
     mass: float = 0.2
 
     def __post_init__(self) -> None:
-        if not isinstance(self.well, Well):
-            raise ParameterError("well", self.well, "a sinktheory.model.Well")
+        from .wellat import WellAt
+
+        if not isinstance(self.well, Well | WellAt):
+            raise ParameterError(
+                "well", self.well, "a sinktheory.model.Well or a user's sinktheory.wellat.WellAt"
+            )
         particles, mass = self.check_particles(self.particles, self.mass)
         object.__setattr__(self, "particles", particles)
         object.__setattr__(self, "mass", mass)
@@ -539,8 +543,12 @@ class RunSettings:
         set_(self, "box", v.positive("box", self.box))
 
     def total_energy_bound(self, sink: Sink) -> float:
-        """Upper bound of the total energy: E0 plus k times V at the box's corner."""
-        corner = float(sink.well.potential(self.box, self.box))
+        """Upper bound of the total energy: E0 plus k times V at the box's corner (for a
+        user's well, the largest V - V(0, 0) on a grid of the box)."""
+        if isinstance(sink.well, Well):
+            corner = float(sink.well.potential(self.box, self.box))
+        else:
+            corner = sink.well.box_potential(self.box)
         return self.container_energy + sink.particles * corner
 
     def check(self, sink: Sink) -> None:
@@ -579,6 +587,8 @@ class RunSettings:
 walls of the well (the start box reaches wall ratio 50 >= 1 at (10, 0) (wall distance \
 alpha - beta = 0.2))
         """
+        if not isinstance(well, Well):  # a user's well: V on the box's edge
+            return well.check_box(self.box)
         ratio, where = _box_ratio(well, self.box)
         if not ratio < 1:
             wall = well.wall_distance

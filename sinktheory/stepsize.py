@@ -103,9 +103,14 @@ def stiffness_frequency(sink: Sink, total_energy: float, *, angles: int = 46) ->
     >>> 50 < w < 500
     True
     """
+    from .model import Well
+
     well, energy = sink.well, total_energy
     x_max, y_max = well.reach(energy)
-    theta = np.linspace(0.0, 0.5 * math.pi, angles)[:, None]
+    # a registered shape is even in x and in y: one quadrant; a user's well: every direction
+    quadrant = isinstance(well, Well)
+    theta = np.linspace(0.0, (0.5 if quadrant else 2.0) * math.pi, angles if quadrant
+                        else 4 * angles)[:, None]  # fmt: skip
     radius = np.linspace(0.0, math.hypot(x_max, y_max), 400)[None, :]
     with np.errstate(over="ignore"):  # far out V overflows to inf: outside, as it should
         inside = well.potential(radius * np.cos(theta), radius * np.sin(theta)) <= energy
@@ -116,13 +121,16 @@ def stiffness_frequency(sink: Sink, total_energy: float, *, angles: int = 46) ->
             x, y = mid * np.cos(theta[:, 0]), mid * np.sin(theta[:, 0])
             below = well.potential(x, y) <= energy
             lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
-    hessian = well.kernels.hessian
     largest = 0.0
     for r, t in zip(hi, theta[:, 0], strict=True):
-        vxx, vxy, vyy = hessian(
-            r * math.cos(t), r * math.sin(t), well.alpha, well.beta, well.gamma, well.n
-        )
-        largest = max(largest, float(np.linalg.eigvalsh([[vxx, vxy], [vxy, vyy]])[-1]))
+        if quadrant:
+            vxx, vxy, vyy = well.kernels.hessian(
+                r * math.cos(t), r * math.sin(t), well.alpha, well.beta, well.gamma, well.n
+            )
+            h = [[vxx, vxy], [vxy, vyy]]
+        else:
+            h = well.hessian_at(r * math.cos(t), r * math.sin(t))
+        largest = max(largest, float(np.linalg.eigvalsh(h)[-1]))
     omega = math.sqrt(largest * (1.0 / sink.mu + 1.0))
     if not math.isfinite(omega):
         raise ParameterError("total_energy", energy, "an energy whose wall stiffness is finite")
@@ -316,8 +324,8 @@ that the well can be integrated ... (with gamma = 1 it can)
     try:
         return resolve_step(sink, total_energy, scheme=scheme, dt=dt, tol=tol)
     except ParameterError as e:
-        if e.name != "tol" or dt is not None:
-            raise
+        if e.name != "tol" or dt is not None or not isinstance(sink.well, Well):
+            raise  # (a user's well: its parameters are its own, no suspects to try)
         error = e
     limit = tol if tol is not None else DEFAULT_TOL
     w = sink.well

@@ -87,7 +87,7 @@ from ..errors import ParameterError, StepControlError
 from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..limits import DEFAULT_EPS, MAX_EPS
-from ..model import RunSettings, Sink
+from ..model import RunSettings, Sink, Well
 from ..progress import ProgressBar, chunks
 from ..stepsize import DEFAULT_TOL, PERIOD, choose
 from ..worklimit import check_particle_steps, check_work
@@ -245,7 +245,15 @@ def _control(eps: float, n: int) -> tuple[float, float, float, float]:
 
 
 def _engine_state(sink: Sink, values: np.ndarray):
-    """(module, q, v, parameter table) of state rows (R, 2 + 4k)."""
+    """(module, q, v, parameter table) of state rows (R, 2 + 4k); a user's well is refused
+    (the wall kernel is printed from a registered shape's wall ratios)."""
+    if not isinstance(sink.well, Well):
+        raise ParameterError(
+            "stepper",
+            "adaptive",
+            "fixed for a user's well (the adaptive "
+            "step's wall kernel is printed from a registered shape's walls)",
+        )
     module = kernels(sink.well.shape)
     q, vel = (np.ascontiguousarray(a) for a in split_values(np.asarray(values, dtype=float)))
     return module, q, vel, module._engine.table_of(engine_params(sink), q.shape[1])

@@ -1,0 +1,134 @@
+"""A user's well at given parameter values: what a :class:`~sinktheory.model.Sink` needs
+of a well, so that ``simulate`` runs a well of your own.
+
+:class:`WellAt` wraps a :class:`~sinktheory.userwell.UserWell` and the values of its
+parameters.  It is checked once (:func:`~sinktheory.userwell.check_well`: real and finite
+near the centre, a minimum there, a bounded basin up to a certified escape energy) and then
+answers what the set-up asks of :class:`~sinktheory.model.Well`: V at points (measured
+from V(0, 0), as every particle energy of a user's well is), its Hessian (for the step
+choice), the reach of a particle energy, and whether a start position or an energy lies in
+the basin.  The ensemble runs on the well's own compiled engine
+(:func:`sinktheory.engine.cache.well_name`), whose parameters are the well's in declaration
+order, then the particle mass.
+
+Examples
+--------
+>>> from sinktheory.userwell import UserWell
+>>> hh = WellAt(UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {}))
+>>> round(hh.escape_energy * 6, 12), hh.parameters
+(1.0, {})
+>>> hh.check_energy(0.2)
+Traceback (most recent call last):
+...
+sinktheory.errors.ParameterError: particle_energy = 0.2 is not allowed: must be in (0, \
+0.166666667): above V(0, 0) and below the escape energy of the hh well (measured from V(0, \
+0)) (...)
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import validation as v
+from .errors import ParameterError
+
+__all__ = ["WellAt"]
+
+
+class WellAt:
+    """A user's ``well`` (:class:`~sinktheory.userwell.UserWell`) at its parameter values:
+    the defaults, replaced by ``given`` (each within its declared range)."""
+
+    def __init__(self, well, **given: float) -> None:
+        from .userwell import UserWell, check_well
+
+        if not isinstance(well, UserWell):
+            raise ParameterError("well", well, "a sinktheory.userwell.UserWell")
+        self.definition = well
+        self.report = check_well(well, **given)
+        self.basin = self.report.basin
+        self.parameters = {s.name: float(x) for s, x in well.values(**given).items()}
+
+    @property
+    def shape(self) -> str:
+        """The well's name (what the built-in wells call their shape)."""
+        return self.definition.name
+
+    @property
+    def escape_energy(self) -> float:
+        """The escape energy measured from V(0, 0) (inf: bounded as far as checked)."""
+        return self.basin.escape_energy
+
+    def potential(self, x, y) -> np.ndarray:
+        """V(x, y) - V(0, 0) at arrays of points (relative to the container)."""
+        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        numeric = self.basin.well
+        with np.errstate(all="ignore"):  # beyond the basin V may overflow: large, not inside
+            return np.asarray(numeric.f(x, y), dtype=float) - numeric.v0
+
+    def hessian_at(self, x: float, y: float) -> np.ndarray:
+        """The 2 x 2 Hessian of V at (x, y)."""
+        return np.asarray(self.basin.well.hessian(float(x), float(y)), dtype=float)
+
+    def reach(self, particle_energy: float, *, name: str = "particle_energy"):
+        """Bounds (x_max, y_max) of |x|, |y| over the basin of a particle of energy
+        ``particle_energy`` (from V(0, 0)); refused, naming ``name``, at or above the
+        escape energy."""
+        e = self.check_energy(particle_energy, name=name)
+        r = self.basin.reach(self.basin.well.v0 + e)
+        return r.x_max, r.y_max
+
+    def check_energy(self, particle_energy: float, *, name: str = "particle_energy") -> float:
+        """``particle_energy`` if a particle holding it stays in the basin, else a
+        ParameterError naming ``name``."""
+        return self.basin.check_energy(particle_energy, name=name)
+
+    def check_position(self, name: str, x: float, y: float) -> None:
+        """Raise ParameterError naming ``name`` unless (x, y) is a finite point of the
+        basin: V - V(0, 0) below the escape energy all along the segment from the centre
+        (65 points), so a point past a ridge, where V may fall again, is refused."""
+        x, y = float(x), float(y)
+        allowed = f"a point of the {self.shape} well's basin (V - V(0, 0) below its escape energy)"
+        if not (math.isfinite(x) and math.isfinite(y)):
+            raise ParameterError(name, (x, y), allowed)
+        t = np.linspace(0.0, 1.0, 65)
+        e = self.potential(t * x, t * y)
+        e = np.where(np.isfinite(e), e, np.inf)
+        if not np.all(e < self.escape_energy):
+            worst = int(np.argmax(e >= self.escape_energy))
+            at = f"({t[worst] * x:.6g}, {t[worst] * y:.6g})"
+            why = f"V - V(0, 0) = {e[worst]:.6g} at {at} on the way"
+            raise ParameterError(name, (x, y), allowed, why=why)
+
+    def _box_edge(self, box: float) -> tuple[float, float, float]:
+        """(largest V - V(0, 0), x, y) on a grid of the start box, 17 x 17 points, edge
+        included (inf where V is not finite)."""
+        box = v.positive("box", box)
+        edge = np.linspace(-box, box, 17)
+        xs, ys = (a.ravel() for a in np.meshgrid(edge, edge))
+        e = self.potential(xs, ys)
+        e = np.where(np.isfinite(e), e, np.inf)
+        worst = int(np.argmax(e))
+        return float(e[worst]), float(xs[worst]), float(ys[worst])
+
+    def box_potential(self, box: float) -> float:
+        """The largest V - V(0, 0) on a 17 x 17 grid of the start box (about the most a
+        particle starting at rest in it holds)."""
+        return self._box_edge(box)[0]
+
+    def check_box(self, box: float) -> None:
+        """Raise ParameterError naming ``box`` unless the start box (-box, box)^2 lies in
+        the basin: V below the escape energy on a 17 x 17 grid of it."""
+        e, x, y = self._box_edge(box)
+        if not (e < self.escape_energy):
+            raise ParameterError(
+                "box", box, f"a start box inside the {self.shape} well's basin",
+                why=f"V - V(0, 0) = {e:.6g} at ({x:g}, {y:g}), not below the escape energy "
+                f"{self.escape_energy:.6g}",
+            )  # fmt: skip
+
+    def __repr__(self) -> str:
+        values = ", ".join(f"{k}={x:g}" for k, x in self.parameters.items())
+        return f"WellAt({self.shape}{': ' if values else ''}{values})"
