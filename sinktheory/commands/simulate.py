@@ -23,8 +23,10 @@ from ._common import (
     add_work_limit,
     number,
     output_file,
+    parameters_text,
     png_path,
     rigid_limit,
+    user_well_from_args,
     well_from_args,
 )
 
@@ -56,7 +58,7 @@ QUOTED = {
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser, rigid=True)
+    add_well_arguments(parser, rigid=True, well_file=True)
     g = add_sink_arguments(
         parser, runs_default=None, runs_help="ensemble size (default 25; 1 with --initial)"
     )
@@ -171,17 +173,20 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
 def run(args: argparse.Namespace) -> Output:
     plot = png_path("--plot", args.plot)
     out = _npz_path(args.out)
+    user = user_well_from_args(args)
     unsupported = {
         "--initial": args.initial, "--stepper": args.stepper, "--scheme": args.scheme,
         "--tol": args.tol, "--dt": args.dt, "--energy-bound": args.energy_bound,
         "--out": args.out, "--eps": args.eps,
     }  # fmt: skip
-    if rigid_limit(args, unsupported):
+    if user is None and rigid_limit(args, unsupported):
         return _rigid(args, plot)
     from ..model import RunSettings, Sink  # numpy and numba: after the cheap checks
     from ..simulate import simulate
+    from ..wellat import WellAt
 
-    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    well = well_from_args(args) if user is None else WellAt(user[0], **user[1])
+    sink = Sink(well, particles=args.particles, mass=args.mass)
     initial = _initial(args.initial, sink)
     runs = args.runs if args.runs is not None else (1 if initial is not None else 25)
     settings = RunSettings(
@@ -206,10 +211,14 @@ def run(args: argparse.Namespace) -> Output:
     w = sink.well
     from ..runstats import plus_minus  # numpy: after the early refusals
 
+    described = (
+        f"alpha={w.alpha:g} beta={w.beta:g} n={w.n} gamma={w.gamma:g}"
+        if user is None
+        else parameters_text(w.parameters)
+    )
     text = "\n".join(
         [
-            f"{w.shape} well alpha={w.alpha:g} beta={w.beta:g} n={w.n} gamma={w.gamma:g}; "
-            f"k={sink.particles}, m={sink.mass:g}",
+            f"{w.shape} well {described}; k={sink.particles}, m={sink.mass:g}",
             result.message,
             f"<E>(0) = {mean[0]:.6f}   <E>({settings.periods} T) = "
             + plus_minus(mean[-1], stderr[-1], ".6f")

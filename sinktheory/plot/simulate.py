@@ -38,8 +38,13 @@ def plot_ensemble_energy(result: SimulationResult, sink: Sink):
     ax.set_xlabel(r"$t/T$")
     ax.set_ylabel(r"$\langle E\rangle$ (container energy)")
     w = sink.well
+    described = (
+        ", ".join(f"{k}={x:g}" for k, x in w.parameters.items())  # a user's well
+        if hasattr(w, "parameters")
+        else rf"$\alpha$={w.alpha:g}, $\beta$={w.beta:g}, n={w.n}"
+    )
     ax.set_title(
-        rf"{w.shape} well, $\alpha$={w.alpha:g}, $\beta$={w.beta:g}, n={w.n}, "
+        rf"{w.shape} well, {described}, "
         rf"k={sink.particles}, m={sink.mass:g}; {result.container_energy.shape[0]} run(s)"
     )
     ax.set_xlim(t[0], t[-1])

@@ -45,3 +45,28 @@ def test_a_start_outside_the_basin_is_refused():
     hh = Sink(WellAt(UserWell("hh", HH, {})), particles=1, mass=0.2)
     with pytest.raises(ParameterError, match="^initial = "):
         simulate(hh, RunSettings(container_energy=0.02, runs=1, periods=1), initial=[(0.0, 2.0)])
+
+
+def test_the_command_line_runs_a_well_file_as_python_does(capsys):
+    """``simulate --well FILE --well-param`` equals ``simulate`` of a WellAt; a shape option
+    beside the file and the adaptive stepper are refused (exit 2)."""
+    import json
+    from pathlib import Path
+
+    from _cli import run_cli
+
+    from sinktheory.userwell import load_well
+
+    path = str(Path(__file__).parents[2] / "docs" / "guide" / "elliptic.toml")
+    argv = ["simulate", "--well", path, "--well-param", "n=3", "--particles", "2", "--runs",
+            "2", "--periods", "2", "--json"]  # fmt: skip
+    code, out, err = run_cli(argv, capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    sink = Sink(WellAt(load_well(path), n=3), particles=2, mass=0.2)
+    direct = simulate(sink, RunSettings(runs=2, periods=2), progress=False)
+    assert data["container_energy"] == direct.container_energy.tolist()
+    assert data["parameters"]["n"] == 3.0 and data["parameters"]["shape"] == "elliptic"
+    for extra in (["--alpha", "0.5"], ["--stepper", "adaptive"]):
+        code, out, err = run_cli([*argv[:-1], *extra], capsys)
+        assert code == 2 and out == "" and len(err.strip().splitlines()) == 1, (extra, err)
