@@ -243,19 +243,20 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     from ..runstats import ensemble_mean, plus_minus
     from ..validation import positive
 
-    positive("gamma", args.gamma)
+    positive("gamma", 1.0 if args.gamma is None else args.gamma)
+    shape = "flat" if args.shape is None else args.shape  # None: refused beside --well
     runs = 25 if args.runs is None else args.runs
     settings = RunSettings(
         container_energy=args.container_energy, runs=runs, periods=args.periods, seed=args.seed
     )
-    result = billiard(args.shape, args.alpha, args.beta, particles=args.particles,
+    result = billiard(shape, args.alpha, args.beta, particles=args.particles,
                       mass=args.mass, settings=settings)  # fmt: skip
     mean, stderr = ensemble_mean(result.container_energy)
     data = result.as_dict() | {"n": "inf", "rigid": True, "mean_energy": mean.tolist(),
                                "stderr": stderr.tolist()}  # fmt: skip
     text = "\n".join(
         [
-            f"{args.shape} well alpha={args.alpha:g} beta={args.beta:g} n=inf: the rigid "
+            f"{shape} well alpha={args.alpha:g} beta={args.beta:g} n=inf: the rigid "
             f"billiard; k={args.particles}, m={args.mass:g}",
             f"{runs} run(s) x {args.periods} period(s), exact flights, "
             f"{int(result.collisions.sum())} impacts: max relative energy error "
