@@ -49,7 +49,9 @@ class WellAt:
         self.definition = well
         self.report = check_well(well, **given)
         self.basin = self.report.basin
-        self.parameters = {s.name: float(x) for s, x in well.values(**given).items()}
+        self._values = well.values(**given)
+        self.parameters = {s.name: float(x) for s, x in self._values.items()}
+        self._layer: float | None = None
 
     @property
     def shape(self) -> str:
@@ -128,6 +130,65 @@ class WellAt:
                 why=f"V - V(0, 0) = {e:.6g} at ({x:g}, {y:g}), not below the escape energy "
                 f"{self.escape_energy:.6g}",
             )  # fmt: skip
+
+    def wall_layer(self) -> float:
+        """The relative thickness of the soft wall, as the adaptive step's controller takes
+        it: 1 / the largest q . grad V / (V - V(0, 0)) over 64 rays from the centre, each
+        at the point q where it meets the rigid wall (the largest abs(r_i) of the wall
+        ratios equal to 1).  For V proportional to w^(2n), w a wall ratio homogeneous of
+        degree 1 (the elliptic well), it is 1/(2n), the layer a registered shape uses.
+        0.5 for a well without wall ratios (the controller then has no wall to approach).
+
+        Raises ParameterError naming ``wall_ratios`` if no ray meets the wall.
+
+        Examples
+        --------
+        >>> from sinktheory.userwell import UserWell
+        >>> ell = WellAt(UserWell("e", "((x/a)**2 + (y/b)**2)**n", {"a": 2, "b": 1, "n": 3},
+        ...                       ["sqrt((x/a)**2 + (y/b)**2)"]))
+        >>> round(ell.wall_layer() * 6, 12)
+        1.0
+        """
+        if self._layer is None:
+            self._layer = self._measured_layer()
+        return self._layer
+
+    def _measured_layer(self) -> float:
+        from scipy.optimize import brentq
+
+        from .basin import numeric
+
+        ratios = [numeric(r, self._values) for r in self.definition.wall_ratios]
+        if not ratios:
+            return 0.5
+        angles = np.linspace(0.0, 2.0 * np.pi, 64, endpoint=False)
+        scales = 2.0 ** np.arange(-20.0, 41.0)
+
+        def size(t, c, s):
+            with np.errstate(all="ignore"):
+                return np.max([np.abs(np.asarray(r(t * c, t * s), dtype=float)) for r in ratios],
+                              axis=0)  # fmt: skip
+
+        steepest = 0.0
+        for c, s in zip(np.cos(angles), np.sin(angles), strict=True):
+            beyond = np.nonzero(size(scales, c, s) >= 1.0)[0]
+            if not len(beyond):
+                continue
+            i = int(beyond[0])
+            lo = 0.0 if i == 0 else scales[i - 1]
+            t = brentq(lambda t, c=c, s=s: float(size(t, c, s)) - 1.0, lo, scales[i],
+                       xtol=1e-14)  # fmt: skip
+            rise = float(self.potential(t * c, t * s))
+            slope = float(np.dot(self.basin.well.gradient(t * c, t * s), (t * c, t * s)))
+            if math.isfinite(rise) and math.isfinite(slope) and rise > 0:
+                steepest = max(steepest, slope / rise)
+        if not steepest > 0:
+            raise ParameterError(
+                "wall_ratios", [str(r) for r in self.definition.wall_ratios],
+                "ratios whose level 1 (the rigid wall) some ray from the centre meets, with V "
+                "rising there",
+            )  # fmt: skip
+        return 1.0 / steepest
 
     def __repr__(self) -> str:
         values = ", ".join(f"{k}={x:g}" for k, x in self.parameters.items())

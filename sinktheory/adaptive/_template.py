@@ -3,16 +3,18 @@
 Not imported: :func:`sinktheory.adaptive.kernels` copies the text below the
 ``template starts`` marker after a header that binds the sink engine's public kernels
 (``accelerations``, ``hessian``, ``energies``, ``members_of``, ``hessian_rows``,
-``SHARED_HESSIAN``) and the shape's generated ``walls(x, y, alpha, beta, gamma, n)``,
-which returns (V, then r, dr/dx, dr/dy, d2r/dx2, d2r/dxdy, d2r/dy2 for each wall ratio
-r).  numba compiles and caches one module per shape (n is a run-time value).  It is a
-real file so that linters and readers see it whole.
+``SHARED_HESSIAN``), the well's generated ``walls(x, y, P, r)``, which returns (V - V(0, 0),
+then r, dr/dx, dr/dy, d2r/dx2, d2r/dxdy, d2r/dy2 for each wall ratio r) at run r's
+parameters, and ``MU_ROW``, the table's row of the particle mass.  numba compiles and
+caches one module per well (n is a run-time value).  It is a real file so that linters
+and readers see it whole.
 
 Layout as in the engine: q[i, r], v[i, r] (runs last), P the per-run parameter table
-(rows alpha, beta, gamma, n, mu, ...).  Every loop runs over the runs of a block without
-reductions across runs, and a run that has reached the end of the period waits with
-step 0 and gets back the copy of its state taken then, so a run's numbers do not depend
-on its block, its neighbours or the thread count.
+(the well's parameters, then mu: alpha, beta, gamma, n, mu for a registered shape).
+Every loop runs over the runs of a block without reductions across runs, and a run that
+has reached the end of the period waits with step 0 and gets back the copy of its state
+taken then, so a run's numbers do not depend on its block, its neighbours or the thread
+count.
 """
 
 # ruff: noqa: F821
@@ -57,10 +59,10 @@ def _rate(q, v, a, h, P, om, G, ctl):
         G[r] = 0.0
     for j in range(K):
         for r in range(B):
-            m = P[4, r]
+            m = P[MU_ROW, r]
             x = q[1 + j, r] - q[0, r]
             y = q[1 + K + j, r]
-            f = walls(x, y, P[0, r], P[1, r], P[2, r], P[3, r])
+            f = walls(x, y, P, r)
             V = f[0]
             gx = -m * a[1 + j, r]
             gy = -m * a[1 + K + j, r]
@@ -327,7 +329,7 @@ def start_rate(q, v, P, ctl):
         for j in range(K):
             x = q[1 + j, r] - q[0, r]
             y = q[1 + K + j, r]
-            f = walls(x, y, P[0, r], P[1, r], P[2, r], P[3, r])
+            f = walls(x, y, P, r)
             ax = a[1 + j, r] - a[0, r]
             ay = a[1 + K + j, r]
             acc = math.sqrt(ax * ax + ay * ay)

@@ -41,6 +41,7 @@ __all__ = [
     "LLVM_OPTIONS",
     "load",
     "sink_name",
+    "well_definition",
     "well_name",
 ]
 
@@ -134,6 +135,27 @@ def well_name(well) -> str:
     name = f"well_{hashlib.sha256(text.encode()).hexdigest()[:12]}"
     _USER_WELLS[name] = well
     return name
+
+
+def well_definition(name: str):
+    """The :class:`~sinktheory.symbolic.WellDefinition` behind the sink engine ``name``: the
+    registered shape of ``sink_<shape>``, or the user's well that :func:`well_name` named
+    in this process; KeyError otherwise.
+
+    Examples
+    --------
+    >>> well_definition("sink_flat").name
+    'flat'
+    """
+    from ..symbolic import SHAPES
+
+    shape = name.removeprefix("sink_")
+    if name.startswith("sink_") and shape in SHAPES:
+        return SHAPES[shape]
+    if name in _USER_WELLS:
+        return _USER_WELLS[name]
+    raise KeyError(f"no sink engine called {name!r} (sink_<shape>, or a user's well named "
+                   "by well_name in this process)")  # fmt: skip
 
 
 def sink_name(shape: str) -> str:

@@ -29,7 +29,15 @@ import sympy as sp
 
 from .. import symbolic as S
 
-__all__ = ["Damping", "henon_heiles", "SeparableSystem", "sink_system", "Term", "two_dof_duffing"]
+__all__ = [
+    "Damping",
+    "henon_heiles",
+    "run_time_symbols",
+    "SeparableSystem",
+    "sink_system",
+    "Term",
+    "two_dof_duffing",
+]
 
 
 @dataclass(frozen=True)
@@ -171,7 +179,7 @@ def sink_system(well, name: str | None = None) -> SeparableSystem:
     u = sp.Symbol("u", real=True)
     X = S.X
     params = tuple(definition.parameter_symbols)
-    whole = _whole_exponents(definition)
+    whole = run_time_symbols(definition)
     expected = X**2 / 2 + S.potential(well, u - X, S.y)
     probe = {X: sp.Rational(1, 3), u: sp.Rational(1, 2), S.y: sp.Rational(-1, 5)}
     probe |= {p: sp.Integer(2 + i) for i, p in enumerate(params)}  # whole: n is an exponent
@@ -198,7 +206,7 @@ def sink_system(well, name: str | None = None) -> SeparableSystem:
     )
 
 
-def _whole_exponents(definition) -> dict[sp.Symbol, sp.Symbol]:
+def run_time_symbols(definition) -> dict[sp.Symbol, sp.Symbol]:
     """The parameters of a user's well mapped to the symbols its engine takes them as:
     ``par_<name>`` (a kernel's own names, such as the loop variable b, stay free), an
     integer (non-negative or positive when the declared range says so) for each that sits
