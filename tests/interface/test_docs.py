@@ -3,8 +3,8 @@
 CI runs only pytest, so this is where the site is built in CI: the command of the
 README's "Documentation" section (``sphinx-build -W --keep-going -b html docs OUT``),
 into a temporary directory.  The build also runs ``sinktheory reproduce --quick`` for the
-gallery and executes the tour notebook (myst-nb), so it takes about a minute; this is the
-only place CI executes the notebook.
+gallery and executes the notebooks (myst-nb), so it takes a minute or two; this is the
+only place CI executes them.
 """
 
 from __future__ import annotations
@@ -62,7 +62,7 @@ KERNEL_TCP_NOTE = "[IPKernelApp] WARNING | Kernel is running over TCP without en
 
 
 class _Tags(HTMLParser):
-    """Scripts and stylesheets a page loads, and what the tour's cell outputs hold."""
+    """Scripts and stylesheets a page loads, and what a notebook's cell outputs hold."""
 
     def __init__(self, html: str):
         super().__init__(convert_charrefs=True)
@@ -132,20 +132,25 @@ def _bundled_mathjax(page: Path, html: str) -> Path | None:
     return None
 
 
-def _tour_problems(page: Path, html: str) -> list[str]:
-    """What is wrong with the rendered tour: missing outputs, figures or an error."""
+#: What each notebook's page must show: texts its cells print, and how many figures.
+NOTEBOOK_PAGES = {
+    "tour": (("stable intervals: [(", "max relative energy error"), 2),
+    "your_own_well": (("largest |phi - cos(pi a/b)|: ", "escape energy - 1/6 = ", "refused: ",
+                       "late <E_c> = "), 3),
+}  # fmt: skip
+
+
+def _notebook_problems(page: Path, html: str, needles=NOTEBOOK_PAGES["tour"][0],
+                       images: int = 2) -> list[str]:  # fmt: skip
+    """What is wrong with a rendered notebook: missing outputs, figures or an error."""
     tags = _Tags(html)
     text = "".join(tags.output_text)
-    problems = [
-        f"no output {needle!r}"
-        for needle in ("stable intervals: [(", "max relative energy error")
-        if needle not in text
-    ]
+    problems = [f"no output {needle!r}" for needle in needles if needle not in text]
     if "Traceback" in text or {"traceback", "stderr"} & set(tags.output_classes):
         problems.append("an error or stderr output")
-    # the two figures (Floquet chart, recurrence plot) as PNG files, not "<Figure ...>"
-    if len(tags.output_images) != 2:
-        problems.append(f"{len(tags.output_images)} images, not 2")
+    # the figures as PNG files, not "<Figure ...>"
+    if len(tags.output_images) != images:
+        problems.append(f"{len(tags.output_images)} images, not {images}")
     for src in tags.output_images:
         png = page.parent / src
         if not png.is_file() or png.stat().st_size < 1000:
@@ -223,15 +228,27 @@ def test_the_checks_of_offline_pages_catch_a_remote_or_missing_file(tmp_path):
     assert _bundled_mathjax(page, local) == tmp_path / "_static" / "mathjax" / "tex-chtml.js"
 
 
-def test_tour_notebook_is_a_page_with_its_outputs(site):
-    """The docs build executed the tour (committed without outputs) and shows what it
-    printed and its two figures; a cell that raised would have failed the build."""
-    page = site / "notebooks" / "tour.html"
-    assert _tour_problems(page, page.read_text()) == []
-    assert "notebooks/tour.html" in (site / "index.html").read_text()  # in the contents
+@pytest.mark.parametrize("name", sorted(NOTEBOOK_PAGES))
+def test_each_notebook_is_a_page_with_its_outputs(site, name):
+    """The docs build executed the notebook (committed without outputs) and shows what it
+    printed and its figures; a cell that raised would have failed the build."""
+    page = site / "notebooks" / f"{name}.html"
+    needles, images = NOTEBOOK_PAGES[name]
+    assert _notebook_problems(page, page.read_text(), needles, images) == []
+    assert f"notebooks/{name}.html" in (site / "index.html").read_text()  # in the contents
 
 
-def test_the_tour_check_catches_missing_figures_and_errors(tmp_path):
+def test_your_own_well_checks_itself_against_closed_forms(site):
+    """The notebook's printed checks: the elliptic well's Floquet trace at n = 1 against
+    cos(pi a / b) (held to 1e-10) and the Hénon–Heiles-type escape energy against 1/6
+    (held to 1e-12)."""
+    text = "".join(_Tags((site / "notebooks" / "your_own_well.html").read_text()).output_text)
+    floquet = float(re.search(r"largest \|phi - cos\(pi a/b\)\|: (\S+)", text).group(1))
+    escape = float(re.search(r"escape energy - 1/6 = (\S+)", text).group(1))
+    assert floquet < 1e-10 and abs(escape) < 1e-12, (floquet, escape)
+
+
+def test_the_notebook_check_catches_missing_figures_and_errors(tmp_path):
     def cell(body):
         return f'<div class="cell_output docutils container">{body}</div>'
 
@@ -243,19 +260,20 @@ def test_the_tour_check_catches_missing_figures_and_errors(tmp_path):
     (tmp_path / "b.png").write_bytes(b"<Figure size 800x450 with 1 Axes>" + bytes(2000))
     good = cell(printed) + cell('<img src="a.png">') + cell('<img src="a.png">')
     page = tmp_path / "tour.html"
-    assert _tour_problems(page, good) == []
+    assert _notebook_problems(page, good) == []
     error = '<div class="output traceback"><pre>ZeroDivisionError</pre></div>'
-    assert _tour_problems(page, good + cell(error)) == ["an error or stderr output"]
+    assert _notebook_problems(page, good + cell(error)) == ["an error or stderr output"]
     stderr = '<div class="output stderr"><pre>RuntimeWarning</pre></div>'
-    assert _tour_problems(page, good + cell(stderr)) == ["an error or stderr output"]
+    assert _notebook_problems(page, good + cell(stderr)) == ["an error or stderr output"]
     # the printed text only in the code, not in an output
     source = '<div class="cell_input"><pre>print("stable intervals: [(")</pre></div>'
-    assert len(_tour_problems(page, source + cell('<img src="a.png">') * 2)) == 2
-    assert _tour_problems(page, cell(printed) + cell('<img src="a.png">')) == ["1 images, not 2"]
+    assert len(_notebook_problems(page, source + cell('<img src="a.png">') * 2)) == 2
+    one = cell(printed) + cell('<img src="a.png">')
+    assert _notebook_problems(page, one) == ["1 images, not 2"]
     bad = cell(printed) + cell('<img src="a.png">') + cell('<img src="b.png">')
-    assert _tour_problems(page, bad) == ["image b.png is no PNG"]
+    assert _notebook_problems(page, bad) == ["image b.png is no PNG"]
     gone = cell(printed) + cell('<img src="a.png">') + cell('<img src="c.png">')
-    assert _tour_problems(page, gone) == ["image c.png missing or empty"]
+    assert _notebook_problems(page, gone) == ["image c.png missing or empty"]
 
 
 def test_every_public_function_and_class_is_documented(site):
