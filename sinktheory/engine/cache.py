@@ -40,6 +40,7 @@ __all__ = [
     "import_generated",
     "LLVM_OPTIONS",
     "load",
+    "registered_well",
     "sink_name",
     "well_name",
 ]
@@ -134,6 +135,12 @@ def well_name(well) -> str:
     name = f"well_{hashlib.sha256(text.encode()).hexdigest()[:12]}"
     _USER_WELLS[name] = well
     return name
+
+
+def registered_well(name: str):
+    """The user's well whose engine is called ``name`` (registered by :func:`well_name` in
+    this process), or None."""
+    return _USER_WELLS.get(name)
 
 
 def sink_name(shape: str) -> str:
