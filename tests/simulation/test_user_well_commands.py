@@ -26,6 +26,7 @@ from sinktheory.attachments import Attachment
 from sinktheory.chaos import chaos
 from sinktheory.compare.efficiency import compare
 from sinktheory.equilibrium import well_law
+from sinktheory.equilibrium.prediction import measure_settling, predict_relaxation
 from sinktheory.errors import ParameterError
 from sinktheory.userwell import UserWell
 from sinktheory.wellat import WellAt
@@ -205,3 +206,13 @@ def test_compare_of_henon_heiles_balances_energy_and_refuses_the_line(
 def test_a_well_param_without_a_well_file_is_refused(capsys, tmp_path, monkeypatch):
     refused_well(["compare", "--damping", "0.05", "--well-param", "n=3"], capsys, tmp_path,
                  monkeypatch, "given with --well FILE")  # fmt: skip
+
+
+# --- the relaxation's law (equilibrium_law of a WellAt) ---------------------------------------
+def test_settling_targets_the_law_from_the_centre_and_the_prediction_refuses(hh):
+    sink = Sink(hh, particles=2, mass=0.2)
+    r, sim = measure_settling(sink, 0.02, (3, 24))
+    e = float(np.mean(sim.initial_energy)) - 2.0  # V(0, 0) = 1 per particle left out
+    assert r.target == pytest.approx(well_law(UserWell("hh0", HH, {}), 2, e).mean, rel=1e-12)
+    with pytest.raises(ParameterError, match="^sink = .*not made for a user's well"):
+        predict_relaxation(sink, 0.02)
