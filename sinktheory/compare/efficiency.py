@@ -83,6 +83,11 @@ def attachments_of(
     """
     kinds = _names("attachments", kinds, KINDS)
     if well is not None:
+        from ..wellat import WellAt
+
+        if not isinstance(well, WellAt):
+            raise ParameterError("well", well, "None or a user's well at its values, a "
+                                 "sinktheory.wellat.WellAt")  # fmt: skip
         for name, value in (("shapes", shapes), ("n", n)):
             if value is not None:
                 raise ParameterError(name, value, "left out with well (the user's well is "

@@ -24,7 +24,7 @@ from scipy import optimize
 from sinktheory import RunSettings, Sink, Well
 from sinktheory.attachments import Attachment
 from sinktheory.chaos import chaos
-from sinktheory.compare.efficiency import compare
+from sinktheory.compare.efficiency import attachments_of, compare
 from sinktheory.equilibrium import well_law
 from sinktheory.equilibrium.prediction import measure_settling, predict_relaxation
 from sinktheory.errors import ParameterError
@@ -197,6 +197,10 @@ def test_compare_of_henon_heiles_balances_energy_and_refuses_the_line(
     assert 0 < c.efficiency.min() and c.efficiency.max() < 1
     with pytest.raises(ParameterError, match="^user_well = .*'nes'.*line y = 0"):
         Attachment("nes", user_well=hh)
+    with pytest.raises(ParameterError, match="^well = 'hh.toml' .*WellAt"):
+        attachments_of(["well"], well="hh.toml")
+    with pytest.raises(ParameterError, match="^n = 4 .*left out with well"):
+        attachments_of(["well"], well=hh, n=4)
     base = ["compare", "--well", files["hh"], "--damping", "0.05"]
     refused_well([*base, "--shapes", "flat"], capsys, tmp_path, monkeypatch, "without --shapes")
     refused_well([*base, "--wavelet-plot", "w.png"], capsys, tmp_path, monkeypatch,
