@@ -28,7 +28,7 @@ from ._common import (
     number,
     parameters_text,
     png_path,
-    sink_well_from_args,
+    user_well_from_args,
 )
 
 __all__ = ["add_arguments", "HELP", "KINDS", "NAME", "run"]
@@ -128,8 +128,8 @@ def run(args: argparse.Namespace) -> Output:
     wavelet = png_path("--wavelet-plot", args.wavelet_plot)
     from .. import validation as v
     from ..compare.efficiency import attachments_of, compare, energies_of
+    from ..wellat import WellAt
 
-    well = None
     if args.well is not None:
         for name in ("shapes", "n"):
             if getattr(args, name) is not None:
@@ -139,9 +139,9 @@ def run(args: argparse.Namespace) -> Output:
             raise ParameterError("wavelet_plot", args.wavelet_plot, "left out with --well",
                                  why="the backbones are normal modes of a registered shape's "
                                  "well")  # fmt: skip
-        well = sink_well_from_args(argparse.Namespace(well=args.well, well_param=args.well_param))
-    elif args.well_param:
-        raise ParameterError("well_param", args.well_param[0], "given with --well FILE")
+    # --alpha and --beta stay: the 1-D attachments' line (--well-param alone is refused)
+    user = user_well_from_args(argparse.Namespace(well=args.well, well_param=args.well_param))
+    well = None if user is None else WellAt(user[0], **user[1])
     atts = attachments_of(
         _words(args.attachments),
         shapes=None if args.shapes is None else _words(args.shapes),
