@@ -14,7 +14,8 @@ model, none with a formula of its own:
 * ``"impact"`` -- the rigid limit n -> oo on the line: the vibro-impact NES, a particle
   in the clearance |x| <= alpha - beta, integrated exactly by
   :mod:`sinktheory.vibroimpact` (n is ignored).
-* ``"well"`` -- the 2-D stochastic sink with k particles (flat or symmetric well, ...).
+* ``"well"`` -- the 2-D stochastic sink with k particles (flat or symmetric well, ...,
+  or a user's well: ``user_well``, a :class:`~sinktheory.wellat.WellAt`).
 
 Equal attachment mass: ``mass`` is the *total* particle mass m of every attachment
 (k particles of m / k).  Equal damping: a linear dashpot on each particle's velocity
@@ -92,6 +93,10 @@ class Attachment:
         k: 1 for the 1-D attachments, 1..1000 for ``"well"``.
     mass : float > 0
         Total particle mass m (each particle m / k).
+    user_well : WellAt, optional
+        A user's well at its values (:class:`sinktheory.wellat.WellAt`) in place of
+        shape, alpha, beta and n: ``"well"`` only (the 1-D attachments are the line y = 0
+        of a registered shape).
     """
 
     kind: str
@@ -101,10 +106,14 @@ class Attachment:
     n: int = 2
     particles: int = 1
     mass: float = 0.2
+    user_well: object = None
 
     def __post_init__(self) -> None:
         set_ = object.__setattr__
         set_(self, "kind", v.choice("kind", self.kind, KINDS))
+        if self.user_well is not None:
+            self._check_user_well()
+            return
         well = Well(self.alpha, self.beta, self.n, shape=v.choice("shape", self.shape, SHAPES))
         set_(self, "alpha", well.alpha)
         set_(self, "beta", well.beta)
@@ -120,9 +129,37 @@ class Attachment:
                 raise ParameterError("shape", self.shape, "a shape with an invariant line "
                                      "y = 0 for a 1-D attachment", why=why)  # fmt: skip
 
+    def _check_user_well(self) -> None:
+        from .wellat import WellAt
+
+        if not isinstance(self.user_well, WellAt):
+            raise ParameterError("user_well", self.user_well, "None or a user's well at its "
+                                 "values, a sinktheory.wellat.WellAt")  # fmt: skip
+        if self.kind != "well":
+            raise ParameterError("user_well", self.user_well, f"None for the 1-D attachment "
+                                 f"{self.kind!r}", why="it is the line y = 0 of a registered "
+                                 "shape (alpha, beta and n)")  # fmt: skip
+        sink = Sink(self.user_well, self.particles, self.mass)
+        object.__setattr__(self, "particles", sink.particles)
+        object.__setattr__(self, "mass", sink.mass)
+
     @property
-    def well(self) -> Well:
+    def well(self):
+        """The well: a :class:`~sinktheory.model.Well` of the shape, or ``user_well``."""
+        if self.user_well is not None:
+            return self.user_well
         return Well(self.alpha, self.beta, self.n, shape=self.shape)
+
+    @property
+    def parameters(self) -> dict:
+        """What the attachment is, as plain values: kind, shape (a user's well: its name
+        and ``well_parameters``), alpha, beta, n, particles, mass."""
+        if self.user_well is None:
+            well = {"shape": self.shape, "alpha": self.alpha, "beta": self.beta, "n": self.n}
+        else:
+            w = self.user_well
+            well = {"shape": w.shape, "well_parameters": dict(w.parameters)}
+        return {"kind": self.kind, **well, "particles": self.particles, "mass": self.mass}
 
     @property
     def sink(self) -> Sink:
@@ -132,6 +169,9 @@ class Attachment:
     @property
     def clearance(self) -> float:
         """alpha - beta: the wall distance on the line (the vibro-impact clearance)."""
+        if self.user_well is not None:
+            raise ParameterError("user_well", self.user_well, "None for a clearance",
+                                 why="a user's well has no wall distance alpha - beta")  # fmt: skip
         return self.well.wall_distance
 
     @property
@@ -141,7 +181,7 @@ class Attachment:
             return f"NES n = {self.n}"
         if self.kind == "impact":
             return "vibro-impact"
-        return f"well {self.shape} k = {self.particles}"
+        return f"well {self.well.shape} k = {self.particles}"
 
 
 @renamed(energy="impulse_energy")

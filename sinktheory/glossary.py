@@ -115,6 +115,8 @@ GLOSSARY: dict[str, str] = {
     "range; the file's defaults otherwise",
     "well_check": "a user's well as sinktheory.userwell.check_well found it at the given "
     "values (so that it is not checked twice)",
+    "user_well": "a user's well at its parameter values (sinktheory.wellat.WellAt) as an "
+    "attachment's 2-D well, in place of shape, alpha, beta and n",
     # --- analyses
     "spectrum": "the Lyapunov spectrum (QR): all exponents or the D largest",
     "gali": "GALI_K order K",

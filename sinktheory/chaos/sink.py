@@ -34,9 +34,11 @@ import numpy as np
 from .. import validation as val
 from ..ensemble import (
     ENERGY_BOUND,
+    centre_energy,
     check_sink,
     engine_name,
     engine_params,
+    run_parameters,
     split_values,
     start_positions,
     start_state,
@@ -294,16 +296,31 @@ def start_energy(sink: Sink, settings: RunSettings, transverse: bool = False) ->
 
 
 def _options(sink, spectrum, gali, megno, transverse, renorm, energy_bound, progress) -> dict:
-    """The analysis options, each checked (``sink`` gives the dimension for ``gali``)."""
+    """The analysis options, each checked (``sink`` gives the dimension for ``gali``, and
+    whether y = 0 is invariant for ``transverse``)."""
     return {
         "spectrum": check_spectrum(spectrum),
         "gali": check_gali(gali, 1 + 2 * sink.particles),
         "megno": val.flag("megno", megno),
-        "transverse": val.flag("transverse", transverse),
+        "transverse": _check_transverse(sink, val.flag("transverse", transverse)),
         "renorm": check_renorm(renorm),
         "bound": val.positive("energy_bound", energy_bound),
         "progress": progress,
     }
+
+
+def _check_transverse(sink: Sink, transverse: bool) -> bool:
+    """``transverse``, refused for a user's well whose line y = 0 is not invariant (the
+    registered shapes are even in y: :func:`sinktheory.userwell.y_invariant` decides a
+    user's well symbolically)."""
+    report = getattr(sink.well, "report", None)  # a user's well (sinktheory.wellat.WellAt)
+    if transverse and report is not None and not report.y_invariant:
+        raise ParameterError(
+            "transverse", transverse, f"False for the {sink.well.shape} well (the exponent "
+            "transverse to the invariant line y = 0)", why=f"y = 0 is not invariant: "
+            f"{report.y_invariant_reason}",
+        )  # fmt: skip
+    return transverse
 
 
 @dataclass(frozen=True)
@@ -316,7 +333,7 @@ class _Point:
     v: np.ndarray
     h0: np.ndarray
     on_plane: tuple | None  # (q, v) started on y = 0, for the transverse exponent
-    top: float  # the largest energy any of its runs starts with
+    top: float  # the largest energy any of its runs starts with, from the well's centre
 
     @classmethod
     def of(cls, sink, settings, transverse: bool, initial) -> _Point:
@@ -332,25 +349,15 @@ class _Point:
             tvalues = start_state(sink, settings.container_energy, flat)
             top = max(top, float(np.max(total_energy(sink, tvalues))))
             on_plane = split_values(tvalues)
+        top -= centre_energy(sink)  # energies from the well's centre (a user's well)
         sink.well.check_energy(top, name="total_energy")
         return cls(sink, settings, *split_values(values), h0, on_plane, top)
 
     def parameters(self) -> dict:
-        w, s = self.sink.well, self.settings
-        return {
-            "shape": w.shape,
-            "alpha": w.alpha,
-            "beta": w.beta,
-            "n": w.n,
-            "gamma": w.gamma,
-            "particles": self.sink.particles,
-            "mass": self.sink.mass,
-            "container_energy": s.container_energy,
-            "runs": s.runs,
-            "periods": s.periods,
-            "box": s.box,
-            "period": 2.0 * math.pi,
-        }
+        """What the runs were (:func:`~sinktheory.ensemble.run_parameters`: a user's well
+        by its own parameters) and the period T."""
+        s = self.settings
+        return run_parameters(self.sink, s, s.runs) | {"period": 2.0 * math.pi}
 
 
 def _together(points: list[_Point], scheme, dts, steps, block, o) -> list[ChaosResult]:

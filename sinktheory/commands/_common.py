@@ -315,6 +315,33 @@ def parameters_text(parameters: dict[str, float]) -> str:
     return " ".join(f"{k}={v:g}" for k, v in parameters.items()) or "(no parameters)"
 
 
+def well_text(well) -> str:
+    """The parameters of the well of a sink as the commands print them: a registered
+    shape's alpha, beta, n and gamma, a user's well's own (:func:`parameters_text`).
+
+    Examples
+    --------
+    >>> from sinktheory.model import Well
+    >>> well_text(Well(0.5, 0.3, 4))
+    'alpha=0.5 beta=0.3 n=4 gamma=1'
+    """
+    if hasattr(well, "definition"):  # a user's well (sinktheory.wellat.WellAt)
+        return parameters_text(well.parameters)
+    return f"alpha={well.alpha:g} beta={well.beta:g} n={well.n} gamma={well.gamma:g}"
+
+
+def sink_well_from_args(args: argparse.Namespace):
+    """The well of a command that takes ``--well`` beside the shape options: a user's
+    :class:`~sinktheory.wellat.WellAt` (the file at the ``--well-param`` values), else the
+    :class:`~sinktheory.model.Well` of the shape options (:func:`well_from_args`)."""
+    user = user_well_from_args(args)
+    if user is None:
+        return well_from_args(args)
+    from ..wellat import WellAt
+
+    return WellAt(user[0], **user[1])
+
+
 def well_from_args(args: argparse.Namespace):
     """The :class:`~sinktheory.model.Well` of the well options (for a command that also
     takes ``--well``, when it is not given: --alpha, --beta and --n are required then)."""

@@ -25,7 +25,8 @@ from ._common import (
     number,
     png_path,
     rigid_limit,
-    well_from_args,
+    sink_well_from_args,
+    well_text,
 )
 
 __all__ = ["add_arguments", "HELP", "NAME", "run"]
@@ -35,7 +36,7 @@ HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser, rigid=True)
+    add_well_arguments(parser, rigid=True, well_file=True)
     add_sink_arguments(parser)
     c = parser.add_argument_group("indicators (lambda_1 is always computed)")
     c.add_argument(
@@ -98,11 +99,11 @@ def run(args: argparse.Namespace) -> Output:
         "--transverse": args.transverse, "--tol": args.tol, "--dt": args.dt,
         "--renorm": args.renorm, "--scheme": None if args.scheme == DEFAULT_SCHEME else args.scheme,
     }  # fmt: skip
-    if rigid_limit(args, unsupported):
+    if args.well is None and rigid_limit(args, unsupported):
         return _rigid(args, plot)
     from ..chaos import chaos
 
-    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    sink = Sink(sink_well_from_args(args), particles=args.particles, mass=args.mass)
     settings = RunSettings(
         container_energy=args.container_energy, runs=args.runs, periods=args.periods,
         seed=args.seed,
@@ -125,9 +126,9 @@ def run(args: argparse.Namespace) -> Output:
     w = sink.well
     p = result.parameters
     lines = [
-        f"{w.shape} well alpha={w.alpha:g} beta={w.beta:g} n={w.n} gamma={w.gamma:g}; "
-        f"k={sink.particles}, m={sink.mass:g}; {settings.runs} run(s) x {settings.periods} "
-        f"period(s), {p['scheme']}, dt = {p['dt']:.6g}; max relative energy error "
+        f"{w.shape} well {well_text(w)}; k={sink.particles}, m={sink.mass:g}; "
+        f"{settings.runs} run(s) x {settings.periods} period(s), {p['scheme']}, "
+        f"dt = {p['dt']:.6g}; max relative energy error "
         f"{data['max_relative_energy_error']:.3g}",
         "exponents per unit time (x T = 2 pi for per period); mean +- standard error"
         + (
@@ -169,12 +170,13 @@ def run(args: argparse.Namespace) -> Output:
 
         def draw(path):
             from ..plot.chaos import plot_convergence
+            from ..plot.simulate import well_title
 
             plot_convergence(
                 result,
                 path,
-                title=rf"{w.shape}, $\alpha$={w.alpha:g}, $\beta$={w.beta:g}, n={w.n}, "
-                rf"k={sink.particles}, m={sink.mass:g}; {settings.runs} run(s)",
+                title=f"{w.shape}, {well_title(w)}, k={sink.particles}, m={sink.mass:g}; "
+                f"{settings.runs} run(s)",
             )
 
         writers[plot] = draw
@@ -191,13 +193,14 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     from ..runstats import ensemble_mean
     from ..validation import positive
 
-    positive("gamma", args.gamma)
+    positive("gamma", 1.0 if args.gamma is None else args.gamma)
+    shape = "flat" if args.shape is None else args.shape  # None: the default (--well may stand in)
     settings = RunSettings(
         container_energy=args.container_energy, runs=args.runs, periods=args.periods,
         seed=args.seed,
     )  # fmt: skip
     result = billiard(
-        args.shape, args.alpha, args.beta, particles=args.particles, mass=args.mass,
+        shape, args.alpha, args.beta, particles=args.particles, mass=args.mass,
         settings=settings, lyapunov=True,
     )  # fmt: skip
     lam = lambda_after(result, args.transient)
@@ -212,7 +215,7 @@ def _rigid(args: argparse.Namespace, plot) -> Output:
     }  # fmt: skip
     t = result.table
     lines = [
-        f"{args.shape} well alpha={args.alpha:g} beta={args.beta:g} n=inf: the rigid billiard "
+        f"{shape} well alpha={args.alpha:g} beta={args.beta:g} n=inf: the rigid billiard "
         f"(area {t.area:.6g}, perimeter {t.perimeter:.6g}); k={args.particles}, "
         f"m={args.mass:g}; {settings.runs} run(s) x {settings.periods} period(s), "
         f"{int(result.collisions.sum())} impacts; max relative energy error "

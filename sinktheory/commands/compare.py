@@ -1,9 +1,11 @@
 """``sinktheory compare``: the 1-D absorbers and the 2-D sink side by side after an impulse.
 
-For each attachment (``--attachments nes,impact,well``; the well once per ``--shape`` and
-``--particles`` value) at the same total mass ``--mass`` and dashpot ``--damping`` and
-for ``--energies LO HI COUNT`` log-spaced initial container energies, ``--runs`` seeded
-impulsive starts run for ``--periods`` periods (:func:`sinktheory.compare.compare`).
+For each attachment (``--attachments nes,impact,well``; the well once per ``--shapes`` and
+``--particles`` value, or a user's well file ``--well FILE`` once per ``--particles``: the
+1-D absorbers stay the line of a registered shape) at the same total mass ``--mass`` and
+dashpot ``--damping`` and for ``--energies LO HI COUNT`` log-spaced initial container
+energies, ``--runs`` seeded impulsive starts run for ``--periods`` periods
+(:func:`sinktheory.compare.compare`).
 Reported: the fraction of the initial energy dissipated in the window (mean +- standard
 error) and the time to dissipate 90 % (over the runs that reached it).  ``--plot`` draws
 both against the energy; ``--wavelet-plot`` the Morlet wavelet map of the container of run 0
@@ -18,7 +20,16 @@ import math
 
 from ..errors import ParameterError
 from . import HELP as HELPS
-from ._common import Output, add_json, add_work_limit, number, png_path
+from ._common import (
+    Output,
+    add_json,
+    add_well_file,
+    add_work_limit,
+    number,
+    parameters_text,
+    png_path,
+    user_well_from_args,
+)
 
 __all__ = ["add_arguments", "HELP", "KINDS", "NAME", "run"]
 
@@ -55,17 +66,25 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         required=True,
         help="total dashpot coefficient c >= 0 on the particles' relative velocity (c/k each)",
     )
-    g.add_argument("--alpha", type=number, default=0.5, help="alpha > 0 (default 0.5)")
+    g.add_argument(
+        "--alpha", type=number, default=0.5,
+        help="alpha > 0 (default 0.5; with --well, of the NES and vibro-impact line)",
+    )  # fmt: skip
     g.add_argument(
         "--beta", type=number, default=0.3, help="beta < alpha; alpha - beta is the clearance (0.3)"
     )
-    g.add_argument("--n", type=number, default=4, help="wall stiffness of the well (default 4)")
+    g.add_argument(
+        "--n", type=number, default=None, help="wall stiffness of the well (default 4; not with "
+        "--well)",
+    )  # fmt: skip
     g.add_argument(
         "--nes-n", type=number, default=2, help="wall exponent of the NES (default 2: cubic)"
     )
     g.add_argument(
-        "--shapes", default="flat", help="shapes of the well, comma-separated (default flat)"
-    )
+        "--shapes", default=None,
+        help="shapes of the well, comma-separated (default flat; not with --well)",
+    )  # fmt: skip
+    add_well_file(g)
     g.add_argument(
         "--particles", default="1,5", help="particle counts k of the well, comma-separated (1,5)"
     )
@@ -109,16 +128,30 @@ def run(args: argparse.Namespace) -> Output:
     wavelet = png_path("--wavelet-plot", args.wavelet_plot)
     from .. import validation as v
     from ..compare.efficiency import attachments_of, compare, energies_of
+    from ..wellat import WellAt
 
+    if args.well is not None:
+        for name in ("shapes", "n"):
+            if getattr(args, name) is not None:
+                raise ParameterError("well", args.well, f"given without --{name} (the well file "
+                                     "defines the well)")  # fmt: skip
+        if wavelet is not None:
+            raise ParameterError("wavelet_plot", args.wavelet_plot, "left out with --well",
+                                 why="the backbones are normal modes of a registered shape's "
+                                 "well")  # fmt: skip
+    # --alpha and --beta stay: the 1-D attachments' line (--well-param alone is refused)
+    user = user_well_from_args(argparse.Namespace(well=args.well, well_param=args.well_param))
+    well = None if user is None else WellAt(user[0], **user[1])
     atts = attachments_of(
         _words(args.attachments),
-        shapes=_words(args.shapes),
+        shapes=None if args.shapes is None else _words(args.shapes),
         particles=_ints("particles", args.particles),
         alpha=args.alpha,
         beta=args.beta,
         n=args.n,
         nes_n=args.nes_n,
         mass=args.mass,
+        well=well,
     )
     energies = energies_of(*args.energies)
     if wavelet is not None and not (
@@ -201,4 +234,7 @@ def _text(c, spans: dict) -> str:
         )
     )
     lines.append(f"largest audit error |H + W - H0|/H0: {float(c.max_audit_error.max()):.2g}")
+    users = {(a["shape"], parameters_text(a["well_parameters"])) for a in c.attachments
+             if "well_parameters" in a}  # fmt: skip
+    lines += [f"{name} well (a user's well file): {values}" for name, values in sorted(users)]
     return "\n".join(lines)

@@ -15,7 +15,8 @@ from ._common import (
     add_work_limit,
     number,
     png_path,
-    well_from_args,
+    sink_well_from_args,
+    well_text,
 )
 
 __all__ = ["add_arguments", "CHART_PARTICLES", "FRACTIONS", "HELP", "NAME", "run"]
@@ -29,7 +30,7 @@ CHART_PARTICLES = (1, 2, 3, 4, 5)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser)
+    add_well_arguments(parser, well_file=True)
     g = add_sink_arguments(parser, runs_default=8, runs_help="independent runs >= 2 (default 8)")
     g.add_argument(
         "--transient",
@@ -81,7 +82,7 @@ def run(args: argparse.Namespace) -> Output:
     from ..equilibrium.lifetime import measure_lifetimes
     from ..model import RunSettings, Sink
 
-    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    sink = Sink(sink_well_from_args(args), particles=args.particles, mass=args.mass)
     settings = RunSettings(
         container_energy=args.container_energy, runs=args.runs, periods=args.periods,
         seed=args.seed,
@@ -101,8 +102,8 @@ def run(args: argparse.Namespace) -> Output:
     del data["law"]["log_density"]
     data["simulation"] = sim.message
     lines = [
-        f"{sink.well.shape} well alpha={law.alpha:g} beta={law.beta:g} n={law.n}, "
-        f"k={law.particles}, m={sink.mass:g}, E0={settings.container_energy:g} "
+        f"{sink.well.shape} well {well_text(sink.well)}, k={law.particles}, m={sink.mass:g}, "
+        f"E0={settings.container_energy:g} "
         f"(total E={law.total_energy:.6g})",
         f"  {sim.message}",
         f"  kept {c.runs} runs x {c.samples} periods after {c.transient}; "

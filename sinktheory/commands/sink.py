@@ -5,7 +5,14 @@ from __future__ import annotations
 import argparse
 
 from . import HELP as HELPS
-from ._common import Output, add_json, add_sink_arguments, add_well_arguments, well_from_args
+from ._common import (
+    Output,
+    add_json,
+    add_sink_arguments,
+    add_well_arguments,
+    sink_well_from_args,
+    well_text,
+)
 
 __all__ = ["add_arguments", "HELP", "NAME", "run"]
 
@@ -14,7 +21,7 @@ HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser)
+    add_well_arguments(parser, well_file=True)
     add_sink_arguments(parser)
     add_json(parser)
 
@@ -22,7 +29,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> Output:
     from ..model import RunSettings, Sink
 
-    sink = Sink(well_from_args(args), particles=args.particles, mass=args.mass)
+    sink = Sink(sink_well_from_args(args), particles=args.particles, mass=args.mass)
     settings = RunSettings(
         container_energy=args.container_energy, runs=args.runs, periods=args.periods,
         seed=args.seed,
@@ -31,12 +38,14 @@ def run(args: argparse.Namespace) -> Output:
     text = "\n".join(
         [
             f"{s.particles} particle(s) of mass mu = {s.mu:.6g} (total m = {s.mass:g})",
-            f"  {sink.well.shape} well alpha={sink.well.alpha:g} beta={sink.well.beta:g} "
-            f"n={sink.well.n} gamma={sink.well.gamma:g}",
+            f"  {sink.well.shape} well {well_text(sink.well)}",
             f"  container energy E0 = {s.container_energy:g}; "
             f"total energy <= {s.total_energy_bound:.10g}",
             f"  particles stay within |x| <= {s.reach.x:.6g}, |y| <= {s.reach.y:.6g}",
             f"  {s.runs} run(s) x {s.periods} period(s), seed {s.seed}",
         ]
     )
-    return Output(s.as_dict(), text)
+    data = s.as_dict()
+    if hasattr(sink.well, "definition"):  # a user's well: its name and values
+        data["well"] = {"name": sink.well.shape, "parameters": sink.well.parameters}
+    return Output(data, text)

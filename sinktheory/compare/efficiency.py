@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Sequence
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -56,18 +56,23 @@ MAX_ENERGIES = 1000
 def attachments_of(
     kinds: Sequence[str],
     *,
-    shapes: Sequence[str] = ("flat",),
+    shapes: Sequence[str] | None = None,
     particles: Sequence[int] = (1,),
     alpha: float = 0.5,
     beta: float = 0.3,
-    n: int = 4,
+    n: int | None = None,
     nes_n: int = 2,
     mass: float = 0.2,
+    well=None,
 ) -> list:
     """The attachments of ``kinds`` at one total mass: ``nes`` (wall exponent ``nes_n``,
     2: the cubic NES) and ``impact`` once each (on the line y = 0 every registered shape
-    has the same wall, so the first shape is used), ``well`` (wall exponent ``n``) once
-    per shape and particle count.
+    has the same wall, so the first shape is used), ``well`` (wall exponent ``n``,
+    default 4) once per shape (default flat) and particle count.
+
+    ``well``, a user's well at its values (:class:`sinktheory.wellat.WellAt`), is the 2-D
+    attachment instead of ``shapes`` and ``n`` (then left out); the 1-D attachments stay
+    the line of a registered shape (``alpha``, ``beta``, ``nes_n``).
 
     Examples
     --------
@@ -77,13 +82,26 @@ def attachments_of(
     Raises ParameterError for an unknown kind, an empty list or repeated entries.
     """
     kinds = _names("attachments", kinds, KINDS)
-    shapes = _names("shape", shapes, None)
+    if well is not None:
+        from ..wellat import WellAt
+
+        if not isinstance(well, WellAt):
+            raise ParameterError("well", well, "None or a user's well at its values, a "
+                                 "sinktheory.wellat.WellAt")  # fmt: skip
+        for name, value in (("shapes", shapes), ("n", n)):
+            if value is not None:
+                raise ParameterError(name, value, "left out with well (the user's well is "
+                                     "the 2-D attachment)")  # fmt: skip
+    shapes = _names("shape", ("flat",) if shapes is None else shapes, None)
+    n = 4 if n is None else n
     counts = [v.positive_int("particles", k) for k in _listed("particles", particles)]
     if len(set(counts)) != len(counts):
         raise ParameterError("particles", list(particles), "distinct particle counts")
     out = []
     for kind in kinds:
-        if kind == "well":
+        if kind == "well" and well is not None:
+            out += [Attachment("well", particles=k, mass=mass, user_well=well) for k in counts]
+        elif kind == "well":
             for shape in shapes:
                 for k in counts:
                     out.append(Attachment("well", shape, alpha, beta, n, k, mass))
@@ -144,7 +162,8 @@ class Comparison(Result):
     reached : (A, E) runs that reached 90 %
     max_audit_error : (A, E) largest |H + W - H0| / H0 of the cell's runs
     attachments : list of dict
-        Each attachment's parameters (kind, shape, alpha, beta, n, particles, mass).
+        Each attachment's parameters (:attr:`Attachment.parameters
+        <sinktheory.attachments.Attachment.parameters>`).
     damping, runs, periods, seed, samples_per_period, seconds
     """
 
@@ -371,7 +390,7 @@ def compare(
         t90_se,
         reached,
         audit,
-        [asdict(a) for a in attachments],
+        [a.parameters for a in attachments],
         float(damping),
         runs,
         int(periods),

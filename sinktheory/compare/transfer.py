@@ -179,6 +179,8 @@ def transfer_maps(
         <sinktheory.plot.compare.plot_transfer>` draws them); ``notes`` names each mode left
         out, prefixed by its attachment's label.
     """
+    for att in attachments:  # before any run
+        _check_backbone(att)
     grid = [float(e) for e in energies]
     if wavelet_energy is None:
         if not grid:
@@ -197,6 +199,16 @@ def transfer_maps(
             notes += [f"{att.label}: {note}" for note in cache[key][1]]
         bones.append(cache[key][0])
     return maps, bones, notes
+
+
+def _check_backbone(att) -> None:
+    """Refuse an attachment whose backbone :func:`backbone` cannot draw: a user's well."""
+    if getattr(att, "user_well", None) is not None:
+        raise ParameterError(
+            "attachments", att.label, "attachments of registered shapes for the backbones",
+            why="the normal modes are continued in a registered shape's well (alpha, beta, "
+            "n), not in a user's well",
+        )  # fmt: skip
 
 
 def backbone(att, lo: float, hi: float, *, points: int = BACKBONE_POINTS) -> tuple[list, list]:
@@ -222,6 +234,7 @@ def backbone(att, lo: float, hi: float, *, points: int = BACKBONE_POINTS) -> tup
     from ..nnm.continuation import continue_both
     from ..nnm.shooting import ShootingError
 
+    _check_backbone(att)
     lo, hi = v.positive("lo", lo), v.positive("hi", hi)
     if not lo < hi:
         raise ParameterError("hi", hi, f"an energy > lo = {lo:g}")

@@ -477,6 +477,8 @@ def equilibrium_law(sink: Sink, total_energy: float) -> EquilibriumLaw:
     Parameters
     ----------
     sink : Sink
+        Its well a registered shape's :class:`~sinktheory.model.Well` or a user's
+        :class:`~sinktheory.wellat.WellAt` (then :func:`well_law` at its values).
     total_energy : float
         Total energy E > 0 (in a run: E0 plus the particles' initial potential energy),
         below the escape energy of one particle holding all of it.
@@ -491,6 +493,9 @@ def equilibrium_law(sink: Sink, total_energy: float) -> EquilibriumLaw:
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     well, k = sink.well, sink.particles
+    if hasattr(well, "definition"):  # a user's well at its values (WellAt)
+        return well_law(well.definition, k, total_energy, well.parameters,
+                        well_check=well.report)  # fmt: skip
     e = v.positive("total_energy", total_energy)
     well.check_energy(e, name="total_energy")
     n = well.n

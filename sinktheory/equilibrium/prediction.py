@@ -76,7 +76,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import NumericalError, ParameterError
 from ..glossary import old_attribute, renamed
-from ..model import RunSettings, Sink
+from ..model import RunSettings, Sink, Well
 from ..results import Result
 from .kramers import measure_kramers_moyal
 from .law import equilibrium_law
@@ -396,6 +396,11 @@ def predict_relaxation(
     """
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    if not isinstance(sink.well, Well):  # the shells' drift is measured in the engine's H
+        raise ParameterError(
+            "sink", sink, "a sink in a registered shape's well",
+            why="the relaxation prediction is not made for a user's well",
+        )  # fmt: skip
     start = v.positive("container_energy", container_energy)  # E0
     fraction = check_fraction(fraction)
     points = v.positive_int("shell_energies", shell_energies, minimum=3)
@@ -633,6 +638,7 @@ def measure_settling(sink: Sink, container_energy: float, measure, *, fraction: 
                      seed: int = 0, tol: float = 1e-6, resamples: int = 199):  # fmt: skip
     """(:class:`~sinktheory.equilibrium.relaxation.Relaxation`, the simulation) of
     ``measure = (runs, periods)`` runs from the paper's start at E0 = ``container_energy``."""
+    from ..ensemble import centre_energy
     from ..simulate import simulate
     from .relaxation import measure_relaxation
 
@@ -646,7 +652,8 @@ def measure_settling(sink: Sink, container_energy: float, measure, *, fraction: 
                            seed=seed)  # fmt: skip
     settings.check(sink)
     sim = simulate(sink, settings, tol=tol, progress=False)
-    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
+    # the law's energy is measured from the well's centre (a user's well: V(0, 0) may be any)
+    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)) - centre_energy(sink))
     window = min(50, max(1, (periods + 1) // 12))
     r = measure_relaxation(sim.container_energy, law.mean, fraction=fraction, window=window,
                            resamples=resamples, seed=seed)  # fmt: skip

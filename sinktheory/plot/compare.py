@@ -123,9 +123,14 @@ def plot_comparison(comparison, *, title: str | None = None):
 def _title(c) -> str:
     mass = c.attachments[0]["mass"] if c.attachments else None
     m = "" if mass is None else f"m = {mass:g}, "
+    users = {  # a user's well named with its own parameters (once for all its k)
+        f"; {a['shape']} well " + (", ".join(f"{k}={x:g}" for k, x in
+                                             a["well_parameters"].items()) or "no parameters")
+        for a in c.attachments if "well_parameters" in a
+    }  # fmt: skip
     return (
         f"impulse responses: {m}dashpot c = {c.damping:g}, {c.runs} runs per point "
-        f"(bands: +-{BAND:g} s.e.)"
+        f"(bands: +-{BAND:g} s.e.)" + "".join(sorted(users))
     )
 
 

@@ -17,7 +17,22 @@ import numpy as np
 from ..model import Sink
 from ..simulate import SimulationResult
 
-__all__ = ["plot_ensemble_energy"]
+__all__ = ["plot_ensemble_energy", "well_title"]
+
+
+def well_title(well) -> str:
+    """The parameters of a sink's well for a plot's title: a registered shape's alpha,
+    beta and n, a user's well's own.
+
+    Examples
+    --------
+    >>> from sinktheory import Well
+    >>> print(well_title(Well(0.5, 0.3, 4)))
+    $\\alpha$=0.5, $\\beta$=0.3, n=4
+    """
+    if hasattr(well, "definition"):  # a user's well (sinktheory.wellat.WellAt)
+        return ", ".join(f"{k}={x:g}" for k, x in well.parameters.items()) or "no parameters"
+    return rf"$\alpha$={well.alpha:g}, $\beta$={well.beta:g}, n={well.n}"
 
 
 def plot_ensemble_energy(result: SimulationResult, sink: Sink):
@@ -38,13 +53,8 @@ def plot_ensemble_energy(result: SimulationResult, sink: Sink):
     ax.set_xlabel(r"$t/T$")
     ax.set_ylabel(r"$\langle E\rangle$ (container energy)")
     w = sink.well
-    described = (
-        ", ".join(f"{k}={x:g}" for k, x in w.parameters.items())  # a user's well
-        if hasattr(w, "parameters")
-        else rf"$\alpha$={w.alpha:g}, $\beta$={w.beta:g}, n={w.n}"
-    )
     ax.set_title(
-        rf"{w.shape} well, {described}, "
+        rf"{w.shape} well, {well_title(w)}, "
         rf"k={sink.particles}, m={sink.mass:g}; {result.container_energy.shape[0]} run(s)"
     )
     ax.set_xlim(t[0], t[-1])
