@@ -97,7 +97,6 @@ from . import validation as v
 from .engine.cache import load
 from .engine.core import Ensemble
 from .ensemble import (
-    centre_energy,
     check_sink,
     default_energy_bound,
     engine_name,
@@ -239,7 +238,7 @@ def setup(
     engine = load(engine_name(sink))
     params = engine.table_of(engine_params(sink), q.shape[1])
     h0 = engine.block_energies(q, vel, params)[0]
-    top = float(np.max(h0)) - centre_energy(sink)  # from the well's centre
+    top = float(np.max(h0))
     sink.well.check_energy(top, name="total_energy")
     scheme, dt, steps, tol = resolve_step(sink, top, scheme=scheme, dt=dt, tol=tol)
     stride = 0

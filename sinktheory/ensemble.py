@@ -34,7 +34,6 @@ from .runstats import ensemble_mean
 from .stepsize import DEFAULT_TOL
 
 __all__ = [
-    "centre_energy",
     "check_record",
     "check_sink",
     "default_energy_bound",
@@ -251,27 +250,6 @@ def start_state(sink: Sink, container_energy: float, positions: np.ndarray) -> n
     return StateLayout(sink.particles).start(math.sqrt(2.0 * container_energy), positions)
 
 
-def centre_energy(sink: Sink) -> float:
-    """k V(0, 0): what the engine's total energy holds beyond the energies measured from
-    the well's centre, as a user's well measures them (:mod:`sinktheory.wellat`: V(0, 0)
-    may be any number); 0 for a registered shape, whose V(0, 0) is 0.  The engine's
-    :func:`total_energy` minus this is what the well's checks, the step choice and the
-    equilibrium law take.
-
-    Examples
-    --------
-    >>> from sinktheory.userwell import UserWell
-    >>> from sinktheory.wellat import WellAt
-    >>> centre_energy(Sink(WellAt(UserWell("bowl", "1 + x**2 + y**2", {})), particles=3))
-    3.0
-    >>> centre_energy(Sink(Well(0.5, 0.3, 4), particles=3))
-    0.0
-    """
-    if isinstance(sink.well, Well):
-        return 0.0
-    return sink.particles * float(sink.well.basin.well.v0)
-
-
 def total_energy(sink: Sink, values: np.ndarray) -> np.ndarray:
     """Total energy H of each state row (R, 2 + 4k) (generated energy kernel)."""
     return _engine_energies(sink, np.asarray(values, dtype=float))[0]
@@ -386,12 +364,11 @@ def initial_values(sink, settings, initial, initial_state):
         values = np.array(initial_state.values, dtype=float)
         if not np.all(np.isfinite(values)):
             raise ParameterError("initial_state", "a state with non-finite values", "finite")
-        top = float(np.max(total_energy(sink, values))) - centre_energy(sink)
-        sink.well.check_energy(top, name="total_energy")
+        sink.well.check_energy(float(np.max(total_energy(sink, values))), name="total_energy")
         return values, initial_state.time, np.array(initial_state.reference_energy)
     values = start_state(sink, settings.container_energy, start_positions(sink, settings, initial))
     h0 = total_energy(sink, values)
-    sink.well.check_energy(float(np.max(h0)) - centre_energy(sink), name="total_energy")
+    sink.well.check_energy(float(np.max(h0)), name="total_energy")
     return values, 0.0, h0
 
 

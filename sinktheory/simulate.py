@@ -50,7 +50,6 @@ from .ensemble import (
     RECORDS,
     SimulationResult,
     SimulationState,
-    centre_energy,
     check_sink,
     engine_name,
     engine_params,
@@ -261,7 +260,7 @@ def _run_fixed(sink, settings, *, scheme, dt, tol, stride, record, initial, init
     # a well too stiff for any step names its parameter; work beyond the limit is refused
     drawn = settings if initial is None and initial_state is None else None
     name, dt, steps, tol = step_of(
-        sink, float(np.max(h0)) - centre_energy(sink), scheme=name, dt=dt, tol=tol, settings=drawn
+        sink, float(np.max(h0)), scheme=name, dt=dt, tol=tol, settings=drawn
     )
     check_work(replace(settings, runs=runs), sink, steps)
     scheme = get_scheme(name)

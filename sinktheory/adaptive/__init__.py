@@ -79,7 +79,6 @@ from .. import validation as v
 from ..ensemble import (
     SimulationResult,
     SimulationState,
-    centre_energy,
     engine_name,
     engine_params,
     join_values,
@@ -387,8 +386,7 @@ def simulate_adaptive(
                     energy_bound=energy_bound, allowed=RECORDS)  # fmt: skip
     settings, record, bound, values = begun.settings, begun.record, begun.bound, begun.values
     t0, h0, runs, periods = begun.time, begun.reference_energy, begun.runs, settings.periods
-    top = float(np.max(h0)) - centre_energy(sink)  # from the well's centre
-    check_work(replace(settings, runs=runs), sink, estimated_steps(sink, top, eps))
+    check_work(replace(settings, runs=runs), sink, estimated_steps(sink, float(np.max(h0)), eps))
     module, q, vel, table = _engine_state(sink, values)
     ctl = _control(eps, sink)
     rho, rem = _carried(initial_state, runs)

@@ -34,7 +34,6 @@ import numpy as np
 from .. import validation as val
 from ..ensemble import (
     ENERGY_BOUND,
-    centre_energy,
     check_sink,
     engine_name,
     engine_params,
@@ -349,7 +348,6 @@ class _Point:
             tvalues = start_state(sink, settings.container_energy, flat)
             top = max(top, float(np.max(total_energy(sink, tvalues))))
             on_plane = split_values(tvalues)
-        top -= centre_energy(sink)  # energies from the well's centre (a user's well)
         sink.well.check_energy(top, name="total_energy")
         return cls(sink, settings, *split_values(values), h0, on_plane, top)
 

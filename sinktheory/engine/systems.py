@@ -172,7 +172,9 @@ def sink_system(well, name: str | None = None) -> SeparableSystem:
     Coordinates are those of :func:`sinktheory.symbolic.separable_hamiltonian`; the masses
     are read from it, and the potential is checked there to be X^2/2 + sum V(u_j - X, y_j).
     Run-time parameters: the well's (alpha, beta, gamma, n for a registered shape, the
-    exponent n included), then the particle mass mu.  ``name`` defaults to sink_<shape>.
+    exponent n included), then the particle mass mu.  The well term is V - V(0, 0), so the
+    engine's energies count from the well's centre as everything else does (a registered
+    shape's V(0, 0) is 0).  ``name`` defaults to sink_<shape>.
     """
     definition = S.shape_definition(well)
     sh = S.separable_hamiltonian(1, well)
@@ -187,9 +189,12 @@ def sink_system(well, name: str | None = None) -> SeparableSystem:
     if sp.nsimplify((got - expected).subs(probe)) != 0:
         raise AssertionError("separable potential is not X^2/2 + sum V(u - X, y)")
     term = _well_term(well)
+    # energies count from the well's centre, as the basin, the law and the audit take them
+    # (a user's V(0, 0) may be any number; a registered shape's is 0 and stays unprinted)
+    centre = S.potential(well).subs({S.x: 0, S.y: 0})
+    value = sp.sympify(term.value) - centre
     term = Term(term.local, term.maps, tuple((a, e.subs(whole)) for a, e in term.atoms),
-                *(sp.sympify(e).subs(whole) for e in (term.value,)),
-                tuple(e.subs(whole) for e in term.gradient),
+                value.subs(whole), tuple(e.subs(whole) for e in term.gradient),
                 tuple(e.subs(whole) for e in term.hessian))  # fmt: skip
     return SeparableSystem(
         name=name or f"sink_{definition.name}",

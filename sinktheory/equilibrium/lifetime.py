@@ -495,7 +495,6 @@ def measure_lifetimes(
     >>> c.samples, c.runs, round(c.law.total_energy, 6)
     (41, 2, 0.5)
     """
-    from ..ensemble import centre_energy
     from ..model import RunSettings, Sink
     from ..simulate import simulate
     from .law import equilibrium_law
@@ -508,8 +507,7 @@ def measure_lifetimes(
     v.positive_int("transient", transient, minimum=0, maximum=settings.periods - 4)
     fractions = check_fractions(fractions)
     sim = simulate(sink, settings, tol=tol, progress=progress)
-    # the law's energy is measured from the well's centre (a user's well: V(0, 0) may be any)
-    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)) - centre_energy(sink))
+    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
     return compare_with_law(
         sim.container_energy, law, transient=transient, fractions=fractions, seed=settings.seed
     ), sim

@@ -638,7 +638,6 @@ def measure_settling(sink: Sink, container_energy: float, measure, *, fraction: 
                      seed: int = 0, tol: float = 1e-6, resamples: int = 199):  # fmt: skip
     """(:class:`~sinktheory.equilibrium.relaxation.Relaxation`, the simulation) of
     ``measure = (runs, periods)`` runs from the paper's start at E0 = ``container_energy``."""
-    from ..ensemble import centre_energy
     from ..simulate import simulate
     from .relaxation import measure_relaxation
 
@@ -652,8 +651,7 @@ def measure_settling(sink: Sink, container_energy: float, measure, *, fraction: 
                            seed=seed)  # fmt: skip
     settings.check(sink)
     sim = simulate(sink, settings, tol=tol, progress=False)
-    # the law's energy is measured from the well's centre (a user's well: V(0, 0) may be any)
-    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)) - centre_energy(sink))
+    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
     window = min(50, max(1, (periods + 1) // 12))
     r = measure_relaxation(sim.container_energy, law.mean, fraction=fraction, window=window,
                            resamples=resamples, seed=seed)  # fmt: skip
