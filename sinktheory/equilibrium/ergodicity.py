@@ -40,6 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import validation as v
+from ..chaos.verdicts import SPLIT_RESULTS
 from ..results import Result
 from .law import check_fractions
 
@@ -82,11 +83,7 @@ RESULTS = {
     "return_time": (("fraction",), "measured mean return time (periods)"),
     "lambda1": ((), "maximal Lyapunov exponent (per unit time; NaN without Lyapunov runs)"),
     "lambda1_se": ((), "standard error of lambda1 over the Lyapunov runs"),
-    "regular_runs": ((), "Lyapunov runs with lambda_1 <= 3 ln t / t (regular; NaN without)"),
-    "lambda1_regular": ((), "lambda_1 of the regular Lyapunov runs (NaN if none)"),
-    "lambda1_regular_se": ((), "its standard error (NaN for fewer than two runs)"),
-    "lambda1_chaotic": ((), "lambda_1 of the chaotic Lyapunov runs (NaN if none)"),
-    "lambda1_chaotic_se": ((), "its standard error (NaN for fewer than two runs)"),
+    **{name: ((), text) for name, text in SPLIT_RESULTS.items()},
     "verdict": (
         (),
         "2 chaotic and sampling the law, 1 chaotic not sampling it, 0 regular, -1 undecided",
@@ -209,8 +206,7 @@ def ergodicity_point(p: dict, seed: int) -> dict:
         seed=seed,
     )
     lam, lam_se = math.nan, math.nan
-    groups = dict.fromkeys(("regular_runs", "lambda1_regular", "lambda1_regular_se",
-                            "lambda1_chaotic", "lambda1_chaotic_se"), math.nan)  # fmt: skip
+    groups = dict.fromkeys(SPLIT_RESULTS, math.nan)
     if p["lyapunov_runs"] > 0:
         from dataclasses import replace
 
@@ -225,10 +221,7 @@ def ergodicity_point(p: dict, seed: int) -> dict:
         summary = res.as_dict()["lambda1"]
         lam = float(summary["mean"])
         lam_se = math.nan if summary["stderr"] is None else float(summary["stderr"])
-        g = res.split()
-        groups = {"regular_runs": float(g.regular), "lambda1_regular": g.regular_mean,
-                  "lambda1_regular_se": g.regular_se, "lambda1_chaotic": g.chaotic_mean,
-                  "lambda1_chaotic_se": g.chaotic_se}  # fmt: skip
+        groups = res.split().stored()
     mean_z = (c.mean - law.mean) / c.mean_stderr if c.mean_stderr > 0 else math.nan
     return {
         "law_mean": law.mean,
