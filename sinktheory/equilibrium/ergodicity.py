@@ -19,6 +19,12 @@ ensemble (:func:`sinktheory.chaos.chaos`).  The verdict, a stated rule:
   1 = chaotic but not sampling it (islands, slow mixing, or a transient too short),
   0 = regular; -1 = undecided (no Lyapunov runs).
 
+The law is that of one total energy, the runs' mean, so the runs must share it: a start
+box in which particles at rest could add more than ``ENERGY_SLACK`` of E0 to a run's
+total energy is refused before anything runs, naming ``box`` and the largest box that
+keeps the runs on one shell (:func:`~sinktheory.equilibrium.lifetime.check_one_shell`;
+near the symmetric well's corner saddle the default box reaches high up the well).
+
 The sweep kind ``ergodicity`` (:mod:`sinktheory.sweep.kinds`) computes the same point
 function over any grid of parameters; :func:`ergodicity_map` runs it over a list of beta
 for the chart (:func:`sinktheory.plot.equilibrium.plot_ergodicity`).
@@ -43,6 +49,7 @@ from .. import validation as v
 from ..chaos.verdicts import SPLIT_RESULTS
 from ..results import Result
 from .law import check_fractions
+from .lifetime import check_one_shell
 
 __all__ = [
     "check_point",
@@ -140,6 +147,7 @@ def check_point(p: dict) -> None:
     p = {**DEFAULTS, **p}
     sink, settings = _sink_settings(p, 0)
     settings.check(sink)
+    check_one_shell(sink, settings)
     v.positive_int("runs", p["runs"], minimum=2)
     v.positive_int("transient", p["transient"], minimum=0, maximum=p["periods"] - 4)
     fractions_of(p["fractions"])
