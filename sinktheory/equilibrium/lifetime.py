@@ -435,9 +435,9 @@ def compare_with_law(
             f"an array holding {outside[0]:.6g}",
             f"container energies in [0, {top:.6g}]",
             why=f"the law is that of one total energy E = {law.total_energy:.6g}, and a "
-            f"run's E_c can exceed it by at most {100 * ENERGY_SLACK:g} % only if the runs "
-            "share that energy: runs whose particles start at rest high in the well have "
-            "more (check_one_shell bounds it from the start box)" if above else None,
+            f"run's E_c stays within {100 * ENERGY_SLACK:g} % of it only when every run has "
+            "that energy: particles that start at rest high in the well give their run more "
+            "(check_one_shell bounds it from the start box)" if above else None,
         )  # fmt: skip
     transient = v.positive_int("transient", transient, minimum=0, maximum=e.shape[1] - 4)
     fractions = check_fractions(fractions)
