@@ -283,7 +283,8 @@ def test_resume_after_interruption_gives_the_same_store(tmp_path, monkeypatch, c
 def test_report_gives_the_predicted_settling_of_each_design(tmp_path):
     """The report's predicted settling interval for Fig. 8's k = 1 design covers the settling
     times measured from the paper's start (docs/guide/relaxation.inc: 349, 281-441, 32 runs;
-    sinktheory.scenes.horizons: 657, 202-1156, 16 runs); the 1-D NES gets n/a.  (Not the
+    657, 202-1156, 16 runs, which sinktheory.scenes.horizons held before its 64-run seeds
+    gave 327-466); the 1-D NES gets n/a.  (Not the
     measured intervals' ends: the predicted interval moves with the shell runs' round-off,
     131-1111 against 1156 once.)"""
     params = {**FIG8, "particles": 1, "attachment": ["well", "nes"], "runs": 2,
