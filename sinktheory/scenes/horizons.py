@@ -76,12 +76,13 @@ def _seeds(runs: str, by_seed: dict[int, tuple[int, int, int]]) -> Settling:
 
 #: Measured settling times (5 % of the law's mean) per set-up (shape, alpha, beta, n, k),
 #: m = 0.2, E0 = 0.5, tol 1e-8 unless said.  ``python benchmarks/bench_horizons.py --runs 64
-#: --seed S --only KEY`` (2026-11-26, load 2-7), each seed an ensemble of its own: t_f and
-#: its 95 % bootstrap interval per seed; the stored value is the largest (:func:`_seeds`).
-#: Earlier single-seed values with 16 runs (seed 2016, before the engine took n at run
-#: time) were 276, 160, 72, 206, 347 for Fig. 5's beta = -0.5, -0.3, -0.2, -0.14, 0.3,
-#: 657 for Fig. 8's k = 1, 5349 for k = 3 and 172 for Fig. 12: three of Fig. 5's were
-#: shorter than these, so their horizons were under three settling times.
+#: --seed S --only KEY`` (2026-11-26), each seed an ensemble of its own: t_f and its 95 %
+#: bootstrap interval per seed; the stored value is the largest (:func:`_seeds`).  The
+#: values stored before, each from one ensemble of 16 runs (seed 2016), were 276, 160, 72,
+#: 206, 347 for Fig. 5's beta = -0.5, -0.3, -0.2, -0.14, 0.3, 17050 (extrapolated) for
+#: 0.009, 657 for Fig. 8's k = 1, 5349 for k = 3 and 172 for Fig. 12: three of Fig. 5's
+#: horizons were under three of these settling times.  A 64-run measurement with seed 2016
+#: earlier that day (the code of then) gave 92, 183, 154, 240, 241 and 2241 for k = 3.
 SETTLING = {
     # Fig. 5 (k = 1, n = 10): 64 runs x 3000 periods
     ("flat", 0.5, -0.5, 10, 1): _seeds("64 x 3000", {
