@@ -55,6 +55,7 @@ from ..runstats import mean_stderr, plus_minus
 __all__ = [
     "THRESHOLD_FACTOR",
     "Split",
+    "SPLIT_RESULTS",
     "agreement",
     "box_starts",
     "chaotic",
@@ -63,6 +64,7 @@ __all__ = [
     "point_values",
     "split",
     "stored_split",
+    "stored_splits",
     "threshold",
     "verdicts",
 ]
@@ -135,6 +137,17 @@ class Split:
         """Both groups hold runs: the ensemble mean of lambda_1 depends on the starts."""
         return 0 < self.regular < self.runs
 
+    def stored(self) -> dict[str, float]:
+        """What a sweep point stores of the split (:data:`SPLIT_RESULTS`; read back by
+        :func:`stored_split`).
+
+        >>> split([0.002, 0.004, 0.43], 300).stored()["regular_runs"]
+        2.0
+        """
+        return {"regular_runs": float(self.regular), "lambda1_regular": self.regular_mean,
+                "lambda1_regular_se": self.regular_se, "lambda1_chaotic": self.chaotic_mean,
+                "lambda1_chaotic_se": self.chaotic_se}  # fmt: skip
+
     def as_dict(self) -> dict:
         """JSON-ready (NaN as None)."""
 
@@ -171,6 +184,17 @@ class Split:
             f"{group(self.regular, self.regular_mean, self.regular_se)}, chaotic "
             f"{group(self.runs - self.regular, self.chaotic_mean, self.chaotic_se)}"
         )
+
+
+#: The results a sweep point stores of its Lyapunov runs' split (:meth:`Split.stored`),
+#: name -> description; all NaN where the point has no Lyapunov runs.
+SPLIT_RESULTS = {
+    "regular_runs": "Lyapunov runs with lambda_1 <= 3 ln t / t (regular; NaN without)",
+    "lambda1_regular": "lambda_1 of the regular Lyapunov runs (NaN if none)",
+    "lambda1_regular_se": "its standard error (NaN for fewer than two runs)",
+    "lambda1_chaotic": "lambda_1 of the chaotic Lyapunov runs (NaN if none)",
+    "lambda1_chaotic_se": "its standard error (NaN for fewer than two runs)",
+}
 
 
 def split(lambda1, periods: float, starts: str = "") -> Split:
@@ -254,6 +278,22 @@ def stored_split(
     return Split(threshold(periods), runs, regular, fraction, fraction_se,
                  *map(float, regular_lambda1), *map(float, chaotic_lambda1),
                  (math.nan, math.nan), starts)  # fmt: skip
+
+
+def stored_splits(ds) -> list[Split | None]:
+    """:func:`stored_split` at every point of a sweep that stores the split
+    (:data:`SPLIT_RESULTS`: the ``ergodicity`` and ``design`` kinds), in the order of
+    ``ds.lambda1.values.ravel()``; None where a point has no Lyapunov runs (or is not
+    done).  Runs, periods and box are read per point where they were swept."""
+    count = point_values(ds, "lyapunov_runs", 0)
+    periods = point_values(ds, "lyapunov_periods", 0)
+    box = point_values(ds, "box", None)
+    cols = [ds[name].values.ravel() for name in SPLIT_RESULTS]  # Split.stored() order
+    return [
+        None if not r > 0 or not np.isfinite(reg) else
+        stored_split(reg, r, p, (rm, rse), (cm, cse), box_starts(b))
+        for r, p, b, reg, rm, rse, cm, cse in zip(count, periods, box, *cols, strict=True)
+    ]  # fmt: skip
 
 
 def map_calls(ds) -> dict:

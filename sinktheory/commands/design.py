@@ -301,6 +301,7 @@ def _row(r: dict, dims: list[str]) -> dict:
         "excursion": f(r["excursion"]),
         "lambda1": f(r["lambda1"]),
         "lambda1_se": f(r["lambda1_se"]),
+        "split_lambda1": None if r["lambda1_split"] is None else r["lambda1_split"].as_dict(),
         "zeta_eq": f(r["zeta_eq"]),
         "zeta_eq_se": f(r["zeta_eq_se"]),
         "damper": damper(r),

@@ -6,7 +6,10 @@ container energy, the measures are :func:`~sinktheory.design.measures.design_mea
 (bootstrap seeded from the same seed), and lambda_1 is the mean over the first
 ``lyapunov_runs`` runs (same start positions) of :func:`sinktheory.chaos.chaos` over
 ``lyapunov_periods`` periods -- a finite-time estimate per unit time (times T = 2 pi:
-the growth exponent per period).  ``lyapunov_runs = 0`` leaves it out (NaN).
+the growth exponent per period) -- with those runs split into regular and chaotic ones
+(:func:`sinktheory.chaos.verdicts.split`: a run is regular when its lambda_1 <=
+3 ln t / t), since a mean over both groups is set by how many runs start in an island.
+``lyapunov_runs = 0`` leaves them out (NaN).
 
 With a contact damping c0 = ``damping`` > 0 the ensemble is
 :func:`sinktheory.damped.simulate_inelastic` instead (same start states, same
@@ -66,6 +69,7 @@ from typing import Any
 import numpy as np
 
 from .. import validation as v
+from ..chaos.verdicts import SPLIT_RESULTS
 from ..ensemble import settings_of, sink_of
 from ..errors import ParameterError
 from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings
@@ -174,19 +178,20 @@ def check(p: dict) -> None:
     )
 
 
-def lyapunov(p: dict, seed: int) -> tuple[float, float]:
-    """Mean lambda_1 (per unit time) of the first ``lyapunov_runs`` runs and its s.e.
+def lyapunov(p: dict, seed: int) -> dict[str, float]:
+    """lambda_1 (per unit time) of the first ``lyapunov_runs`` runs: their mean and its
+    s.e. (``lambda1``, ``lambda1_se``), and the runs split into regular and chaotic ones
+    (:data:`~sinktheory.chaos.verdicts.SPLIT_RESULTS`: where some runs start in an
+    island, the mean mixes two groups and depends on the start box).
 
-    NaN, NaN when ``lyapunov_runs`` is 0, the contact is damped (the chaos indicators are
-    of the conservative model), the attachment is 1-D or :mod:`sinktheory.chaos` cannot
-    be imported.
+    All NaN when ``lyapunov_runs`` is 0, the contact is damped (the chaos indicators are
+    of the conservative model) or the attachment is 1-D.
     """
+    none = dict.fromkeys(("lambda1", "lambda1_se", *SPLIT_RESULTS), math.nan)
     if not p["lyapunov_runs"] or p["damping"] > 0 or p.get("attachment", "well") != "well":
-        return math.nan, math.nan
-    try:
-        from ..chaos import chaos
-    except ImportError:  # the chaos capability is optional for the explorer
-        return math.nan, math.nan
+        return none
+    from ..chaos import chaos
+
     settings = RunSettings(
         container_energy=p["container_energy"],
         runs=p["lyapunov_runs"],
@@ -195,7 +200,8 @@ def lyapunov(p: dict, seed: int) -> tuple[float, float]:
         box=p["box"],
     )
     res = chaos(sink_of(p), settings, progress=False)
-    return mean_stderr(res.lambda1)
+    lam, lam_se = mean_stderr(res.lambda1)
+    return {"lambda1": lam, "lambda1_se": lam_se, **res.split().stored()}
 
 
 def ensemble(p: dict, seed: int) -> dict[str, Any]:
@@ -302,7 +308,6 @@ def compute(p: dict, seed: int) -> dict[str, Any]:
         seed=seed,
         attachment=p.get("attachment", "well"),
     )
-    lam, lam_se = lyapunov(p, seed)
     mean, stderr = ensemble_mean(e)
     out: dict[str, Any] = {
         "absorbed": m.absorbed,
@@ -321,8 +326,7 @@ def compute(p: dict, seed: int) -> dict[str, Any]:
         "spread_se": m.spread_se,
         "excursion": m.excursion,
         "excursion_se": m.excursion_se,
-        "lambda1": lam,
-        "lambda1_se": lam_se,
+        **lyapunov(p, seed),
         "total_energy": total,
         "mean_energy": mean,
         "stderr": stderr,

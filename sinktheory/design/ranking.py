@@ -106,17 +106,26 @@ def design_table(ds) -> list[dict]:
 
     ``ds`` is the dataset of a design sweep (:func:`sinktheory.design.explorer.explore`
     or ``xarray.open_zarr`` of its store).  Points not done are left out.
+    ``lambda1_split`` is the point's Lyapunov runs split into regular and chaotic ones (a
+    :class:`~sinktheory.chaos.verdicts.Split`), None without Lyapunov runs or in a store
+    written before the split was kept.
     """
+    from ..chaos.verdicts import SPLIT_RESULTS, stored_splits
+
     ds = ds.load()
     dims = [d for d in ds.done.dims]
     fixed = {k: ds.attrs[k] for k in DESIGN_PARAMS if k in ds.attrs}
+    splits = [None] * ds.done.size  # a store written before the split was kept
+    if "regular_runs" in ds:
+        splits = stored_splits(ds.transpose(*dims, ...))
     rows = []
-    for index in np.ndindex(*ds.done.shape):
+    for flat, index in enumerate(np.ndindex(*ds.done.shape)):
         where = dict(zip(dims, index, strict=True))
         point = ds.isel(where)
         if not bool(point.done):
             continue
         row = {**fixed, **{d: _plain(point[d].values) for d in dims}}
+        row["lambda1_split"] = splits[flat]
         e0 = float(row["container_energy"])
         for name in (
             "depth",
@@ -138,6 +147,8 @@ def design_table(ds) -> list[dict]:
             "max_relative_energy_error",
         ):
             row[name] = float(point[name])
+        for name in SPLIT_RESULTS:  # stores written before the split was kept: NaN
+            row[name] = float(point[name]) if name in point else math.nan
         for name in ("zeta_eq", "zeta_eq_se", "dissipated", "dissipated_se", "dashpot"):
             # stores written before the contact damping was a parameter: conservative
             row[name] = float(point[name]) if name in point else 0.0

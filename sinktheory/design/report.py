@@ -32,13 +32,15 @@ from pathlib import Path
 
 import numpy as np
 
+from ..chaos.verdicts import box_starts
 from ..equilibrium.prediction import MODEL_FACTOR
 from ..plot.design import label, swept
 from .measures import VERDICTS
 from .ranking import rank
 from .settling import settling_column, settling_text
 
-__all__ = ["damper", "fmt", "is_damped", "report_text", "table_rows", "write_csv", "write_report"]
+__all__ = ["damper", "fmt", "is_damped", "lambda1_text", "report_text", "table_rows", "write_csv",
+           "write_report"]  # fmt: skip
 
 
 def fmt(x: float, se: float | None = None, digits: int = 3) -> str:
@@ -66,6 +68,30 @@ def damper(r: dict) -> str:
     ('dashpot', 'contact', 'contact')
     """
     return "dashpot" if r.get("dashpot") == 1.0 else "contact"
+
+
+def lambda1_text(r: dict) -> str:
+    """The lambda_1 cell of a ranked design: mean +- s.e. over its Lyapunov runs, or, where
+    they split into regular and chaotic runs, the regular count and each group's lambda_1
+    (the mean of a mixed ensemble is set by how many runs start in an island).
+
+    Examples
+    --------
+    >>> from sinktheory.chaos.verdicts import split
+    >>> lam = [0.004, 0.005, 0.41, 0.43]
+    >>> lambda1_text({"lambda1": 0.21, "lambda1_se": 0.12, "lambda1_split": split(lam, 100)})
+    'mixed: 2 of 4 regular (0.0045 ± 0.0005), chaotic (0.420 ± 0.010)'
+    >>> lambda1_text({"lambda1": 0.42, "lambda1_se": 0.01, "lambda1_split": None})
+    '0.420 ± 0.010'
+    """
+    if not math.isfinite(r["lambda1"]):
+        return "n/a"
+    s = r.get("lambda1_split")
+    if s is not None and s.mixed:
+        return (f"mixed: {s.regular} of {s.runs} regular ({fmt(s.regular_mean, s.regular_se, 4)}"
+                f"), chaotic ({fmt(s.chaotic_mean, s.chaotic_se)})")  # fmt: skip
+    every = "" if s is None else " (every run regular)" if s.regular == s.runs else ""
+    return fmt(r["lambda1"], r["lambda1_se"]) + every
 
 
 def table_rows(ranked: list, dims: list[str], top: int, settling=None) -> list[str]:
@@ -103,7 +129,7 @@ def table_rows(ranked: list, dims: list[str], top: int, settling=None) -> list[s
             fmt(r["equipartition"], None, 4),
             VERDICTS[int(r["verdict"])] + f" (z = {r['equipartition_z']:.1f})",
             fmt(r["excursion"], r["excursion_se"], 0),
-            fmt(r["lambda1"], r["lambda1_se"]) if math.isfinite(r["lambda1"]) else "n/a",
+            lambda1_text(r),
             fmt(r["rqa_determinism"], r["rqa_determinism_se"]),
         ]
         if damped:
@@ -211,7 +237,12 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
         f"- DET: determinism of the recurrence plot of <E> with eps = {a.get('rqa_eps')} E0 "
         "(bootstrap s.e.); the store also holds RR, LAM, TT and the mean recurrence time;",
         "- lambda_1: mean ± s.e. over runs of the largest Lyapunov exponent from the tangent "
-        "map (sinktheory.chaos), same start positions as the first runs of the ensemble.",
+        "map (sinktheory.chaos), same start positions as the first runs of the ensemble "
+        f"({box_starts(a['box']) if 'box' in a else 'each design its own start box'}); "
+        "a run is regular when its lambda_1 <= 3 ln t / t of its length "
+        "(sinktheory.chaos.verdicts.split).  Where a design's runs split into regular and "
+        "chaotic ones, the cell gives the regular count and each group's lambda_1 instead of "
+        "their mean, which the start box sets (how many runs start in an island).",
     ]
     if settling:
         lines += [
@@ -253,7 +284,8 @@ def write_csv(ranked: list, dims: list[str], path: Path) -> None:
     if not ranked:
         Path(path).write_text("")
         return
-    keys = ["rank", "layer"] + dims + [k for k in ranked[0] if k not in ("rank", "layer", *dims)]
+    skip = ("rank", "layer", "lambda1_split", *dims)  # the split's numbers have columns
+    keys = ["rank", "layer"] + dims + [k for k in ranked[0] if k not in skip]
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow([k if isinstance(k, str) else f"{k[0]}@{k[1]:g}" for k in keys])

@@ -19,6 +19,12 @@ ensemble (:func:`sinktheory.chaos.chaos`).  The verdict, a stated rule:
   1 = chaotic but not sampling it (islands, slow mixing, or a transient too short),
   0 = regular; -1 = undecided (no Lyapunov runs).
 
+The law is that of one total energy, the runs' mean, so the runs must share it: a start
+box in which particles at rest could add more than ``ENERGY_SLACK`` of E0 to a run's
+total energy is refused before anything runs, naming ``box`` and the largest box that
+keeps the runs on one shell (:func:`~sinktheory.equilibrium.lifetime.check_one_shell`;
+near the symmetric well's corner saddle the default box reaches high up the well).
+
 The sweep kind ``ergodicity`` (:mod:`sinktheory.sweep.kinds`) computes the same point
 function over any grid of parameters; :func:`ergodicity_map` runs it over a list of beta
 for the chart (:func:`sinktheory.plot.equilibrium.plot_ergodicity`).
@@ -40,8 +46,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import validation as v
+from ..chaos.verdicts import SPLIT_RESULTS
 from ..results import Result
 from .law import check_fractions
+from .lifetime import check_one_shell
 
 __all__ = [
     "check_point",
@@ -82,11 +90,7 @@ RESULTS = {
     "return_time": (("fraction",), "measured mean return time (periods)"),
     "lambda1": ((), "maximal Lyapunov exponent (per unit time; NaN without Lyapunov runs)"),
     "lambda1_se": ((), "standard error of lambda1 over the Lyapunov runs"),
-    "regular_runs": ((), "Lyapunov runs with lambda_1 <= 3 ln t / t (regular; NaN without)"),
-    "lambda1_regular": ((), "lambda_1 of the regular Lyapunov runs (NaN if none)"),
-    "lambda1_regular_se": ((), "its standard error (NaN for fewer than two runs)"),
-    "lambda1_chaotic": ((), "lambda_1 of the chaotic Lyapunov runs (NaN if none)"),
-    "lambda1_chaotic_se": ((), "its standard error (NaN for fewer than two runs)"),
+    **{name: ((), text) for name, text in SPLIT_RESULTS.items()},
     "verdict": (
         (),
         "2 chaotic and sampling the law, 1 chaotic not sampling it, 0 regular, -1 undecided",
@@ -143,6 +147,7 @@ def check_point(p: dict) -> None:
     p = {**DEFAULTS, **p}
     sink, settings = _sink_settings(p, 0)
     settings.check(sink)
+    check_one_shell(sink, settings)
     v.positive_int("runs", p["runs"], minimum=2)
     v.positive_int("transient", p["transient"], minimum=0, maximum=p["periods"] - 4)
     fractions_of(p["fractions"])
@@ -209,8 +214,7 @@ def ergodicity_point(p: dict, seed: int) -> dict:
         seed=seed,
     )
     lam, lam_se = math.nan, math.nan
-    groups = dict.fromkeys(("regular_runs", "lambda1_regular", "lambda1_regular_se",
-                            "lambda1_chaotic", "lambda1_chaotic_se"), math.nan)  # fmt: skip
+    groups = dict.fromkeys(SPLIT_RESULTS, math.nan)
     if p["lyapunov_runs"] > 0:
         from dataclasses import replace
 
@@ -225,10 +229,7 @@ def ergodicity_point(p: dict, seed: int) -> dict:
         summary = res.as_dict()["lambda1"]
         lam = float(summary["mean"])
         lam_se = math.nan if summary["stderr"] is None else float(summary["stderr"])
-        g = res.split()
-        groups = {"regular_runs": float(g.regular), "lambda1_regular": g.regular_mean,
-                  "lambda1_regular_se": g.regular_se, "lambda1_chaotic": g.chaotic_mean,
-                  "lambda1_chaotic_se": g.chaotic_se}  # fmt: skip
+        groups = res.split().stored()
     mean_z = (c.mean - law.mean) / c.mean_stderr if c.mean_stderr > 0 else math.nan
     return {
         "law_mean": law.mean,

@@ -82,6 +82,8 @@ from .law import EquilibriumLaw, check_fractions
 __all__ = [
     "autocorrelation_time",
     "BOOTSTRAP",
+    "check_one_shell",
+    "one_shell_box",
     "compare_with_law",
     "ENERGY_SLACK",
     "jackknife_ratio",
@@ -427,11 +429,16 @@ def compare_with_law(
     top = law.total_energy * (1 + ENERGY_SLACK)
     outside = e[~((e >= 0) & (e <= top))]
     if outside.size:
+        above = outside[0] > top
         raise ParameterError(
             "energy_runs",
             f"an array holding {outside[0]:.6g}",
             f"container energies in [0, {top:.6g}]",
-        )
+            why=f"the law is that of one total energy E = {law.total_energy:.6g}, and a "
+            f"run's E_c stays within {100 * ENERGY_SLACK:g} % of it only when every run has "
+            "that energy: particles that start at rest high in the well give their run more "
+            "(check_one_shell bounds it from the start box)" if above else None,
+        )  # fmt: skip
     transient = v.positive_int("transient", transient, minimum=0, maximum=e.shape[1] - 4)
     fractions = check_fractions(fractions)
     s = e[:, transient:] / law.total_energy
@@ -472,6 +479,69 @@ def compare_with_law(
         entry_interval_stderr=column("entry_interval", 1),
         entry_interval_predicted=sojourn / tails,
     )
+
+
+def one_shell_box(sink, settings) -> float:
+    """The largest start box, up to ``settings.box``, whose runs share one energy shell:
+    particles starting at rest in it add at most ENERGY_SLACK E0 to a run's total energy
+    (k V at the box's corner, the bound :meth:`~sinktheory.model.RunSettings.total_energy_bound`
+    takes).  ``settings.box`` itself where it does; else found by bisection (the corner's V
+    grows with the box), to 1e-15 of it.
+
+    >>> from sinktheory.model import RunSettings, Sink, Well
+    >>> round(one_shell_box(Sink(Well(1.0, 0.99, 6, shape="symmetric")), RunSettings()), 5)
+    0.00751
+    """
+    from dataclasses import replace
+
+    def fits(box: float) -> bool:
+        spread = replace(settings, box=box).total_energy_bound(sink) - settings.container_energy
+        return spread <= ENERGY_SLACK * settings.container_energy
+
+    if fits(settings.box):
+        return settings.box
+    lo, hi = 0.0, settings.box
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if fits(mid) else (lo, mid)
+    return lo
+
+
+def check_one_shell(sink, settings) -> None:
+    """Refuse, naming ``box``, a start box in which the runs' total energies could differ
+    by more than ENERGY_SLACK of E0 (:func:`one_shell_box`).
+
+    The law the runs are compared with is that of one total energy (the runs' mean); a
+    particle that starts at rest high up in the well puts its run on another energy
+    shell.  Near the symmetric well's corner saddle the well's centre is narrower than
+    the default start box: at alpha = 1, beta = 0.99, n = 6 the box (-0.01, 0.01)^2
+    reaches V = 0.148 at its corner, and 8 runs of docs/guide/make_ergodicity.py (seed 1)
+    had total energies from 0.500 to 0.525, so no one law describes them.
+
+    Examples
+    --------
+    >>> from sinktheory.model import RunSettings, Sink, Well
+    >>> sink = Sink(Well(1.0, 0.99, 6, shape="symmetric"))
+    >>> check_one_shell(sink, RunSettings(box=0.005))
+    >>> check_one_shell(sink, RunSettings(box=0.01))  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: box = 0.01 is not allowed: must be a start box whose \
+runs share one energy shell (<= 0.0075 here) (particles starting at rest in it can add up to \
+0.1481 (k V at its corner)...
+    """
+    largest = one_shell_box(sink, settings)
+    if largest == settings.box:
+        return
+    e0 = settings.container_energy
+    top = settings.total_energy_bound(sink) - e0
+    raise ParameterError(
+        "box", settings.box, f"a start box whose runs share one energy shell (<= "
+        f"{largest:.2g} here)", why=f"particles starting at rest in it can add up to "
+        f"{top:.4g} (k V at its corner) to a run's total energy, {100 * top / e0:.3g} % of "
+        f"E0 = {e0:g}, while the law compared with is that of one total energy (runs within "
+        f"{100 * ENERGY_SLACK:g} % of it)",
+    )  # fmt: skip
 
 
 def measure_lifetimes(

@@ -26,7 +26,9 @@ design         :func:`sinktheory.design.point.compute`: an      absorbed (horizo
                (:mod:`sinktheory.design.measures`)              equipartition verdict, spread,
                                                                 lambda1, excursion, rqa_*,
                                                                 zeta_eq, dissipated,
-                                                                each with its ``*_se``
+                                                                each with its ``*_se``;
+                                                                regular_runs and lambda_1
+                                                                of each group
 =============  ==============================================  ===============================
 
 The bifurcation section starts from a fixed state and does not use the seed.  An ensemble
@@ -61,6 +63,7 @@ import numpy as np
 
 from .. import validation as v
 from ..bifurcation import QUANTITIES
+from ..chaos.verdicts import SPLIT_RESULTS
 from ..design.measures import ATTACHMENTS
 from ..ensemble import ENERGY_BOUND
 from ..equilibrium import ergodicity as _ergodicity
@@ -314,6 +317,8 @@ def _design_results() -> dict[str, Result]:
         if name not in ("equipartition", "equipartition_z", "verdict"):
             out[f"{name}_se"] = Result((), "float64", f"standard error of {name}")
     out["long_time_se"] = out.pop("long_time_mean_se")
+    for name, text in SPLIT_RESULTS.items():
+        out[name] = Result((), "float64", text)
     out["total_energy"] = Result((), "float64", "total energy H0 (mean over runs)")
     out["max_relative_energy_error"] = Result((), "float64", "largest |H - H0|/H0 of all runs")
     out["dt_used"] = Result((), "float64", "integration step used")

@@ -212,6 +212,15 @@ class SweepStore:
                 why=_difference(json.loads(spec), json.loads(sweep.spec)),
             )
         _check_attributes(path, attrs, written)
+        missing = [name for name in sweep.kind.results if name not in group]
+        if missing:
+            raise ParameterError(
+                "store", str(path), "a store holding every result of its kind",
+                why=f"it has no {', '.join(missing)}: written by a sinktheory "
+                f"{attrs.get('sinktheory_version', '(unknown)')} that did not compute "
+                f"{'it' if len(missing) == 1 else 'them'}, or damaged (start the sweep "
+                "again in a new store; xarray.open_zarr still reads this one)",
+            )  # fmt: skip
         if CHECKSUM_ATTR in attrs and CHECKSUM not in group:
             raise ParameterError(
                 "store",

@@ -49,32 +49,24 @@ def bifurcation_diagram(dataset: xr.Dataset) -> BifurcationDiagram:
 
 
 def split_points(dataset: xr.Dataset) -> list[tuple[dict, object]]:
-    """Every point of a finished ``chaos`` or ``ergodicity`` sweep with its lambda_1 runs
-    split into regular and chaotic ones (a :class:`~sinktheory.chaos.verdicts.Split`;
-    a run is regular when its lambda_1 <= 3 ln t / t), as (swept coordinates, split) in
-    C order; [] for other kinds and for ergodicity points without Lyapunov runs.
+    """Every point of a finished ``chaos``, ``ergodicity`` or ``design`` sweep with its
+    lambda_1 runs split into regular and chaotic ones (a
+    :class:`~sinktheory.chaos.verdicts.Split`; a run is regular when its lambda_1 <=
+    3 ln t / t), as (swept coordinates, split) in C order; [] for other kinds, for
+    points without Lyapunov runs and for design stores written before the split was kept.
 
     A chaos point is split from its stored per-run exponents
-    (:func:`~sinktheory.chaos.verdicts.map_split`); an ergodicity point from the counts
-    and group means it stores (:func:`~sinktheory.chaos.verdicts.stored_split`: no gap).
+    (:func:`~sinktheory.chaos.verdicts.map_split`); an ergodicity or design point from
+    the counts and group means it stores
+    (:func:`~sinktheory.chaos.verdicts.stored_split`: no gap).
     """
-    from ..chaos.verdicts import box_starts, map_split, point_values, stored_split
+    from ..chaos.verdicts import map_split, stored_splits
 
     kind = dataset.attrs.get("sweep_kind")
     if kind == "chaos":
         splits = map_split(dataset)
-    elif kind == "ergodicity":
-        count = point_values(dataset, "lyapunov_runs", 0)
-        periods = point_values(dataset, "lyapunov_periods", 0)
-        box = point_values(dataset, "box", None)
-        cols = [dataset[name].values.ravel() for name in (
-            "regular_runs", "lambda1_regular", "lambda1_regular_se", "lambda1_chaotic",
-            "lambda1_chaotic_se")]  # fmt: skip
-        splits = [
-            None if not r > 0 or not np.isfinite(reg) else
-            stored_split(reg, r, p, (rm, rse), (cm, cse), box_starts(b))
-            for r, p, b, reg, rm, rse, cm, cse in zip(count, periods, box, *cols, strict=True)
-        ]  # fmt: skip
+    elif kind in ("ergodicity", "design") and "regular_runs" in dataset:
+        splits = stored_splits(dataset)
     else:
         return []
     dims = dataset.lambda1.dims

@@ -1,11 +1,13 @@
 """The ergodicity map: the verdict rule, the point function, the sweep kind and the chart."""
 
 import math
+import re
 
 import numpy as np
 import pytest
 
 from sinktheory.equilibrium.ergodicity import (
+    check_point,
     ergodicity_map,
     ergodicity_point,
     fractions_of,
@@ -90,3 +92,36 @@ def test_bad_points_are_refused_before_running():
         run_sweep("ergodicity", {**SMALL, "beta": 0.3, "transient": 200}, progress=False)
     with pytest.raises(ParameterError, match="runs"):
         run_sweep("ergodicity", {**SMALL, "beta": 0.3, "runs": 1}, progress=False)
+
+
+def test_a_box_that_spreads_the_runs_over_shells_is_refused_naming_box():
+    """Near the symmetric well's corner saddle (alpha = 1, beta = 0.99, n = 6) the default
+    start box reaches high up the well: the runs' total energies, measured by the engine's
+    energy kernel, spread by more than ENERGY_SLACK, so no one law fits them.  The point is
+    refused before it runs, naming box, with a bound (k V at the box's corner) no smaller
+    than that measured spread; the largest box it states holds V = ENERGY_SLACK E0 at its
+    corner (by hand), and a point started there computes."""
+    from sinktheory.equilibrium.lifetime import ENERGY_SLACK
+    from sinktheory.model import RunSettings, Sink, Well
+    from sinktheory.simulate import simulate
+
+    point = {"shape": "symmetric", "alpha": 1.0, "beta": 0.99, "n": 6, "runs": 8,
+             "periods": 40, "transient": 10, "lyapunov_runs": 0}  # fmt: skip
+    sink = Sink(Well(1.0, 0.99, 6, shape="symmetric"))
+    h0 = simulate(sink, RunSettings(runs=64, periods=1, seed=1), progress=False).initial_energy
+    assert h0.max() - h0.min() > ENERGY_SLACK * 0.5  # measured: the runs sit on other shells
+    with pytest.raises(
+        ParameterError,
+        match=r"box = 0.01 is not allowed: must be a start box "
+        r"whose runs share one energy shell \(<= (0\.\d+) here\)",
+    ) as refusal:
+        check_point(point)  # nothing has run
+    largest = float(re.search(r"<= (0\.\d+) here", str(refusal.value)).group(1))
+
+    def corner(b):  # V of the symmetric well at (b, b), by hand: 2/(2n) (b / D(b))^2n
+        return 2 / 12 * (b / (1.0 + 0.99 * (b * b - 1))) ** 12
+
+    assert h0.max() - 0.5 <= corner(0.01) and f"add up to {corner(0.01):.4g}" in str(refusal.value)
+    assert corner(largest) == pytest.approx(ENERGY_SLACK * 0.5, rel=0.1)  # 2 digits of the box
+    out = ergodicity_point({**point, "box": largest}, seed=1)
+    assert 0 < out["ks_distance"] < 1 and math.isfinite(out["mean_z"])

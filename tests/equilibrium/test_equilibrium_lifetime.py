@@ -202,3 +202,21 @@ def test_stiff_container_is_estimated_before_it_runs(capsys, tmp_path, monkeypat
     line = refused(argv, capsys, tmp_path, monkeypatch, "periods")
     steps = int(re.search(r"x (\d+) step\(s\)", line).group(1))
     assert steps > 10**6 and "--max-hours" in line, line
+
+
+def test_an_energy_above_the_laws_total_says_why():
+    """A run's E_c above the law's E (beyond the 1 % slack) means the runs do not share the
+    law's one total energy: the refusal says so; a negative E_c is refused plainly."""
+    from sinktheory.equilibrium import compare_with_law, equilibrium_law
+    from sinktheory.model import Sink, Well
+
+    law = equilibrium_law(Sink(Well(0.5, 0.0, 4, shape="circular")), 0.5)
+    e = np.full((2, 50), 0.2)
+    e[1, 7] = 0.5 * 1.02
+    with pytest.raises(ParameterError, match=r"holding 0.51' .*\[0, 0.505\] \(the law is that "
+                       r"of one total energy E = 0.5.*check_one_shell"):  # fmt: skip
+        compare_with_law(e, law, transient=0)
+    e[1, 7] = -0.1
+    with pytest.raises(ParameterError, match=r"holding -0.1' is not allowed: must be container "
+                       r"energies in \[0, 0.505\]$"):  # fmt: skip
+        compare_with_law(e, law, transient=0)

@@ -283,7 +283,8 @@ def test_resume_after_interruption_gives_the_same_store(tmp_path, monkeypatch, c
 def test_report_gives_the_predicted_settling_of_each_design(tmp_path):
     """The report's predicted settling interval for Fig. 8's k = 1 design covers the settling
     times measured from the paper's start (docs/guide/relaxation.inc: 349, 281-441, 32 runs;
-    sinktheory.scenes.horizons: 657, 202-1156, 16 runs); the 1-D NES gets n/a.  (Not the
+    657, 202-1156, 16 runs, which sinktheory.scenes.horizons held before its 64-run seeds
+    gave 327-466); the 1-D NES gets n/a.  (Not the
     measured intervals' ends: the predicted interval moves with the shell runs' round-off,
     131-1111 against 1156 once.)"""
     params = {**FIG8, "particles": 1, "attachment": ["well", "nes"], "runs": 2,
@@ -353,3 +354,37 @@ def test_negative_lists_and_ranges_are_values():
     )
     p = params_of(args)
     assert p["beta"][0] == -0.5 and len(p["beta"]) == 11 and p["particles"] == [-1, 3]
+
+
+def test_design_points_split_lambda1_like_the_chaos_sweep(tmp_path):
+    """A design point keeps its Lyapunov runs' split (regular count, each group's lambda_1).
+    It must match the chaos sweep's split, made from per-run exponents of the same starts
+    (same point seeds; box 0.1, where beta = 0 puts some runs in islands), and where the
+    runs are mixed the report's table, the CSV and the JSON give the split, not the mean."""
+    from sinktheory.commands.design import _row
+    from sinktheory.design.report import report_text, write_csv
+    from sinktheory.sweep import run_sweep
+    from sinktheory.sweep.views import split_points
+
+    common = {"alpha": 0.5, "beta": [-0.4, -0.2, 0.0, 0.2], "n": 4, "box": 0.1}
+    chaos = run_sweep("chaos", {**common, "runs": 6, "periods": 40}, workers=1, progress=False)
+    run = _explore({**common, "runs": 6, "periods": 12, "horizons": "12", "lyapunov_runs": 6,
+                    "lyapunov_periods": 40, "bootstrap": 4})  # fmt: skip
+    a, b = split_points(chaos), split_points(run.dataset)
+    assert [w for w, _ in a] == [w for w, _ in b] == [{"beta": x} for x in common["beta"]]
+    assert [s.regular for _, s in a] == [s.regular for _, s in b] == [0, 0, 3, 0]
+    for (_, s), (_, t) in zip(a, b, strict=True):
+        assert (s.runs, s.threshold, s.starts) == (t.runs, t.threshold, t.starts)
+        for x, y in ((s.regular_mean, t.regular_mean), (s.chaotic_mean, t.chaotic_mean)):
+            assert (np.isnan(x) and np.isnan(y)) or abs(x - y) < 0.1 * x
+    mixed = next(r for r in run.ranked if r["beta"] == 0.0)
+    s = mixed["lambda1_split"]
+    row = next(line for line in report_text(run.dataset, run.ranked).splitlines()
+               if line.startswith(f"| {mixed['rank']} |"))  # fmt: skip
+    assert f"mixed: 3 of 6 regular ({s.regular_mean:.4f}" in row
+    assert "start box sets" in report_text(run.dataset, run.ranked)
+    write_csv(run.ranked, ["beta"], tmp_path / "d.csv")
+    head = (tmp_path / "d.csv").read_text().splitlines()[0].split(",")
+    assert "regular_runs" in head and "lambda1_split" not in head
+    data = _row(mixed, ["beta"])
+    assert data["split_lambda1"]["regular"] == 3 and data["split_lambda1"]["mixed"]

@@ -90,3 +90,18 @@ def test_file_too_large_names_the_store(tmp_path):
     )  # fmt: skip
     assert proc.returncode == 1, proc.stderr
     assert proc.stderr == "sinktheory sweep: could not write big.zarr: File too large\n"
+
+
+def test_a_store_without_a_result_of_its_kind_is_named_not_called_damaged(tmp_path):
+    """A kind that gains a result (the design kind's split of lambda_1) meets stores
+    written before it: resuming one names the missing arrays, and the store is kept."""
+    import shutil
+
+    params = {"alpha": 0.5, "beta": [0.1, 0.2], "n": 4}
+    SweepStore.create(tmp_path / "g.zarr", Sweep.make("floquet", params)).close()
+    shutil.rmtree(tmp_path / "g.zarr" / "rotation_number")
+    with pytest.raises(ParameterError, match=r"it has no rotation_number: written by a "
+                       r"sinktheory \S+ that did not compute it, or damaged"):  # fmt: skip
+        run_sweep("floquet", params, store=tmp_path / "g.zarr", workers=1, progress=False,
+                  resume=True)  # fmt: skip
+    assert [p.name for p in tmp_path.iterdir()] == ["g.zarr"]
