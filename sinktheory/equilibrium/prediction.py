@@ -83,6 +83,7 @@ from .law import equilibrium_law
 
 __all__ = [
     "check_fraction",
+    "check_reading",
     "EXTRAPOLATION",
     "fit_line",
     "LADDER",
@@ -92,6 +93,7 @@ __all__ = [
     "measure_settling",
     "MODEL_FACTOR",
     "predict_relaxation",
+    "read_settling",
     "RelaxationPrediction",
     "Settling",
     "settling_periods",
@@ -402,11 +404,7 @@ def predict_relaxation(
     runs = v.positive_int("shell_runs", shell_runs, minimum=4)
     lag = v.positive_int("lag", lag, minimum=8)
     seed = v.positive_int("seed", seed, minimum=0)
-    if not 0 < v.finite("level", level) < 1:
-        raise ParameterError("level", level, "a number in (0, 1)")
-    resamples = v.positive_int("resamples", resamples, minimum=20)
-    if periods is not None:
-        periods = v.positive_int("periods", periods)
+    periods, level, resamples = check_reading(periods, level, resamples)
     total = start_total_energy(sink, start, seed)
     law = equilibrium_law(sink, total)  # checks the energy against the well
     lags = shell_lags(lag)
@@ -426,6 +424,17 @@ def check_fraction(fraction) -> float:
     if not fraction < 1:
         raise ParameterError("fraction", fraction, "a number in (0, 1)")
     return fraction
+
+
+def check_reading(periods, level, resamples) -> tuple[int | None, float, int]:
+    """``periods`` (None or an integer >= 1), ``level`` (in (0, 1)) and ``resamples``
+    (an integer >= 20) of :func:`shell_prediction`, checked before any run."""
+    if not 0 < v.finite("level", level) < 1:
+        raise ParameterError("level", level, "a number in (0, 1)")
+    resamples = v.positive_int("resamples", resamples, minimum=20)
+    if periods is not None:
+        periods = v.positive_int("periods", periods)
+    return periods, level, resamples
 
 
 def shell_lags(lag: int) -> list[int]:
@@ -634,7 +643,6 @@ def measure_settling(sink: Sink, container_energy: float, measure, *, fraction: 
     """(:class:`~sinktheory.equilibrium.relaxation.Relaxation`, the simulation) of
     ``measure = (runs, periods)`` runs from the paper's start at E0 = ``container_energy``."""
     from ..simulate import simulate
-    from .relaxation import measure_relaxation
 
     try:
         runs, periods = measure
@@ -647,7 +655,19 @@ def measure_settling(sink: Sink, container_energy: float, measure, *, fraction: 
     settings.check(sink)
     sim = simulate(sink, settings, tol=tol, progress=False)
     law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
-    window = min(50, max(1, (periods + 1) // 12))
-    r = measure_relaxation(sim.container_energy, law.mean, fraction=fraction, window=window,
-                           resamples=resamples, seed=seed)  # fmt: skip
-    return r, sim
+    return read_settling(sim.container_energy, law.mean, fraction=fraction, seed=seed,
+                         resamples=resamples), sim  # fmt: skip
+
+
+def read_settling(energy_runs, target: float, *, fraction: float = 0.05, seed: int = 0,
+                  resamples: int = 199):  # fmt: skip
+    """:func:`~sinktheory.equilibrium.relaxation.measure_relaxation` of the container
+    energies ``energy_runs`` (runs, P + 1) of an ensemble from the paper's start, settling
+    at ``target`` (the law's mean), in windows of 50 periods (fewer for records shorter
+    than 600 periods, so that 12 windows fit)."""
+    from .relaxation import measure_relaxation
+
+    energy_runs = np.asarray(energy_runs)
+    window = min(50, max(1, energy_runs.shape[-1] // 12))
+    return measure_relaxation(energy_runs, target, fraction=fraction, window=window,
+                              resamples=resamples, seed=seed)  # fmt: skip
