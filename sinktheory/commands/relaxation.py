@@ -119,8 +119,13 @@ def _predicted(args: argparse.Namespace):
         if args.measure is not None:
             _measure_check(args, sink, rigid=True)
         table = (args.shape, args.alpha, args.beta)
-        p = predict_rigid_relaxation(*table, particles=args.particles, mass=args.mass,
-                                     container_energy=args.container_energy, **reading)
+        p = predict_rigid_relaxation(
+            *table,
+            particles=args.particles,
+            mass=args.mass,
+            container_energy=args.container_energy,
+            **reading,
+        )
         described = (f"{args.shape} well alpha={sink.well.alpha:g} beta={sink.well.beta:g} "
                      "n=inf (rigid walls, exact billiards)")  # fmt: skip
         if args.measure is None:

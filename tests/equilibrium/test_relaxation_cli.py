@@ -102,8 +102,14 @@ def test_rigid_walls_against_the_rigid_law_and_direct_billiards(capsys):
     mu = law.mean()
     by_hand = p["rate_time"] * math.log(p["visible"] * (1 - mu) / (0.05 * mu))
     assert math.isclose(p["settle_time"], by_hand, rel_tol=1e-12)
-    runs = billiard("flat", 0.5, 0.3, particles=k, mass=0.2,
-                    settings=RunSettings(container_energy=e0, runs=6, periods=600, seed=3))
+    runs = billiard(
+        "flat",
+        0.5,
+        0.3,
+        particles=k,
+        mass=0.2,
+        settings=RunSettings(container_energy=e0, runs=6, periods=600, seed=3),
+    )
     windows = runs.container_energy[:, :600].reshape(6, 12, 50).mean(axis=2).mean(axis=0)
     assert r["target"] == pytest.approx(e0 / (k + 1), rel=1e-14)
     assert np.allclose(r["means"], windows, rtol=1e-12)
