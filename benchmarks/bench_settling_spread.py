@@ -74,26 +74,36 @@ def main() -> None:
     t0 = time.perf_counter()
     ec, target = pool(k, args.n, args.ensembles * R, args.periods, args.seed)
     name = f"n = {args.n}" if args.n else "n = oo (billiard)"
-    print(f"Fig. 8's table, k = {k}, m = 0.2, {name}: {args.ensembles} x {R} runs x "
-          f"{args.periods} periods (seed {args.seed}) in {time.perf_counter() - t0:.0f} s")
+    print(
+        f"Fig. 8's table, k = {k}, m = 0.2, {name}: {args.ensembles} x {R} runs x "
+        f"{args.periods} periods (seed {args.seed}) in {time.perf_counter() - t0:.0f} s"
+    )
     whole = read_settling(ec, target)
-    print(f"pool of {ec.shape[0]} runs: settles at {whole.settle_time:.0f} "
-          f"({whole.settle_low:.0f}-{whole.settle_high:.0f}), tail time {whole.rate_time:.0f}, "
-          f"stretch {whole.stretch:.2f}, tail chi2 {whole.chi2:.2f}")
-    found = [read_settling(ec[i * R:(i + 1) * R], target) for i in range(args.ensembles)]
+    print(
+        f"pool of {ec.shape[0]} runs: settles at {whole.settle_time:.0f} "
+        f"({whole.settle_low:.0f}-{whole.settle_high:.0f}), tail time {whole.rate_time:.0f}, "
+        f"stretch {whole.stretch:.2f}, tail chi2 {whole.chi2:.2f}"
+    )
+    found = [read_settling(ec[i * R : (i + 1) * R], target) for i in range(args.ensembles)]
     for i, r in enumerate(found):
-        print(f"  ensemble {i:2d}: {r.settle_time:6.0f} ({r.settle_low:.0f}-{r.settle_high:.0f})"
-              f"{'*' if r.extrapolated else ''}  tail chi2 {r.chi2:.2f}")
+        print(
+            f"  ensemble {i:2d}: {r.settle_time:6.0f} ({r.settle_low:.0f}-{r.settle_high:.0f})"
+            f"{'*' if r.extrapolated else ''}  tail chi2 {r.chi2:.2f}"
+        )
     inside = sum(r.settle_low <= whole.settle_time <= r.settle_high for r in found)
     logs = np.log([max(r.settle_time, 1.0) for r in found])
     quoted = np.median([ln_se(r) for r in found])
     print(f"intervals holding the pool's value: {inside} of {len(found)}")
-    print(f"ln t_f between ensembles: sd {logs.std(ddof=1):.3f}; quoted se (median) "
-          f"{quoted:.3f}; ratio {logs.std(ddof=1) / quoted:.2f}")
-    late = (ec[:, ec.shape[1] // 2:].mean(axis=1) - target) / target
+    print(
+        f"ln t_f between ensembles: sd {logs.std(ddof=1):.3f}; quoted se (median) "
+        f"{quoted:.3f}; ratio {logs.std(ddof=1) / quoted:.2f}"
+    )
+    late = (ec[:, ec.shape[1] // 2 :].mean(axis=1) - target) / target
     q = np.quantile(late, [0.1, 0.5, 0.9])
-    print(f"runs' late-half excess over the law: 10/50/90 % quantiles {q[0]:+.2f} "
-          f"{q[1]:+.2f} {q[2]:+.2f}; runs above +0.5: {int(np.sum(late > 0.5))} of {late.size}")
+    print(
+        f"runs' late-half excess over the law: 10/50/90 % quantiles {q[0]:+.2f} "
+        f"{q[1]:+.2f} {q[2]:+.2f}; runs above +0.5: {int(np.sum(late > 0.5))} of {late.size}"
+    )
 
 
 if __name__ == "__main__":
