@@ -23,7 +23,14 @@ Usage::
    part, the 2-D timescales would stop growing with the lag.  Transitions are counted
    from every period of every run and symmetrised (the dynamics is reversible in E_c).
 
-``--quick``: 40 runs, one seed, k = 1, 150 runs in part 2.
+3. The particles' energy split from the paper's start (k = 3, m = 0.2, 64 runs x 5000
+   periods, seed 21, tol 1e-6; the particles' energies recorded once a period): the mean
+   of Q = sum_j (e_j / sum e)^2 (1 / k for an even split, 1 when one particle holds all)
+   given E_c, in bins of E_c, over windows of time.  If the split carried the slow part
+   of the approach, Q given E_c would keep moving for as long as <E_c> does.
+
+``--quick``: 40 runs, one seed, k = 1, 150 runs in part 2, 16 runs x 1000 periods in
+part 3.
 """
 
 from __future__ import annotations
@@ -129,15 +136,45 @@ def second_variable(runs: int, periods: int, seed: int) -> None:
         print(f"  (E_c, Y), 6 x {m} cells        " + " ".join(f"{x:5.0f}" for x in its))
 
 
+def energy_split(runs: int, periods: int, seed: int) -> None:
+    """Part 3: the mean of Q given E_c over windows of time from the paper's start."""
+    from sinktheory.model import RunSettings, Sink
+    from sinktheory.simulate import simulate
+
+    t0 = time.perf_counter()
+    sink = Sink(FIG8_WELL, particles=3, mass=0.2)
+    settings = RunSettings(container_energy=0.5, runs=runs, periods=periods, seed=seed)
+    r = simulate(sink, settings, tol=1e-6, record=("container", "particles"), progress=False)
+    parts, ec = np.asarray(r.particle_energy), np.asarray(r.container_energy)
+    held = parts.sum(axis=2)
+    q = ((parts / np.where(held > 0, held, 1.0)[..., None]) ** 2).sum(axis=2)
+    edges = np.linspace(0.0, 0.5, 6)
+    print(f"\n3. k = 3, {runs} runs x {periods} periods from rest (seed {seed}) "
+          f"[{time.perf_counter() - t0:.0f} s]: mean Q given E_c (samples)")  # fmt: skip
+    print("  periods      <E_c>  " + " ".join(f"  E_c {a:.1f}-{b:.1f}  " for a, b in
+                                             zip(edges[:-1], edges[1:], strict=True)))  # fmt: skip
+    cuts = [1, 50, 200, 500, 1000, 2000, 3000, periods + 1]
+    for a, b in zip(cuts[:-1], cuts[1:], strict=True):
+        if a >= periods:
+            break
+        cells = []
+        for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+            inside = (ec[:, a:b] >= lo) & (ec[:, a:b] < hi)
+            n = int(inside.sum())
+            cells.append(f"{q[:, a:b][inside].mean():.3f} ({n:6d})" if n > 50 else " " * 14)
+        print(f"  {a:5d}-{min(b, periods + 1) - 1:<5d}  {ec[:, a:b].mean():.3f}  "
+              + "  ".join(cells))  # fmt: skip
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--seeds", type=int, default=2)
     parser.add_argument("--particles", type=int, nargs="+", default=[1, 5])
     args = parser.parse_args()
-    runs, part2 = 100, (600, 256)
+    runs, part2, part3 = 100, (600, 256), (64, 5000)
     if args.quick:
-        runs, part2, args.seeds, args.particles = 40, (150, 128), 1, [1]
+        runs, part2, part3, args.seeds, args.particles = 40, (150, 128), (16, 1000), 1, [1]
     sys.path.insert(0, __file__.rsplit("/", 1)[0])
     from machine import describe
 
@@ -147,6 +184,7 @@ def main() -> None:
         for seed in range(args.seeds):
             shell_part(k, runs, seed)
     second_variable(*part2, seed=0)
+    energy_split(*part3, seed=21)
 
 
 if __name__ == "__main__":
