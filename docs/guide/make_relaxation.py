@@ -29,8 +29,8 @@ with an earlier model, a drift from base lag 8 to lag 64, before this one was ch
 their measured settling times were known; for n = oo: run by
 benchmarks/bench_rigid_limit.py before this chart had rigid points) and "fresh" (chosen
 before the model's predictions for them were seen).  Rigid cases are drawn as triangles.
-The full run takes about 30 minutes on two shared cores; --quick runs three small cases
-(one of them rigid) and writes nothing unless --out is given.
+The full run took 41 minutes on two cores shared at a load average of 4-15; --quick runs
+three small cases (one of them rigid) and writes nothing unless --out is given.
 """
 
 from __future__ import annotations

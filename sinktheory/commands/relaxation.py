@@ -178,8 +178,8 @@ def run(args: argparse.Namespace) -> Output:
     ]
     if p.extrapolated:
         lines.append("    the relaxation time exceeds 4 times the largest lag: such slow "
-                     "relaxations have come out short by up to a factor 2 (longer lags do not "
-                     "help); measure with --measure RUNS PERIODS")  # fmt: skip
+                     "relaxations have come out short by up to a factor 2; measure with --measure "
+                     "RUNS PERIODS")  # fmt: skip
     data = {"well": described, "prediction": p.as_dict(), "measured": None}
     if measured is not None:
         flag = " (beyond the record: extrapolated, run longer)" if measured.extrapolated else ""
