@@ -23,7 +23,16 @@ Usage::
    part, the 2-D timescales would stop growing with the lag.  Transitions are counted
    from every period of every run and symmetrised (the dynamics is reversible in E_c).
 
-``--quick``: 40 runs, one seed, k = 1, 150 runs in part 2.
+3. Second variables from the paper's start (k = 3, m = 0.2, beta = 0.3 and 0.1, 64 runs
+   x 3000 periods, seed 21, the step of tol 1e-6; the particles' energies once a period,
+   the state 4 times a period): the means given E_c, in bins of E_c, over windows of
+   time, of the energy split's unevenness Q = sum_j (e_j / sum e)^2 (1 / k for an even
+   split, 1 when one particle holds all) and of the transverse share Y of part 2.  If
+   either carried the slow part of the approach, its mean given E_c would keep moving for
+   as long as <E_c> does.
+
+``--quick``: 40 runs, one seed, k = 1, 150 runs in part 2, 16 runs x 1000 periods in
+part 3.
 """
 
 from __future__ import annotations
@@ -129,15 +138,62 @@ def second_variable(runs: int, periods: int, seed: int) -> None:
         print(f"  (E_c, Y), 6 x {m} cells        " + " ".join(f"{x:5.0f}" for x in its))
 
 
+def given_ec(label: str, values: np.ndarray, ec: np.ndarray, periods: int) -> None:
+    """Print the mean of ``values`` (runs, periods) given E_c in five bins, per window."""
+    edges = np.linspace(0.0, 0.5, 6)
+    print(f"  {label}: periods  <E_c>  "
+          + " ".join(f"  E_c {a:.1f}-{b:.1f}  " for a, b in
+                     zip(edges[:-1], edges[1:], strict=True)))  # fmt: skip
+    cuts = [1, 50, 200, 500, 1000, 2000, 3000, periods]
+    for a, b in zip(cuts[:-1], cuts[1:], strict=True):
+        if a >= periods:
+            break
+        cells = []
+        for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+            inside = (ec[:, a:b] >= lo) & (ec[:, a:b] < hi)
+            n = int(inside.sum())
+            cells.append(f"{values[:, a:b][inside].mean():.3f} ({n:6d})" if n > 50 else " " * 14)
+        print(f"    {a:5d}-{b - 1:<5d}  {ec[:, a:b].mean():.3f}  " + "  ".join(cells))
+
+
+def energy_split(runs: int, periods: int, seed: int, beta: float) -> None:
+    """Part 3: the means of Q and Y given E_c over windows of time from the paper's start."""
+    from sinktheory.layout import StateLayout
+    from sinktheory.model import RunSettings, Sink, Well
+    from sinktheory.simulate import simulate
+
+    t0 = time.perf_counter()
+    sink = Sink(Well(0.5, beta, 4), particles=3, mass=0.2)
+    settings = RunSettings(container_energy=0.5, runs=runs, periods=periods, seed=seed)
+    probe = simulate(sink, RunSettings(container_energy=0.5, runs=1, periods=1, seed=seed),
+                     tol=1e-6, progress=False)  # fmt: skip
+    steps = round(2 * math.pi / probe.dt)  # the step of tol 1e-6, 4 samples a period
+    r = simulate(sink, settings, dt=probe.dt, stride=steps // 4, progress=False,
+                 record=("container", "particles", "trajectory"))  # fmt: skip
+    parts, ec = np.asarray(r.particle_energy)[:, :periods], np.asarray(r.container_energy)
+    held = parts.sum(axis=2)
+    q = ((parts / np.where(held > 0, held, 1.0)[..., None]) ** 2).sum(axis=2)
+    lay, tr = StateLayout(3), np.asarray(r.trajectory)
+    ydot2 = (tr[..., lay.ydot] ** 2).sum(axis=-1)
+    share = ydot2 / np.maximum(ydot2 + (tr[..., lay.udot] ** 2).sum(axis=-1), 1e-300)
+    per = (tr.shape[1] - 1) / periods
+    y = np.stack([share[:, round(j * per) : round((j + 1) * per)].mean(axis=1)
+                  for j in range(periods)], axis=1)  # fmt: skip
+    print(f"\n3. k = 3, beta = {beta:g}, {runs} runs x {periods} periods from rest (seed "
+          f"{seed}) [{time.perf_counter() - t0:.0f} s]: means given E_c (samples)")  # fmt: skip
+    given_ec("Q, at the period's start", q, ec, periods)
+    given_ec("Y, over the period", y, ec, periods)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--seeds", type=int, default=2)
     parser.add_argument("--particles", type=int, nargs="+", default=[1, 5])
     args = parser.parse_args()
-    runs, part2 = 100, (600, 256)
+    runs, part2, part3 = 100, (600, 256), (64, 3000)
     if args.quick:
-        runs, part2, args.seeds, args.particles = 40, (150, 128), 1, [1]
+        runs, part2, part3, args.seeds, args.particles = 40, (150, 128), (16, 1000), 1, [1]
     sys.path.insert(0, __file__.rsplit("/", 1)[0])
     from machine import describe
 
@@ -147,6 +203,8 @@ def main() -> None:
         for seed in range(args.seeds):
             shell_part(k, runs, seed)
     second_variable(*part2, seed=0)
+    for beta in (0.3, 0.1):
+        energy_split(*part3, seed=21, beta=beta)
 
 
 if __name__ == "__main__":

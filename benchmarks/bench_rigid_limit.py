@@ -37,8 +37,7 @@ import numpy as np
 from scipy import stats
 
 from sinktheory.billiard.kinetic import kinetic_coefficients, kinetic_relaxation
-from sinktheory.billiard.relaxation import rigid_shell_increments
-from sinktheory.billiard.run import billiard
+from sinktheory.billiard.relaxation import measure_rigid_settling, rigid_shell_increments
 from sinktheory.billiard.table import rigid_table
 from sinktheory.equilibrium.kramers import measure_kramers_moyal
 from sinktheory.equilibrium.law import equilibrium_law
@@ -50,8 +49,7 @@ from sinktheory.equilibrium.prediction import (
     shell_prediction,
     start_total_energy,
 )
-from sinktheory.equilibrium.relaxation import measure_relaxation
-from sinktheory.model import RunSettings, Sink, Well
+from sinktheory.model import Sink, Well
 
 LAGS = [1, 2, 4, 8, 16, 32, 64, 128]
 E0, POINTS, RESAMPLES = 0.5, 12, 199
@@ -86,9 +84,17 @@ def measured(n, k, m, runs, periods, seed):
     if n:
         return measure_settling(Sink(Well(0.5, 0.3, n), particles=k, mass=m), E0,
                                 (runs, periods), seed=seed)[0]  # fmt: skip
-    r = billiard("flat", 0.5, 0.3, particles=k, mass=m,
-                 settings=RunSettings(runs=runs, periods=periods, seed=seed))  # fmt: skip
-    return measure_relaxation(r.container_energy, E0 / (k + 1), resamples=RESAMPLES, seed=seed)
+    return measure_rigid_settling(
+        "flat",
+        0.5,
+        0.3,
+        (runs, periods),
+        particles=k,
+        mass=m,
+        container_energy=E0,
+        seed=seed,
+        resamples=RESAMPLES,
+    )[0]
 
 
 def main() -> None:

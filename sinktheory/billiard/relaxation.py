@@ -34,7 +34,12 @@ from ..errors import ParameterError
 from ..glossary import renamed
 from .table import Table
 
-__all__ = ["predict_rigid_relaxation", "rigid_shell_increments", "rigid_shell_states"]
+__all__ = [
+    "measure_rigid_settling",
+    "predict_rigid_relaxation",
+    "rigid_shell_increments",
+    "rigid_shell_states",
+]
 
 
 @renamed(energy="total_energy")
@@ -76,16 +81,20 @@ def predict_rigid_relaxation(
     mass: float = 0.2,
     container_energy: float = 0.5,
     fraction: float = 0.05,
+    periods: int | None = None,
     shell_energies: int = 12,
     shell_runs: int = 100,
     lag: int = 128,
     seed: int = 0,
+    level: float = 0.95,
+    resamples: int = 199,
 ):
     """The slow-mode prediction of <E_c>(t) from the paper's start (container at E0 =
     ``container_energy``, particles at rest) with rigid walls: ``shell_energies`` x
     ``shell_runs`` billiards from the rigid shell (module docstring; one child of
     ``SeedSequence(seed)`` per energy) over ``lag`` periods, read as
-    :func:`~sinktheory.equilibrium.prediction.predict_relaxation` reads the soft-wall runs.
+    :func:`~sinktheory.equilibrium.prediction.predict_relaxation` reads the soft-wall runs
+    (``periods``, ``level`` and ``resamples`` as there).
 
     Examples
     --------
@@ -96,7 +105,12 @@ def predict_rigid_relaxation(
     """
     from scipy import stats
 
-    from ..equilibrium.prediction import check_fraction, shell_lags, shell_prediction
+    from ..equilibrium.prediction import (
+        check_fraction,
+        check_reading,
+        shell_lags,
+        shell_prediction,
+    )
     from .table import rigid_table
 
     fraction = check_fraction(fraction)
@@ -107,11 +121,50 @@ def predict_rigid_relaxation(
     runs = v.positive_int("shell_runs", shell_runs, minimum=4)
     lag = v.positive_int("lag", lag, minimum=8)
     seed = v.positive_int("seed", seed, minimum=0)
+    periods, level, resamples = check_reading(periods, level, resamples)
     s, inc, message = rigid_shell_increments(rigid_table(shape, alpha, beta), k, mass, e,
                                              points, runs, shell_lags(lag), seed)  # fmt: skip
     return shell_prediction(s, inc, shell_lags(lag), stats.beta(1, k).pdf, 1 / (k + 1),
                             start=e, total=e, particles=k, mass=mass, lag=lag,
-                            coefficients=message, fraction=fraction, seed=seed)  # fmt: skip
+                            coefficients=message, fraction=fraction, periods=periods,
+                            seed=seed, level=level, resamples=resamples)  # fmt: skip
+
+
+def measure_rigid_settling(shape: str, alpha: float, beta: float, measure, *,
+                           particles: int = 1, mass: float = 0.2,
+                           container_energy: float = 0.5, fraction: float = 0.05,
+                           seed: int = 0, resamples: int = 199):  # fmt: skip
+    """(:class:`~sinktheory.equilibrium.relaxation.Relaxation`, the
+    :class:`~sinktheory.billiard.run.BilliardResult`) of ``measure = (runs, periods)``
+    rigid billiards from the paper's start (container at E0 = ``container_energy``,
+    particles at rest at the seeded start positions), read by
+    :func:`~sinktheory.equilibrium.prediction.read_settling` against the rigid law's mean
+    <E_c> = E / (k + 1): the measured counterpart of :func:`predict_rigid_relaxation`.
+
+    Examples
+    --------
+    >>> r, runs = measure_rigid_settling("flat", 0.5, 0.3, (8, 600), seed=2, resamples=20)
+    >>> round(r.target, 12), runs.container_energy.shape
+    (0.25, (8, 601))
+    """
+    from ..equilibrium.prediction import check_fraction, read_settling
+    from ..model import RunSettings
+    from .run import billiard
+
+    fraction = check_fraction(fraction)
+    try:
+        runs, periods = measure
+    except (TypeError, ValueError):
+        raise ParameterError("measure", measure, "a pair (runs, periods)") from None
+    runs = v.positive_int("measure", runs, minimum=3)
+    periods = v.positive_int("measure", periods, minimum=24)
+    settings = RunSettings(container_energy=container_energy, runs=runs, periods=periods,
+                           seed=seed)  # fmt: skip
+    result = billiard(shape, alpha, beta, particles=particles, mass=mass, settings=settings)
+    total = float(np.mean(result.total_energy[:, 0]))
+    r = read_settling(result.container_energy, total / (result.particles + 1),
+                      fraction=fraction, seed=seed, resamples=resamples)  # fmt: skip
+    return r, result
 
 
 @renamed(energy="total_energy")

@@ -154,7 +154,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     o = parser.add_argument_group("where")
     o.add_argument("--out", required=True, metavar="STORE", help="Zarr store of the results")
     o.add_argument("--report", default=None, metavar="DIR", help="charts, table, report.md")
-    o.add_argument("--top", type=number, default=10, help="designs in the report (10)")
+    o.add_argument(
+        "--top", type=number, default=10,
+        help="designs in the report and the JSON, each with its predicted settling time (10)",
+    )  # fmt: skip
     o.add_argument("--resume", action="store_true", help="continue the sweep in STORE")
     o.add_argument(
         "--repair",
@@ -228,7 +231,16 @@ def _run(args: argparse.Namespace) -> Output:
     run = DesignRun.of(done, est, repaired)
     ds, ranked, repaired = run.dataset, run.ranked, run.repaired
     dims = list(ds.done.dims)
-    best = [_row(r, dims) for r in ranked[:top]]
+    predicted = None
+    if ranked and (report is not None or args.json):  # the report's and the JSON's column
+        import time
+
+        from ..design.settling import settling_column
+
+        start = time.perf_counter()
+        predicted = settling_column(ranked, ds.attrs, top), time.perf_counter() - start
+    best = [_row(r, dims, None if predicted is None else predicted[0].get(r["rank"]))
+            for r in ranked[:top]]  # fmt: skip
     data = {
         "store": str(done.store),
         "report": None if report is None else str(report),
@@ -265,7 +277,9 @@ def _run(args: argparse.Namespace) -> Output:
         from ..design.report import write_report
 
         writers[report] = as_directory(
-            lambda path: write_report(ds, path, ranked=ranked, top=top, run=run)
+            lambda path: write_report(
+                ds, path, ranked=ranked, top=top, run=run, predicted=predicted
+            )
         )
         lines.append(f"report: {report / 'report.md'}")
     return Output(data, "\n".join(lines), writers)
@@ -275,10 +289,13 @@ def _n(x: float | None, digits: int = 3, missing: str = "n/a") -> str:
     return missing if x is None else f"{x:.{digits}f}"
 
 
-def _row(r: dict, dims: list[str]) -> dict:
-    """A ranked design as JSON-ready plain values (NaN and inf as null)."""
+def _row(r: dict, dims: list[str], settling=None) -> dict:
+    """A ranked design as JSON-ready plain values (NaN and inf as null), with its
+    predicted settling (``settling``: :func:`~sinktheory.design.settling.settling_fields`
+    of it)."""
     from ..design.measures import VERDICTS
     from ..design.report import damper
+    from ..design.settling import settling_fields
 
     def f(x):
         return x if isinstance(x, float) and math.isfinite(x) else None
@@ -305,4 +322,5 @@ def _row(r: dict, dims: list[str]) -> dict:
         "zeta_eq": f(r["zeta_eq"]),
         "zeta_eq_se": f(r["zeta_eq_se"]),
         "damper": damper(r),
+        **settling_fields(settling),
     }

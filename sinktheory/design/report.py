@@ -37,7 +37,7 @@ from ..equilibrium.prediction import MODEL_FACTOR
 from ..plot.design import label, swept
 from .measures import VERDICTS
 from .ranking import rank
-from .settling import settling_column, settling_text
+from .settling import SETTLING_FIELDS, settling_column, settling_fields, settling_text
 
 __all__ = ["damper", "fmt", "is_damped", "lambda1_text", "report_text", "table_rows", "write_csv",
            "write_report"]  # fmt: skip
@@ -254,7 +254,9 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
             f"factor {MODEL_FACTOR:g} either way; '+': a slow relaxation, which the model "
             "predicts short (measure it: sinktheory relaxation --measure); n/a for 1-D "
             "attachments and damped contact (no law to settle to); "
-            f"{len(settling)} prediction(s) in {settling_seconds:.0f} s;",
+            f"{len(settling)} prediction(s) in {settling_seconds:.0f} s; designs.csv (and the "
+            "JSON of `sinktheory design`) has them as settles, settles_low, settles_high and "
+            "settles_note, empty below the top rows;",
         ]
     if ranked and is_damped(ranked):
         lines += [
@@ -279,25 +281,35 @@ def report_text(ds, ranked: list | None = None, *, top: int = 10, run=None, figu
     return "\n".join(lines)
 
 
-def write_csv(ranked: list, dims: list[str], path: Path) -> None:
-    """Every ranked design with all its measures, one row each."""
+def write_csv(ranked: list, dims: list[str], path: Path, settling=None) -> None:
+    """Every ranked design with all its measures, one row each; with ``settling`` (rank ->
+    predicted settling, :func:`~.settling.settling_column`) also the columns
+    :data:`~.settling.SETTLING_FIELDS` (:func:`~.settling.settling_fields`; empty numbers
+    for designs without a prediction)."""
     if not ranked:
         Path(path).write_text("")
         return
     skip = ("rank", "layer", "lambda1_split", *dims)  # the split's numbers have columns
     keys = ["rank", "layer"] + dims + [k for k in ranked[0] if k not in skip]
+    extra = list(SETTLING_FIELDS) if settling is not None else []
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow([k if isinstance(k, str) else f"{k[0]}@{k[1]:g}" for k in keys])
+        w.writerow([k if isinstance(k, str) else f"{k[0]}@{k[1]:g}" for k in keys] + extra)
         for r in ranked:
-            w.writerow([r.get(k) for k in keys])
+            row = [r.get(k) for k in keys]
+            if settling is not None:
+                row += list(settling_fields(settling.get(r["rank"])).values())
+            w.writerow(row)
 
 
 def write_report(ds, directory, *, ranked: list | None = None, top: int = 10, run=None,
-                 settling: bool = True) -> Path:  # fmt: skip
+                 settling: bool = True, predicted=None) -> Path:  # fmt: skip
     """Write the charts, ``designs.csv`` and ``report.md`` of a design sweep into
     ``directory`` (created if needed), with the predicted settling time of the ``top``
-    designs unless ``settling`` is False.  Returns the path of ``report.md``."""
+    designs (in the report's table and designs.csv) unless ``settling`` is False;
+    ``predicted``: those predictions made already (``(rank -> settling, seconds)`` from
+    :func:`~.settling.settling_column`), else they are made here.  Returns the path of
+    ``report.md``."""
     from ..plot import design as plots
 
     out = Path(directory)
@@ -315,12 +327,14 @@ def write_report(ds, directory, *, ranked: list | None = None, top: int = 10, ru
             for name, fig in plots.heatmaps(ds).items():
                 fig.savefig(out / name, dpi=110)
                 figures.append(name)
-    write_csv(ranked, dims, out / "designs.csv")
-    predicted, start = None, time.perf_counter()
+    column, seconds = None, 0.0
     if settling and ranked:
-        predicted = settling_column(ranked, ds.attrs, top)
+        if predicted is None:
+            start = time.perf_counter()
+            predicted = settling_column(ranked, ds.attrs, top), time.perf_counter() - start
+        column, seconds = predicted
+    write_csv(ranked, dims, out / "designs.csv", column)
     path = out / "report.md"
     path.write_text(report_text(ds, ranked, top=top, run=run, figures=figures,
-                                settling=predicted,
-                                settling_seconds=time.perf_counter() - start))  # fmt: skip
+                                settling=column, settling_seconds=seconds))  # fmt: skip
     return path

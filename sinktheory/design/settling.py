@@ -32,7 +32,17 @@ from collections.abc import Mapping
 from ..equilibrium.prediction import Settling, settling_periods
 from ..errors import NumericalError
 
-__all__ = ["predicted_settling", "settling_column", "settling_text"]
+__all__ = [
+    "predicted_settling",
+    "settling_column",
+    "settling_fields",
+    "settling_text",
+    "SETTLING_FIELDS",
+]
+
+#: The columns of ``designs.csv`` and the keys of the design JSON that hold a design's
+#: predicted settling (:func:`settling_fields`).
+SETTLING_FIELDS = ("settles", "settles_low", "settles_high", "settles_note")
 
 
 def predicted_settling(point: Mapping, *, seed: int = 0, **shell) -> Settling | str:
@@ -56,6 +66,28 @@ def predicted_settling(point: Mapping, *, seed: int = 0, **shell) -> Settling | 
 def settling_column(ranked: list, attrs: Mapping, top: int, **shell) -> dict[int, Settling | str]:
     """rank -> :func:`predicted_settling` of the first ``top`` ranked designs."""
     return {r["rank"]: predicted_settling({**attrs, **r}, **shell) for r in ranked[:top]}
+
+
+def settling_fields(s: Settling | str | None) -> dict:
+    """A design's predicted settling as plain values under :data:`SETTLING_FIELDS`: the
+    settling time in periods and its interval (widened by the model's factor), and a note:
+    ``"predicted"``, ``"predicted, probably short"`` (flagged ``+`` in the report), or the
+    reason there is no number (``"not predicted"`` for None: a design below the top rows).
+
+    Examples
+    --------
+    >>> settling_fields(Settling(433.2, 149.0, 1265.0, "predicted", True, 0.05, ""))
+    {'settles': 433.2, 'settles_low': 149.0, 'settles_high': 1265.0, \
+'settles_note': 'predicted, probably short'}
+    >>> settling_fields("n/a: 1-D attachment")["settles"] is None
+    True
+    """
+    if s is None or isinstance(s, str):
+        values = (None, None, None, "not predicted" if s is None else s)
+    else:
+        note = s.source + (", probably short" if s.extrapolated else "")
+        values = (float(s.periods), float(s.low), float(s.high), note)
+    return dict(zip(SETTLING_FIELDS, values, strict=True))
 
 
 def settling_text(s: Settling | str) -> str:

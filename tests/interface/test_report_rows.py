@@ -39,13 +39,13 @@ def test_horizon_spans_three_measured_settling_times():
 
 def test_a_setup_without_a_stored_measurement_is_predicted_and_says_so():
     """Fig. 8's well with two particles is not stored: its settling time is predicted, and
-    the prediction's interval covers the one measured in docs/guide/relaxation.inc (1146,
-    789-1612, 32 runs x 3905 periods, seed 1)."""
+    the prediction's interval covers the one measured in docs/guide/relaxation.inc (1380,
+    684-2739, 32 runs x 3970 periods, seed 1)."""
     key = ("flat", 0.5, 0.3, 4, 2)
     assert key not in SETTLING
     s = settling_time(*key)
     assert s.source == "predicted" and describe(s).startswith("predicted ")
-    assert s.low <= 789 and 1612 <= s.high
+    assert s.low <= 684 and 2739 <= s.high
     h = horizon(*key)
     assert h % 50 == 0 and max(FACTOR * s.periods, s.high) <= h
     assert describe(SETTLING[("flat", 0.5, 0.3, 4, 5)]).startswith("measured 5241 ")
