@@ -312,8 +312,8 @@ def points(points: list) -> list[dict]:
     (:func:`sinktheory.bifurcation.sections`)."""
     groups: dict[tuple, list[int]] = {}
     for i, (p, _) in enumerate(points):
-        same = ("shape", "n", "transient", "count", "quantity", "container_energy")
-        key = tuple(p[name] for name in same)
+        same = ("shape", "well", "n", "transient", "count", "quantity", "container_energy")
+        key = tuple(p.get(name) for name in same)  # a user's well: its text, no shape
         groups.setdefault(key, []).append(i)
     out: list = [None] * len(points)
     for members in groups.values():

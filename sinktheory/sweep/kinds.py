@@ -189,21 +189,36 @@ class Kind:
     batch: int = 1
     #: Rough seconds a point takes, to decide whether local processes are worth starting.
     cost: Callable[[dict], float] = lambda p: 1.0
+    #: Whether the kind takes a user's well (``well``, see :meth:`complete`).
+    user_well: bool = False
 
     def complete(self, given: Mapping[str, Any]) -> dict[str, Any]:
         """Check names, add defaults, coerce types (values may be lists of values).  An old
         name (:data:`sinktheory.glossary.RENAMED_PARAMETERS`) is taken for its new one,
-        with a DeprecationWarning."""
+        with a DeprecationWarning.
+
+        ``well`` (a :class:`~sinktheory.userwell.UserWell`, or the TOML text of its well
+        file) puts a user's well in place of the shape parameters :data:`WELL`: its own
+        parameters, with its defaults, take their place (each may be swept), and the
+        well's text (:func:`~sinktheory.userwell.well_text`) becomes the fixed parameter
+        ``well``, so that the store keeps it and every worker rebuilds the same well."""
         given = _modern_names(given)
+        table, own = self.params, None
+        if "well" in given:
+            given = dict(given)
+            given["well"], table, own = self._with_well(given["well"])
         for name in given:
-            if name not in self.params:
+            if name not in table and own is not None and name in WELL:
+                raise ParameterError(name, given[name], "left out beside a well (it defines "
+                                     f"the shape; its parameters: {', '.join(own) or 'none'})")  # fmt: skip
+            if name not in table:
                 raise ParameterError(
                     name,
                     given[name],
-                    f"a parameter of a {self.name} sweep: {', '.join(sorted(self.params))}",
+                    f"a parameter of a {self.name} sweep: {', '.join(sorted(table))}",
                 )
         out = {}
-        for name, p in self.params.items():
+        for name, p in table.items():
             if name not in given:
                 if p.default is REQUIRED:
                     raise ParameterError(name, None, "given (it has no default)")
@@ -227,6 +242,31 @@ class Kind:
             else:
                 out[name] = p.coerce(name, value)
         return out
+
+
+    def _with_well(self, well: Any) -> tuple[str, dict[str, Param], tuple[str, ...]]:
+        """(the well's text, this kind's parameters with the well's in place of WELL, the
+        well's parameter names)."""
+        from ..userwell import UserWell, read_well, well_text
+
+        if not self.user_well:
+            takes = ", ".join(k.name for k in KINDS.values() if k.user_well)
+            raise ParameterError("well", getattr(well, "name", well), f"left out of a "
+                                 f"{self.name} sweep (the kinds that take a well: {takes})")  # fmt: skip
+        if isinstance(well, str):
+            well = read_well(well)
+        if not isinstance(well, UserWell):
+            raise ParameterError("well", well, "a sinktheory.userwell.UserWell or its TOML text")
+        own = {name: p for name, p in self.params.items() if name not in WELL}
+        clash = [name for name in well.parameter_names if name in own or name == "well"]
+        if clash:
+            raise ParameterError(
+                "well", well.name, f"a well whose parameters are not named like the "
+                f"{self.name} sweep's settings ({', '.join(clash)} is one)",
+            )  # fmt: skip
+        table = {p.name: Param(float, p.default) for p in well.parameters}
+        table = {**table, **own, "well": Param(str, sweepable=False)}
+        return well_text(well), table, well.parameter_names
 
 
 def _modern_names(given: Mapping[str, Any]) -> dict[str, Any]:
@@ -357,6 +397,7 @@ KINDS = {
         batch=256,
         cost=lambda p: SECONDS_PER_PERIOD * (p["transient"] + p["count"]),
         compute_many=_lazy(".bifurcation", "points"),
+        user_well=True,
     ),
     "ensemble": Kind(
         "ensemble",
@@ -381,6 +422,7 @@ KINDS = {
         _lazy(".simulate", "point"),
         lambda p: {"period": np.arange(p["periods"] + 1)},
         cost=lambda p: SECONDS_PER_PERIOD * p["periods"] * p["runs"] * p["particles"],
+        user_well=True,
     ),
     "design": Kind(
         "design",
