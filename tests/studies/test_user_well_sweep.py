@@ -124,3 +124,16 @@ def test_a_kind_that_takes_no_well_says_which_do():
     with pytest.raises(ParameterError, match=r"^well = 'hh' .* left out of a floquet sweep "
                        r"\(the kinds that take a well: bifurcation, ensemble"):
         Sweep.make("floquet", {"well": UserWell("hh", HH, {})})
+
+
+def test_well_bifurcation_over_the_flat_well_s_own_beta_is_the_registry_diagram():
+    from sinktheory.bifurcation import bifurcation, well_bifurcation
+
+    user = well_bifurcation(WellAt(FLAT, n=4), "beta", [0.1, 0.3], **SECTIONS)
+    registry = bifurcation([0.1, 0.3], alpha=0.5, n=4, **SECTIONS)
+    np.testing.assert_allclose(user.section, registry.section, rtol=1e-12, atol=0)
+    assert user.parameters == {"alpha": 0.5, "gamma": 1.0, "n": 4.0}
+    with pytest.raises(ParameterError, match=r"^beta: 0.5 is refused: outside the range"):
+        well_bifurcation(WellAt(FLAT), "beta", [0.1, 0.5], **SECTIONS)  # its range ends at 0.45
+    with pytest.raises(ParameterError, match=r"^parameter = 'b' .* one of 'alpha', 'beta'"):
+        well_bifurcation(WellAt(FLAT), "b", [0.1], **SECTIONS)
