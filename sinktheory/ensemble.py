@@ -449,19 +449,30 @@ def sink_of(p: Mapping) -> Sink:
     (5, 4)
 
     A point of a user's well holds the well's text (``well``, see
-    :func:`sinktheory.userwell.well_text`) and its parameters' values by name instead:
+    :func:`sinktheory.userwell.well_text`) and its parameters' values by name instead (a
+    design point: ``wells``, the texts of the users' wells on its shape axis by name;
+    the well's parameters named like alpha, beta, n, gamma take the point's values):
 
     >>> from sinktheory.userwell import UserWell, well_text
     >>> bowl = well_text(UserWell("bowl", "k*(x**2 + y**2)/2", {"k": 1}))
     >>> sink_of(dict(well=bowl, k=2.0, particles=1, mass=0.2)).well
     WellAt(bowl: k=2)
     """
-    if "well" in p:
-        well = _well_at(p["well"], tuple(sorted((k, x) for k, x in p.items()
-                                               if k in _read_well(p["well"]).parameter_names)))  # fmt: skip
-    else:
+    text = p["well"] if "well" in p else _shape_wells(p.get("wells")).get(p.get("shape"))
+    if text is None:
         well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
+    else:
+        names = _read_well(text).parameter_names
+        well = _well_at(text, tuple((k, p[k]) for k in names if k in p))
     return Sink(well, particles=p["particles"], mass=p["mass"])
+
+
+@functools.lru_cache(maxsize=16)
+def _shape_wells(wells: str | None) -> dict[str, str]:
+    """A point's users' wells on its shape axis (``wells``: JSON, name -> text), by name."""
+    import json
+
+    return {} if wells is None else json.loads(wells)
 
 
 @functools.lru_cache(maxsize=16)

@@ -532,6 +532,20 @@ class UserWell:
         """V(x, y) with the parameters' values substituted (defaults unless given)."""
         return self.potential.subs(self.values(**given))
 
+    def with_defaults(self, **given: float) -> UserWell:
+        """This well with the defaults of the parameters in ``given`` replaced (each
+        within its range; unknown names refused).
+
+        Examples
+        --------
+        >>> UserWell("bowl", "k*(x**2 + y**2)/2", {"k": 1}).with_defaults(k=3).parameters
+        (Parameter(name='k', default=3.0, range=(-inf, inf)),)
+        """
+        self.values(**given)  # names and ranges checked
+        params = tuple(Parameter(p.name, given.get(p.name, p.default), p.range)
+                       for p in self.parameters)  # fmt: skip
+        return UserWell(self.name, self.potential, params, self.wall_ratios)
+
 
 def _parameter(name: object, spec: object) -> Parameter:
     if isinstance(spec, Parameter):

@@ -6,7 +6,9 @@ container energy, the measures are :func:`~sinktheory.design.measures.design_mea
 (bootstrap seeded from the same seed), and lambda_1 is the mean over the first
 ``lyapunov_runs`` runs (same start positions) of :func:`sinktheory.chaos.chaos` over
 ``lyapunov_periods`` periods -- a finite-time estimate per unit time (times T = 2 pi:
-the growth exponent per period).  ``lyapunov_runs = 0`` leaves it out (NaN).
+the growth exponent per period).  ``lyapunov_runs = 0`` leaves it out (NaN), and so
+does a user's well on the shape axis (:func:`user_shape`; the chaos indicators take a
+registered shape).  A user's well must declare n, which the equipartition share reads.
 
 With a contact damping c0 = ``damping`` > 0 the ensemble is
 :func:`sinktheory.damped.simulate_inelastic` instead (same start states, same
@@ -60,6 +62,7 @@ Examples
 
 from __future__ import annotations
 
+import json
 import math
 from typing import Any
 
@@ -83,6 +86,7 @@ __all__ = [
     "lyapunov",
     "MAX_BOOTSTRAP",
     "SAMPLES",
+    "user_shape",
 ]
 
 #: Results of a point that come from its ensemble (besides the container energy).
@@ -125,6 +129,8 @@ def check(p: dict) -> None:
     against the work limit (:mod:`sinktheory.worklimit`)."""
     sink = sink_of(p)
     settings = settings_of(p, 0)
+    if hasattr(sink.well, "definition"):  # a user's well on the shape axis
+        _check_user_well(p, sink.well)
     if p.get("attachment", "well") != "well":
         attachment_of(p)
     settings.check(sink)
@@ -174,14 +180,33 @@ def check(p: dict) -> None:
     )
 
 
+def user_shape(p: dict) -> bool:
+    """Whether the point's shape is a user's well (named in its ``wells``)."""
+    return "wells" in p and p["shape"] in json.loads(p["wells"])
+
+
+def _check_user_well(p: dict, well) -> None:
+    """A user's well as a design: it declares n (the equipartition measure reads it) and
+    is the 2-D well itself (the 1-D attachments are built from a registered shape)."""
+    if "n" not in well.parameters:
+        raise ParameterError("shape", p["shape"], "a well that declares the wall exponent n",
+                             why="the design's equipartition share E/(1 + k (1 + 1/n)) reads "
+                             "it")  # fmt: skip
+    if p.get("attachment", "well") != "well":
+        raise ParameterError("attachment", p["attachment"], f"well with the user's well "
+                             f"{p['shape']} (the 1-D attachments take a registered shape)")  # fmt: skip
+
+
 def lyapunov(p: dict, seed: int) -> tuple[float, float]:
     """Mean lambda_1 (per unit time) of the first ``lyapunov_runs`` runs and its s.e.
 
     NaN, NaN when ``lyapunov_runs`` is 0, the contact is damped (the chaos indicators are
-    of the conservative model), the attachment is 1-D or :mod:`sinktheory.chaos` cannot
-    be imported.
+    of the conservative model), the attachment is 1-D, the well is a user's (the chaos
+    indicators take a registered shape) or :mod:`sinktheory.chaos` cannot be imported.
     """
     if not p["lyapunov_runs"] or p["damping"] > 0 or p.get("attachment", "well") != "well":
+        return math.nan, math.nan
+    if user_shape(p):
         return math.nan, math.nan
     try:
         from ..chaos import chaos

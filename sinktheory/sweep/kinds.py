@@ -50,6 +50,7 @@ sweep: alpha, amplitude, beta, gamma, n, rtol, shape
 
 from __future__ import annotations
 
+import json
 import numbers
 import warnings
 from collections.abc import Callable, Mapping
@@ -191,6 +192,9 @@ class Kind:
     cost: Callable[[dict], float] = lambda p: 1.0
     #: Whether the kind takes a user's well (``well``, see :meth:`complete`).
     user_well: bool = False
+    #: Whether ``shape`` also takes users' wells, beside the registered shapes (see
+    #: :meth:`complete`).
+    shape_wells: bool = False
 
     def complete(self, given: Mapping[str, Any]) -> dict[str, Any]:
         """Check names, add defaults, coerce types (values may be lists of values).  An old
@@ -201,12 +205,26 @@ class Kind:
         file) puts a user's well in place of the shape parameters :data:`WELL`: its own
         parameters, with its defaults, take their place (each may be swept), and the
         well's text (:func:`~sinktheory.userwell.well_text`) becomes the fixed parameter
-        ``well``, so that the store keeps it and every worker rebuilds the same well."""
+        ``well``, so that the store keeps it and every worker rebuilds the same well.
+
+        A kind whose ``shape`` takes users' wells (``shape_wells``: design) takes a
+        :class:`~sinktheory.userwell.UserWell` among the values of ``shape``: the well's
+        name labels it, and the fixed parameter ``wells`` (JSON: name -> the well's text)
+        keeps its definition.  Its parameters named like the kind's alpha, beta, n or
+        gamma take the point's values, the others their defaults."""
         given = _modern_names(given)
         table, own = self.params, None
         if "well" in given:
             given = dict(given)
             given["well"], table, own = self._with_well(given["well"])
+        if self.shape_wells and "shape" in given:
+            given = dict(given)
+            given["shape"], wells = _shape_wells(given["shape"])
+            if wells:
+                names = (*table["shape"].options, *sorted(wells))
+                table = {**table, "shape": Param(str, "flat", names),
+                         "wells": Param(str, sweepable=False)}  # fmt: skip
+                given["wells"] = json.dumps(wells, sort_keys=True)
         for name in given:
             if name not in table and own is not None and name in WELL:
                 raise ParameterError(name, given[name], "left out beside a well (it defines "
@@ -267,6 +285,24 @@ class Kind:
         table = {p.name: Param(float, p.default) for p in well.parameters}
         table = {**table, **own, "well": Param(str, sweepable=False)}
         return well_text(well), table, well.parameter_names
+
+
+def _shape_wells(shape: Any) -> tuple[Any, dict[str, str]]:
+    """``shape`` with each UserWell among its values replaced by its name, and the wells'
+    texts by name (two different wells of one name refused)."""
+    from ..userwell import UserWell, well_text
+
+    many = isinstance(shape, list | tuple | np.ndarray)
+    values = list(np.asarray(shape, dtype=object).ravel()) if many else [shape]
+    wells: dict[str, str] = {}
+    for i, value in enumerate(values):
+        if isinstance(value, UserWell):
+            text = well_text(value)
+            if wells.setdefault(value.name, text) != text:
+                raise ParameterError("shape", value.name, "wells of different names (two "
+                                     "different wells are called so)")  # fmt: skip
+            values[i] = value.name
+    return (values if many else values[0]), wells
 
 
 def _modern_names(given: Mapping[str, Any]) -> dict[str, Any]:
@@ -457,6 +493,7 @@ KINDS = {
             * p["particles"]
             * (p["periods"] * p["runs"] + 2 * p["lyapunov_periods"] * p["lyapunov_runs"])
         ),
+        shape_wells=True,
     ),
 }
 

@@ -145,6 +145,8 @@ class Sweep:
             from ..userwell import read_well
 
             well = f" in the well {read_well(fixed.pop('well')).name}"
+        if "wells" in fixed:  # users' wells on the shape axis: their texts are in the store
+            fixed["wells"] = f"{len(json.loads(fixed['wells']))} user's well(s), in the store"
         return f"{self.kind.name} sweep{well} over {swept}; fixed {json.dumps(fixed)}"
 
 
