@@ -33,6 +33,7 @@ from ._common import (
     add_work_limit,
     number,
     png_path,
+    user_well_from_args,
     well_from_args,
 )
 
@@ -43,7 +44,7 @@ HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser)
+    add_well_arguments(parser, well_file=True)
     g = parser.add_argument_group("normal mode")
     g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
     g.add_argument(
@@ -125,6 +126,12 @@ def run(args: argparse.Namespace) -> Output:
     from ..model import Sink
 
     _check(args)
+    user = user_well_from_args(args)
+    if user is not None:  # refused, with the reason (y = 0 not invariant, or the guesses)
+        from ..nnm.modes import check_user_well
+        from ..wellat import WellAt
+
+        check_user_well(WellAt(user[0], **user[1]))
     well = well_from_args(args)
     sink = Sink(well, particles=args.particles, mass=args.mass)
     plot = png_path("plot", args.plot)

@@ -41,6 +41,7 @@ __all__ = [
     "LLVM_OPTIONS",
     "load",
     "sink_name",
+    "user_well",
     "well_name",
 ]
 
@@ -134,6 +135,18 @@ def well_name(well) -> str:
     name = f"well_{hashlib.sha256(text.encode()).hexdigest()[:12]}"
     _USER_WELLS[name] = well
     return name
+
+
+def user_well(name: str):
+    """The user's well whose engine is called ``name`` (registered by :func:`well_name` in
+    this process), or None.
+
+    Examples
+    --------
+    >>> user_well("sink_flat") is None
+    True
+    """
+    return _USER_WELLS.get(name)
 
 
 def sink_name(shape: str) -> str:

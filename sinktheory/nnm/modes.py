@@ -39,7 +39,14 @@ from ..glossary import renamed
 from ..model import Sink
 from .system import FlowSystem
 
-__all__ = ["fixed_container_amplitude", "linear_modes", "mode_guess", "MODES", "sink_flow"]
+__all__ = [
+    "check_user_well",
+    "fixed_container_amplitude",
+    "linear_modes",
+    "mode_guess",
+    "MODES",
+    "sink_flow",
+]
 
 MODES = ("container", "particle")
 
@@ -53,6 +60,22 @@ def sink_flow(sink: Sink, scheme: str | None = None) -> FlowSystem:
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     kw = {} if scheme is None else {"scheme": scheme}
     return FlowSystem(engine_name(sink), engine_params(sink), members=sink.particles, **kw)
+
+
+def check_user_well(well) -> None:
+    """Refuse a user's well (:class:`~sinktheory.wellat.WellAt`) for the normal modes'
+    start guesses, with the reason: y = 0 not invariant (no normal mode in the plane),
+    else the guesses' formulas, which read a registered shape's alpha, beta, n and gamma.
+    Its flow (:func:`sink_flow`, the engine derived from the user's potential) takes it:
+    :func:`sinktheory.nnm.shoot` finds its periodic orbits from a guess of your own."""
+    report = well.report
+    if not report.y_invariant:
+        raise ParameterError("well", well.shape, "a well in which y = 0 is invariant (normal "
+                             f"modes in the plane y = 0)", why=report.y_invariant_reason)  # fmt: skip
+    raise ParameterError("well", well.shape, "a registered shape for the start guesses of the "
+                         "normal modes (they read alpha, beta, n, gamma); for a user's well "
+                         "shoot from a guess of your own: sinktheory.nnm.shoot(sink_flow(sink), "
+                         "z0, T, steps=...)")  # fmt: skip
 
 
 @renamed(energy="total_energy")
@@ -76,6 +99,8 @@ def mode_guess(sink: Sink, mode: str, total_energy: float) -> tuple[np.ndarray, 
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     v.choice("mode", mode, MODES)
+    if hasattr(sink.well, "definition"):
+        check_user_well(sink.well)
     energy = v.positive("total_energy", total_energy)
     sink.well.check_energy(energy, name="total_energy")  # no particle can hold more than the total
     w, k = sink.well, sink.particles

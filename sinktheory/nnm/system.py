@@ -58,7 +58,15 @@ def parameter_names(system: str) -> tuple[str, ...]:
     --------
     >>> parameter_names("sink_flat"), parameter_names("duffing2")
     (('alpha', 'beta', 'gamma', 'n', 'mu'), ())
+
+    A user's well's engine (:func:`sinktheory.engine.cache.well_name`) takes the well's
+    own parameters in declaration order, then mu.
     """
+    from ..engine.cache import user_well
+
+    well = user_well(system)
+    if well is not None:
+        return (*well.parameter_names, "mu")
     return SINK_PARAMS if system.startswith("sink_") else ()
 
 
