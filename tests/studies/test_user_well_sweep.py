@@ -137,3 +137,10 @@ def test_well_bifurcation_over_the_flat_well_s_own_beta_is_the_registry_diagram(
         well_bifurcation(WellAt(FLAT), "beta", [0.1, 0.5], **SECTIONS)  # its range ends at 0.45
     with pytest.raises(ParameterError, match=r"^parameter = 'b' .* one of 'alpha', 'beta'"):
         well_bifurcation(WellAt(FLAT), "b", [0.1], **SECTIONS)
+
+
+def test_a_well_parameter_named_like_a_setting_of_the_kind_is_refused():
+    runs = UserWell("runny", "runs*(x**2 + y**2)/2", {"runs": 1.0})
+    with pytest.raises(ParameterError, match=r"^well = 'runny' .* not named like the ensemble "
+                       r"sweep's settings \(runs is one\)"):
+        Sweep.make("ensemble", {"well": runs})
