@@ -209,8 +209,9 @@ def _shapes(values: list, items: list[str]) -> list:
         if len(values_) != 1 or not isinstance(values_[0], int | float):
             raise ParameterError("well_param", item, "NAME=VALUE, VALUE a number")
         if name in GRID:
-            raise ParameterError("well_param", item, f"a parameter of a well file other "
-                                 f"than a design axis (give --{name.replace('_', '-')})")  # fmt: skip
+            option = "--" + name.replace("_", "-")
+            raise ParameterError("well_param", item, "a parameter of a well file other than a "
+                                 f"design axis (give {option})")  # fmt: skip
         given[name] = values_[0]
     if not wells:
         if given:

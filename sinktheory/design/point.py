@@ -194,7 +194,8 @@ def _check_user_well(p: dict, well) -> None:
                              "it")  # fmt: skip
     if p.get("attachment", "well") != "well":
         raise ParameterError("attachment", p["attachment"], f"well with the user's well "
-                             f"{p['shape']} (the 1-D attachments take a registered shape)")  # fmt: skip
+                             f"{p['shape']} (the 1-D attachments take a registered "
+                             "shape)")  # fmt: skip
 
 
 def lyapunov(p: dict, seed: int) -> tuple[float, float]:

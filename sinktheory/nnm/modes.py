@@ -73,7 +73,8 @@ def check_user_well(well) -> None:
     report = well.report
     if not report.y_invariant:
         raise ParameterError("well", well.shape, "a well in which y = 0 is invariant (normal "
-                             f"modes in the plane y = 0)", why=report.y_invariant_reason)  # fmt: skip
+                             "modes in the plane y = 0)",
+                             why=report.y_invariant_reason)  # fmt: skip
 
 
 #: Gauss-Legendre nodes and weights on [0, pi/2] for the period on the axis y = 0.
@@ -142,8 +143,10 @@ def _turning_point(well, e: float, side: float) -> float:
             return side * float(brentq(lambda x: float(well.potential(side * x, 0.0)) - e,
                                        0.0, hi, xtol=1e-15))  # fmt: skip
         hi *= 1.01
-    raise NumericalError(f"normal-mode guess: no turning point of V(x, 0) - V(0, 0) = {e:g} "
-                         f"on the {'+' if side > 0 else '-'}x axis of the {well.shape} well")
+    raise NumericalError(
+        f"normal-mode guess: no turning point of V(x, 0) - V(0, 0) = {e:g} "
+        f"on the {'+' if side > 0 else '-'}x axis of the {well.shape} well"
+    )
 
 
 @renamed(energy="total_energy")

@@ -373,8 +373,8 @@ def subspace_indices(system: FlowSystem, subspace: str | None) -> np.ndarray:
         if well is not None:  # a user's well: y = 0 must be invariant at its values
             from ..userwell import y_invariant
 
-            values = well.values(**dict(zip(well.parameter_names, system.params.tolist(),
-                                            strict=False)))  # fmt: skip (the last is mu)
+            given = zip(well.parameter_names, system.params.tolist(), strict=False)  # mu last
+            values = well.values(**dict(given))
             invariant, reason = y_invariant(well.potential.subs(values))
             if not invariant:
                 raise ParameterError("subspace", subspace, f"'full' in the {well.name} well",

@@ -227,8 +227,9 @@ class Kind:
                 given["wells"] = json.dumps(wells, sort_keys=True)
         for name in given:
             if name not in table and own is not None and name in WELL:
+                listed = ", ".join(own) or "none"
                 raise ParameterError(name, given[name], "left out beside a well (it defines "
-                                     f"the shape; its parameters: {', '.join(own) or 'none'})")  # fmt: skip
+                                     f"the shape; its parameters: {listed})")  # fmt: skip
             if name not in table:
                 raise ParameterError(
                     name,
@@ -261,7 +262,6 @@ class Kind:
                 out[name] = p.coerce(name, value)
         return out
 
-
     def _with_well(self, well: Any) -> tuple[str, dict[str, Param], tuple[str, ...]]:
         """(the well's text, this kind's parameters with the well's in place of WELL, the
         well's parameter names)."""
@@ -270,7 +270,8 @@ class Kind:
         if not self.user_well:
             takes = ", ".join(k.name for k in KINDS.values() if k.user_well)
             raise ParameterError("well", getattr(well, "name", well), f"left out of a "
-                                 f"{self.name} sweep (the kinds that take a well: {takes})")  # fmt: skip
+                                 f"{self.name} sweep (the kinds that take a well: "
+                                 f"{takes})")  # fmt: skip
         if isinstance(well, str):
             well = read_well(well)
         if not isinstance(well, UserWell):

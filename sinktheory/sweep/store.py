@@ -631,7 +631,8 @@ def _well_difference(there: str | None, here: str | None) -> str:
 
     Examples
     --------
-    >>> _well_difference('name = "a"\\npotential = "x**2 + y**2"', 'name = "a"\\npotential = "x**2"')
+    >>> a, b = 'name = "a"\\npotential = "x**2 + y**2"', 'name = "a"\\npotential = "x**2"'
+    >>> _well_difference(a, b)
     'the well differs: potential = "x**2 + y**2" there, potential = "x**2" here'
     """
     if there is None or here is None:

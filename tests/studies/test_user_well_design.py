@@ -71,13 +71,24 @@ def test_the_command_line_takes_a_well_file_on_the_shape_axis(tmp_path, capsys, 
 @pytest.mark.parametrize(
     "shape,extra,reason",
     [
-        ("hh", [], "shape = 'hh' is not allowed: must be a well that declares the wall "
-                   "exponent n (the design's equipartition share"),
+        (
+            "hh",
+            [],
+            "shape = 'hh' is not allowed: must be a well that declares the wall "
+            "exponent n (the design's equipartition share",
+        ),
         ("nosuch.toml", [], "must be one of flat, symmetric, circular or a TOML well file"),
-        ("paperflat", ["--well-param", "n=3"], "well_param = 'n=3' is not allowed: must be a "
-                                               "parameter of a well file other than a design axis"),
-        ("paperflat", ["--attachment", "nes"], "attachment = 'nes' is not allowed: must be well "
-                                               "with the user's well paperflat"),
+        (
+            "paperflat",
+            ["--well-param", "n=3"],
+            "well_param = 'n=3' is not allowed: must be a "
+            "parameter of a well file other than a design axis",
+        ),
+        (
+            "paperflat",
+            ["--attachment", "nes"],
+            "attachment = 'nes' is not allowed: must be well with the user's well paperflat",
+        ),
     ],
 )
 def test_a_well_the_design_cannot_use_is_refused(shape, extra, reason, tmp_path, capsys,
@@ -85,5 +96,6 @@ def test_a_well_the_design_cannot_use_is_refused(shape, extra, reason, tmp_path,
     write_well_file(tmp_path, "hh", HH)
     write_well_file(tmp_path, "paperflat", BUILT_IN["flat"], PAPER)
     args = ["design", "--shape", f"{shape}" + (".toml" if "." not in shape else ""),
-            "--beta", "0.3", "--n", "4", "--out", str(tmp_path / "d.zarr"), "--quiet", *extra]  # fmt: skip
+            "--beta", "0.3", "--n", "4", "--out", str(tmp_path / "d.zarr"), "--quiet",
+            *extra]  # fmt: skip
     refused_well(args, capsys, tmp_path, monkeypatch, reason)

@@ -20,7 +20,7 @@ from _cli import BUILT_IN, HH, PAPER, refused_well, run_cli, write_well_file
 from sinktheory import RunSettings, Sink
 from sinktheory.errors import ParameterError
 from sinktheory.simulate import simulate
-from sinktheory.sweep import Sweep, run_sweep
+from sinktheory.sweep import Sweep, bifurcation_diagram, run_sweep
 from sinktheory.userwell import UserWell, load_well
 from sinktheory.wellat import WellAt
 
@@ -36,8 +36,13 @@ def test_a_bifurcation_sweep_of_the_flat_well_typed_by_a_user_is_the_registry():
     registry = run_sweep("bifurcation", {"alpha": 0.5, "beta": betas, "n": 4, **SECTIONS},
                          workers=1, progress=False)  # fmt: skip
     np.testing.assert_allclose(user.section.values, registry.section.values, rtol=1e-12, atol=0)
-    assert user.attrs["n"] == 4.0 and load_well  # the well's own parameters label the store
+    assert user.attrs["n"] == 4.0  # the well's own parameters label the store
     assert "shape" not in user.attrs and user.attrs["well"].startswith('name = "paperflat"')
+    diagram = bifurcation_diagram(user)  # read back as the well's diagram
+    assert (diagram.name, diagram.parameter, diagram.value.tolist()) == ("paperflat", "beta",
+                                                                          betas)  # fmt: skip
+    assert diagram.parameters == {"alpha": 0.5, "gamma": 1.0, "n": 4.0}
+    assert np.array_equal(diagram.section, user.section.values)
 
 
 def test_an_ensemble_sweep_of_henon_heiles_is_simulate_of_its_well():
@@ -98,16 +103,24 @@ def test_the_command_line_resumes_a_well_sweep_and_refuses_a_changed_file(
     changed = write_well_file(tmp_path, "paperflat", BUILT_IN["flat"],
                               {**PAPER, "beta": (0.3, (-5.0, 0.4))})  # fmt: skip
     assert changed == path
-    line = refused_well([*args, "--resume"], capsys, tmp_path, monkeypatch,
-                        "the well differs: beta = { default = 0.3, range = [-5.0, 0.45] } there")
+    line = refused_well(
+        [*args, "--resume"],
+        capsys,
+        tmp_path,
+        monkeypatch,
+        "the well differs: beta = { default = 0.3, range = [-5.0, 0.45] } there",
+    )
     assert "range = [-5.0, 0.4] } here" in line
 
 
 @pytest.mark.parametrize(
     "extra,reason",
     [
-        (["--param", "shape=flat"], "shape = ['flat'] is not allowed: must be left out beside "
-                                    "a well (it defines the shape; its parameters: alpha, beta,"),
+        (
+            ["--param", "shape=flat"],
+            "shape = ['flat'] is not allowed: must be left out beside "
+            "a well (it defines the shape; its parameters: alpha, beta,",
+        ),
         (["--param", "beta=0.1,0.5"], "0.5"),
         (["--well-param", "beta=0.2"], "beta = 'beta=0.2' is not allowed: must be given once"),
     ],
@@ -121,8 +134,11 @@ def test_the_command_line_refuses_a_shape_beside_a_well(extra, reason, tmp_path,
 
 
 def test_a_kind_that_takes_no_well_says_which_do():
-    with pytest.raises(ParameterError, match=r"^well = 'hh' .* left out of a floquet sweep "
-                       r"\(the kinds that take a well: bifurcation, ensemble"):
+    with pytest.raises(
+        ParameterError,
+        match=r"^well = 'hh' .* left out of a floquet sweep "
+        r"\(the kinds that take a well: bifurcation, ensemble",
+    ):
         Sweep.make("floquet", {"well": UserWell("hh", HH, {})})
 
 
@@ -141,6 +157,9 @@ def test_well_bifurcation_over_the_flat_well_s_own_beta_is_the_registry_diagram(
 
 def test_a_well_parameter_named_like_a_setting_of_the_kind_is_refused():
     runs = UserWell("runny", "runs*(x**2 + y**2)/2", {"runs": 1.0})
-    with pytest.raises(ParameterError, match=r"^well = 'runny' .* not named like the ensemble "
-                       r"sweep's settings \(runs is one\)"):
+    with pytest.raises(
+        ParameterError,
+        match=r"^well = 'runny' .* not named like the ensemble "
+        r"sweep's settings \(runs is one\)",
+    ):
         Sweep.make("ensemble", {"well": runs})
