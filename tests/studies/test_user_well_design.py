@@ -48,6 +48,11 @@ def test_the_estimate_counts_one_engine_per_well():
     points = [sweep.grid.point(i) for i in range(sweep.grid.size)]
     assert uncompiled(points) == [well_name(fresh)]
     assert sink_name("flat") not in uncompiled(points)
+    # the report's settling prediction gives its reason for a user's well
+    from sinktheory.design.settling import predicted_settling
+
+    user = next(p for p in points if p["shape"] == "paperflat")
+    assert predicted_settling(user).startswith("n/a: a user's well")
 
 
 def test_the_command_line_takes_a_well_file_on_the_shape_axis(tmp_path, capsys, monkeypatch):
