@@ -56,6 +56,8 @@ __all__ = [
     "section_step",
     "sections",
     "START",
+    "well_bifurcation",
+    "WellBifurcation",
 ]
 
 QUANTITIES = ("y", "energy")
@@ -286,6 +288,92 @@ def bifurcation(
     )
 
 
+@dataclass(frozen=True)
+class WellBifurcation(Result):
+    """Sections (B, count) of a user's well over one of its own parameters
+    (:func:`well_bifurcation`; ``to_dataset``: dims value, sample).
+
+    Attributes
+    ----------
+    name : the well's name
+    parameter : the parameter swept; ``value`` its values
+    parameters : the other parameters' values (by name)
+    section, quantity, mass, container_energy, transient, count : as in
+        :class:`BifurcationDiagram`
+    """
+
+    name: str
+    parameter: str
+    value: np.ndarray
+    section: np.ndarray
+    parameters: dict
+    quantity: str
+    mass: float
+    container_energy: float
+    transient: int
+    count: int
+
+    DIMS = {"value": ("value",), "section": ("value", "sample")}
+
+    def coords(self) -> dict:
+        """Samples are numbered from the end of the transient: j = transient + sample."""
+        return {"sample": np.arange(1, self.count + 1)}
+
+
+def well_bifurcation(
+    well,
+    parameter: str,
+    values,
+    *,
+    mass: float = 0.2,
+    container_energy: float = 0.5,
+    transient: int = 200,
+    count: int = 200,
+    quantity: str = "y",
+) -> WellBifurcation:
+    """Sections of a user's well (a :class:`~sinktheory.wellat.WellAt`) at each of
+    ``values`` of its own parameter ``parameter`` (the others at the WellAt's values):
+    the diagram :func:`bifurcation` draws over beta, from the same start, in one ensemble
+    on the well's engine.  Each value is checked against the parameter's range and the
+    well at it (a basin holding the start's energy) before anything runs.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell
+    >>> from sinktheory.wellat import WellAt
+    >>> quartic = WellAt(UserWell("quartic", "(x**2 + y**2)/2 + c*(x**4 + y**4)", {"c": 1.0}))
+    >>> well_bifurcation(quartic, "beta", [0.5, 1.0])
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: parameter = 'beta' is not allowed: must be one of 'c'
+
+    ``well_bifurcation(quartic, "c", [0.5, 1.0])`` gives the sections (2, 200) at c = 0.5
+    and 1 (its engine is compiled on the well's first use).
+    """
+    from .wellat import WellAt
+
+    if not isinstance(well, WellAt):
+        raise ParameterError("well", well, "a sinktheory.wellat.WellAt (a user's well at "
+                             "its parameter values)")  # fmt: skip
+    names = well.definition.parameter_names
+    if not names:
+        raise ParameterError("parameter", parameter, f"a parameter of the {well.shape} well",
+                             why="it has none")  # fmt: skip
+    parameter = v.choice("parameter", parameter, names)
+    values = v.real_array("values", values, "a non-empty 1-D array of numbers")
+    if values.ndim != 1 or values.size == 0:
+        raise ParameterError("values", f"array of shape {values.shape}", "a non-empty 1-D array")
+    fixed = {k: x for k, x in well.parameters.items() if k != parameter}
+    sinks = [Sink(WellAt(well.definition, **fixed, **{parameter: float(x)}), 1, mass)
+             for x in values]  # fmt: skip
+    for s in sinks:  # refuse bad input before any long computation
+        RunSettings(container_energy=container_energy, runs=1, periods=1).check(s)
+    rows = sections(sinks, transient=transient, count=count, quantity=quantity,
+                    container_energy=container_energy)  # fmt: skip
+    return WellBifurcation(well.shape, parameter, values, rows, fixed, quantity,
+                           sinks[0].mass, container_energy, transient, count)  # fmt: skip
+
+
 # ----------------------------------------------------------------- sweep points
 def check_point(p: dict) -> None:
     """Check a ``bifurcation`` sweep point (one particle; transient, count, quantity,
@@ -312,8 +400,8 @@ def points(points: list) -> list[dict]:
     (:func:`sinktheory.bifurcation.sections`)."""
     groups: dict[tuple, list[int]] = {}
     for i, (p, _) in enumerate(points):
-        same = ("shape", "n", "transient", "count", "quantity", "container_energy")
-        key = tuple(p[name] for name in same)
+        same = ("shape", "well", "n", "transient", "count", "quantity", "container_energy")
+        key = tuple(p.get(name) for name in same)  # a user's well: its text, no shape
         groups.setdefault(key, []).append(i)
     out: list = [None] * len(points)
     for members in groups.values():

@@ -18,6 +18,7 @@ Examples
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -446,9 +447,49 @@ def sink_of(p: Mapping) -> Sink:
     >>> p = dict(alpha=0.5, beta=0.3, n=4, gamma=1.0, shape="flat", particles=5, mass=0.2)
     >>> sink_of(p).particles, sink_of(p).well.n
     (5, 4)
+
+    A point of a user's well holds the well's text (``well``, see
+    :func:`sinktheory.userwell.well_text`) and its parameters' values by name instead (a
+    design point: ``wells``, the texts of the users' wells on its shape axis by name;
+    the well's parameters named like alpha, beta, n, gamma take the point's values):
+
+    >>> from sinktheory.userwell import UserWell, well_text
+    >>> bowl = well_text(UserWell("bowl", "k*(x**2 + y**2)/2", {"k": 1}))
+    >>> sink_of(dict(well=bowl, k=2.0, particles=1, mass=0.2)).well
+    WellAt(bowl: k=2)
     """
-    well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
+    text = p["well"] if "well" in p else _shape_wells(p.get("wells")).get(p.get("shape"))
+    if text is None:
+        well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
+    else:
+        names = _read_well(text).parameter_names
+        well = _well_at(text, tuple((k, p[k]) for k in names if k in p))
     return Sink(well, particles=p["particles"], mass=p["mass"])
+
+
+@functools.lru_cache(maxsize=16)
+def _shape_wells(wells: str | None) -> dict[str, str]:
+    """A point's users' wells on its shape axis (``wells``: JSON, name -> text), by name."""
+    import json
+
+    return {} if wells is None else json.loads(wells)
+
+
+@functools.lru_cache(maxsize=16)
+def _read_well(text: str):
+    """The :class:`~sinktheory.userwell.UserWell` of a well's text (parsed once a process)."""
+    from .userwell import read_well
+
+    return read_well(text)
+
+
+@functools.lru_cache(maxsize=256)
+def _well_at(text: str, values: tuple):
+    """The checked :class:`~sinktheory.wellat.WellAt` of a well's text at ``values``
+    ((name, value) pairs): a point's check and its computation share one check."""
+    from .wellat import WellAt
+
+    return WellAt(_read_well(text), **dict(values))
 
 
 def settings_of(p: Mapping, seed: int) -> RunSettings:

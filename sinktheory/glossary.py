@@ -111,6 +111,7 @@ GLOSSARY: dict[str, str] = {
     "sink": "Sink: the well, the particles and their mass",
     "well": "the particles' well: a Well (shape, alpha, beta, n, gamma), a user's well "
     "definition, or on the command line a well file (--well FILE)",
+    "parameter": "the name of a user's well's own parameter that a diagram runs over",
     "well_param": "NAME=VALUE: a value for a parameter of a well file (--well), within its "
     "range; the file's defaults otherwise",
     "well_check": "a user's well as sinktheory.userwell.check_well found it at the given "

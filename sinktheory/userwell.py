@@ -72,6 +72,7 @@ attribute access ('.system')
 from __future__ import annotations
 
 import ast
+import json
 import math
 import re
 import tomllib
@@ -81,6 +82,7 @@ from pathlib import Path
 
 import numpy as np
 import sympy as sp
+from sympy.printing.str import StrPrinter
 
 from .basin import Basin, guards, numeric
 from .errors import WellDefinitionError
@@ -99,10 +101,12 @@ __all__ = [
     "MAX_FILE_BYTES",
     "MAX_TEXT_LENGTH",
     "parse_potential",
+    "read_well",
     "Parameter",
     "ring_grid",
     "UserWell",
     "WellCheck",
+    "well_text",
     "y_invariant",
 ]
 
@@ -528,6 +532,20 @@ class UserWell:
         """V(x, y) with the parameters' values substituted (defaults unless given)."""
         return self.potential.subs(self.values(**given))
 
+    def with_defaults(self, **given: float) -> UserWell:
+        """This well with the defaults of the parameters in ``given`` replaced (each
+        within its range; unknown names refused).
+
+        Examples
+        --------
+        >>> UserWell("bowl", "k*(x**2 + y**2)/2", {"k": 1}).with_defaults(k=3).parameters
+        (Parameter(name='k', default=3.0, range=(-inf, inf)),)
+        """
+        self.values(**given)  # names and ranges checked
+        params = tuple(Parameter(p.name, given.get(p.name, p.default), p.range)
+                       for p in self.parameters)  # fmt: skip
+        return UserWell(self.name, self.potential, params, self.wall_ratios)
+
 
 def _parameter(name: object, spec: object) -> Parameter:
     if isinstance(spec, Parameter):
@@ -584,10 +602,30 @@ def load_well(path: str | Path) -> UserWell:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise WellDefinitionError(where, str(path), f"not UTF-8 text (byte {exc.start})") from None
+    return read_well(text, where=where, source=str(path))
+
+
+def read_well(text: str, *, where: str = "well", source: str | None = None) -> UserWell:
+    """The :class:`UserWell` of the TOML text of a well file (what :func:`load_well` reads
+    from a file, and what :func:`well_text` writes); ``where`` names it in a refusal
+    (``source``, the text's origin, is quoted when it is not TOML).  No code in it runs.
+
+    Examples
+    --------
+    >>> read_well('name = "bowl"\\npotential = "k*(x**2 + y**2)/2"\\n'
+    ...           '[parameters]\\nk = { default = 1.0 }\\n').parameter_names
+    ('k',)
+    """
+    if not isinstance(text, str):
+        raise WellDefinitionError(where, type(text).__name__, "must be the text of a well file")
+    if len(text.encode()) > MAX_FILE_BYTES:
+        raise WellDefinitionError(where, f"{len(text.encode())} bytes",
+                                  f"larger than {MAX_FILE_BYTES} bytes")  # fmt: skip
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise WellDefinitionError(where, str(path), f"not TOML ({exc})") from None
+        shown = source if source is not None else "the text"
+        raise WellDefinitionError(where, shown, f"not TOML ({exc})") from None
     unknown = [k for k in data if k not in _FILE_KEYS]
     if unknown:
         raise WellDefinitionError(
@@ -626,6 +664,57 @@ def load_well(path: str | Path) -> UserWell:
         return UserWell(data["name"], data["potential"], tuple(params), tuple(ratios))
     except WellDefinitionError as exc:
         raise WellDefinitionError(f"{where}: {exc.name}", exc.value, exc.allowed) from None
+
+
+class _WellPrinter(StrPrinter):
+    """SymPy's str printer, with Euler's number as ``exp(1)`` (the parser knows no ``E``)."""
+
+    def _print_Exp1(self, expr) -> str:
+        return "exp(1)"
+
+
+def well_text(well: UserWell) -> str:
+    """The TOML text of a well file that :func:`read_well` reads back as ``well`` (same
+    name, potential, parameters, defaults, ranges and wall ratios, checked here): how a
+    well travels with the work that uses it -- a sweep stores it in its store and sends
+    it to its workers, which rebuild the well without the original file.  Comments and
+    spelling of the original file are not kept (the text is SymPy's canonical form).
+
+    Examples
+    --------
+    >>> well = UserWell("bowl", "k*(y**2 + x**2)/2 + exp(1)*x**4", {"k": (1, (0.5, 2))})
+    >>> print(well_text(well))
+    name = "bowl"
+    potential = "k*(x**2 + y**2)/2 + exp(1)*x**4"
+    [parameters]
+    k = { default = 1.0, range = [0.5, 2.0] }
+    >>> read_well(well_text(well)) == well
+    True
+    """
+    if not isinstance(well, UserWell):
+        raise WellDefinitionError("well", type(well).__name__, "must be a UserWell")
+    printer = _WellPrinter()
+    lines = [f"name = {json.dumps(well.name)}",
+             f"potential = {json.dumps(printer.doprint(well.potential))}"]  # fmt: skip
+    if well.wall_ratios:
+        ratios = ", ".join(json.dumps(printer.doprint(r)) for r in well.wall_ratios)
+        lines.append(f"wall_ratios = [{ratios}]")
+    lines.append("[parameters]")
+    for p in well.parameters:
+        lo, hi = (_toml_float(b) for b in p.range)
+        lines.append(f"{p.name} = {{ default = {_toml_float(p.default)}, range = [{lo}, {hi}] }}")
+    text = "\n".join(lines)
+    if read_well(text, where=f"well {well.name}") != well:
+        raise WellDefinitionError(
+            f"well {well.name}", "its potential", "does not print as a text that reads back as "
+            "the same expression",
+        )  # fmt: skip
+    return text
+
+
+def _toml_float(value: float) -> str:
+    """A float as TOML writes it: repr's digits (exact round trip), inf as ``inf``."""
+    return repr(float(value)) if math.isfinite(value) else ("inf" if value > 0 else "-inf")
 
 
 # --- checks ---------------------------------------------------------------------------

@@ -97,7 +97,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--shape",
         default="flat",
-        help=f"one or more of {', '.join(SHAPE_NAMES)}, comma-separated (default flat)",
+        help=f"one or more of {', '.join(SHAPE_NAMES)} or TOML well files (FILE.toml: their "
+        "parameters alpha, beta, n, gamma take the design's values), comma-separated "
+        "(default flat)",
+    )
+    g.add_argument(
+        "--well-param",
+        metavar="NAME=VALUE",
+        action="append",
+        default=[],
+        help="a value for a parameter of the well files in --shape other than alpha, beta, n, "
+        "gamma, within its range (repeat for more; the files' defaults otherwise)",
     )
     g.add_argument("--alpha", default="0.5", help="alpha > 0 (default 0.5)")
     g.add_argument("--beta", required=True, help="beta < alpha")
@@ -184,7 +194,46 @@ def params_of(args: argparse.Namespace) -> dict:
             params[name] = value
     horizons = str(args.horizons).strip()
     params["horizons"] = horizons.replace(",", "+")
+    params["shape"] = _shapes(params["shape"], args.well_param)
     return params
+
+
+def _shapes(values: list, items: list[str]) -> list:
+    """The ``--shape`` values with each well file as its
+    :class:`~sinktheory.userwell.UserWell`, its defaults replaced by ``--well-param``."""
+    wells = [value for value in values if value not in SHAPE_NAMES]
+    for value in wells:
+        if not (isinstance(value, str) and value.endswith(".toml") and Path(value).is_file()):
+            raise ParameterError("shape", value, f"one of {', '.join(SHAPE_NAMES)} or a TOML "
+                                 "well file (an existing FILE.toml)")  # fmt: skip
+    given = {}
+    for item in items:
+        name, values_ = parse_param(item)
+        if len(values_) != 1 or not isinstance(values_[0], int | float):
+            raise ParameterError("well_param", item, "NAME=VALUE, VALUE a number")
+        if name in GRID:
+            option = "--" + name.replace("_", "-")
+            raise ParameterError("well_param", item, "a parameter of a well file other than a "
+                                 f"design axis (give {option})")  # fmt: skip
+        given[name] = values_[0]
+    if not wells:
+        if given:
+            raise ParameterError("well_param", items[0], "given with a well file in --shape")
+        return values
+    from ..userwell import load_well
+
+    loaded = {value: load_well(value) for value in wells}
+    for name in given:
+        if not any(name in w.parameter_names for w in loaded.values()):
+            raise ParameterError("well_param", name, "a parameter of a well file in --shape")
+    out = []
+    for value in values:
+        well = loaded.get(value)
+        if well is not None:
+            well = well.with_defaults(**{k: x for k, x in given.items()
+                                         if k in well.parameter_names})  # fmt: skip
+        out.append(value if well is None else well)
+    return out
 
 
 def run(args: argparse.Namespace) -> Output:

@@ -32,7 +32,9 @@ from ._common import (
     add_well_arguments,
     add_work_limit,
     number,
+    parameters_text,
     png_path,
+    user_well_from_args,
     well_from_args,
 )
 
@@ -43,7 +45,7 @@ HELP = HELPS[NAME]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_well_arguments(parser)
+    add_well_arguments(parser, well_file=True)
     g = parser.add_argument_group("normal mode")
     g.add_argument("--particles", type=number, default=1, help="k, integer >= 1 (default 1)")
     g.add_argument(
@@ -59,7 +61,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--continue-in",
         required=True,
         help="energy (the total energy) or beta (or alpha, gamma: any well parameter at "
-        "fixed total energy)",
+        "fixed total energy; with --well, any of the well's own parameters)",
     )
     g.add_argument("--total-energy", type=number, help="total energy H of the start orbit")
     g.add_argument(
@@ -86,8 +88,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_work_limit(parser)
 
 
-def _check(args) -> None:
-    if args.continue_in not in ("energy", "alpha", "beta", "gamma"):
+def _check(args, user=None) -> None:
+    if user is not None:  # a user's well: energy or one of its own parameters
+        names = ("energy", *user.parameter_names)
+        if args.continue_in not in names:
+            raise ParameterError("continue_in", args.continue_in, f"one of {', '.join(names)}")
+        if args.continue_in != "energy" and (args.interval is None or args.total_energy is None):
+            raise ParameterError("interval" if args.interval is None else "total_energy", None,
+                                 f"given with --well and --continue-in {args.continue_in} (a "
+                                 "well's own parameter has no default range)")  # fmt: skip
+        if args.betas is not None:
+            raise ParameterError("betas", args.betas, "left out with --well (the chart is "
+                                 "scored against a chaos map of a registered shape)")  # fmt: skip
+    elif args.continue_in not in ("energy", "alpha", "beta", "gamma"):
         raise ParameterError("continue_in", args.continue_in, "energy, beta, alpha or gamma")
     if args.mode not in (None, "container", "particle"):
         raise ParameterError("mode", args.mode, "container or particle")
@@ -124,8 +137,16 @@ def _check(args) -> None:
 def run(args: argparse.Namespace) -> Output:
     from ..model import Sink
 
-    _check(args)
-    well = well_from_args(args)
+    user = user_well_from_args(args)
+    _check(args, None if user is None else user[0])
+    if user is not None:  # refused when y = 0 is not invariant, with the reason
+        from ..nnm.modes import check_user_well
+        from ..wellat import WellAt
+
+        well = WellAt(user[0], **user[1])
+        check_user_well(well)
+    else:
+        well = well_from_args(args)
     sink = Sink(well, particles=args.particles, mass=args.mass)
     plot = png_path("plot", args.plot)
     param = args.continue_in
@@ -136,11 +157,15 @@ def run(args: argparse.Namespace) -> Output:
         if not lo <= energy <= hi:
             raise ParameterError("total_energy", energy, f"inside --interval [{lo:g}, {hi:g}]")
     else:
-        default_energy = 0.5 if args.betas else sink.particles * well.gamma / (2 * well.n)
-        energy = args.total_energy if args.total_energy is not None else default_energy
-        start = getattr(well, param)
-        default = {"beta": (-1.0, well.alpha - 0.02), "alpha": (well.beta + 0.02, 2.0)}
-        lo, hi = args.interval if args.interval is not None else default.get(param, (0.1, 10.0))
+        energy = args.total_energy  # given with --well (see _check)
+        if energy is None:
+            energy = 0.5 if args.betas else sink.particles * well.gamma / (2 * well.n)
+        if user is not None:  # --interval is given (see _check)
+            start, (lo, hi) = well.parameters[param], args.interval
+        else:
+            start = getattr(well, param)
+            default = {"beta": (-1.0, well.alpha - 0.02), "alpha": (well.beta + 0.02, 2.0)}
+            lo, hi = args.interval if args.interval is not None else default.get(param, (0.1, 10.0))
         if not lo <= start <= hi:
             raise ParameterError(param, start, f"inside --interval [{lo:g}, {hi:g}]")
     if args.betas:
@@ -165,7 +190,7 @@ def run(args: argparse.Namespace) -> Output:
         if param == "energy":
             fig = nplot.plot_frequency_energy([result])
         else:
-            scan = _fixed_scan(well, result) if param == "beta" else None
+            scan = _fixed_scan(well, result) if param == "beta" and user is None else None
             fig = nplot.plot_transverse(result, scan)
         out.writers[plot] = lambda path, fig=fig: fig.savefig(path, dpi=150)
         out.data["plot"] = str(plot)
@@ -219,9 +244,14 @@ def _report(result, sink, mode, param) -> Output:
     well = sink.well
     data = result.as_dict()
     ev = ", ".join(f"{e['kind']} at {e['value']:.6g}" for e in result.events) or "none"
+    described = (
+        parameters_text(well.parameters)
+        if hasattr(well, "definition")
+        else f"alpha = {well.alpha:g}, beta = {well.beta:g}, n = {well.n}"
+    )
     text = (
-        f"{mode} mode of {sink.particles} particle(s), {well.shape} well alpha = {well.alpha:g}, "
-        f"beta = {well.beta:g}, n = {well.n}, m = {sink.mass:g}; continued in {param} over "
+        f"{mode} mode of {sink.particles} particle(s), {well.shape} well {described}, "
+        f"m = {sink.mass:g}; continued in {param} over "
         f"[{result.value.min():.6g}, {result.value.max():.6g}] ({result.points} orbits)\n"
         f"  frequency {result.frequency.min():.6g} .. {result.frequency.max():.6g}; "
         f"stable at {int(result.stable.sum())} of {result.points} points\n"

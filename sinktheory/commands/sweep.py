@@ -23,9 +23,26 @@ from ..sweep.grid import Value, parse_param
 from ..sweep.kinds import KINDS
 from ..validation import writable_directory
 from . import HELP as HELPS
-from ._common import Output, add_json, damage_note, interruptible, number, resume_hint
+from ._common import (
+    Output,
+    add_json,
+    add_well_file,
+    damage_note,
+    interruptible,
+    number,
+    resume_hint,
+)
 
-__all__ = ["add_arguments", "estimate_line", "HELP", "NAME", "params_of", "run", "split_summary"]
+__all__ = [
+    "add_arguments",
+    "estimate_line",
+    "HELP",
+    "NAME",
+    "params_of",
+    "params_with_well",
+    "run",
+    "split_summary",
+]
 
 NAME = "sweep"
 HELP = HELPS[NAME]
@@ -61,8 +78,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--quiet", action="store_true", help="no estimate line, no progress bar")
     add_json(parser)
-    parser.epilog = "parameters of each KIND: " + "; ".join(
-        f"{name}: {', '.join(kind.params)}" for name, kind in KINDS.items()
+    add_well_file(parser)
+    parser.epilog = (
+        "parameters of each KIND: "
+        + "; ".join(f"{name}: {', '.join(kind.params)}" for name, kind in KINDS.items())
+        + ". With --well FILE ("
+        + ", ".join(name for name, kind in KINDS.items() if kind.user_well)
+        + ") the well's own parameters replace alpha, beta, n, gamma and shape: sweep them "
+        "with --param, fix them with --param or --well-param; the store keeps the well's "
+        "definition, and --resume refuses a changed file"
     )
 
 
@@ -75,6 +99,22 @@ def params_of(specs: list[str]) -> dict[str, list[Value]]:
             raise ParameterError(name, spec, "given once (it was given twice)")
         params[name] = values
     return params
+
+
+def params_with_well(args: argparse.Namespace) -> dict:
+    """The ``--param`` options, with ``--well FILE`` as the parameter ``well`` (its
+    :class:`~sinktheory.userwell.UserWell`) and each ``--well-param NAME=VALUE`` as a
+    ``--param`` (a name given by both is refused as given twice)."""
+    if args.well is None:
+        if args.well_param:
+            raise ParameterError("well_param", args.well_param[0], "given with --well FILE")
+        return params_of(args.param)
+    params = params_of(args.param + args.well_param)
+    if "well" in params:
+        raise ParameterError("well", params["well"], "given as --well FILE, not as --param")
+    from ..userwell import load_well
+
+    return {**params, "well": load_well(args.well)}
 
 
 def estimate_line(sweep) -> str:
@@ -104,7 +144,7 @@ def _run(args: argparse.Namespace) -> Output:
     from ..sweep.plan import Sweep  # imports xarray, zarr and dask: only when sweeping
     from ..sweep.runner import execute
 
-    sweep = Sweep.make(args.kind, params_of(args.param), args.seed)
+    sweep = Sweep.make(args.kind, params_with_well(args), args.seed)
     if not args.quiet:  # before any work: the estimate
         print(f"sinktheory sweep: {estimate_line(sweep)}", file=sys.stderr, flush=True)
     done = execute(

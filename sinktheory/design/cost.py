@@ -39,10 +39,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import validation as v
-from ..ensemble import settings_of, sink_of
+from ..ensemble import engine_name, settings_of, sink_of
 from ..errors import ParameterError
 from ..stepsize import choose
 from ..worklimit import duration
+from .point import user_shape
 
 #: Seconds to generate and compile the engine of one well shape the first time (any n),
 #: with its tangent-map functions for lambda_1 (30-60 s each on the development machine
@@ -128,7 +129,8 @@ def work(point: dict, tangent: float = TANGENT, dissipative: float = DISSIPATIVE
     if point["damping"] > 0 or attachment == "nes":  # the dissipative integrator
         return float(steps * dof * dissipative * point["runs"] * point["periods"])
     runs = point["runs"] * point["periods"]
-    runs += tangent * point["lyapunov_runs"] * point["lyapunov_periods"]
+    if not user_shape(point):  # a user's well gets no lambda_1
+        runs += tangent * point["lyapunov_runs"] * point["lyapunov_periods"]
     return float(steps * dof * runs)
 
 
@@ -165,12 +167,15 @@ def _time_chaos(point: dict, runs: int, periods: int) -> tuple[float, float]:
     return seconds, steps * (1 + 2 * p["particles"]) * runs * periods
 
 
-def uncompiled(shapes) -> list[str]:
-    """The well shapes whose engine's compiled code is not in the engine cache yet (one
-    engine serves every n of a shape)."""
-    from ..engine.cache import compiled, sink_name
+def uncompiled(points) -> list[str]:
+    """The engines of design ``points`` whose compiled code is not in the engine cache
+    yet: one per registered shape (it serves every n) and one per user's well on the
+    shape axis (:func:`sinktheory.ensemble.engine_name`)."""
+    from ..engine.cache import compiled
 
-    return sorted(shape for shape in set(shapes) if not compiled(sink_name(shape)))
+    one = {p["shape"]: p for p in points}.values()  # one engine per shape's name
+    names = {engine_name(sink_of(p)) for p in one}
+    return sorted(name for name in names if not compiled(name))
 
 
 def _overhead(point: dict) -> float:
@@ -254,7 +259,7 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
         t, u = _time_simulate(heaviest, runs, periods)
         per_unit = t / u
         tangent = TANGENT
-        if heaviest["lyapunov_runs"]:
+        if heaviest["lyapunov_runs"] and not user_shape(heaviest):
             lruns = heaviest["lyapunov_runs"]
             _time_chaos(heaviest, 2, 1)
             lperiods = max(2, min(heaviest["lyapunov_periods"], periods))
@@ -273,7 +278,7 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     # the work shared over the workers, but never less than the longest point
     busy = min(workers, len(points))
     total = max(float(per_point.sum()) / busy, float(per_point.max()))
-    compiling = COMPILE_SECONDS * len(uncompiled(p["shape"] for p in points))
+    compiling = COMPILE_SECONDS * len(uncompiled(points))
     total += compiling
     return Estimate(
         points=len(points),

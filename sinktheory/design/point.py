@@ -9,7 +9,8 @@ container energy, the measures are :func:`~sinktheory.design.measures.design_mea
 the growth exponent per period) -- with those runs split into regular and chaotic ones
 (:func:`sinktheory.chaos.verdicts.split`: a run is regular when its lambda_1 <=
 3 ln t / t), since a mean over both groups is set by how many runs start in an island.
-``lyapunov_runs = 0`` leaves them out (NaN).
+``lyapunov_runs = 0`` leaves them out (NaN).  A user's well on the shape axis
+(:func:`user_shape`) must declare n, which the equipartition share reads.
 
 With a contact damping c0 = ``damping`` > 0 the ensemble is
 :func:`sinktheory.damped.simulate_inelastic` instead (same start states, same
@@ -63,6 +64,7 @@ Examples
 
 from __future__ import annotations
 
+import json
 import math
 from typing import Any
 
@@ -87,6 +89,7 @@ __all__ = [
     "lyapunov",
     "MAX_BOOTSTRAP",
     "SAMPLES",
+    "user_shape",
 ]
 
 #: Results of a point that come from its ensemble (besides the container energy).
@@ -129,6 +132,8 @@ def check(p: dict) -> None:
     against the work limit (:mod:`sinktheory.worklimit`)."""
     sink = sink_of(p)
     settings = settings_of(p, 0)
+    if hasattr(sink.well, "definition"):  # a user's well on the shape axis
+        _check_user_well(p, sink.well)
     if p.get("attachment", "well") != "well":
         attachment_of(p)
     settings.check(sink)
@@ -178,11 +183,30 @@ def check(p: dict) -> None:
     )
 
 
+def user_shape(p: dict) -> bool:
+    """Whether the point's shape is a user's well (named in its ``wells``)."""
+    return "wells" in p and p["shape"] in json.loads(p["wells"])
+
+
+def _check_user_well(p: dict, well) -> None:
+    """A user's well as a design: it declares n (the equipartition measure reads it) and
+    is the 2-D well itself (the 1-D attachments are built from a registered shape)."""
+    if "n" not in well.parameters:
+        raise ParameterError("shape", p["shape"], "a well that declares the wall exponent n",
+                             why="the design's equipartition share E/(1 + k (1 + 1/n)) reads "
+                             "it")  # fmt: skip
+    if p.get("attachment", "well") != "well":
+        raise ParameterError("attachment", p["attachment"], f"well with the user's well "
+                             f"{p['shape']} (the 1-D attachments take a registered "
+                             "shape)")  # fmt: skip
+
+
 def lyapunov(p: dict, seed: int) -> dict[str, float]:
     """lambda_1 (per unit time) of the first ``lyapunov_runs`` runs: their mean and its
     s.e. (``lambda1``, ``lambda1_se``), and the runs split into regular and chaotic ones
     (:data:`~sinktheory.chaos.verdicts.SPLIT_RESULTS`: where some runs start in an
-    island, the mean mixes two groups and depends on the start box).
+    island, the mean mixes two groups and depends on the start box).  A user's well on
+    the shape axis runs on its own engine, as the ensemble does.
 
     All NaN when ``lyapunov_runs`` is 0, the contact is damped (the chaos indicators are
     of the conservative model) or the attachment is 1-D.

@@ -14,7 +14,8 @@ docs/guide/make_relaxation.py, and leans short where the relaxation is slow (fla
 
 Only the conservative 2-D well has a law to settle to: a 1-D attachment, or damped
 contact, gets the reason instead of a number, and so does a design the model cannot
-resolve (a relaxation faster than its shortest lag, for instance).
+resolve (a relaxation faster than its shortest lag, for instance) and a user's well on
+the shape axis (the relaxation model reads a registered shape's parameters).
 
 Examples
 --------
@@ -54,6 +55,10 @@ def predicted_settling(point: Mapping, *, seed: int = 0, **shell) -> Settling | 
         return "n/a: 1-D attachment"
     if float(point.get("damping", 0.0)) > 0:
         return "n/a: damped contact"
+    from .point import user_shape
+
+    if user_shape(point):
+        return "n/a: a user's well (the relaxation model takes a registered shape)"
     from ..ensemble import sink_of
 
     try:

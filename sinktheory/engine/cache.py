@@ -41,6 +41,7 @@ __all__ = [
     "LLVM_OPTIONS",
     "load",
     "sink_name",
+    "user_well",
     "well_definition",
     "well_name",
 ]
@@ -152,10 +153,22 @@ def well_definition(name: str):
     shape = name.removeprefix("sink_")
     if name.startswith("sink_") and shape in SHAPES:
         return SHAPES[shape]
-    if name in _USER_WELLS:
-        return _USER_WELLS[name]
+    if user_well(name) is not None:
+        return user_well(name)
     raise KeyError(f"no sink engine called {name!r} (sink_<shape>, or a user's well named "
                    "by well_name in this process)")  # fmt: skip
+
+
+def user_well(name: str):
+    """The user's well whose engine is called ``name`` (registered by :func:`well_name` in
+    this process), or None.
+
+    Examples
+    --------
+    >>> user_well("sink_flat") is None
+    True
+    """
+    return _USER_WELLS.get(name)
 
 
 def sink_name(shape: str) -> str:

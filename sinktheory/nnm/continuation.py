@@ -659,14 +659,14 @@ def continue_both(
                               subspace=subspace, **kw)  # fmt: skip
     branch = merge(back, fwd)
     w = sink.well
+    if hasattr(w, "definition"):  # a user's well: its own parameters
+        well = {"shape": w.shape, "parameters": dict(w.parameters)}
+    else:
+        well = {"shape": w.shape, "alpha": w.alpha, "beta": w.beta, "n": w.n, "gamma": w.gamma}
     return branch.result(
         half_traces=half_traces,
         mode=mode,
-        shape=w.shape,
-        alpha=w.alpha,
-        beta=w.beta,
-        n=w.n,
-        gamma=w.gamma,
+        **well,
         particles=sink.particles,
         mass=sink.mass,
         label=f"{mode} mode",

@@ -17,6 +17,11 @@ synchronous normal modes, both starting at a turning point (all velocities zero)
   container recoil freely (centre of mass at rest), which is exact as m -> 0 and good
   when the particles oscillate much faster than the container.
 
+In a user's well (:class:`~sinktheory.wellat.WellAt`, y = 0 invariant) the guesses are
+the same with the well's own numbers (:func:`mode_guess`): alpha - beta becomes the
+distance along -x at which a wall ratio reaches 1, and the power-law oscillator's period
+a quadrature of the motion on the axis y = 0.
+
 Examples
 --------
 >>> from sinktheory import Sink, Well
@@ -39,7 +44,14 @@ from ..glossary import renamed
 from ..model import Sink
 from .system import FlowSystem
 
-__all__ = ["fixed_container_amplitude", "linear_modes", "mode_guess", "MODES", "sink_flow"]
+__all__ = [
+    "check_user_well",
+    "fixed_container_amplitude",
+    "linear_modes",
+    "mode_guess",
+    "MODES",
+    "sink_flow",
+]
 
 MODES = ("container", "particle")
 
@@ -53,6 +65,88 @@ def sink_flow(sink: Sink, scheme: str | None = None) -> FlowSystem:
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     kw = {} if scheme is None else {"scheme": scheme}
     return FlowSystem(engine_name(sink), engine_params(sink), members=sink.particles, **kw)
+
+
+def check_user_well(well) -> None:
+    """Refuse a user's well (:class:`~sinktheory.wellat.WellAt`) in which y = 0 is not
+    invariant (decided symbolically at its values): it has no normal mode in that plane."""
+    report = well.report
+    if not report.y_invariant:
+        raise ParameterError("well", well.shape, "a well in which y = 0 is invariant (normal "
+                             "modes in the plane y = 0)",
+                             why=report.y_invariant_reason)  # fmt: skip
+
+
+#: Gauss-Legendre nodes and weights on [0, pi/2] for the period on the axis y = 0.
+_NODES, _GAUSS = np.polynomial.legendre.leggauss(64)
+_THETA, _WEIGHTS = np.pi / 4 * (_NODES + 1), np.pi / 4 * _GAUSS
+
+
+def _user_guess(sink: Sink, mode: str, energy: float) -> tuple[np.ndarray, float]:
+    """:func:`mode_guess` in a user's well, the registered shapes' guesses with the
+    well's own numbers: the container mode's particles at absolute rest while the
+    container stays inside the rigid wall along -x (where a wall ratio reaches 1; without
+    wall ratios, always), else just inside it; the particle mode's turning point where
+    V(x, 0) - V(0, 0) = E / k, and its period 2 (int over [x-, x+] of dx / v) with the
+    reduced mass mu / (1 + m), by 64-point Gauss-Legendre in x = x+- sin(theta)."""
+    w, k, m = sink.well, sink.particles, sink.mass
+    z0 = np.zeros(2 * (1 + 2 * k))
+    if mode == "container":
+        X0 = math.sqrt(2 * energy)
+        L = _wall_on_axis(w, X0 / 0.9)
+        z0[0] = X0
+        z0[1 : 1 + k] = max(0.0, X0 - 0.9 * L)
+        return z0, 2 * math.pi
+    e = energy / k
+    x_plus, x_minus = (_turning_point(w, e, side) for side in (1.0, -1.0))
+    reduced = sink.mu / (1 + m)
+    T = 0.0
+    for h in (x_plus, x_minus):
+        x = h * np.sin(_THETA)
+        speed = np.sqrt(2 * np.maximum(e - w.potential(x, 0.0), 0.0) / reduced)
+        T += 2 * abs(h) * float(np.sum(_WEIGHTS * np.cos(_THETA) / speed))
+    z0[0] = -m * x_plus / (1 + m)
+    z0[1 : 1 + k] = x_plus / (1 + m)
+    return z0, T
+
+
+def _wall_on_axis(well, reach: float) -> float:
+    """Distance along -x, y = 0, at which a wall ratio of ``well`` reaches 1, looked for
+    within ``reach`` (inf beyond it or without wall ratios)."""
+    from scipy.optimize import brentq
+
+    from ..basin import numeric
+
+    values = well.definition.values(**well.parameters)
+    ratios = [numeric(r, values) for r in well.definition.wall_ratios]
+    if not ratios:
+        return math.inf
+
+    def level(x: float) -> float:
+        return max(abs(float(r(-x, 0.0))) for r in ratios) - 1.0
+
+    if not level(reach) >= 0:
+        return math.inf
+    return float(brentq(level, 0.0, reach, xtol=1e-14))
+
+
+def _turning_point(well, e: float, side: float) -> float:
+    """x on the side ``side`` (+1 or -1) of the axis y = 0 where V(x, 0) - V(0, 0) = e."""
+    from scipy.optimize import brentq
+
+    from ..errors import NumericalError
+
+    reach = well.reach(e, name="total_energy")[0]
+    hi = reach
+    for _ in range(60):  # the basin's reach bounds it; a little past it if V bends back
+        if float(well.potential(side * hi, 0.0)) >= e:
+            return side * float(brentq(lambda x: float(well.potential(side * x, 0.0)) - e,
+                                       0.0, hi, xtol=1e-15))  # fmt: skip
+        hi *= 1.01
+    raise NumericalError(
+        f"normal-mode guess: no turning point of V(x, 0) - V(0, 0) = {e:g} "
+        f"on the {'+' if side > 0 else '-'}x axis of the {well.shape} well"
+    )
 
 
 @renamed(energy="total_energy")
@@ -76,8 +170,12 @@ def mode_guess(sink: Sink, mode: str, total_energy: float) -> tuple[np.ndarray, 
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     v.choice("mode", mode, MODES)
+    if hasattr(sink.well, "definition"):
+        check_user_well(sink.well)
     energy = v.positive("total_energy", total_energy)
     sink.well.check_energy(energy, name="total_energy")  # no particle can hold more than the total
+    if hasattr(sink.well, "definition"):
+        return _user_guess(sink, mode, energy)
     w, k = sink.well, sink.particles
     L = w.alpha - w.beta
     z0 = np.zeros(2 * (1 + 2 * k))

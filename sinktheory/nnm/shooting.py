@@ -365,8 +365,20 @@ def subspace_indices(system: FlowSystem, subspace: str | None) -> np.ndarray:
     if subspace in (None, "full"):
         return np.arange(2 * D)
     if subspace == "plane":
-        if not system.system.startswith("sink_"):
+        from ..engine.cache import user_well
+
+        well = user_well(system.system)
+        if well is None and not system.system.startswith("sink_"):
             raise ParameterError("subspace", subspace, "'full' for a system without particles")
+        if well is not None:  # a user's well: y = 0 must be invariant at its values
+            from ..userwell import y_invariant
+
+            given = zip(well.parameter_names, system.params.tolist(), strict=False)  # mu last
+            values = well.values(**dict(given))
+            invariant, reason = y_invariant(well.potential.subs(values))
+            if not invariant:
+                raise ParameterError("subspace", subspace, f"'full' in the {well.name} well",
+                                     why=f"y = 0 is not invariant: {reason}")  # fmt: skip
         k = (D - 1) // 2
         q = list(range(0, 1 + k))
         return np.array(q + [D + i for i in q])

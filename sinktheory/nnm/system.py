@@ -40,7 +40,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .. import validation as val
-from ..engine.cache import engine_system, well_definition
+from ..engine.cache import engine_system
 from ..engine.core import Ensemble
 from ..errors import ParameterError
 from ..glossary import old_attribute
@@ -60,15 +60,14 @@ def parameter_names(system: str) -> tuple[str, ...]:
     (('alpha', 'beta', 'gamma', 'n', 'mu'), ())
 
     A user's well's engine (:func:`sinktheory.engine.cache.well_name`) takes the well's
-    parameters in declaration order, then mu.
+    own parameters in declaration order, then mu.
     """
-    if system.startswith("sink_"):
-        return SINK_PARAMS
-    try:
-        well = well_definition(system)
-    except KeyError:  # another system (duffing2, henon_heiles): no run-time parameters
-        return ()
-    return (*well.parameter_names, "mu")
+    from ..engine.cache import user_well
+
+    well = user_well(system)
+    if well is not None:
+        return (*well.parameter_names, "mu")
+    return SINK_PARAMS if system.startswith("sink_") else ()
 
 
 @dataclass

@@ -52,6 +52,7 @@ sweep: alpha, amplitude, beta, gamma, n, rtol, shape
 
 from __future__ import annotations
 
+import json
 import numbers
 import warnings
 from collections.abc import Callable, Mapping
@@ -192,21 +193,54 @@ class Kind:
     batch: int = 1
     #: Rough seconds a point takes, to decide whether local processes are worth starting.
     cost: Callable[[dict], float] = lambda p: 1.0
+    #: Whether the kind takes a user's well (``well``, see :meth:`complete`).
+    user_well: bool = False
+    #: Whether ``shape`` also takes users' wells, beside the registered shapes (see
+    #: :meth:`complete`).
+    shape_wells: bool = False
 
     def complete(self, given: Mapping[str, Any]) -> dict[str, Any]:
         """Check names, add defaults, coerce types (values may be lists of values).  An old
         name (:data:`sinktheory.glossary.RENAMED_PARAMETERS`) is taken for its new one,
-        with a DeprecationWarning."""
+        with a DeprecationWarning.
+
+        ``well`` (a :class:`~sinktheory.userwell.UserWell`, or the TOML text of its well
+        file) puts a user's well in place of the shape parameters :data:`WELL`: its own
+        parameters, with its defaults, take their place (each may be swept), and the
+        well's text (:func:`~sinktheory.userwell.well_text`) becomes the fixed parameter
+        ``well``, so that the store keeps it and every worker rebuilds the same well.
+
+        A kind whose ``shape`` takes users' wells (``shape_wells``: design) takes a
+        :class:`~sinktheory.userwell.UserWell` among the values of ``shape``: the well's
+        name labels it, and the fixed parameter ``wells`` (JSON: name -> the well's text)
+        keeps its definition.  Its parameters named like the kind's alpha, beta, n or
+        gamma take the point's values, the others their defaults."""
         given = _modern_names(given)
+        table, own = self.params, None
+        if "well" in given:
+            given = dict(given)
+            given["well"], table, own = self._with_well(given["well"])
+        if self.shape_wells and "shape" in given:
+            given = dict(given)
+            given["shape"], wells = _shape_wells(given["shape"])
+            if wells:
+                names = (*table["shape"].options, *sorted(wells))
+                table = {**table, "shape": Param(str, "flat", names),
+                         "wells": Param(str, sweepable=False)}  # fmt: skip
+                given["wells"] = json.dumps(wells, sort_keys=True)
         for name in given:
-            if name not in self.params:
+            if name not in table and own is not None and name in WELL:
+                listed = ", ".join(own) or "none"
+                raise ParameterError(name, given[name], "left out beside a well (it defines "
+                                     f"the shape; its parameters: {listed})")  # fmt: skip
+            if name not in table:
                 raise ParameterError(
                     name,
                     given[name],
-                    f"a parameter of a {self.name} sweep: {', '.join(sorted(self.params))}",
+                    f"a parameter of a {self.name} sweep: {', '.join(sorted(table))}",
                 )
         out = {}
-        for name, p in self.params.items():
+        for name, p in table.items():
             if name not in given:
                 if p.default is REQUIRED:
                     raise ParameterError(name, None, "given (it has no default)")
@@ -230,6 +264,49 @@ class Kind:
             else:
                 out[name] = p.coerce(name, value)
         return out
+
+    def _with_well(self, well: Any) -> tuple[str, dict[str, Param], tuple[str, ...]]:
+        """(the well's text, this kind's parameters with the well's in place of WELL, the
+        well's parameter names)."""
+        from ..userwell import UserWell, read_well, well_text
+
+        if not self.user_well:
+            takes = ", ".join(k.name for k in KINDS.values() if k.user_well)
+            raise ParameterError("well", getattr(well, "name", well), f"left out of a "
+                                 f"{self.name} sweep (the kinds that take a well: "
+                                 f"{takes})")  # fmt: skip
+        if isinstance(well, str):
+            well = read_well(well)
+        if not isinstance(well, UserWell):
+            raise ParameterError("well", well, "a sinktheory.userwell.UserWell or its TOML text")
+        own = {name: p for name, p in self.params.items() if name not in WELL}
+        clash = [name for name in well.parameter_names if name in own or name == "well"]
+        if clash:
+            raise ParameterError(
+                "well", well.name, f"a well whose parameters are not named like the "
+                f"{self.name} sweep's settings ({', '.join(clash)} is one)",
+            )  # fmt: skip
+        table = {p.name: Param(float, p.default) for p in well.parameters}
+        table = {**table, **own, "well": Param(str, sweepable=False)}
+        return well_text(well), table, well.parameter_names
+
+
+def _shape_wells(shape: Any) -> tuple[Any, dict[str, str]]:
+    """``shape`` with each UserWell among its values replaced by its name, and the wells'
+    texts by name (two different wells of one name refused)."""
+    from ..userwell import UserWell, well_text
+
+    many = isinstance(shape, list | tuple | np.ndarray)
+    values = list(np.asarray(shape, dtype=object).ravel()) if many else [shape]
+    wells: dict[str, str] = {}
+    for i, value in enumerate(values):
+        if isinstance(value, UserWell):
+            text = well_text(value)
+            if wells.setdefault(value.name, text) != text:
+                raise ParameterError("shape", value.name, "wells of different names (two "
+                                     "different wells are called so)")  # fmt: skip
+            values[i] = value.name
+    return (values if many else values[0]), wells
 
 
 def _modern_names(given: Mapping[str, Any]) -> dict[str, Any]:
@@ -362,6 +439,7 @@ KINDS = {
         batch=256,
         cost=lambda p: SECONDS_PER_PERIOD * (p["transient"] + p["count"]),
         compute_many=_lazy(".bifurcation", "points"),
+        user_well=True,
     ),
     "ensemble": Kind(
         "ensemble",
@@ -386,6 +464,7 @@ KINDS = {
         _lazy(".simulate", "point"),
         lambda p: {"period": np.arange(p["periods"] + 1)},
         cost=lambda p: SECONDS_PER_PERIOD * p["periods"] * p["runs"] * p["particles"],
+        user_well=True,
     ),
     "design": Kind(
         "design",
@@ -420,6 +499,7 @@ KINDS = {
             * p["particles"]
             * (p["periods"] * p["runs"] + 2 * p["lyapunov_periods"] * p["lyapunov_runs"])
         ),
+        shape_wells=True,
     ),
 }
 

@@ -139,7 +139,15 @@ class Sweep:
     def describe(self) -> str:
         """One line: kind, swept dimensions and fixed parameters."""
         swept = ", ".join(f"{n} ({s})" for n, s in self.dims.items()) or "no swept parameter"
-        return f"{self.kind.name} sweep over {swept}; fixed {json.dumps(self.fixed)}"
+        fixed = self.fixed
+        well = ""
+        if "well" in fixed:  # a user's well: its name here, its text in the store
+            from ..userwell import read_well
+
+            well = f" in the well {read_well(fixed.pop('well')).name}"
+        if "wells" in fixed:  # users' wells on the shape axis: their texts are in the store
+            fixed["wells"] = f"{len(json.loads(fixed['wells']))} user's well(s), in the store"
+        return f"{self.kind.name} sweep{well} over {swept}; fixed {json.dumps(fixed)}"
 
 
 #: Parameters that set the length of a result dimension (their value + offset).

@@ -93,6 +93,7 @@ def run_sweep(
     resume: bool = False,
     progress: bool = True,
     repair: bool = False,
+    well: Any = None,
 ) -> xr.Dataset:
     """Compute ``kind`` at every point of the grid ``params``; return labelled results.
 
@@ -120,6 +121,12 @@ def run_sweep(
         On resuming, remove chunks that no longer decode and recompute their points
         instead of refusing the store.  (Points whose stored results no longer match
         their checksum are always recomputed; damaged coordinates always refuse.)
+    well : UserWell, optional
+        A user's well (:class:`~sinktheory.userwell.UserWell`) in place of the shape and
+        alpha, beta, n, gamma (kinds bifurcation, ensemble and design): its own
+        parameters are then those of ``params``.  The same as ``params["well"]``; its
+        text (:func:`~sinktheory.userwell.well_text`) is stored with the results and sent
+        to the workers, so a resumed sweep and a remote worker rebuild the same well.
 
     Returns
     -------
@@ -140,6 +147,11 @@ def run_sweep(
     SweepPointError
         A point failed numerically; the points finished before it stay stored.
     """
+    if well is not None:
+        if isinstance(params, Mapping) and "well" in params:
+            raise ParameterError("well", getattr(well, "name", well), "given once (params "
+                                 "has a well too)")  # fmt: skip
+        params = {**params, "well": well} if isinstance(params, Mapping) else params
     done = execute(
         Sweep.make(kind, params, seed),
         store=store,

@@ -627,6 +627,25 @@ def _difference(stored: dict, given: dict) -> str:
         parts.append(f"swept {there} there, {here} here")
     a, b = stored.get("fixed", {}), given.get("fixed", {})
     for key in sorted(set(a) | set(b)):
-        if a.get(key) != b.get(key):
+        if key == "well" and a.get(key) != b.get(key):  # well texts: the first line that differs
+            parts.append(_well_difference(a.get(key), b.get(key)))
+        elif a.get(key) != b.get(key):
             parts.append(f"{key} = {a.get(key)!r} there, {b.get(key)!r} here")
     return "the store was made by another sweep: " + "; ".join(parts)
+
+
+def _well_difference(there: str | None, here: str | None) -> str:
+    """How two wells' texts (:func:`sinktheory.userwell.well_text`) differ: the first line
+    that differs, or that one side has no well.
+
+    Examples
+    --------
+    >>> a, b = 'name = "a"\\npotential = "x**2 + y**2"', 'name = "a"\\npotential = "x**2"'
+    >>> _well_difference(a, b)
+    'the well differs: potential = "x**2 + y**2" there, potential = "x**2" here'
+    """
+    if there is None or here is None:
+        return f"a user's well {'there' if here is None else 'here'} only"
+    pairs = zip(there.splitlines() + [""], here.splitlines() + [""], strict=False)
+    a, b = next((a, b) for a, b in pairs if a != b)
+    return f"the well differs: {a or '(nothing)'} there, {b or '(nothing)'} here"

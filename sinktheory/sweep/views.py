@@ -16,23 +16,25 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from ..bifurcation import BifurcationDiagram
+from ..bifurcation import BifurcationDiagram, WellBifurcation
 from ..errors import ParameterError
 
 __all__ = ["bifurcation_diagram", "split_points"]
 
 
-def bifurcation_diagram(dataset: xr.Dataset) -> BifurcationDiagram:
+def bifurcation_diagram(dataset: xr.Dataset) -> BifurcationDiagram | WellBifurcation:
     """The :class:`~sinktheory.bifurcation.BifurcationDiagram` of a bifurcation sweep over
-    beta alone (every other parameter fixed, every point done)."""
+    beta alone (every other parameter fixed, every point done); of a sweep of a user's
+    well over one of its own parameters, the
+    :class:`~sinktheory.bifurcation.WellBifurcation`."""
     attrs = dataset.attrs
+    if "well" in attrs:
+        return _well_diagram(dataset)
     if attrs.get("sweep_kind") != "bifurcation" or dataset.section.dims != ("beta", "sample"):
         raise ParameterError(
             "dataset", attrs.get("sweep_kind"), "a bifurcation sweep over beta alone"
         )
-    if not bool(dataset.done.all()):
-        missing = int((~dataset.done).sum())
-        raise ParameterError("dataset", f"{missing} point(s) not done", "a finished sweep")
+    _check_done(dataset)
     return BifurcationDiagram(
         np.asarray(dataset.beta.values, dtype=float),
         np.asarray(dataset.section.values),
@@ -46,6 +48,36 @@ def bifurcation_diagram(dataset: xr.Dataset) -> BifurcationDiagram:
         attrs["transient"],
         attrs["count"],
     )
+
+
+def _well_diagram(dataset: xr.Dataset) -> WellBifurcation:
+    """:func:`bifurcation_diagram` of a bifurcation sweep of a user's well."""
+    from ..userwell import read_well
+
+    attrs = dataset.attrs
+    well = read_well(attrs["well"])
+    dims = dataset.section.dims
+    if (
+        attrs.get("sweep_kind") != "bifurcation"
+        or len(dims) != 2
+        or dims[0] not in (well.parameter_names)
+    ):
+        raise ParameterError("dataset", attrs.get("sweep_kind"), "a bifurcation sweep over "
+                             "one parameter of its well alone")  # fmt: skip
+    _check_done(dataset)
+    parameter = dims[0]
+    fixed = {k: attrs[k] for k in well.parameter_names if k != parameter}
+    return WellBifurcation(
+        well.name, parameter, np.asarray(dataset[parameter].values, dtype=float),
+        np.asarray(dataset.section.values), fixed, attrs["quantity"], attrs["mass"],
+        attrs["container_energy"], attrs["transient"], attrs["count"],
+    )  # fmt: skip
+
+
+def _check_done(dataset: xr.Dataset) -> None:
+    if not bool(dataset.done.all()):
+        missing = int((~dataset.done).sum())
+        raise ParameterError("dataset", f"{missing} point(s) not done", "a finished sweep")
 
 
 def split_points(dataset: xr.Dataset) -> list[tuple[dict, object]]:

@@ -1,0 +1,165 @@
+"""Sweeps of a user's well (``well`` in Python, ``--well FILE`` on the command line): the
+paper's flat well typed as a user's expression gives the registry's sections, a
+Hénon–Heiles ensemble sweep gives simulate's numbers, the store keeps the well's text (a
+resumed sweep equals a fresh one bit for bit; a changed file is refused on resume) and a
+point rebuilds its well from that text alone.
+
+References: the registry's flat well (its hand-declared wall ratios against SymPy's
+derivatives of the user's text) and ``simulate`` of a WellAt, each computed here.
+"""
+
+import json
+import pickle
+
+import numpy as np
+import pytest
+import xarray as xr
+import zarr
+from _cli import BUILT_IN, HH, PAPER, refused_well, run_cli, write_well_file
+
+from sinktheory import RunSettings, Sink
+from sinktheory.errors import ParameterError
+from sinktheory.simulate import simulate
+from sinktheory.sweep import Sweep, bifurcation_diagram, run_sweep
+from sinktheory.userwell import UserWell, load_well
+from sinktheory.wellat import WellAt
+
+SECTIONS = {"transient": 2, "count": 3}
+FLAT = UserWell("paperflat", BUILT_IN["flat"], PAPER)
+
+
+def test_a_bifurcation_sweep_of_the_flat_well_typed_by_a_user_is_the_registry():
+    """Sections over the well's own beta, to 1e-12 (measured: identical)."""
+    betas = [0.1, 0.3]
+    user = run_sweep("bifurcation", {"beta": betas, **SECTIONS}, well=FLAT, workers=1,
+                     progress=False)  # fmt: skip
+    registry = run_sweep("bifurcation", {"alpha": 0.5, "beta": betas, "n": 4, **SECTIONS},
+                         workers=1, progress=False)  # fmt: skip
+    np.testing.assert_allclose(user.section.values, registry.section.values, rtol=1e-12, atol=0)
+    assert user.attrs["n"] == 4.0  # the well's own parameters label the store
+    assert "shape" not in user.attrs and user.attrs["well"].startswith('name = "paperflat"')
+    diagram = bifurcation_diagram(user)  # read back as the well's diagram
+    assert (diagram.name, diagram.parameter, diagram.value.tolist()) == ("paperflat", "beta",
+                                                                          betas)  # fmt: skip
+    assert diagram.parameters == {"alpha": 0.5, "gamma": 1.0, "n": 4.0}
+    assert np.array_equal(diagram.section, user.section.values)
+
+
+def test_an_ensemble_sweep_of_henon_heiles_is_simulate_of_its_well():
+    """Each point's ensemble is simulate's, seeded with the point's seed (bit for bit)."""
+    hh = UserWell("hh", HH, {})
+    params = {"well": hh, "container_energy": [0.01, 0.02], "runs": 2, "periods": 2}
+    sweep = Sweep.make("ensemble", params)
+    ds = run_sweep("ensemble", params, workers=1, progress=False)
+    for i, e0 in enumerate((0.01, 0.02)):
+        seed = sweep.task(i)[2]
+        res = simulate(Sink(WellAt(hh), 1, 0.2), RunSettings(container_energy=e0, runs=2,
+                       periods=2, seed=seed), progress=False)  # fmt: skip
+        assert np.array_equal(ds.mean_energy.values[i], res.ensemble_energy()[0])
+
+
+def test_a_point_rebuilds_its_well_from_the_stored_text(tmp_path):
+    """What a worker receives (a pickled task) holds the well's text, not the file: the
+    point computes after the file is gone, in a process that never read it."""
+    path = write_well_file(tmp_path, "paperflat", BUILT_IN["flat"], PAPER)
+    sweep = Sweep.make("bifurcation", {"well": load_well(path), "beta": 0.3, **SECTIONS})
+    task = pickle.dumps(sweep.task(0))
+    path.unlink()
+    from sinktheory import ensemble
+
+    ensemble._read_well.cache_clear(), ensemble._well_at.cache_clear()
+    _, point, seed = pickle.loads(task)
+    assert str(path) not in point["well"]
+    section = sweep.kind.compute(point, seed)["section"]
+    registry = run_sweep("bifurcation", {"alpha": 0.5, "beta": 0.3, "n": 4, **SECTIONS},
+                         workers=1, progress=False)  # fmt: skip
+    np.testing.assert_allclose(section, registry.section.values, rtol=1e-12, atol=0)
+
+
+def test_the_command_line_resumes_a_well_sweep_and_refuses_a_changed_file(
+    tmp_path, capsys, monkeypatch
+):
+    path = write_well_file(tmp_path, "paperflat", BUILT_IN["flat"], PAPER)
+    store = tmp_path / "s.zarr"
+    args = ["sweep", "bifurcation", "--well", str(path), "--param", "beta=0.1,0.2,0.3",
+            "--well-param", "n=4", "--param", "transient=2", "--param", "count=3", "--out",
+            str(store), "--workers", "1", "--quiet", "--json"]  # fmt: skip
+    code, out, err = run_cli(args, capsys)
+    assert code == 0, err
+    fresh = xr.open_zarr(store).load()
+    assert json.loads(out)["dims"] == {"beta": 3}
+    # two points lost (flag cleared, data spoiled): --resume computes them again
+    group = zarr.open_group(store, mode="r+")
+    done, section = group["done"][...], group["section"][...]
+    done[[0, 2]], section[[0, 2]] = False, 12345.0
+    group["done"][...], group["section"][...] = done, section
+    code, out, err = run_cli([*args, "--resume"], capsys)
+    assert code == 0, err
+    assert (json.loads(out)["computed"], json.loads(out)["skipped"]) == (2, 1)
+    resumed = xr.open_zarr(store)
+    for name in ("section", "done", "point_seed"):
+        assert np.array_equal(resumed[name].values, fresh[name].values), name
+    # the file changed (another range of beta): the store's well is not this one
+    changed = write_well_file(tmp_path, "paperflat", BUILT_IN["flat"],
+                              {**PAPER, "beta": (0.3, (-5.0, 0.4))})  # fmt: skip
+    assert changed == path
+    line = refused_well(
+        [*args, "--resume"],
+        capsys,
+        tmp_path,
+        monkeypatch,
+        "the well differs: beta = { default = 0.3, range = [-5.0, 0.45] } there",
+    )
+    assert "range = [-5.0, 0.4] } here" in line
+
+
+@pytest.mark.parametrize(
+    "extra,reason",
+    [
+        (
+            ["--param", "shape=flat"],
+            "shape = ['flat'] is not allowed: must be left out beside "
+            "a well (it defines the shape; its parameters: alpha, beta,",
+        ),
+        (["--param", "beta=0.1,0.5"], "0.5"),
+        (["--well-param", "beta=0.2"], "beta = 'beta=0.2' is not allowed: must be given once"),
+    ],
+)
+def test_the_command_line_refuses_a_shape_beside_a_well(extra, reason, tmp_path, capsys,
+                                                          monkeypatch):  # fmt: skip
+    path = write_well_file(tmp_path, "paperflat", BUILT_IN["flat"], PAPER)
+    args = ["sweep", "bifurcation", "--well", str(path), "--param", "beta=0.1",
+            "--out", str(tmp_path / "s.zarr"), "--quiet", *extra]  # fmt: skip
+    refused_well(args, capsys, tmp_path, monkeypatch, reason)
+
+
+def test_a_kind_that_takes_no_well_says_which_do():
+    with pytest.raises(
+        ParameterError,
+        match=r"^well = 'hh' .* left out of a floquet sweep "
+        r"\(the kinds that take a well: bifurcation, ensemble",
+    ):
+        Sweep.make("floquet", {"well": UserWell("hh", HH, {})})
+
+
+def test_well_bifurcation_over_the_flat_well_s_own_beta_is_the_registry_diagram():
+    from sinktheory.bifurcation import bifurcation, well_bifurcation
+
+    user = well_bifurcation(WellAt(FLAT, n=4), "beta", [0.1, 0.3], **SECTIONS)
+    registry = bifurcation([0.1, 0.3], alpha=0.5, n=4, **SECTIONS)
+    np.testing.assert_allclose(user.section, registry.section, rtol=1e-12, atol=0)
+    assert user.parameters == {"alpha": 0.5, "gamma": 1.0, "n": 4.0}
+    with pytest.raises(ParameterError, match=r"^beta: 0.5 is refused: outside the range"):
+        well_bifurcation(WellAt(FLAT), "beta", [0.1, 0.5], **SECTIONS)  # its range ends at 0.45
+    with pytest.raises(ParameterError, match=r"^parameter = 'b' .* one of 'alpha', 'beta'"):
+        well_bifurcation(WellAt(FLAT), "b", [0.1], **SECTIONS)
+
+
+def test_a_well_parameter_named_like_a_setting_of_the_kind_is_refused():
+    runs = UserWell("runny", "runs*(x**2 + y**2)/2", {"runs": 1.0})
+    with pytest.raises(
+        ParameterError,
+        match=r"^well = 'runny' .* not named like the ensemble "
+        r"sweep's settings \(runs is one\)",
+    ):
+        Sweep.make("ensemble", {"well": runs})
