@@ -208,3 +208,33 @@ def test_ctrl_c_while_the_forkserver_starts_is_discarded(tmp_path):
     assert "Traceback" not in done.stderr and "KeyboardInterrupt" not in done.stderr, done.stderr
     state, restored = done.stdout.split()[1::2]
     assert state in ("R", "S") and restored == "True", (done.stdout, done.stderr)
+
+
+def test_a_second_ctrl_c_while_exiting_changes_nothing(tmp_path):
+    """An impatient user presses Ctrl-C twice.  Once the one line was printed, Python's
+    tear-down of the loaded modules took 1-2 s, and a second SIGINT during it ended the
+    process with status -2 (benchmarks/bench_interrupt_sweep.py --again 0.3: 4 of 4).
+    The command line (``main()`` without arguments, as ``python -m sinktheory`` runs it)
+    now ends the process at once and ignores further signals."""
+    argv = ["simulate", *WELL, "--n", "4", *LONG]
+    launch = LAUNCH.replace("main(sys.argv[1:])", "main()")
+    proc = subprocess.Popen(
+        [sys.executable, "-c", launch, *argv],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path, env=ENV,
+    )  # fmt: skip
+    try:
+        assert proc.stderr.readline() == "ready\n"
+        time.sleep(2.5)
+        assert proc.poll() is None, proc.communicate()  # still computing
+        proc.send_signal(signal.SIGINT)
+        line = proc.stderr.readline()  # printed before the tear-down
+        time.sleep(0.2)
+        if proc.poll() is None:
+            proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
+    assert proc.returncode == 130, (line, err)
+    assert (line, err, out) == ("sinktheory simulate: interrupted\n", "", "")
