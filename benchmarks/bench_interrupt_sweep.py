@@ -7,10 +7,14 @@ to the group after a delay (spread over the tries, so start-up, planning, the po
 start and the computation are all hit), and records the exit status, the lines on stderr
 and the seconds from the signal to the exit.  The goal (issue 34): status 130, the one
 line "sinktheory sweep: interrupted[; --resume continues]", within 2 s, every time.
+``--again S`` sends a second SIGINT S seconds after the first, as an impatient user
+pressing Ctrl-C twice (it must change nothing: before the fix it ended the driver with
+status -2 while Python tore itself down).
 
 Usage::
 
-    python benchmarks/bench_interrupt_sweep.py [--tries 11] [--first 1.0] [--last 8.0] [--root TREE]
+    python benchmarks/bench_interrupt_sweep.py [--tries 11] [--first 1.0] [--last 8.0]
+        [--again S] [--root TREE]
 
 Prints one row per try, then the counts, the latencies and the machine.
 """
@@ -35,11 +39,14 @@ SWEEP = (
 GOAL_SECONDS = 2.0
 
 
-def one_try(delay: float, cwd: Path, root: Path = ROOT) -> tuple[int, float, list[str], float]:
+def one_try(
+    delay: float, cwd: Path, root: Path = ROOT, again: float | None = None
+) -> tuple[int, float, list[str], float]:
     """(exit status, seconds from the signal until the group's last process closed stderr,
     stderr lines, seconds until the driver itself exited) of one sweep sent SIGINT to its
     group ``delay`` seconds after its start (a shell returns at the driver's exit; the
-    forkserver, busy with its imports, may hold the terminal a little longer)."""
+    forkserver, busy with its imports, may hold the terminal a little longer), and once
+    more ``again`` seconds after that if the driver still runs."""
     env = dict(os.environ, PYTHONPATH=str(root))
     proc = subprocess.Popen(
         [sys.executable, "-m", "sinktheory", *SWEEP], cwd=cwd, env=env,
@@ -51,6 +58,11 @@ def one_try(delay: float, cwd: Path, root: Path = ROOT) -> tuple[int, float, lis
             raise SystemExit(f"the sweep ended before the signal: {proc.communicate()}")
         sent = time.monotonic()
         os.killpg(proc.pid, signal.SIGINT)
+        if again is not None:
+            try:
+                proc.wait(timeout=again)
+            except subprocess.TimeoutExpired:
+                os.killpg(proc.pid, signal.SIGINT)
         proc.wait(timeout=60)
         driver = time.monotonic() - sent
         _, err = proc.communicate(timeout=60)  # EOF once every process of the group left
@@ -81,6 +93,8 @@ def main() -> None:
     parser.add_argument("--tries", type=int, default=11)
     parser.add_argument("--first", type=float, default=1.0, help="delay of the first try (s)")
     parser.add_argument("--last", type=float, default=8.0, help="delay of the last try (s)")
+    parser.add_argument("--again", type=float, default=None, metavar="S",
+                        help="a second SIGINT S seconds after the first")
     parser.add_argument("--root", type=Path, default=ROOT, help="the sinktheory tree to run")
     args = parser.parse_args()
     sys.path.insert(0, str(Path(__file__).parent))
@@ -91,7 +105,7 @@ def main() -> None:
     rows = []
     for delay in delays:
         with tempfile.TemporaryDirectory() as tmp:
-            status, took, lines, driver = one_try(delay, Path(tmp), args.root)
+            status, took, lines, driver = one_try(delay, Path(tmp), args.root, args.again)
         rows.append((status, took, lines, driver))
         first = lines[0] if lines else ""
         print(f"delay {delay:5.2f} s: status {status}, {len(lines)} line(s), driver exit "

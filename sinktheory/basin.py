@@ -321,6 +321,9 @@ class NumericWell:
             sign = float(np.sign(g(0.0, 0.0)))
             self.guards.append((g, rule, sign))
         self.v0 = float(self.f(0.0, 0.0))
+        # the sum of |terms| of V: its rounding error is a few ulps of it (so a well
+        # scaled by 1e-300 is not taken for one flat to rounding)
+        self.magnitude = numeric(sum(abs(t) for t in sp.Add.make_args(V)), self.values)
 
     def gradient(self, px: float, py: float) -> np.ndarray:
         return np.array(self._derivatives(px, py)[:2])
@@ -506,8 +509,11 @@ def escape(well: NumericWell, radius: float = 1.0) -> Escape:
                 f"basin of {well.name}: no exit found on the box |x|, |y| <= {R:g}"
             )
         e_lo, e_hi, comp = found
-        slack = 64 * np.finfo(float).eps * max(1.0, abs(well.v0))
         passes = comp & (values == e_hi)
+        # V(pass) equals V(0, 0) to rounding: to a few ulps of the terms there
+        scale = np.broadcast_to(well.magnitude(X, Y), values.shape)[passes]
+        scale = np.max(scale[np.isfinite(scale)], initial=abs(well.v0))  # inf: V is not v0
+        slack = 64 * np.finfo(float).eps * scale
         if e_hi <= well.v0 + slack:
             i = np.unravel_index(np.argmax(comp & (edge | singular)), values.shape)
             if edge[i] and 2 * R <= FAR_RADIUS:  # V flat to rounding near the centre
@@ -526,7 +532,7 @@ def escape(well: NumericWell, radius: float = 1.0) -> Escape:
         inner = passes & ~(edge | singular)
         for i in list(zip(*np.nonzero(inner), strict=True))[:_NEWTON_TRIES]:
             q = _newton(well.gradient, well.hessian, (X[i], Y[i]), 2 * h)
-            if q is not None and np.linalg.det(well.hessian(*q)) < 0:
+            if q is not None and np.linalg.slogdet(well.hessian(*q))[0] < 0:  # no underflow
                 point = (float(q[0]) + 0.0, float(q[1]) + 0.0)
                 return Escape(float(well.f(*q)), "saddle", point, (e_lo, e_hi), R, h)
         on_singular = passes & singular

@@ -12,6 +12,7 @@ import argparse
 import contextlib
 import json
 import re
+import signal
 import sys
 
 from . import commands
@@ -81,13 +82,48 @@ def _command(argv: list[str]) -> str | None:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Run ``sinktheory ARGV`` (default: this process's own arguments) and return its exit
+    status.  Without ``argv`` main is the process's command line (``python -m sinktheory``,
+    the ``sinktheory`` script): an interrupt then ends the process at once
+    (:func:`_exit_interrupted`); called with ``argv`` (tests, scripts), it raises
+    SystemExit(130 or 143) instead."""
+    whole = argv is None
     argv = sys.argv[1:] if argv is None else list(argv)
     command = _command(argv)
-    with interruptible(f"sinktheory {command}" if command else "sinktheory", hint=None):
-        try:
-            return _main(argv, command)
-        finally:  # nothing may print after the command's last line
-            settle_zarr()
+    try:
+        with interruptible(f"sinktheory {command}" if command else "sinktheory", hint=None):
+            try:
+                return _main(argv, command)
+            finally:  # nothing may print after the command's last line
+                settle_zarr()
+    except SystemExit as e:
+        if whole and e.code in INTERRUPTED:
+            _exit_interrupted(e.code)
+        raise
+
+
+#: The exit statuses of an interrupt: SIGINT (Ctrl-C) and SIGTERM.
+INTERRUPTED = (128 + signal.SIGINT, 128 + signal.SIGTERM)
+
+
+def _exit_interrupted(status: int) -> None:
+    """End an interrupted command's process now, its one line printed and its stores and
+    worker processes closed.  Python's own tear-down of the imported modules takes 1-2 s
+    once the compiled kernels, Dask and Zarr are loaded (measured at load 6), and a second
+    Ctrl-C during it ended the process with status -2 (SIGINT's default action, which
+    Python restores while tearing down): benchmarks/bench_interrupt_sweep.py --again 0.3,
+    4 of 4.  So further signals are ignored, the exit handlers run (multiprocessing's
+    finalizers release its semaphores) and the process ends without the tear-down."""
+    import atexit
+    import os
+
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(signum, signal.SIG_IGN)
+    atexit._run_exitfuncs()
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(Exception):
+            stream.flush()
+    os._exit(status)
 
 
 def _main(argv: list[str], command: str | None) -> int:

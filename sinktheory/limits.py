@@ -46,13 +46,19 @@ MAX_N = 1000
 #: alone takes minutes or gigabytes.
 MAX_RUNS = 10**7
 MAX_PERIODS = 10**9
-#: An optimistic cost of one particle step (measured 5e-7 s on 2 cores in 2026-11), used
-#: to refuse work that could not finish within MAX_SECONDS (30 days: a sweep's point) or
-#: MAX_INTERACTIVE_SECONDS (an hour: a computation that cannot resume).
-SECONDS_PER_PARTICLE_STEP = 1e-7
+#: The estimated cost of one particle step, used to refuse work that could not finish
+#: within MAX_SECONDS (30 days: a sweep's point) or MAX_INTERACTIVE_SECONDS (an hour: a
+#: computation that cannot resume).  benchmarks/bench_estimates.py (2-core Xeon, load
+#: 6-8, 2026-11-26) timed each command's work against its estimate at 1e-7 s: 1.1-2.3x
+#: longer for simulate, 2.7-4.0x for the adaptive stepper, 2.2-4.2x for compare and
+#: lifetime, 0.7-1.5x for the billiard and --n inf (chaos as simulate once its vectors are
+#: priced as measured, :data:`~sinktheory.worklimit.VECTOR_STEP`).  At 4e-7 s no command's
+#: estimate is more than about 5 % optimistic at that load; it is 2-5x pessimistic for the
+#: billiard and for simulate at its default tolerance, and more on a quiet machine.
+SECONDS_PER_PARTICLE_STEP = 4e-7
 MAX_SECONDS = 30 * 86400.0
-#: The longest estimated work (seconds at SECONDS_PER_PARTICLE_STEP, itself optimistic) a
-#: computation that cannot resume may start unless the user raises it (``--max-hours``,
+#: The longest estimated work (seconds at SECONDS_PER_PARTICLE_STEP) a computation that
+#: cannot resume may start unless the user raises it (``--max-hours``,
 #: :func:`sinktheory.worklimit.interactive_limit`).  The paper's largest jobs estimate
 #: minutes (``sinktheory reproduce`` as a whole about 83 s measured); an hour keeps a
 #: mistyped size from holding a machine for days, while a sweep goes up to MAX_SECONDS per

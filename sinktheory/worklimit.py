@@ -6,8 +6,9 @@ design points, sweep kinds, normal-mode continuation); the step they price comes
 integrate:
 
 * :func:`check_particle_steps` -- the work of a computation in particle steps, tangent
-  vectors included (:func:`tangent_steps`), priced at the optimistic
-  :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP`, against the limit in force
+  vectors included (:func:`tangent_steps`), priced at
+  :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP` (calibrated by
+  benchmarks/bench_estimates.py not to be optimistic), against the limit in force
   (:func:`max_seconds`); :func:`check_work` prices an ensemble the same way.
 
 Two limits.  A computation that cannot resume (a simulation, ``chaos``, ``nnm``, any call
@@ -23,8 +24,8 @@ refusal says the estimate, the limit and how to go bigger.
 Examples
 --------
 >>> from sinktheory import RunSettings, Sink, Well
->>> tangent_steps(particles=1, vectors=0), tangent_steps(particles=1, vectors=6)
-(1.0, 2.8)
+>>> tangent_steps(particles=1, vectors=0), tangent_steps(particles=5, vectors=1)
+(1.0, 15.1)
 >>> max_seconds() / 3600
 1.0
 >>> with resumable():
@@ -35,16 +36,16 @@ Examples
 Traceback (most recent call last):
 ...
 sinktheory.errors.ParameterError: periods = 100000 is not allowed: must be smaller: at most \
-3.6e+10 particle steps (1 h) in a computation that cannot resume (...about 2.78 h); use \
+9e+09 particle steps (1 h) in a computation that cannot resume (...about 11.1 h); use \
 fewer runs, periods or particles, raise the limit (--max-hours, or \
 sinktheory.worklimit.interactive_limit; up to 720 h), or split the work into the points \
 of a resumable `sinktheory sweep`)
->>> with interactive_limit(hours=3):
+>>> with interactive_limit(hours=12):
 ...     check_work(settings, sink, steps_per_period=10**5)
 >>> with resumable(), tally() as estimates:
 ...     check_work(settings, sink, steps_per_period=10**5)
 >>> duration(sum(estimates))
-'2.78 h'
+'11.1 h'
 """
 
 from __future__ import annotations
@@ -68,15 +69,20 @@ __all__ = [
     "resumable",
     "tally",
     "tangent_steps",
+    "TANGENT_OVERHEAD",
     "VECTOR_STEP",
 ]
 
-#: Particle steps one deviation vector adds per particle and step, at least: the tangent
-#: kick multiplies the vector by the particle's 2 x 2 Hessian block and the container
-#: coupling (0.48 and 0.41 of a particle step measured for flat n = 4, k = 5 and 20 with
-#: 22 and 82 vectors, by benchmarks/bench_worklimit.py at load 0.5); the lower value keeps
-#: the limit optimistic.
-VECTOR_STEP = 0.3
+#: Particle steps one deviation vector adds per particle and step: the tangent kick
+#: multiplies the vector by the particle's 2 x 2 Hessian block and the container coupling.
+#: benchmarks/bench_worklimit.py (one thread, load 7.8, 2026-11-26) measured a step with
+#: m vectors at a + b m plain steps, b = 0.66 and 0.64 for flat n = 4, k = 5 and 20; the
+#: larger value, rounded up, keeps the estimate from being optimistic.
+VECTOR_STEP = 0.7
+#: Particle steps a run's step with deviation vectors costs beyond its particles' and
+#: vectors' (the same measurement: a = 2.33 plain steps at k = 5 and 1.07 at k = 20, i.e.
+#: 6.6 and 1.4 particle steps; the larger is taken, so at k = 20 it is 1.2x pessimistic).
+TANGENT_OVERHEAD = 6.6
 
 
 #: Whether the work being checked is a resumable sweep's (set by :func:`resumable`).
@@ -93,9 +99,10 @@ def tangent_steps(particles: int, vectors: int) -> float:
     """Particle steps of one integration step of one run with ``vectors`` deviation vectors.
 
     A vector has 2 (1 + 2k) components, so the vectors of a spectrum cost about the square
-    of the dimension: ``k (1 + VECTOR_STEP x vectors)``.
+    of the dimension: ``k (1 + VECTOR_STEP x vectors) + TANGENT_OVERHEAD`` (no overhead
+    without vectors).
     """
-    return particles * (1.0 + VECTOR_STEP * vectors)
+    return particles * (1.0 + VECTOR_STEP * vectors) + (TANGENT_OVERHEAD if vectors else 0.0)
 
 
 def max_seconds() -> float:
@@ -169,7 +176,7 @@ def check_particle_steps(
     name: str, value: object, steps: float, what: str, change: str = "smaller"
 ) -> None:
     """Refuse ``value`` of ``name`` when ``steps`` particle steps (``what`` says of what)
-    would take longer than the limit in force (:func:`max_seconds`) at the optimistic
+    would take longer than the limit in force (:func:`max_seconds`) at
     :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP`; the message gives the estimate,
     the limit and the way to a larger job.  ``change`` says which way ``value`` must move
     ("larger" for a clearance, say)."""
@@ -195,7 +202,7 @@ def check_particle_steps(
         f"{change}: at most {limit / SECONDS_PER_PARTICLE_STEP:.3g} particle steps "
         f"({duration(limit)}) {where}",
         why=f"{what} is {steps:.3g} particle steps at {SECONDS_PER_PARTICLE_STEP:g} s each, "
-        f"at least {seconds:.3g} s (about {duration(seconds)}); {bigger}",
+        f"estimated {seconds:.3g} s (about {duration(seconds)}); {bigger}",
     )
 
 

@@ -82,8 +82,10 @@ PERIOD = 2 * math.pi
 #: Particle steps (:data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP`) one
 #: conservative-advancement step counts for in the work estimate: 1.2e-6 to 4e-5 s per
 #: step of the lower bound of :func:`advancement_steps` were measured (flat table,
-#: E0 = 0.5 to 5e7, fixed and moving, 2026-11 on the 2-core development machine); 1e-6 s
-#: keeps the estimate optimistic.
+#: E0 = 0.5 to 5e7, fixed and moving, 2026-11 on the 2-core development machine), and
+#: 0.4-1.1e-6 s at the default E0 (benchmarks/bench_estimates.py, load 5-8).  10 steps
+#: (4e-6 s) is 4-10x pessimistic at the default E0 and up to 10x optimistic at the
+#: largest: the lower bound's cost per step varies 30-fold with E0.
 ADVANCEMENT_STEP = 10.0
 
 

@@ -184,8 +184,7 @@ def add_work_limit(parser: argparse.ArgumentParser) -> None:
         type=number,
         default=None,
         metavar="H",
-        help="refuse work estimated above H hours (default 1, at most 720; the estimate is "
-        "optimistic)",
+        help="refuse work estimated above H hours (default 1, at most 720)",
     )
 
 

@@ -124,7 +124,7 @@ def estimate_line(sweep) -> str:
 
     return (
         f"{sweep.grid.size} point(s), estimated work {duration(sweep.estimate)} in all "
-        f"(optimistic: {SECONDS_PER_PARTICLE_STEP:g} s per particle step; each point may "
+        f"({SECONDS_PER_PARTICLE_STEP:g} s per particle step; each point may "
         f"take up to {duration(MAX_SECONDS)})"
     )
 

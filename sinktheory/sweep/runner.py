@@ -300,10 +300,11 @@ class _Engine:
         pool = ProcessPoolExecutor(
             workers, mp_context=context, initializer=_start_worker, initargs=(os.getpid(),)
         )
+        starter: list[threading.Thread] = []  # the thread that submits (see _run_pool)
         self._close = lambda: pool.shutdown(wait=True, cancel_futures=True)
-        self._abort = lambda: _end_workers(pool)
+        self._abort = lambda: _end_workers(pool, starter)
         self.where = f"{workers} local processes"
-        return _run_pool(pool, kind.name, tasks)
+        return _run_pool(pool, kind.name, tasks, starter)
 
     def __exit__(self, kind, error, traceback) -> None:
         if kind is not None and self._abort is not None:
@@ -313,15 +314,22 @@ class _Engine:
         self._close = self._abort = None  # the pool and its queues can be freed now
 
 
-def _end_workers(pool: ProcessPoolExecutor, grace: float = 0.5) -> None:
-    """End a pool at once, its running tasks too (an interrupt, a failed point): queued
-    tasks are cancelled and the worker processes terminated (SIGTERM, then SIGKILL after
-    ``grace`` seconds), so neither the driver nor its workers wait for tasks in flight.
+def _end_workers(
+    pool: ProcessPoolExecutor, starter: list[threading.Thread], grace: float = 0.5
+) -> None:
+    """End a pool at once, its running tasks too (an interrupt, a failed point), in order:
+    the forkserver first (:func:`_end_forkserver`; the thread still starting workers,
+    ``starter``, waits for it, then fails and ends), then the worker processes (SIGTERM,
+    then SIGKILL after ``grace`` seconds), then the pool's own thread, queued tasks
+    cancelled.  Neither the driver nor its workers wait for tasks in flight.
 
     A worker holds SIGTERM while a compiled call runs (:func:`sinktheory.progress.chunks`,
     a tenth of a second), but its first task also loads the compiled kernels inside that
     call (a second or more); the workers hold nothing the driver needs (it alone writes
     the store), so the grace is short: a 2 s grace made Ctrl-C take 2.5-2.7 s."""
+    _end_forkserver()
+    for thread in starter:
+        thread.join(2.0)  # it fails at once now; the pool's lock is free when it is done
     processes = list((getattr(pool, "_processes", None) or {}).values())
     for process in processes:
         if process.is_alive():
@@ -341,14 +349,37 @@ def _run_here(kind: str, tasks: list) -> Iterator[tuple[list, list]]:
         yield task, _checked(kind, task)
 
 
-def _run_pool(pool: ProcessPoolExecutor, kind: str, tasks: list) -> Iterator[tuple[list, list]]:
-    with HeldSignals() as signals:
+def _run_pool(
+    pool: ProcessPoolExecutor, kind: str, tasks: list, starter: list[threading.Thread]
+) -> Iterator[tuple[list, list]]:
+    """Submit the tasks and yield their results as they finish, a signal held while the
+    pool's code runs and acted on every 0.2 s.
+
+    The first submits start the worker processes, and each start waits until the
+    forkserver has imported the package (2-5 s on a loaded machine).  They run in a thread
+    of their own (appended to ``starter``), so that the main thread can answer Ctrl-C
+    meanwhile (before, it waited with the signal held: the driver exited up to 2.4 s
+    after it, benchmarks/bench_interrupt_sweep.py)."""
+    futures: dict = {}
+    failed: list[BaseException] = []
+
+    def submit() -> None:
         try:
-            with _main_file_hidden():  # the workers are started by these submits
-                futures = {pool.submit(_checked, kind, task): task for task in tasks}
-        except (EOFError, OSError, BrokenProcessPool):
+            for task in tasks:
+                futures[pool.submit(_checked, kind, task)] = task
+        except BaseException as e:  # raised in the main thread below
+            failed.append(e)
+
+    with HeldSignals() as signals:
+        with _main_file_hidden():  # while the workers start
+            starter.append(threading.Thread(target=submit, name="pool-start", daemon=True))
+            starter[0].start()
+            while starter[0].is_alive():
+                starter[0].join(0.1)
+                signals.release()  # an interrupt raises here
+        if failed:
             signals.release()  # an interrupt that ended the forkserver is raised instead
-            raise
+            raise failed[0]
         remaining = set(futures)
         while remaining:
             finished, remaining = wait(remaining, timeout=0.2, return_when=FIRST_COMPLETED)
@@ -443,6 +474,20 @@ def _start_forkserver() -> None:
         forkserver.ensure_running()
     finally:
         signal.signal(signal.SIGINT, signal.SIG_DFL if previous is None else previous)
+
+
+def _end_forkserver() -> None:
+    """Kill the forkserver started by :func:`_start_forkserver`, if it runs (an interrupt,
+    a failed point).  It holds nothing but imported modules, and left alone it would
+    finish its imports and then tear them down after the driver had gone, keeping the
+    terminal 1-2 s longer.  The next pool of this process starts a new one
+    (``forkserver.ensure_running`` finds it dead and reaps it)."""
+    from multiprocessing import forkserver
+
+    pid = getattr(forkserver._forkserver, "_forkserver_pid", None)
+    if pid is not None:
+        with contextlib.suppress(OSError):
+            os.kill(pid, signal.SIGKILL)
 
 
 def _start_worker(driver: int) -> None:

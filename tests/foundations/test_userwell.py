@@ -237,6 +237,24 @@ def test_the_disc_radius_is_the_neighbourhood_checked():
         check_well(well, radius=3)
     with pytest.raises(WellDefinitionError, match=r"radius: -1.0 is refused"):
         check_well(well, radius=-1)
+    # r**2 underflows on the finest ring: refused at once (the basin's search took 4-23 s
+    # doubling its box from 1e-300 before)
+    with pytest.raises(WellDefinitionError, match=r"radius: 1e-300 is refused: must be in "):
+        check_well(UserWell("u", "x**2 + y**2", {}), radius=1e-300)
+
+
+@pytest.mark.parametrize("scale", [1e-300, 1.0, 1e300])
+def test_a_well_scaled_by_any_factor_has_its_saddles_scaled(scale):
+    """V = s (x^2 + y^2 - x^4) has its saddles at x^2 = 1/2, V = s/4 (exact), for s from
+    1e-300 to 1e300: a tiny V was taken for one flat to rounding (an absolute slack of
+    1e-14) and refused as not confining, and the saddle's Hessian determinant (s^2)
+    underflowed; a scaled confining well is accepted."""
+    escape = check_well(UserWell("u", f"{scale!r}*(x**2 + y**2 - x**4)", {})).basin.escape
+    assert escape.kind == "saddle"
+    assert escape.escape_potential == pytest.approx(scale / 4, rel=1e-12)
+    assert abs(escape.point[0]) == pytest.approx(0.5**0.5, rel=1e-12)
+    bowl = check_well(UserWell("u", f"{scale!r}*(x**2 + y**2)", {})).basin.escape
+    assert bowl.kind == "box"  # bounded as far as the search reaches: no refusal
 
 
 def test_y_invariance_is_decided_symbolically():

@@ -23,11 +23,12 @@ from _cli import run_cli
 ROOT = Path(__file__).resolve().parents[2]
 WELL = ["--alpha", "0.5", "--beta", "0.3"]
 LONG = ["--runs", "2", "--periods", "1000000"]
-#: Starts the command as ``python -m sinktheory`` does, saying on stderr when the package
-#: is imported (a signal during Python's own start-up is not the command's to handle).
+#: Starts the command as ``python -m sinktheory`` does (``main()`` reads the process's own
+#: arguments and may end the process itself), saying on stderr when the package is
+#: imported (a signal during Python's own start-up is not the command's to handle).
 LAUNCH = (
     "import sys; from sinktheory.cli import main; print('ready', file=sys.stderr, flush=True); "
-    "sys.exit(main(sys.argv[1:]))"
+    "sys.exit(main())"
 )
 
 
@@ -50,6 +51,9 @@ def compiled(tmp_path_factory):
         ["simulate", *WELL, "--n", "4", "--runs", "1", "--periods", "1"],
         ["simulate", *WELL, "--n", "inf", "--runs", "1", "--periods", "1"],
         ["chaos", *WELL, "--n", "4", "--runs", "1", "--periods", "1"],
+        ["simulate", *WELL, "--n", "4", "--runs", "1", "--periods", "1", "--stepper", "adaptive"],
+        ["lifetime", *WELL, "--n", "4", "--runs", "2", "--periods", "5", "--transient", "1"],
+        ["compare", "--damping", "0.05", "--runs", "2", "--periods", "1"],
         ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=0.3", "--param", "n=4",
          "--param", "runs=1", "--param", "periods=1", "--workers", "1", "--quiet",
          "--out", str(out / "w.zarr")],
@@ -95,6 +99,11 @@ CASES = {
     "simulate": (["simulate", *WELL, "--n", "4", *LONG, "--plot", "out.png"], signal.SIGTERM,
                  None),
     "chaos": (["chaos", *WELL, "--n", "4", *LONG], signal.SIGINT, None),
+    "simulate-adaptive": (["simulate", *WELL, "--n", "4", *LONG, "--stepper", "adaptive"],
+                          signal.SIGINT, None),
+    "lifetime": (["lifetime", *WELL, "--n", "4", *LONG], signal.SIGTERM, None),
+    "compare": (["compare", "--damping", "0.05", "--runs", "2", "--periods", "100000",
+                 "--max-hours", "100"], signal.SIGINT, None),
     # one period of ~1e10 impacts: the compiled call does not return for minutes, so the
     # signal's watcher ends the process (SIGTERM could not stop it, not even timeout's);
     # estimated at 21.6 h, so the one-hour limit is raised
@@ -208,3 +217,32 @@ def test_ctrl_c_while_the_forkserver_starts_is_discarded(tmp_path):
     assert "Traceback" not in done.stderr and "KeyboardInterrupt" not in done.stderr, done.stderr
     state, restored = done.stdout.split()[1::2]
     assert state in ("R", "S") and restored == "True", (done.stdout, done.stderr)
+
+
+def test_a_second_ctrl_c_while_exiting_changes_nothing(tmp_path):
+    """An impatient user presses Ctrl-C twice.  Once the one line was printed, Python's
+    tear-down of the loaded modules took 1-2 s, and a second SIGINT during it ended the
+    process with status -2 (benchmarks/bench_interrupt_sweep.py --again 0.3: 4 of 4).
+    The command line (``main()`` without arguments, as ``python -m sinktheory`` runs it)
+    now ends the process at once and ignores further signals."""
+    argv = ["simulate", *WELL, "--n", "4", *LONG]
+    proc = subprocess.Popen(
+        [sys.executable, "-c", LAUNCH, *argv],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path, env=ENV,
+    )  # fmt: skip
+    try:
+        assert proc.stderr.readline() == "ready\n"
+        time.sleep(2.5)
+        assert proc.poll() is None, proc.communicate()  # still computing
+        proc.send_signal(signal.SIGINT)
+        line = proc.stderr.readline()  # printed before the tear-down
+        time.sleep(0.2)
+        if proc.poll() is None:
+            proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
+    assert proc.returncode == 130, (line, err)
+    assert (line, err, out) == ("sinktheory simulate: interrupted\n", "", "")

@@ -343,8 +343,8 @@ def test_the_steppers_registry_is_what_simulate_dispatches_on():
 
 def test_tiny_step_is_estimated_and_refused_over_the_hour(capsys, tmp_path, monkeypatch):
     """Issue 34: --dt 1e-7 ran past a minute unannounced.  2 runs x 3 periods is 3.8e8
-    particle steps (38 s at the optimistic 1e-7 s: allowed); 300 periods are 2 x 300 x
-    ceil(2 pi / 1e-7) = 3.77e10 particle steps, over the hour's 3.6e10: refused."""
+    particle steps (151 s at 4e-7 s: allowed); 300 periods are 2 x 300 x
+    ceil(2 pi / 1e-7) = 3.77e10 particle steps, over the hour's 9e9: refused."""
     import math
 
     from _cli import refused
