@@ -47,6 +47,7 @@ __all__ = [
     "params_of",
     "run",
     "SETTINGS",
+    "summary_line",
 ]
 
 NAME = "design"
@@ -256,7 +257,6 @@ def _run(args: argparse.Namespace) -> Output:
     if store.exists() and not args.resume:
         raise ParameterError("out", args.out, "a new store", why="it exists; --resume continues it")
     from ..design.explorer import DesignRun, plan, todo_of  # xarray, zarr: when exploring
-    from ..plot.design import label
     from ..sweep.runner import execute
 
     sweep = plan(params_of(args), args.seed)
@@ -312,15 +312,10 @@ def _run(args: argparse.Namespace) -> Output:
         f"{done.seconds:.1f} s on {done.where}"
         + ("" if est is None else f" (estimated {est.total_seconds:.0f} s)"),
         f"results: {done.store} (xarray.open_zarr)",
-        "best designs (depth = long-time fraction of E0 absorbed, t50 in periods):",
+        "best designs (depth = long-time fraction of E0 absorbed, t50 in periods, lambda_1 "
+        "per unit time; where its runs split, the regular count and each group's lambda_1):",
     ]
-    for r in best[:5]:
-        where = ", ".join(f"{d} = {label(r[d])}" for d in dims)
-        lines.append(
-            f"  #{r['rank']} (Pareto layer {r['layer']}) {where}: depth {_n(r['depth'])} "
-            f"+- {_n(r['depth_se'])}, t50 {_n(r['t50'], 0, 'never')}, spread/E0 "
-            f"{_n(r['rel_spread'])}, {r['verdict']}"
-        )
+    lines += [summary_line(r, dims) for r in ranked[: min(top, 5)]]
     writers = {}
     if report is not None:
         from ..design.report import write_report
@@ -332,6 +327,24 @@ def _run(args: argparse.Namespace) -> Output:
         )
         lines.append(f"report: {report / 'report.md'}")
     return Output(data, "\n".join(lines), writers)
+
+
+def summary_line(r: dict, dims: list[str]) -> str:
+    """One ranked design (a row of :func:`sinktheory.design.ranking.rank`) as a line of the
+    text summary: place in the grid, depth, t50, spread, verdict (the numbers ``--json``
+    lists, :func:`_row`) and lambda_1 as the report's table gives it
+    (:func:`sinktheory.design.report.lambda1_text`: where the runs split into regular and
+    chaotic ones, the regular count and each group's lambda_1, not their mean)."""
+    from ..design.report import lambda1_text
+    from ..plot.design import label
+
+    d = _row(r, dims)
+    where = ", ".join(f"{k} = {label(r[k])}" for k in dims)
+    return (
+        f"  #{d['rank']} (Pareto layer {d['layer']}) {where}: depth {_n(d['depth'])} "
+        f"+- {_n(d['depth_se'])}, t50 {_n(d['t50'], 0, 'never')}, spread/E0 "
+        f"{_n(d['rel_spread'])}, {d['verdict']}, lambda_1 {lambda1_text(r)}"
+    )
 
 
 def _n(x: float | None, digits: int = 3, missing: str = "n/a") -> str:

@@ -8,11 +8,19 @@ from typing import Any
 
 from ..results import Result
 
-__all__ = ["BEYOND", "Claim", "Scene", "SceneResult"]
+__all__ = ["BEYOND", "Claim", "Scene", "SceneResult", "SIGN_CALL"]
 
 HOLDS, FAILS, UNDECIDED = "holds", "does not hold", "cannot be decided"
 #: Prefix of a claim the report adds to the paper's (not counted as the paper's own).
 BEYOND = "(beyond the paper)"
+#: Why a row judged by a chaos indicator needs no run of three relaxation times (the
+#: report's rule for every "does not hold": a long enough run, or a stated reason).
+SIGN_CALL = (
+    "No run of three relaxation times is needed: the row calls the sign of an exponent, not "
+    "a level approached over a relaxation time; a regular orbit's finite-time exponent "
+    "decays like ln t / t, below the envelope 3 ln t / t at any horizon, and in this "
+    "conservative system an orbit of the chaotic sea never settles onto a torus"
+)
 
 
 @dataclass(frozen=True)

@@ -23,9 +23,10 @@ from ..plot.paper import orbit_figure, orbit_panel
 from ..sweep import run_sweep
 from ..sweep.chaosmap import beta_grid, chaos_map
 from ..sweep.views import bifurcation_diagram
-from .base import BEYOND, FAILS, HOLDS, UNDECIDED, Claim, Scene, SceneResult
+from .base import BEYOND, FAILS, HOLDS, SIGN_CALL, UNDECIDED, Claim, Scene, SceneResult
 
-__all__ = ["FIG11", "FIG3", "MARGIN", "false_call", "generic_runs", "transverse_calls"]
+__all__ = ["FIG11", "FIG3", "MARGIN", "false_call", "generic_runs", "mode_touching",
+           "transverse_calls"]
 
 
 def _fidelity(quick: bool) -> dict:
@@ -86,21 +87,28 @@ def _coupled_mode(alpha, n, shape, ranges, quick):
     energy (:func:`sinktheory.nnm.agreement.transverse_chart`) on MODE_POINTS betas of the
     range holding MODE_START, started from the particle's mode shot at E = 0.5 (which the
     container's mode continued up in energy becomes, :mod:`sinktheory.nnm.agreement`):
-    the chart, or a sentence saying why there is none."""
+    (chart, start orbit), or a sentence saying why there is none."""
+    if quick:
+        return "the coupled normal mode's Floquet multipliers are not computed in a --quick preview"
+    lo, hi = next((a, b) for a, b in ranges if a < MODE_START < b)
+    return _mode_chart(alpha, n, shape, MODE_START, np.linspace(lo, hi, MODE_POINTS))
+
+
+def _mode_chart(alpha, n, shape, beta, betas):
+    """The coupled normal mode's transverse chart on ``betas`` (total energy 0.5, m = 0.2),
+    its branch started from the particle's mode shot at ``beta``: (chart, the start
+    orbit), or a sentence saying why there is none."""
     from ..errors import NumericalError
     from ..model import Sink, Well
     from ..nnm.agreement import transverse_chart
     from ..nnm.modes import mode_guess, sink_flow
     from ..nnm.shooting import shoot
 
-    if quick:
-        return "the coupled normal mode's Floquet multipliers are not computed in a --quick preview"
-    lo, hi = next((a, b) for a, b in ranges if a < MODE_START < b)
-    sink = Sink(Well(alpha, MODE_START, n, shape=shape), particles=1, mass=0.2)
+    sink = Sink(Well(alpha, beta, n, shape=shape), particles=1, mass=0.2)
     try:
         z0, T = mode_guess(sink, "particle", 0.5)
         start = shoot(sink_flow(sink), z0, T, steps=400, total_energy=0.5, subspace="plane")
-        return transverse_chart(sink, 0.5, np.linspace(lo, hi, MODE_POINTS), start=start)
+        return transverse_chart(sink, 0.5, betas, start=start), start
     except NumericalError as e:  # ShootingError: the branch cannot be followed
         return f"the coupled normal mode could not be followed at E = 0.5 ({e})"
 
@@ -162,6 +170,7 @@ def _floquet_claim(label, floq, mode) -> Claim:
     if isinstance(mode, str):
         return Claim(statement, f"fixed-container Floquet-stable beta: {fixed}; {mode}",
                      UNDECIDED)  # fmt: skip
+    mode = mode[0]
     betas = mode.beta
     step = float(betas[1] - betas[0])
     theory = floq.chart.problem.evaluate(betas).stable
@@ -252,7 +261,7 @@ def _plane_claim(label, diagram, floq, cmap) -> Claim:
     )  # fmt: skip
     measured_text += (
         f". Power: a theory wrong at half the betas of a side is flagged with chance "
-        f"{power:.2f} (holds needs 0.8)"
+        f"{power:.2f} (holds needs 0.8). {SIGN_CALL}"
     )
     verdict = FAILS if fails else (HOLDS if holds else UNDECIDED)
     return Claim(statement, measured_text, verdict, physics if verdict != UNDECIDED else "")
@@ -325,6 +334,12 @@ def _claims(panels, label_of) -> list[Claim]:
 #: well below the width a window needs to show on the paper's Fig. 3 (its beta axis spans
 #: 1.15, so a visible window is ~0.01 wide).
 TOUCH_WIDTH, TOUCH_POINTS = 0.02, (11, 21)
+#: Half-width and points of the fine beta grid on which the coupled normal mode's transverse
+#: multipliers are computed around each touching (paper fidelity only, like the Floquet
+#: rows): the same step, 0.002, on a wider grid, since the container's motion moves the
+#: touching (phi_half = 0 of the coupled mode at E = 0.5, m = 0.2: +0.008 from the
+#: fixed-container touching at n = 10, +0.029 at n = 2).
+MODE_TOUCH_WIDTH, MODE_TOUCH_POINTS = 0.04, 41
 
 
 def _window(calls: np.ndarray, centre: int) -> str:
@@ -342,14 +357,62 @@ def _window(calls: np.ndarray, centre: int) -> str:
     return "unresolved"
 
 
+def mode_touching(n: int, touching: float) -> tuple[str, str, dict]:
+    """The coupled normal mode (flat well, alpha = 1/2, E = 0.5, m = 0.2) on the fine grid
+    MODE_TOUCH_POINTS around a fixed-container touching: what its transverse multipliers
+    show (:func:`_window` of their calls, centred where its half-trace phi_half changes
+    sign, i.e. where phi_T = -1; "unresolved" without a sign change on the grid), a
+    sentence, and the numbers: the coupled touching ``beta``, ``stable`` grid points, and
+    at the fixed-container touching the full-period transverse half-trace ``phi_T`` (from
+    the monodromy's multipliers), ``square`` = 2 phi_half^2 - 1 (from the half-period map)
+    and the half-period symmetry error ``symmetry`` of the orbit."""
+    betas = touching + np.linspace(-MODE_TOUCH_WIDTH, MODE_TOUCH_WIDTH, MODE_TOUCH_POINTS)
+    got = _mode_chart(0.5, n, "flat", touching, betas)
+    if isinstance(got, str):
+        return "unresolved", got, {}
+    chart, start = got
+    phi = chart.phi_half[:, 0]
+    sign = np.flatnonzero(np.sign(phi[:-1]) != np.sign(phi[1:]))
+    calls = np.where(chart.stable, -1, 1)
+    num = {
+        "stable": int(chart.stable.sum()),
+        "phi_T": float(np.mean(start.floquet.transverse.real)),
+        "square": float(2 * start.transverse_half_traces()[0] ** 2 - 1),
+        "symmetry": start.half_period()[2],
+    }
+    if not sign.size:
+        text = (f"its phi_half keeps one sign on [{betas[0]:.4f}, {betas[-1]:.4f}], stable at "
+                f"{num['stable']} of {betas.size} betas")  # fmt: skip
+        return "unresolved", text, num
+    j = int(sign[0])
+    num["beta"] = float(betas[j] - phi[j] * (betas[j + 1] - betas[j]) / (phi[j + 1] - phi[j]))
+    kind = _window(calls, j if abs(phi[j]) <= abs(phi[j + 1]) else j + 1)
+    text = (
+        f"coupled normal mode: phi_half = 0 (phi_T = -1) at beta = {num['beta']:.4f}, transverse "
+        f"multipliers stable at {num['stable']} of {betas.size} betas -> {kind}; at the "
+        f"touching its full-period phi_T = {num['phi_T']:.6f} against 2 phi_half^2 - 1 = "
+        f"{num['square']:.6f} (half-period symmetry error {num['symmetry']:.0e})"
+    )
+    return kind, text, num
+
+
 def _touching_claim(panels, quick: bool) -> Claim:
-    """The phi = -1 claim in the full system: the transverse exponent of y = 0 of the
-    oscillating container on a fine beta grid around each touching of each panel."""
+    """The phi = -1 claim in the full system: the coupled normal mode's transverse Floquet
+    multipliers (paper fidelity) and the transverse exponent of runs on the plane y = 0
+    of the oscillating container, each on a fine beta grid around each touching of each
+    panel.  The mode decides (the claim is about its stability intervals); without it
+    (--quick, or a mode that cannot be followed) the runs do."""
     f = _fidelity(quick)
     points = TOUCH_POINTS[0 if quick else 1]
-    found, parts = [], []
+    found, parts, modes, shifts = [], [], [], []
     for n, floq in panels:
         for r in floq.resonances:
+            if not quick:
+                kind, text, num = mode_touching(n, r)
+                modes.append(kind)
+                parts.append(f"n = {n}, touching at beta = {r:.4f}: {text}")
+                if "beta" in num:
+                    shifts.append(f"{num['beta'] - r:+.3f} at n = {n}")
             betas = r + np.linspace(-TOUCH_WIDTH, TOUCH_WIDTH, points)
             cmap = chaos_map(0.5, n, betas, runs=f["runs"], periods=f["periods"],
                              transient=f["periods"] // 10)  # fmt: skip
@@ -358,19 +421,43 @@ def _touching_claim(panels, quick: bool) -> Claim:
             found.append(kind)
             m = cmap.transverse.values
             parts.append(
-                f"n = {n}, touching at beta = {r:.4f}: transverse exponent {m.min():.3f} to "
-                f"{m.max():.3f} ({m[points // 2]:.3f} at the touching); unstable at "
-                f"{int((calls == 1).sum())}, stable at {int((calls == -1).sum())} of "
-                f"{points} betas -> {kind}"
+                f"n = {n}, touching at beta = {r:.4f}: runs on the plane y = 0: transverse "
+                f"exponent {m.min():.3f} to {m.max():.3f} ({m[points // 2]:.3f} at the "
+                f"touching); unstable at {int((calls == 1).sum())}, stable at "
+                f"{int((calls == -1).sum())} of {points} betas -> {kind}"
             )
     step = 2 * TOUCH_WIDTH / (points - 1)
     statement = "narrow instability windows inside stability intervals come from phi = -1 touchings"
-    measured = (
-        "; ".join(parts) + f" (each: {points} betas, step {step:.3g}, +-{TOUCH_WIDTH:g} around "
-        f"the touching; {f['runs']} runs x {f['periods']} periods started on y = 0, calls at "
+    measured = "; ".join(parts) + (
+        f" (coupled mode: {MODE_TOUCH_POINTS} betas, step "
+        f"{2 * MODE_TOUCH_WIDTH / (MODE_TOUCH_POINTS - 1):.3g}, +-{MODE_TOUCH_WIDTH:g}, "
+        "shooting at E = 0.5, m = 0.2, stable where its transverse multipliers lie on the "
+        "unit circle; " if modes else " ("
+    ) + (
+        f"runs: {points} betas, step {step:.3g}, +-{TOUCH_WIDTH:g} around the touching; "
+        f"{f['runs']} runs x {f['periods']} periods started on y = 0, calls at "
         f"{MARGIN:g} s.e. as in the Floquet rows). In the linear equation phi_T = "
-        "2 phi_half^2 - 1 only touches -1: a window of zero width"
+        "2 phi_half^2 - 1 only touches -1: a window of zero width. "
+        + ("The coupled mode is exact to the shooting's precision and the runs' calls are "
+           "of an exponent's sign: no run of three relaxation times is needed" if modes else
+           SIGN_CALL)
     )
+    if modes and "unresolved" not in modes:
+        if all(k == "window" for k in modes):
+            return Claim(statement, measured, HOLDS, "")
+        if all(k == "stable" for k in modes):
+            return Claim(statement, measured, FAILS, (
+                "No window at the touchings: the container's motion moves them (phi_T = -1 of "
+                f"the coupled normal mode at {', '.join(shifts)} from the fixed container's), "
+                "but the coupled mode is odd under the half-period shift, as the fixed one, so "
+                "its phi_T is still 2 phi_half^2 - 1 >= -1 and its transverse multipliers stay "
+                "on the unit circle across each fine grid: phi = -1 is touched, never crossed "
+                "(a window of zero width)"
+                + ("; runs on the plane y = 0 away from the mode are transversally unstable "
+                   "across the grid anyway" if set(found) == {"unstable"} else "")
+                + ". Narrow features in bifurcation diagrams near these betas would need "
+                "another cause."))  # fmt: skip
+        return Claim(statement, measured, UNDECIDED)
     if not found or "unresolved" in found:
         return Claim(statement, measured + ("" if found else "; no touching found"), UNDECIDED)
     holds = all(k == "window" for k in found)

@@ -10,7 +10,7 @@ from ..chaos.verdicts import THRESHOLD_FACTOR
 from ..layout import StateLayout
 from ..model import RunSettings, Sink, Well
 from ..plot.paper import trajectory_panels
-from .base import FAILS, HOLDS, Claim, Scene, SceneResult
+from .base import FAILS, HOLDS, SIGN_CALL, Claim, Scene, SceneResult
 
 __all__ = ["BETAS", "FIG4", "SALI_CHAOTIC", "SAMPLES", "indicators", "trajectory"]
 
@@ -85,7 +85,7 @@ def _fig4(quick: bool) -> SceneResult:
                 f"{measured} (per trajectory: lambda_1 after a transient of {periods // 5} "
                 f"periods, chaotic above {THRESHOLD_FACTOR:g} ln t / t = {rows[0][2]:.3f}; "
                 f"SALI below {SALI_CHAOTIC:g} agrees at {same}"
-                f" of {len(BETAS)} betas)",
+                f" of {len(BETAS)} betas). {SIGN_CALL}",
                 HOLDS if regular and wild else FAILS,
                 (
                     f"From the paper's start the path is regular at beta = "

@@ -400,8 +400,9 @@ def test_design_points_split_lambda1_like_the_chaos_sweep(tmp_path):
     """A design point keeps its Lyapunov runs' split (regular count, each group's lambda_1).
     It must match the chaos sweep's split, made from per-run exponents of the same starts
     (same point seeds; box 0.1, where beta = 0 puts some runs in islands), and where the
-    runs are mixed the report's table, the CSV and the JSON give the split, not the mean."""
-    from sinktheory.commands.design import _row
+    runs are mixed the report's table, the CSV, the JSON and the command's text summary give
+    the split, not the mean (a point whose runs do not split gives its mean there)."""
+    from sinktheory.commands.design import _row, summary_line
     from sinktheory.design.report import report_text, write_csv
     from sinktheory.sweep import run_sweep
     from sinktheory.sweep.views import split_points
@@ -428,3 +429,9 @@ def test_design_points_split_lambda1_like_the_chaos_sweep(tmp_path):
     assert "regular_runs" in head and "lambda1_split" not in head
     data = _row(mixed, ["beta"])
     assert data["split_lambda1"]["regular"] == 3 and data["split_lambda1"]["mixed"]
+    line = summary_line(mixed, ["beta"])
+    assert f"lambda_1 mixed: 3 of 6 regular ({s.regular_mean:.4f}" in line
+    assert f"chaotic ({s.chaotic_mean:.3f}" in line and f"{mixed['lambda1']:.3f}" not in line
+    chaotic = next(r for r in run.ranked if r["beta"] == 0.2)
+    assert summary_line(chaotic, ["beta"]).endswith(
+        f"lambda_1 {chaotic['lambda1']:.3f} ± {chaotic['lambda1_se']:.3f}")
