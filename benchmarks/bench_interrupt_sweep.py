@@ -93,8 +93,13 @@ def main() -> None:
     parser.add_argument("--tries", type=int, default=11)
     parser.add_argument("--first", type=float, default=1.0, help="delay of the first try (s)")
     parser.add_argument("--last", type=float, default=8.0, help="delay of the last try (s)")
-    parser.add_argument("--again", type=float, default=None, metavar="S",
-                        help="a second SIGINT S seconds after the first")
+    parser.add_argument(
+        "--again",
+        type=float,
+        default=None,
+        metavar="S",
+        help="a second SIGINT S seconds after the first",
+    )
     parser.add_argument("--root", type=Path, default=ROOT, help="the sinktheory tree to run")
     args = parser.parse_args()
     sys.path.insert(0, str(Path(__file__).parent))

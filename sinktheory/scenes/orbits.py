@@ -25,8 +25,15 @@ from ..sweep.chaosmap import beta_grid, chaos_map
 from ..sweep.views import bifurcation_diagram
 from .base import BEYOND, FAILS, HOLDS, SIGN_CALL, UNDECIDED, Claim, Scene, SceneResult
 
-__all__ = ["FIG11", "FIG3", "MARGIN", "false_call", "generic_runs", "mode_touching",
-           "transverse_calls"]
+__all__ = [
+    "FIG11",
+    "FIG3",
+    "MARGIN",
+    "false_call",
+    "generic_runs",
+    "mode_touching",
+    "transverse_calls",
+]
 
 
 def _fidelity(quick: bool) -> dict:
@@ -428,19 +435,28 @@ def _touching_claim(panels, quick: bool) -> Claim:
             )
     step = 2 * TOUCH_WIDTH / (points - 1)
     statement = "narrow instability windows inside stability intervals come from phi = -1 touchings"
-    measured = "; ".join(parts) + (
-        f" (coupled mode: {MODE_TOUCH_POINTS} betas, step "
-        f"{2 * MODE_TOUCH_WIDTH / (MODE_TOUCH_POINTS - 1):.3g}, +-{MODE_TOUCH_WIDTH:g}, "
-        "shooting at E = 0.5, m = 0.2, stable where its transverse multipliers lie on the "
-        "unit circle; " if modes else " ("
-    ) + (
-        f"runs: {points} betas, step {step:.3g}, +-{TOUCH_WIDTH:g} around the touching; "
-        f"{f['runs']} runs x {f['periods']} periods started on y = 0, calls at "
-        f"{MARGIN:g} s.e. as in the Floquet rows). In the linear equation phi_T = "
-        "2 phi_half^2 - 1 only touches -1: a window of zero width. "
-        + ("The coupled mode is exact to the shooting's precision and the runs' calls are "
-           "of an exponent's sign: no run of three relaxation times is needed" if modes else
-           SIGN_CALL)
+    measured = (
+        "; ".join(parts)
+        + (
+            f" (coupled mode: {MODE_TOUCH_POINTS} betas, step "
+            f"{2 * MODE_TOUCH_WIDTH / (MODE_TOUCH_POINTS - 1):.3g}, +-{MODE_TOUCH_WIDTH:g}, "
+            "shooting at E = 0.5, m = 0.2, stable where its transverse multipliers lie on the "
+            "unit circle; "
+            if modes
+            else " ("
+        )
+        + (
+            f"runs: {points} betas, step {step:.3g}, +-{TOUCH_WIDTH:g} around the touching; "
+            f"{f['runs']} runs x {f['periods']} periods started on y = 0, calls at "
+            f"{MARGIN:g} s.e. as in the Floquet rows). In the linear equation phi_T = "
+            "2 phi_half^2 - 1 only touches -1: a window of zero width. "
+            + (
+                "The coupled mode is exact to the shooting's precision and the runs' calls are "
+                "of an exponent's sign: no run of three relaxation times is needed"
+                if modes
+                else SIGN_CALL
+            )
+        )
     )
     if modes and "unresolved" not in modes:
         if all(k == "window" for k in modes):

@@ -434,4 +434,5 @@ def test_design_points_split_lambda1_like_the_chaos_sweep(tmp_path):
     assert f"chaotic ({s.chaotic_mean:.3f}" in line and f"{mixed['lambda1']:.3f}" not in line
     chaotic = next(r for r in run.ranked if r["beta"] == 0.2)
     assert summary_line(chaotic, ["beta"]).endswith(
-        f"lambda_1 {chaotic['lambda1']:.3f} ± {chaotic['lambda1_se']:.3f}")
+        f"lambda_1 {chaotic['lambda1']:.3f} ± {chaotic['lambda1_se']:.3f}"
+    )
