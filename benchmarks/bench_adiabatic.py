@@ -26,7 +26,10 @@ response falls steeply as c grows (c ~ sqrt(E / m)).
 
 For each table beta: S(q) from ``--spectrum-runs`` unit-speed particles, uniform over the
 fixed table in random directions (seed ``--spectrum-seed``), x sampled every 0.05 over
-``--spectrum-time`` (Welch, segments of 800, Hann window), its bootstrap over the runs.
+``--spectrum-time`` (Welch, segments of 800, Hann window), its bootstrap over the runs;
+from the same runs the autocorrelation of the x-share v_x^2 / c^2 of a particle's energy
+at t = 1, 10, 100 and its integral up to 100 (how fast the direction mixes; divide the
+times by c for a particle of speed c).
 For each case m:E:beta (k = ``--particles``, flat well, alpha 0.5): the slow mode's t_r
 measured by predict_rigid_relaxation (12 x 100 rigid billiards from the shell, seed
 ``--seed``, lags 16-128), the linear-response t_r (95 % over the spectrum's runs), the
@@ -54,30 +57,42 @@ from sinktheory.billiard.table import rigid_table
 from sinktheory.equilibrium.prediction import law_chain
 
 DT, SEGMENT, ALPHA, RESAMPLES = 0.05, 800.0, 0.5, 99
+SHARE_LAGS = [1.0, 10.0, 100.0]  # time units at unit speed
 CASES = ["0.2:0.125:0.3", "0.2:0.5:0.3", "0.2:2.0:0.3", "0.1:0.25:0.3", "0.4:1.0:0.3",
          "0.1:0.5:0.3", "0.4:0.5:0.3", "0.2:0.5:0.1", "0.2:0.5:-0.3"]  # fmt: skip
 
 
-def position_spectrum(beta, runs, duration, seed):
-    """(omega, S (run, omega), variance of x) two-sided spectra of x of unit-speed particles in the
-    fixed table (module docstring)."""
+def fixed_table_motion(beta, runs, duration, seed):
+    """(omega, S (run, omega), variance of x, C (lag,) at SHARE_LAGS, its integral to
+    the last lag) of unit-speed particles in the fixed table (module docstring): S the
+    two-sided spectrum of x, C the autocorrelation of the x-share v_x^2 / c^2 of the
+    energy (how fast the direction mixes)."""
     table = rigid_table("flat", ALPHA, beta)
     pos, vel, _ = rigid_shell_states(table, 1, 1.0, 0.5, 0.0, runs, np.random.default_rng(seed))
     arrays = _table_arrays(table)
     steps = int(duration / DT)
-    xs = np.empty((runs, steps))
+    xs, share = np.empty((runs, steps)), np.empty((runs, steps))
     out = (np.zeros((runs, steps + 1)), np.zeros((runs, steps + 1)),
            np.zeros((runs, len(arrays[0])), dtype=np.int64), np.zeros(runs, dtype=np.int64),
            np.zeros((runs, 2)))  # fmt: skip
     for j in range(steps):  # one record every DT: the kernel's "period" is DT
         K.run_fixed(pos, vel, np.zeros((runs, 0, 4)), j, j + 1, DT, *arrays, out)
         xs[:, j] = pos[:, 0, 0]
+        share[:, j] = vel[:, 0, 0] ** 2
     if out[3].any():
         raise RuntimeError("fixed billiard failed")
     speed = np.sqrt((vel**2).sum(axis=-1))
     assert np.allclose(speed, 1.0, atol=1e-9), "unit speed not kept"
     f, p = signal.welch(xs, fs=1 / DT, nperseg=int(SEGMENT / DT), axis=-1)
-    return 2 * math.pi * f, p / 2, float(xs.var())  # one-sided per Hz -> two-sided per omega
+    y = share - share.mean()
+    spec = np.abs(np.fft.rfft(y, 2 * steps, axis=1)) ** 2
+    corr = np.fft.irfft(spec, axis=1)[:, :steps].mean(axis=0) / (steps - np.arange(steps))
+    corr /= corr[0]
+    last = int(SHARE_LAGS[-1] / DT)
+    picks = corr[[int(t / DT) for t in SHARE_LAGS]]
+    # one-sided density per Hz -> two-sided per omega
+    return (2 * math.pi * f, p / 2, float(xs.var()), picks,
+            float(np.trapezoid(corr[: last + 1], dx=DT)))  # fmt: skip
 
 
 def linear_response_time(omega, spec, k, m, energy):
@@ -121,22 +136,26 @@ def main() -> None:
     print(describe())
     k = args.particles
     cases = [tuple(float(x) for x in c.split(":")) for c in args.cases]
-    spectra = {}
+    spectra, mixing = {}, []
     print(f"S(q) of x at unit speed, {args.spectrum_runs} runs x {args.spectrum_time:g} "
           f"(seed {args.spectrum_seed}):")  # fmt: skip
     qs = [0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0, 3.0, 5.0]
     print("  beta   " + " ".join(f"{q:>7g}" for q in qs) + "   int S / pi, <x^2>")
     for beta in sorted({c[2] for c in cases}):
         t0 = time.perf_counter()
-        omega, spec, var_x = position_spectrum(beta, args.spectrum_runs, args.spectrum_time,
-                                        args.spectrum_seed)  # fmt: skip
+        omega, spec, var_x, share, tau = fixed_table_motion(
+            beta, args.spectrum_runs, args.spectrum_time, args.spectrum_seed)
         spectra[beta] = omega, spec
+        mixing.append(f"  {beta:5.2f}  C(1, 10, 100) = " + ", ".join(f"{c:.3f}" for c in share)
+                      + f"; integral to 100: {tau:.1f}")  # fmt: skip
         mean = spec.mean(axis=0)
         near = [mean[np.abs(omega - q) < 0.05].mean() for q in qs]
         var = np.trapezoid(mean, omega) / math.pi
         took = time.perf_counter() - t0
         print(f"  {beta:5.2f}  " + " ".join(f"{x:7.4f}" for x in near)
               + f"   {var:.4f}, {var_x:.4f}  [{took:.0f} s]", flush=True)  # fmt: skip
+    print("direction mixing at unit speed: autocorrelation C(t) of v_x^2 / c^2")
+    print("\n".join(mixing))
     print(f"k = {k}, flat, alpha {ALPHA}; t_r in periods; shell seed {args.seed}")
     print("   m      E    beta   c_eq  hits/t  measured t_r (95 %)   linear response (95 %)"
           "   ratio   random impacts")  # fmt: skip
