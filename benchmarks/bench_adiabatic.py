@@ -58,8 +58,8 @@ from sinktheory.equilibrium.prediction import law_chain
 
 DT, SEGMENT, ALPHA, RESAMPLES = 0.05, 800.0, 0.5, 99
 SHARE_LAGS = [1.0, 10.0, 100.0]  # time units at unit speed
-CASES = ["0.2:0.125:0.3", "0.2:0.5:0.3", "0.2:2.0:0.3", "0.1:0.25:0.3", "0.4:1.0:0.3",
-         "0.1:0.5:0.3", "0.4:0.5:0.3", "0.2:0.5:0.1", "0.2:0.5:-0.3"]  # fmt: skip
+CASES = ["0.2:0.125:0.3", "0.2:0.5:0.3", "0.2:2.0:0.3", "0.05:0.125:0.3", "0.1:0.25:0.3",
+         "0.4:1.0:0.3", "0.1:0.5:0.3", "0.4:0.5:0.3", "0.2:0.5:0.1", "0.2:0.5:-0.3"]  # fmt: skip
 
 
 def fixed_table_motion(beta, runs, duration, seed):
