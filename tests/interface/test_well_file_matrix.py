@@ -29,7 +29,7 @@ WELLS = {
     "hh": (["--well", "hh.toml"], "0.02"),
 }
 NOT_INVARIANT = "dV/dy(x, 0) = x**2, not identically 0"
-SWEEP_KINDS = "the kinds that take a well: bifurcation, ensemble"
+SWEEP_KINDS = "the kinds that take a well: bifurcation, ensemble, chaos"
 
 
 def ellipse_reach_x(e):
@@ -143,9 +143,12 @@ ROWS = [
       for w in WELLS
       for kind, extra in (("bifurcation", ["--param", "transient=2", "--param", "count=3"]),
                           ("ensemble", ["--param", "particles=2", "--param", "runs=2",
-                                        "--param", "periods=2"]))],
+                                        "--param", "periods=2"]),
+                          ("chaos", ["--param", "runs=2", "--param", "periods=3"]))],
+    ("sweep", "hh", ["chaos", "--param", "container_energy=E0", "--param", "transverse=1",
+                     "--out", "s.zarr", "--quiet"], NOT_INVARIANT),
     *[("sweep", "hh", [kind, "--out", "s.zarr"], SWEEP_KINDS)
-      for kind in ("floquet", "chaos", "ergodicity", "design")],
+      for kind in ("floquet", "ergodicity", "design")],
     ("relaxation", "elliptic", ["--particles", "2"], "the relaxation model reads a registered"),
     ("period", "hh", ["--n", "2"], "it has no well"),
     ("series", "hh", [], "it has no well"),
@@ -159,7 +162,8 @@ DESIGN = ["--beta", "0.3", "--n", "3", "--runs", "2", "--periods", "12", "--hori
 
 def ids(row):
     command, well, args, expect = row
-    word = args[0] if command == "sweep" else ("refused" if isinstance(expect, str) else "runs")
+    word = args[0] if command == "sweep" else ""
+    word += "-refused" if isinstance(expect, str) else "-runs"
     extra = "-adaptive" if "adaptive" in args else "-transverse" if "--transverse" in args else ""
     return f"{command}-{word}{extra}-{well}"
 
