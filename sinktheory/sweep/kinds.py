@@ -584,6 +584,7 @@ KINDS["ergodicity"] = Kind(
         * p["particles"]
         * (p["periods"] * p["runs"] + 3 * p["lyapunov_periods"] * p["lyapunov_runs"])
     ),
+    user_well=True,
 )
 
 
