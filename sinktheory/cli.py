@@ -81,6 +81,28 @@ def _command(argv: list[str]) -> str | None:
     return None
 
 
+def _no_well(argv: list[str], command: str | None) -> str | None:
+    """The one-line refusal of ``--well FILE`` (or ``--well-param``) given to a command
+    that cannot use a user's well (its module's ``NO_WELL`` says why), else None.
+
+    Examples
+    --------
+    >>> _no_well(["period", "--well", "w.toml", "--n", "4"], "period")  # doctest: +ELLIPSIS
+    "well = 'w.toml' is not allowed: must be left out of period (it has no well: ..."
+    >>> _no_well(["floquet", "--well", "w.toml"], "floquet") is None
+    True
+    """
+    reason = getattr(commands.load(command), "NO_WELL", None) if command else None
+    for i, word in enumerate(argv):
+        name, _, value = word.partition("=")
+        if reason and name in ("--well", "--well-param"):
+            if not value and i + 1 < len(argv):
+                value = argv[i + 1]
+            return str(ParameterError(name[2:].replace("-", "_"), value or None,
+                                      f"left out of {command} ({reason})"))  # fmt: skip
+    return None
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run ``sinktheory ARGV`` (default: this process's own arguments) and return its exit
     status.  Without ``argv`` main is the process's command line (``python -m sinktheory``,
@@ -132,6 +154,10 @@ def _main(argv: list[str], command: str | None) -> int:
         print(f"sinktheory {command}: note: {note} (the old name goes in the next release)",
               file=sys.stderr)  # fmt: skip
     parser = build_parser(command or "")
+    refusal = _no_well(argv, command)
+    if refusal:  # before argparse asks for the options a well file would replace
+        print(f"sinktheory {command}: error: {refusal}", file=sys.stderr)
+        return 2
     try:
         args = parser.parse_args(argv)
     except UsageError as e:

@@ -36,7 +36,7 @@ import numpy as np
 import sympy as sp
 
 from .. import symbolic as S
-from ..errors import ParameterError, WellDefinitionError
+from ..errors import NumericalError, ParameterError, WellDefinitionError
 from ..model import Well
 from ..results import Result
 from ..validation import positive
@@ -107,9 +107,16 @@ class Piece:
 
 
 def _quad(f, lo, hi) -> float:
+    """The integral of ``f`` over [lo, hi] to about 1e-12.  QUADPACK's warning that
+    rounding keeps it from that tolerance (a graph piece with an infinite slope at its
+    end, as the ellipse's perimeter has) would reach the user's terminal: its error
+    estimate is checked instead, and one above 1e-10 of the value is a NumericalError."""
     from scipy.integrate import quad
 
-    value, _ = quad(f, lo, hi, limit=200, epsabs=1e-13, epsrel=1e-12)
+    value, err, *_ = quad(f, lo, hi, limit=200, epsabs=1e-13, epsrel=1e-12, full_output=1)
+    if not err <= 1e-10 * max(abs(value), 1.0):
+        raise NumericalError(f"the table's quadrature over [{lo:.6g}, {hi:.6g}]: error estimate "
+                             f"{err:.2g} for the value {value:.6g}")  # fmt: skip
     return float(value)
 
 

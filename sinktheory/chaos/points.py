@@ -67,9 +67,12 @@ def points(points: list) -> list[dict]:
     groups: dict[tuple, list[int]] = {}
     steps = [_chaos_step(p, seed) for p, seed in points]
     for i, (p, _) in enumerate(points):
-        same = ("shape", "n", "particles", "periods", "scheme", "gali", "megno", "transverse",
-                "renorm", "energy_bound", "stop_early", "transient")  # fmt: skip
-        key = (*(p[k] for k in same), steps[i] if p["renorm"] else None)
+        same = ("particles", "periods", "scheme", "gali", "megno", "transverse", "renorm",
+                "energy_bound", "stop_early", "transient")  # fmt: skip
+        # the engine: a registered shape, or a user's well by its text (its own parameters
+        # in place of shape and n, which it may lack)
+        engine = (p.get("well"), p.get("shape"), p.get("n"))
+        key = (*engine, *(p[k] for k in same), steps[i] if p["renorm"] else None)
         groups.setdefault(key, []).append(i)
     out: list = [None] * len(points)
     for members in groups.values():

@@ -7,10 +7,12 @@ import argparse
 from . import HELP as HELPS
 from ._common import Output, add_json, number
 
-__all__ = ["add_arguments", "decimal_text", "HELP", "NAME", "run"]
+__all__ = ["add_arguments", "NO_WELL", "decimal_text", "HELP", "NAME", "run"]
 
 NAME = "period"
 HELP = HELPS[NAME]
+#: Why ``--well FILE`` is refused (see :func:`sinktheory.cli.main`).
+NO_WELL = "it has no well: the oscillator x'' + x^(2n-1) = 0 of one degree of freedom"
 
 
 def decimal_text(text: str) -> str:

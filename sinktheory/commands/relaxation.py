@@ -17,10 +17,12 @@ from ._common import (
     well_from_args,
 )
 
-__all__ = ["add_arguments", "HELP", "NAME", "run", "TABLE_ROWS"]
+__all__ = ["add_arguments", "NO_WELL", "HELP", "NAME", "run", "TABLE_ROWS"]
 
 NAME = "relaxation"
 HELP = HELPS[NAME]
+#: Why ``--well FILE`` is refused (see :func:`sinktheory.cli.main`).
+NO_WELL = "the relaxation model reads a registered shape's alpha, beta and n"
 #: Rows of the printed curve.
 TABLE_ROWS = 10
 

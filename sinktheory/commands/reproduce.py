@@ -21,10 +21,12 @@ from ..scenes import FIGURES, estimate
 from . import HELP as HELPS
 from ._common import Output, add_json, as_directory, output_directory
 
-__all__ = ["add_arguments", "HELP", "NAME", "run"]
+__all__ = ["add_arguments", "NO_WELL", "HELP", "NAME", "run"]
 
 NAME = "reproduce"
 HELP = HELPS[NAME]
+#: Why ``--well FILE`` is refused (see :func:`sinktheory.cli.main`).
+NO_WELL = "the paper's figures are drawn for the registered shapes"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

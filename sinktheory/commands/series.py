@@ -7,10 +7,12 @@ import argparse
 from . import HELP as HELPS
 from ._common import Output, add_json, number, png_path
 
-__all__ = ["add_arguments", "HELP", "NAME", "run"]
+__all__ = ["add_arguments", "NO_WELL", "HELP", "NAME", "run"]
 
 NAME = "series"
 HELP = HELPS[NAME]
+#: Why ``--well FILE`` is refused (see :func:`sinktheory.cli.main`).
+NO_WELL = "it has no well: the triangle-wave series of the oscillator x'' + x^(2n-1) = 0"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -138,11 +138,16 @@ def check_point(p: dict) -> None:
     if not isinstance(p, dict):
         raise v.ParameterError("p", p, "a dict of the point's parameters")
     allowed = (*MODEL, *DEFAULTS, REPLICA)
+    if "well" in p:  # a user's well (its text): its own parameters replace the shape's
+        from ..userwell import read_well
+
+        own = read_well(p["well"]).parameter_names
+        allowed = ("well", *own, "particles", "mass", "container_energy", *DEFAULTS, REPLICA)
     for name in p:
         if name not in allowed:
             raise v.ParameterError(name, p[name], f"a parameter of a point: {', '.join(allowed)}")
     for name, default in MODEL.items():
-        if default is None and name not in p:
+        if default is None and name not in p and "well" not in p:
             raise v.ParameterError(name, "missing", "given (alpha, beta and n are required)")
     p = {**DEFAULTS, **p}
     sink, settings = _sink_settings(p, 0)

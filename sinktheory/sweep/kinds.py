@@ -557,6 +557,7 @@ KINDS["chaos"] = Kind(
         3 * (1 + p["transverse"]) * SECONDS_PER_PERIOD * p["periods"] * p["runs"] * p["particles"]
     ),
     compute_many=_lazy(".chaos.points", "points"),
+    user_well=True,
 )
 
 
@@ -583,6 +584,7 @@ KINDS["ergodicity"] = Kind(
         * p["particles"]
         * (p["periods"] * p["runs"] + 3 * p["lyapunov_periods"] * p["lyapunov_runs"])
     ),
+    user_well=True,
 )
 
 

@@ -122,7 +122,7 @@ def run_sweep(
         their checksum are always recomputed; damaged coordinates always refuse.)
     well : UserWell, optional
         A user's well (:class:`~sinktheory.userwell.UserWell`) in place of the shape and
-        alpha, beta, n, gamma (kinds bifurcation, ensemble and design): its own
+        alpha, beta, n, gamma (kinds bifurcation, ensemble, chaos, ergodicity): its own
         parameters are then those of ``params``.  The same as ``params["well"]``; its
         text (:func:`~sinktheory.userwell.well_text`) is stored with the results and sent
         to the workers, so a resumed sweep and a remote worker rebuild the same well.
