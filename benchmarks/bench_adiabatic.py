@@ -144,7 +144,8 @@ def main() -> None:
     for beta in sorted({c[2] for c in cases}):
         t0 = time.perf_counter()
         omega, spec, var_x, share, tau = fixed_table_motion(
-            beta, args.spectrum_runs, args.spectrum_time, args.spectrum_seed)
+            beta, args.spectrum_runs, args.spectrum_time, args.spectrum_seed
+        )
         spectra[beta] = omega, spec
         mixing.append(f"  {beta:5.2f}  C(1, 10, 100) = " + ", ".join(f"{c:.3f}" for c in share)
                       + f"; integral to 100: {tau:.1f}")  # fmt: skip
