@@ -223,3 +223,12 @@ def fuzz_one(function, valid: dict, data, values=HOSTILE, baseline=None) -> None
     if result is not None and baseline is None:
         where = non_finite(result)
         assert where is None, f"{argument} = {value!r} returned {where} silently"
+
+
+def cli_json(argv, capsys) -> dict:
+    """The JSON object ``sinktheory ARGV --json`` prints (asserting exit status 0)."""
+    import json
+
+    code, out, err = run_cli([*argv, "--json"], capsys)
+    assert code == 0, err
+    return json.loads(out)

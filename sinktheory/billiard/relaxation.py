@@ -147,19 +147,11 @@ def measure_rigid_settling(shape: str, alpha: float, beta: float, measure, *,
     >>> round(r.target, 12), runs.container_energy.shape
     (0.25, (8, 601))
     """
-    from ..equilibrium.prediction import check_fraction, read_settling
-    from ..model import RunSettings
+    from ..equilibrium.prediction import check_fraction, measure_settings, read_settling
     from .run import billiard
 
     fraction = check_fraction(fraction)
-    try:
-        runs, periods = measure
-    except (TypeError, ValueError):
-        raise ParameterError("measure", measure, "a pair (runs, periods)") from None
-    runs = v.positive_int("measure", runs, minimum=3)
-    periods = v.positive_int("measure", periods, minimum=24)
-    settings = RunSettings(container_energy=container_energy, runs=runs, periods=periods,
-                           seed=seed)  # fmt: skip
+    settings = measure_settings(measure, container_energy, seed)
     result = billiard(shape, alpha, beta, particles=particles, mass=mass, settings=settings)
     total = float(np.mean(result.total_energy[:, 0]))
     r = read_settling(result.container_energy, total / (result.particles + 1),

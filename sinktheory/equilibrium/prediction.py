@@ -94,6 +94,7 @@ __all__ = [
     "law_chain",
     "LawChain",
     "log_lambdas",
+    "measure_settings",
     "measure_settling",
     "MODEL_FACTOR",
     "predict_relaxation",
@@ -654,19 +655,31 @@ def measure_settling(sink: Sink, container_energy: float, measure, *, fraction: 
     ``measure = (runs, periods)`` runs from the paper's start at E0 = ``container_energy``."""
     from ..simulate import simulate
 
+    settings = measure_settings(measure, container_energy, seed)
+    settings.check(sink)
+    sim = simulate(sink, settings, tol=tol, progress=False)
+    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
+    return read_settling(sim.container_energy, law.mean, fraction=fraction, seed=seed,
+                         resamples=resamples), sim  # fmt: skip
+
+
+def measure_settings(measure, container_energy: float, seed: int) -> RunSettings:
+    """The :class:`~sinktheory.model.RunSettings` of ``measure = (runs, periods)`` runs from
+    E0 = ``container_energy``: at least 3 runs and 24 periods (ParameterError naming
+    ``measure`` otherwise).
+
+    Examples
+    --------
+    >>> measure_settings((8, 100), 0.5, 1).runs
+    8
+    """
     try:
         runs, periods = measure
     except (TypeError, ValueError):
         raise ParameterError("measure", measure, "a pair (runs, periods)") from None
     runs = v.positive_int("measure", runs, minimum=3)
     periods = v.positive_int("measure", periods, minimum=24)
-    settings = RunSettings(container_energy=container_energy, runs=runs, periods=periods,
-                           seed=seed)  # fmt: skip
-    settings.check(sink)
-    sim = simulate(sink, settings, tol=tol, progress=False)
-    law = equilibrium_law(sink, float(np.mean(sim.initial_energy)))
-    return read_settling(sim.container_energy, law.mean, fraction=fraction, seed=seed,
-                         resamples=resamples), sim  # fmt: skip
+    return RunSettings(container_energy=container_energy, runs=runs, periods=periods, seed=seed)
 
 
 def read_settling(energy_runs, target: float, *, fraction: float = 0.05, seed: int = 0,

@@ -4,12 +4,11 @@ registry's numbers, an elliptic and a Henon-Heiles well file give closed forms o
 independent quadratures, and a bad well or a well a command cannot use is refused with
 one line, exit 2, nothing written."""
 
-import json
 import math
 
 import numpy as np
 import pytest
-from _cli import BUILT_IN, ELLIPTIC, HH, PAPER, refused_well, run_cli, write_well_file
+from _cli import BUILT_IN, ELLIPTIC, HH, PAPER, cli_json, refused_well, write_well_file
 from scipy import integrate, optimize, special
 
 ELLIPSE = {"a": 0.3, "b": 0.25, "gamma": 1.0, "n": (4, (1, 20))}
@@ -18,12 +17,6 @@ WALLS = {
     "flat": ["x/(alpha + beta*(y**2 - 1))", "y"],
     "circular": ["sqrt(x**2 + y**2)/(alpha - beta)"],
 }
-
-
-def cli_json(argv, capsys):
-    code, out, err = run_cli([*argv, "--json"], capsys)
-    assert code == 0, err
-    return json.loads(out)
 
 
 @pytest.fixture

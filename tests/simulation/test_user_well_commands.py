@@ -14,11 +14,9 @@ definition, so the paper's flat well is shared with test_user_well_simulate.py):
   are refused with the reason.
 """
 
-import json
-
 import numpy as np
 import pytest
-from _cli import BUILT_IN, HH, LIFTED_HH, PAPER, refused_well, run_cli, write_well_file
+from _cli import BUILT_IN, HH, LIFTED_HH, PAPER, cli_json, refused_well, write_well_file
 from scipy import optimize
 
 from sinktheory import RunSettings, Sink, Well
@@ -34,12 +32,6 @@ from sinktheory.wellat import WellAt
 #: Hénon–Heiles lifted by 1: every energy of the commands is measured from V(0, 0) = 1
 LIFTED = LIFTED_HH
 REGISTRY = ["--shape", "flat", "--alpha", "0.5", "--beta", "0.3", "--n", "4"]
-
-
-def cli_json(argv, capsys):
-    code, out, err = run_cli([*argv, "--json"], capsys)
-    assert code == 0, err
-    return json.loads(out)
 
 
 @pytest.fixture
