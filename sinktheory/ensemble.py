@@ -56,6 +56,7 @@ __all__ = [
     "start_positions",
     "start_state",
     "total_energy",
+    "well_of_text",
 ]
 
 #: What :func:`sinktheory.simulate.simulate` can record.
@@ -462,7 +463,7 @@ def sink_of(p: Mapping) -> Sink:
     if text is None:
         well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
     else:
-        names = _read_well(text).parameter_names
+        names = well_of_text(text).parameter_names
         well = _well_at(text, tuple((k, p[k]) for k in names if k in p))
     return Sink(well, particles=p["particles"], mass=p["mass"])
 
@@ -476,8 +477,9 @@ def _shape_wells(wells: str | None) -> dict[str, str]:
 
 
 @functools.lru_cache(maxsize=16)
-def _read_well(text: str):
-    """The :class:`~sinktheory.userwell.UserWell` of a well's text (parsed once a process)."""
+def well_of_text(text: str):
+    """The :class:`~sinktheory.userwell.UserWell` of a well's text as a sweep point holds it
+    (:func:`sinktheory.userwell.well_text`), parsed once a process."""
     from .userwell import read_well
 
     return read_well(text)
@@ -489,7 +491,7 @@ def _well_at(text: str, values: tuple):
     ((name, value) pairs): a point's check and its computation share one check."""
     from .wellat import WellAt
 
-    return WellAt(_read_well(text), **dict(values))
+    return WellAt(well_of_text(text), **dict(values))
 
 
 def settings_of(p: Mapping, seed: int) -> RunSettings:

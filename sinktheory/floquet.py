@@ -878,7 +878,15 @@ POINT_QUANTITIES = ("lam", "phi_half", "phi", "stable", "log_abs_phi_half", "rot
 
 def check_point(p: dict) -> None:
     """Check a ``floquet`` sweep point (alpha, beta, n, gamma, shape, amplitude, rtol)
-    with the model's own validators."""
+    with the model's own validators; a user's well's point (``well``, its text, and its
+    parameters' values) is checked as :func:`well_hill` checks it: y = 0 invariant, or a
+    ParameterError with the reason."""
+    if "well" in p:
+        well, values = _point_well(p)
+        v.positive("amplitude", p["amplitude"])
+        v.positive("rtol", p["rtol"])
+        well_hill(well, values)
+        return
     model_problem(
         p["alpha"],
         p["n"],
@@ -891,7 +899,9 @@ def check_point(p: dict) -> None:
 
 def point(p: dict, seed: int) -> dict:
     """The :data:`POINT_QUANTITIES` of :func:`model_hill` at the point's one beta (the
-    seed is not used: the chart is deterministic)."""
+    seed is not used: the chart is deterministic); of a user's well, :func:`_well_point`."""
+    if "well" in p:
+        return _well_point(*_point_well(p), p["amplitude"], p["rtol"])
     c = model_hill(
         p["alpha"],
         [p["beta"]],
@@ -903,6 +913,37 @@ def point(p: dict, seed: int) -> dict:
     )
     items = c.items()  # the chart's quantities (sinktheory.results protocol)
     return {name: items["lambda" if name == "lam" else name][0] for name in POINT_QUANTITIES}
+
+
+def _point_well(p: dict):
+    """(the user's well of a sweep point, its parameters' values by name)."""
+    from .ensemble import well_of_text
+
+    well = well_of_text(p["well"])
+    return well, {name: p[name] for name in well.parameter_names if name in p}
+
+
+def _well_point(well, values: dict, amplitude: float, rtol: float) -> dict:
+    """The :data:`POINT_QUANTITIES` of a user's well at ``amplitude``
+    (:func:`well_floquet`): lam is NaN (Hill's lambda of the paper's wells); phi_half, its
+    log and the rotation number arccos(phi_half)/pi are NaN unless V is even in x (no
+    half-period map); the Floquet exponent is the growth per period over the orbit's
+    period for mass 1.  Near abs(phi_half) = 1 the rotation number comes from arccos
+    directly (the registered charts use cancellation-free factors there)."""
+    f = well_floquet(well, amplitude, values, rtol=rtol)
+    half = f.phi_half
+    with np.errstate(divide="ignore", invalid="ignore"):
+        log_half = float(np.log(abs(half)))
+        rotation = float(np.arccos(np.clip(half, -1.0, 1.0)) / np.pi)
+    return {
+        "lam": math.nan,
+        "phi_half": half,
+        "phi": f.phi,
+        "stable": bool(f.stable),
+        "log_abs_phi_half": log_half,
+        "rotation_number": rotation,
+        "floquet_exponent": f.growth_per_period / f.period,
+    }
 
 
 # ----------------------------------------------------------------- a user's well

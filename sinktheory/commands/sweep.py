@@ -104,7 +104,8 @@ def params_of(specs: list[str]) -> dict[str, list[Value]]:
 def params_with_well(args: argparse.Namespace) -> dict:
     """The ``--param`` options, with ``--well FILE`` as the parameter ``well`` (its
     :class:`~sinktheory.userwell.UserWell`) and each ``--well-param NAME=VALUE`` as a
-    ``--param`` (a name given by both is refused as given twice)."""
+    ``--param`` (a name given by both is refused as given twice).  A design sweep puts the
+    well on its shape axis instead, beside the shapes of ``--param shape=...``."""
     if args.well is None:
         if args.well_param:
             raise ParameterError("well_param", args.well_param[0], "given with --well FILE")
@@ -112,9 +113,13 @@ def params_with_well(args: argparse.Namespace) -> dict:
     params = params_of(args.param + args.well_param)
     if "well" in params:
         raise ParameterError("well", params["well"], "given as --well FILE, not as --param")
+    from ..sweep.kinds import get_kind
     from ..userwell import load_well
 
-    return {**params, "well": load_well(args.well)}
+    well = load_well(args.well)
+    if get_kind(args.kind).shape_wells:  # design: the well is one more shape
+        return {**params, "shape": [*params.get("shape", []), well]}
+    return {**params, "well": well}
 
 
 def estimate_line(sweep) -> str:

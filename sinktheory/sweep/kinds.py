@@ -270,6 +270,10 @@ class Kind:
         well's parameter names)."""
         from ..userwell import UserWell, read_well, well_text
 
+        if self.shape_wells:
+            raise ParameterError("well", getattr(well, "name", well), f"on the shape axis of "
+                                 f"a {self.name} sweep (shape = [..., the well]; on the "
+                                 "command line, --well FILE adds it there)")  # fmt: skip
         if not self.user_well:
             takes = ", ".join(k.name for k in KINDS.values() if k.user_well)
             raise ParameterError("well", getattr(well, "name", well), f"left out of a "
@@ -421,7 +425,9 @@ KINDS = {
         _lazy(".floquet", "check_point"),
         _lazy(".floquet", "point"),
         batch=64,
-        cost=lambda p: 1e-4,  # measured 6e-5 to 7e-5 s for n = 2 to 1000
+        cost=lambda p: 1e-4 if "well" not in p else 0.5,  # measured 6e-5 to 7e-5 s for
+        # n = 2 to 1000; a user's well: its check and Hill equation, 0.4 s (notebook)
+        user_well=True,
     ),
     "bifurcation": Kind(
         "bifurcation",

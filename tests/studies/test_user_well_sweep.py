@@ -10,6 +10,7 @@ derivatives of the user's text) and ``simulate`` of a WellAt, each computed here
 
 import json
 import pickle
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -67,7 +68,7 @@ def test_a_point_rebuilds_its_well_from_the_stored_text(tmp_path):
     path.unlink()
     from sinktheory import ensemble
 
-    ensemble._read_well.cache_clear(), ensemble._well_at.cache_clear()
+    ensemble.well_of_text.cache_clear(), ensemble._well_at.cache_clear()
     _, point, seed = pickle.loads(task)
     assert str(path) not in point["well"]
     section = sweep.kind.compute(point, seed)["section"]
@@ -133,13 +134,38 @@ def test_the_command_line_refuses_a_shape_beside_a_well(extra, reason, tmp_path,
     refused_well(args, capsys, tmp_path, monkeypatch, reason)
 
 
-def test_a_kind_that_takes_no_well_says_which_do():
-    with pytest.raises(
-        ParameterError,
-        match=r"^well = 'hh' .* left out of a floquet sweep "
-        r"\(the kinds that take a well: bifurcation, ensemble, chaos, ergodicity",
-    ):
-        Sweep.make("floquet", {"well": UserWell("hh", HH, {})})
+def test_a_design_sweep_takes_a_well_on_its_shape_axis():
+    """As ``well`` it is refused, saying where it goes; ``sweep design --well FILE`` puts it
+    there, beside the shapes of --param shape=..."""
+    import argparse
+
+    from sinktheory.commands.sweep import params_with_well
+
+    with pytest.raises(ParameterError, match=r"^well = 'hh' .* on the shape axis of a design"):
+        Sweep.make("design", {"well": UserWell("hh", HH, {})})
+    path = str(Path(__file__).parents[2] / "docs" / "guide" / "elliptic.toml")
+    args = argparse.Namespace(kind="design", param=["shape=flat"], well=path, well_param=[])
+    shapes = params_with_well(args)["shape"]
+    assert shapes[0] == "flat" and shapes[1].name == "elliptic" and len(shapes) == 2
+
+
+def test_a_floquet_sweep_of_the_elliptic_well_is_its_closed_form():
+    """Over the semi-axis b at n = 1 the motion on y = 0 is harmonic and phi_half =
+    cos(pi a / b) exactly (held to 1e-10); the rotation number is arccos of it over pi.
+    Hénon–Heiles, whose y = 0 is not invariant, is refused with the reason."""
+    from _cli import ELLIPTIC
+
+    well = UserWell("elliptic", ELLIPTIC, {"a": 0.5, "b": 0.3, "gamma": 1.0, "n": (4, (1, 100))})
+    bs = [0.4, 0.7, 1.2]
+    ds = run_sweep("floquet", {"b": bs, "n": 1, "amplitude": 0.2}, well=well, workers=1,
+                   progress=False)  # fmt: skip
+    exact = np.cos(np.pi * 0.5 / np.array(bs))
+    np.testing.assert_allclose(ds.phi_half.values, exact, rtol=0, atol=1e-10)
+    np.testing.assert_allclose(ds.rotation_number.values, np.arccos(exact) / np.pi, atol=1e-9)
+    assert ds.stable.values.tolist() == [True, True, True] and np.isnan(ds.lam.values).all()
+    with pytest.raises(ParameterError, match=r"dV/dy\(x, 0\) = x\*\*2"):
+        run_sweep("floquet", {"amplitude": 0.2}, well=UserWell("hh", HH, {}), workers=1,
+                  progress=False)  # fmt: skip
 
 
 def test_well_bifurcation_over_the_flat_well_s_own_beta_is_the_registry_diagram():
