@@ -11,7 +11,7 @@ Prints, on the machine it runs on (its description first):
    machine code files numba wrote meanwhile (0: nothing compiled).  Goal: < 1 s.
 2. **First use of a well**: the same in a fresh process with an empty engine cache, for a
    built-in shape, so the engine is printed and compiled; and a user's elliptic well
-   through the engine (``Ensemble``: ``simulate`` does not take users' wells yet).
+   through the engine directly (``Ensemble``, the engine's own interface).
    Goal: < 30 s.
 3. **Fig. 8 at tol 1e-8** (flat, alpha = 0.5, beta = 0.3, n = 4, k = 5, m = 0.2, 25 runs x
    1500 periods, E0 = 0.5) with this checkout's engine and with the engine of ``REV``

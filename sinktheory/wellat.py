@@ -27,6 +27,7 @@ sinktheory.errors.ParameterError: particle_energy = 0.2 is not allowed: must be 
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -153,31 +154,55 @@ class WellAt:
             self._layer = self._measured_layer()
         return self._layer
 
-    def _measured_layer(self) -> float:
+    def wall_distance(self, c: float, s: float, limit: float = 2.0**40) -> float:
+        """The distance t from the centre along the unit direction (c, s) at which the
+        largest abs(r_i) of the wall ratios reaches 1 (the rigid wall), located by brentq
+        between powers of 2 up to ``limit``; inf if it does not within ``limit``, or
+        without wall ratios.
+
+        Examples
+        --------
+        >>> from sinktheory.userwell import UserWell
+        >>> e = WellAt(UserWell("e", "(x/a)**2 + (y/b)**2", {"a": 2, "b": 1},
+        ...                     ["sqrt((x/a)**2 + (y/b)**2)"]))
+        >>> round(e.wall_distance(1.0, 0.0), 12), round(e.wall_distance(0.0, -1.0), 12)
+        (2.0, 1.0)
+        """
         from scipy.optimize import brentq
 
+        if not self._ratios:
+            return math.inf
+        scales = 2.0 ** np.arange(-20.0, 41.0)
+        scales = np.append(scales[scales < limit], limit)
+
+        def size(t):
+            with np.errstate(all="ignore"):
+                return np.max([np.abs(np.asarray(r(t * c, t * s), dtype=float))
+                               for r in self._ratios], axis=0)  # fmt: skip
+
+        beyond = np.nonzero(size(scales) >= 1.0)[0]
+        if not len(beyond):
+            return math.inf
+        i = int(beyond[0])
+        lo = 0.0 if i == 0 else scales[i - 1]
+        return float(brentq(lambda t: float(size(t)) - 1.0, lo, scales[i], xtol=1e-14))
+
+    @functools.cached_property
+    def _ratios(self) -> list:
+        """The wall ratios as NumPy functions of (x, y) at the well's values."""
         from .basin import numeric
 
-        ratios = [numeric(r, self._values) for r in self.definition.wall_ratios]
-        if not ratios:
+        return [numeric(r, self._values) for r in self.definition.wall_ratios]
+
+    def _measured_layer(self) -> float:
+        if not self._ratios:
             return 0.5
-        angles = np.linspace(0.0, 2.0 * np.pi, 64, endpoint=False)
-        scales = 2.0 ** np.arange(-20.0, 41.0)
-
-        def size(t, c, s):
-            with np.errstate(all="ignore"):
-                return np.max([np.abs(np.asarray(r(t * c, t * s), dtype=float)) for r in ratios],
-                              axis=0)  # fmt: skip
-
         steepest = 0.0
-        for c, s in zip(np.cos(angles), np.sin(angles), strict=True):
-            beyond = np.nonzero(size(scales, c, s) >= 1.0)[0]
-            if not len(beyond):
+        for angle in np.linspace(0.0, 2.0 * np.pi, 64, endpoint=False):
+            c, s = math.cos(angle), math.sin(angle)
+            t = self.wall_distance(c, s)
+            if not math.isfinite(t):
                 continue
-            i = int(beyond[0])
-            lo = 0.0 if i == 0 else scales[i - 1]
-            t = brentq(lambda t, c=c, s=s: float(size(t, c, s)) - 1.0, lo, scales[i],
-                       xtol=1e-14)  # fmt: skip
             rise = float(self.potential(t * c, t * s))
             slope = float(np.dot(self.basin.well.gradient(t * c, t * s), (t * c, t * s)))
             if math.isfinite(rise) and math.isfinite(slope) and rise > 0:

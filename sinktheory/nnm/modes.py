@@ -93,7 +93,7 @@ def _user_guess(sink: Sink, mode: str, energy: float) -> tuple[np.ndarray, float
     z0 = np.zeros(2 * (1 + 2 * k))
     if mode == "container":
         X0 = math.sqrt(2 * energy)
-        L = _wall_on_axis(w, X0 / 0.9)
+        L = w.wall_distance(-1.0, 0.0, limit=X0 / 0.9)  # along -x: inf beyond it
         z0[0] = X0
         z0[1 : 1 + k] = max(0.0, X0 - 0.9 * L)
         return z0, 2 * math.pi
@@ -108,26 +108,6 @@ def _user_guess(sink: Sink, mode: str, energy: float) -> tuple[np.ndarray, float
     z0[0] = -m * x_plus / (1 + m)
     z0[1 : 1 + k] = x_plus / (1 + m)
     return z0, T
-
-
-def _wall_on_axis(well, reach: float) -> float:
-    """Distance along -x, y = 0, at which a wall ratio of ``well`` reaches 1, looked for
-    within ``reach`` (inf beyond it or without wall ratios)."""
-    from scipy.optimize import brentq
-
-    from ..basin import numeric
-
-    values = well.definition.values(**well.parameters)
-    ratios = [numeric(r, values) for r in well.definition.wall_ratios]
-    if not ratios:
-        return math.inf
-
-    def level(x: float) -> float:
-        return max(abs(float(r(-x, 0.0))) for r in ratios) - 1.0
-
-    if not level(reach) >= 0:
-        return math.inf
-    return float(brentq(level, 0.0, reach, xtol=1e-14))
 
 
 def _turning_point(well, e: float, side: float) -> float:
