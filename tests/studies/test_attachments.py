@@ -399,3 +399,27 @@ def test_vibroimpact_work_is_estimated_before_any_flight():
         simulate_vibroimpact(np.repeat(start, 10, 0), clearance=0.2, periods=10**6,
                              samples_per_period=1, **args)  # fmt: skip
     assert "estimated 120 s (about 2 min)" in str(info.value), str(info.value)
+
+
+def test_vibroimpact_counts_impacts_driven_from_relative_rest():
+    """Issue 34 (clearance = 1e-300 hung), from a start with no relative speed: a particle
+    at rest in a displaced container (w = 0) was counted no impact, so 1e-300 ran on
+    forever, chattering.  The container's acceleration drives it: refused at once naming
+    clearance, damped or not.  The count is checked against the engine's own impacts at
+    a clearance it can run: optimistic (never above them), within a factor 2."""
+    import re
+
+    from sinktheory.vibroimpact import check_flights
+    from sinktheory.worklimit import interactive_limit
+
+    rest = np.array([[1.0, 0.0, 1.0, 0.0]])  # X = 1, container and particle at rest
+    # (the count first: counted 0 before, the run below would hang)
+    for clearance in (1e-5, 0.1):
+        with interactive_limit(1e-12), pytest.raises(ParameterError) as info:
+            check_flights(rest, clearance, 0.2, 0.0, 3, 48)
+        estimate = float(re.search(r"about (\S+) impact", str(info.value)).group(1))
+        run = simulate_vibroimpact(rest, clearance=clearance, mass=0.2, damping=0.0, periods=3)
+        assert estimate <= run.impacts[0] <= 2.2 * estimate, (clearance, estimate, run.impacts)
+    for damping in (0.0, 0.05):
+        with pytest.raises(ParameterError, match=r"^clearance = 1e-300 .*must be larger"):
+            simulate_vibroimpact(rest, clearance=1e-300, mass=0.2, damping=damping, periods=1)
