@@ -219,7 +219,8 @@ class SimulationResult(Result):
         return out
 
     def ensemble_energy(self) -> tuple[np.ndarray, np.ndarray]:
-        """Ensemble mean <E>(t_j) and its standard error (ddof = 1; zeros for one run)."""
+        """Ensemble mean <E>(t_j) and its standard error (ddof = 1; NaN for one run:
+        :mod:`sinktheory.runstats`)."""
         return ensemble_mean(self.container_energy)
 
 

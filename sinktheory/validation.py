@@ -280,18 +280,26 @@ def real_array(name: str, value: object, allowed: str = "an array of real number
     Traceback (most recent call last):
     ...
     sinktheory.errors.ParameterError: t = 'abc' is not allowed: must be an array of real numbers
+    >>> real_array("t", [1.0, None])
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: t = 'list' is not allowed: must be an array of real numbers
     """
     import warnings
 
     import numpy as np
 
+    shown = value if isinstance(value, str | int | float | type(None)) else type(value).__name__
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error", np.exceptions.ComplexWarning)
-            return np.asarray(value, dtype=float)
+            out = np.asarray(value, dtype=float)
     except (TypeError, ValueError, np.exceptions.ComplexWarning):
-        shown = value if isinstance(value, str | int | float | type(None)) else type(value).__name__
         raise ParameterError(name, shown, allowed) from None
+    # numpy reads None as NaN: refused as None, not shown as a NaN the caller never gave
+    if np.isnan(out).any() and any(x is None for x in np.asarray(value, dtype=object).flat):
+        raise ParameterError(name, shown, allowed)
+    return out
 
 
 def finite_array(name: str, value: object, allowed: str = "an array of finite real numbers",

@@ -2,7 +2,8 @@
 
 The runs are those ``sinktheory simulate`` starts for the same options (same seed, same
 positions); exponents are per unit time (the container period is T = 2 pi), each with its
-ensemble mean and standard error std(ddof=1)/sqrt(R) (0 for a single run).
+ensemble mean and standard error std(ddof=1)/sqrt(R) (none from a single run: the rule of
+:mod:`sinktheory.runstats`).
 """
 
 from __future__ import annotations

@@ -1,8 +1,8 @@
 """``sinktheory simulate``: ensemble of full-dynamics runs, <E>(t) of the container (Figs. 5, 8).
 
 ``mean_energy[j]`` is the ensemble mean of the container energy E = (Xdot^2 + X^2)/2 at
-t = jT (j = 0..P) and ``stderr[j]`` its standard error std(ddof=1)/sqrt(R); with a single
-run the standard error is reported as 0.
+t = jT (j = 0..P) and ``stderr[j]`` its standard error std(ddof=1)/sqrt(R); a single run
+has none (NaN, null in JSON: the rule of :mod:`sinktheory.runstats`).
 """
 
 from __future__ import annotations

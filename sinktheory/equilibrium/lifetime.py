@@ -73,6 +73,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import runstats
 from .. import validation as v
 from ..errors import ParameterError
 from ..limits import MAX_RESAMPLES
@@ -458,7 +459,7 @@ def compare_with_law(
         runs=s.shape[0],
         samples=s.shape[1],
         mean=float(per_run.mean() * law.total_energy),
-        mean_stderr=float(per_run.std(ddof=1) / math.sqrt(s.shape[0]) * law.total_energy),
+        mean_stderr=runstats.mean_stderr(per_run)[1] * law.total_energy,
         autocorrelation_time=tau,
         window=window,
         effective_samples=s.size / tau,

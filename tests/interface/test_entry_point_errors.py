@@ -159,6 +159,14 @@ def test_api_refuses_with_the_parameter_named(case):
     assert info.value.name == name
 
 
+@pytest.mark.parametrize("value", [None, [0.5, None]])
+def test_none_is_refused_as_none(value):
+    """law.pdf(None) returned 0.0, then was refused as "s = nan" (numpy reads None as NaN):
+    the message shows what was given."""
+    with pytest.raises(ParameterError, match=r"^s = (None|'list') is not allowed"):
+        _law().pdf(value)
+
+
 def _no_warning_run(call):
     import warnings
 
