@@ -204,6 +204,15 @@ CLI = {
     # an overflow at 1e-320; 1e-300 was refused naming --runs
     "adaptive eps 1e-320": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-320"], "--eps"),
     "adaptive eps 1e-300": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-300"], "--eps"),
+    # documented as allowed, failed in period 1: the range is now (0, 0.25]
+    "adaptive eps 0.5": ([*SIMULATE, "--stepper", "adaptive", "--eps", "0.5"], "eps"),
+    "compare damping 1e308": (["compare", "--damping", "1e308"], "damping"),  # LinAlgError
+    # ran past 60 s (a first compilation, ~70 s cold, which the estimate does not count):
+    # its steps are estimated, so a lowered limit refuses it
+    "simulate n 1000": (
+        [*SIMULATE[:-3], "1000", *SIMULATE[-2:], "--periods", "3", "--max-hours", "1e-6"],
+        "periods",
+    ),  # fmt: skip
 }
 
 
@@ -248,3 +257,21 @@ def test_kac_times_beyond_float_range():
     assert s.kac_periods[0] == pytest.approx(0.9**-b, rel=1e-10) and np.isinf(s.kac_periods[1])
     with pytest.raises(NumericalError, match=r"10\^376\.3 periods"):
         law.kac_periods(0.5)
+
+
+def test_equilibrium_command_prints_kac_times_beyond_float_range(capsys):
+    """``equilibrium --particles 1000`` printed a Kac time "inf" with RuntimeWarnings.  For
+    beta = 0 the law is Beta(1, k (1 + 1/n)) exactly: P(E_c >= f E) = (1 - f)^1250."""
+    import re
+    import warnings
+
+    argv = ["equilibrium", "--alpha", "0.5", "--beta", "0", "--n", "4", "--particles", "1000"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        code, out, err = run_cli(argv, capsys)
+    assert code == 0 and err == "" and "inf" not in out, (err, out)
+    rows = dict(re.findall(r"^  (0\.\d)\s+(\S+)\s+\S+$", out, flags=re.M))
+    assert float(rows["0.1"]) == pytest.approx(0.9**1250, rel=1e-5)
+    for f in ("0.5", "0.8"):  # below the smallest double: printed as a power of ten
+        exponent = float(rows[f].removeprefix("10^"))
+        assert exponent == pytest.approx(1250 * math.log10(1 - float(f)), abs=1e-4)

@@ -105,3 +105,26 @@ def test_a_store_without_a_result_of_its_kind_is_named_not_called_damaged(tmp_pa
         run_sweep("floquet", params, store=tmp_path / "g.zarr", workers=1, progress=False,
                   resume=True)  # fmt: skip
     assert [p.name for p in tmp_path.iterdir()] == ["g.zarr"]
+
+
+def test_damaged_last_chunk_ends_in_one_line(tmp_path, monkeypatch):
+    """Resuming a store whose last chunk no longer decodes gave the right refusal, then
+    58-180 lines of asyncio/zarr output ending in "Event loop is closed" (printed as the
+    interpreter exits, so only a real process shows it): now the line and nothing after."""
+    import numpy as np
+
+    from sinktheory.sweep import store as store_module
+
+    monkeypatch.setattr(store_module, "CHUNK_VALUES", 2)  # six chunks, reads in flight
+    params = {"alpha": 0.5, "beta": list(np.linspace(-0.3, 0.3, 12)), "n": 4}
+    run_sweep("floquet", params, store=tmp_path / "s.zarr", workers=1, progress=False)
+    last = tmp_path / "s.zarr" / "lam" / "c" / "5"
+    last.write_bytes(last.read_bytes()[:5])
+    argv = ["sweep", "floquet", "--param", "alpha=0.5", "--param", "beta=-0.3:0.3:12"]
+    argv += ["--param", "n=4", "--out", "s.zarr", "--resume", "--quiet", "--workers", "1"]
+    proc = subprocess.run([sys.executable, "-m", "sinktheory", *argv], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=120)  # fmt: skip
+    assert proc.returncode == 2 and proc.stdout == "", proc.stderr
+    assert proc.stderr.count("\n") == 1, proc.stderr
+    assert proc.stderr.startswith("sinktheory sweep: error: store = 's.zarr' ")
+    assert "damaged" in proc.stderr
