@@ -22,6 +22,8 @@ SWEEP_ENSEMBLE = ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=
 SWEEP_ENSEMBLE += ["--param", "n=4"]
 SWEEP_BIF = ["sweep", "bifurcation", "--param", "alpha=0.5", "--param", "beta=0.3,0.1"]
 SWEEP_BIF += ["--param", "n=4", "--param", "count=3"]
+SWEEP_ERGODICITY = ["sweep", "ergodicity", "--param", "alpha=0.5", "--param", "beta=0.3"]
+SWEEP_ERGODICITY += ["--param", "n=4", "--workers", "1"]
 OUT = ["--out", "s.zarr", "--quiet"]
 
 # (argv, parameter named, text the line must contain)
@@ -83,6 +85,14 @@ CASES = [
     ([*DESIGN, "--lyapunov-periods", "-1", "--lyapunov-runs", "0"], "lyapunov_periods", "[1,"),
     ([*DESIGN, "--lyapunov-periods", "0", "--lyapunov-runs", "0"], "lyapunov_periods", "[1,"),
     ([*DESIGN, "--lyapunov-periods", "0"], "lyapunov_periods", "[1,"),
+    # issue 34, stores: refused after e.zarr was created, and left it; blamed periods
+    ([*SWEEP_ERGODICITY, "--param", "tol=1", *OUT], "tol", "between 1e-12 and 0.0001"),
+    (
+        [*SWEEP_ERGODICITY, "--param", f"lyapunov_periods={10**18}", *OUT],
+        "lyapunov_periods",
+        "[1, 1000000000]",
+    ),  # fmt: skip
+    ([*SWEEP_ERGODICITY, "--param", "lyapunov_runs=1", *OUT], "lyapunov_runs", ">= 2"),
 ]
 
 
