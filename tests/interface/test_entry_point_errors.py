@@ -59,6 +59,12 @@ def _symmetric_law(energy):
     return equilibrium_law(Sink(Well(0.5, 0.3, 4, shape="symmetric")), energy)
 
 
+def _lifetimes(sink):
+    from sinktheory.equilibrium.lifetime import measure_lifetimes
+
+    return measure_lifetimes(sink, SHORT, transient=0, progress=False)
+
+
 def _compare(damping, attachments=None):
     from sinktheory.attachments import Attachment
     from sinktheory.compare.efficiency import compare
@@ -82,6 +88,7 @@ API.update(
         "compare damping 1e308": (lambda: _compare(1e308), "damping"),  # LinAlgError
         "compare attachments None": (lambda: _compare(0.1, [None]), "attachments"),  # raw
         "compare attachments str": (lambda: _compare(0.1, "nes"), "attachments"),
+        "measure_lifetimes sink str": (lambda: _lifetimes("x"), "sink"),  # AttributeError
     }
 )  # fmt: skip
 
