@@ -65,6 +65,18 @@ def _lifetimes(sink):
     return measure_lifetimes(sink, SHORT, transient=0, progress=False)
 
 
+def _compare_with_law(**kw):
+    from sinktheory.equilibrium.lifetime import compare_with_law
+
+    return compare_with_law(np.full((2, 50), 0.2), _law(), transient=0, **kw)
+
+
+def _ergodicity(**kw):
+    from sinktheory.equilibrium.ergodicity import ergodicity_point
+
+    return ergodicity_point({"alpha": 0.5, "beta": 0.3, "n": 4, **kw}, 0)
+
+
 def _compare(damping, attachments=None):
     from sinktheory.attachments import Attachment
     from sinktheory.compare.efficiency import compare
@@ -89,6 +101,9 @@ API.update(
         "compare attachments None": (lambda: _compare(0.1, [None]), "attachments"),  # raw
         "compare attachments str": (lambda: _compare(0.1, "nes"), "attachments"),
         "measure_lifetimes sink str": (lambda: _lifetimes("x"), "sink"),  # AttributeError
+        # empty fraction lists: no tail to give
+        "compare_with_law no fractions": (lambda: _compare_with_law(fractions=[]), "fractions"),
+        "ergodicity_point no fractions": (lambda: _ergodicity(fractions=[]), "fractions"),
     }
 )  # fmt: skip
 
