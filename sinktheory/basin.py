@@ -247,7 +247,10 @@ def numeric(expr: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None):
     of a user's.  A value that is complex or undefined comes out NaN; one beyond float64
     range comes out +-inf."""
     values = dict(values or {})
-    f = sp.lambdify((x, y, *values), expr, modules="numpy")
+    # the parameters renamed: one named like a name of the printed code (abs, numpy)
+    # would shadow it in the generated function
+    names = {s: sp.Symbol(f"par{i}_", real=True) for i, s in enumerate(values)}
+    f = sp.lambdify((x, y, *names.values()), expr.xreplace(names), modules="numpy")
     args = [float(v) for v in values.values()]
 
     def call(xs, ys):
