@@ -147,7 +147,7 @@ def sink_measures(
     e0: float,
     total_energy: float,
     particles: int,
-    n: int,
+    n: float,
     transient: int | None = None,
     fractions=(0.8, 0.5, 0.3, 0.2),
 ) -> SinkMeasures:
@@ -159,8 +159,10 @@ def sink_measures(
         Container energy E(jT) per run.
     e0, total_energy : float > 0
         Initial container energy and the conserved total energy.
-    particles, n : int
-        k and the wall stiffness (for the equipartition estimate).
+    particles : int
+        k.
+    n : float > 0
+        The wall stiffness, half the well's degree (for the equipartition estimate).
     transient : int, optional
         Periods skipped before time averaging (default: the first half of the run).
     fractions : fractions f of E0 for the first-passage times.
