@@ -138,6 +138,13 @@ class LeadingOrder:
     form: sp.Expr
 
     @property
+    def n(self) -> int | float:
+        """Half the degree: the wall exponent n of a well homogeneous of degree 2n (1 for a
+        positive definite Hessian at the centre), an int when whole."""
+        half = self.degree / 2
+        return int(half) if half.is_integer else float(half)
+
+    @property
     def area_exponent(self) -> sp.Rational:
         """2 / degree: A(e) ~ e^(2/degree) as e -> 0."""
         return 2 / self.degree
@@ -206,11 +213,23 @@ def leading_order(V: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None,
     return LeadingOrder(degree, form)
 
 
+def _sum_of_even_powers(form: sp.Expr) -> bool:
+    """True when the polynomial ``form`` is a sum of terms c x^(2i) y^(2j), every c > 0,
+    among them a power of x alone and one of y alone: then form >= c1 x^(2i) + c2 y^(2j)
+    > 0 away from the origin, which decides at once what the real roots of a form of
+    high degree (the flat well at n = 100: degree 200, minutes) would."""
+    terms = sp.Poly(form, x, y).terms()
+    return (all(c > 0 and i % 2 == 0 and j % 2 == 0 for (i, j), c in terms)
+            and any(j == 0 for (_, j), _c in terms) and any(i == 0 for (i, _), _c in terms))
+
+
 def _vanishing_direction(form: sp.Expr) -> str | None:
     """A direction (x, y) where ``form`` is not > 0, as text, or None: exactly for a
     polynomial (a real root of form(t, 1), or form(1, 0) <= 0), else on
     :data:`FORM_DIRECTIONS` directions with the axes and diagonals exact."""
     if form.is_polynomial(x, y):
+        if _sum_of_even_powers(form):
+            return None
         t = sp.Dummy("t", real=True)
         if not form.subs({x: 1, y: 0}) > 0:
             return "(1, 0)"
@@ -247,7 +266,10 @@ def numeric(expr: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None):
     of a user's.  A value that is complex or undefined comes out NaN; one beyond float64
     range comes out +-inf."""
     values = dict(values or {})
-    f = sp.lambdify((x, y, *values), expr, modules="numpy")
+    # the parameters renamed: one named like a name of the printed code (abs, numpy)
+    # would shadow it in the generated function
+    names = {s: sp.Symbol(f"par{i}_", real=True) for i, s in enumerate(values)}
+    f = sp.lambdify((x, y, *names.values()), expr.xreplace(names), modules="numpy")
     args = [float(v) for v in values.values()]
 
     def call(xs, ys):

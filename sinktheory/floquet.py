@@ -130,6 +130,7 @@ __all__ = [
     "pure_scan",
     "rigid_limit_phi_half",
     "ROOT_XTOL",
+    "rotation_number",
     "scan",
     "StabilityScan",
     "well_floquet",
@@ -605,20 +606,9 @@ class FloquetChart(Result):
 
     @property
     def rotation_number(self) -> np.ndarray:
-        """theta/pi in [0, 1], theta = arccos(phi_half): rotation per period T_n, modulo 1.
-
-        0 where phi_half >= 1 and 1 where phi_half <= -1; 1/2 at the strong resonances
-        phi_T = -1.  Near phi_half = +-1 it is computed from the cancellation-free factors.
-        """
-        h = np.clip(self.phi_half, -1.0, 1.0)
-        near_plus = np.sqrt(np.clip(-0.5 * self.phi_half_minus_one, 0.0, 1.0))
-        near_minus = np.sqrt(np.clip(0.5 * self.phi_half_plus_one, 0.0, 1.0))
-        theta = np.where(
-            h > 0.5,
-            2 * np.arcsin(near_plus),
-            np.where(h < -0.5, np.pi - 2 * np.arcsin(near_minus), np.arccos(h)),
-        )
-        return theta / np.pi
+        """theta/pi in [0, 1], theta = arccos(phi_half): rotation per period T_n, modulo 1
+        (:func:`rotation_number` of the cancellation-free factors)."""
+        return rotation_number(self.phi_half, self.phi_half_minus_one, self.phi_half_plus_one)
 
     @property
     def log_abs_rho_half(self) -> np.ndarray:
@@ -662,6 +652,41 @@ class FloquetChart(Result):
         rho1 = np.where(stable, np.exp(2j * theta), big + 0j)
         rho2 = np.where(stable, np.exp(-2j * theta), small + 0j)
         return np.stack([rho1, rho2], axis=1)
+
+
+def rotation_number(phi_half, phi_half_minus_one, phi_half_plus_one) -> np.ndarray:
+    """theta/pi in [0, 1], theta = arccos(phi_half): the rotation number per period,
+    modulo 1, of a Hill equation whose half-period map has half trace ``phi_half``.
+
+    0 where phi_half >= 1 and 1 where phi_half <= -1; 1/2 at the strong resonances
+    phi_T = -1.  arccos has an infinite slope at +-1, so there theta comes from the
+    differences phi_half - 1 and phi_half + 1 as the quarter-period factors give them
+    without cancellation (2 y2 y1' and 2 y1 y2'): theta = 2 arcsin(sqrt((1 - phi_half)/2))
+    where phi_half > 1/2, pi - 2 arcsin(sqrt((1 + phi_half)/2)) where phi_half < -1/2,
+    arccos(phi_half) between.  The one formula of the registered charts
+    (:attr:`FloquetChart.rotation_number`) and of a user's well
+    (:attr:`WellFloquet.rotation_number`).
+
+    Examples
+    --------
+    >>> d = -2e-12  # phi_half = 1 - 2e-12, which float64 cannot hold exactly
+    >>> nu = float(rotation_number(1 + d, d, 2 + d))  # theta = 2e-6 (1 + O(d))
+    >>> round(nu * math.pi / 2e-6, 12)
+    1.0
+    """
+    h = np.asarray(phi_half, dtype=float)
+    minus = np.asarray(phi_half_minus_one, dtype=float)
+    plus = np.asarray(phi_half_plus_one, dtype=float)
+    with np.errstate(invalid="ignore"):
+        near_plus = np.sqrt(np.clip(-0.5 * minus, 0.0, 1.0))
+        near_minus = np.sqrt(np.clip(0.5 * plus, 0.0, 1.0))
+        theta = np.where(
+            h > 0.5,
+            2 * np.arcsin(near_plus),
+            np.where(h < -0.5, np.pi - 2 * np.arcsin(near_minus),
+                     np.arccos(np.clip(h, -1.0, 1.0))),
+        )  # fmt: skip
+    return theta / np.pi
 
 
 # --- stability intervals ---------------------------------------------------------------
@@ -928,13 +953,13 @@ def _well_point(well, values: dict, amplitude: float, rtol: float) -> dict:
     (:func:`well_floquet`): lam is NaN (Hill's lambda of the paper's wells); phi_half, its
     log and the rotation number arccos(phi_half)/pi are NaN unless V is even in x (no
     half-period map); the Floquet exponent is the growth per period over the orbit's
-    period for mass 1.  Near abs(phi_half) = 1 the rotation number comes from arccos
-    directly (the registered charts use cancellation-free factors there)."""
+    period for mass 1.  The rotation number is :func:`rotation_number` of the
+    cancellation-free factors, as for the registered charts."""
     f = well_floquet(well, amplitude, values, rtol=rtol)
     half = f.phi_half
     with np.errstate(divide="ignore", invalid="ignore"):
         log_half = float(np.log(abs(half)))
-        rotation = float(np.arccos(np.clip(half, -1.0, 1.0)) / np.pi)
+    rotation = f.rotation_number
     return {
         "lam": math.nan,
         "phi_half": half,
@@ -969,6 +994,9 @@ class WellFloquet(Result):
     hill_coefficient : q(x) = V_yy(x, 0), as text
     symmetric : V(x, 0) and q even in x (symbolic): the quarter-period formulas hold
     phi_half : half trace of M(T/2) (symmetric wells; NaN otherwise)
+    phi_half_minus_one, phi_half_plus_one : phi_half - 1 = 2 y2 y1' and phi_half + 1 =
+        2 y1 y2' at the quarter period, free of cancellation (symmetric wells; NaN
+        otherwise)
     phi : half trace of M(T)
     stable : abs(phi_half) < 1 from the factors' signs (symmetric), abs(phi) < 1 otherwise
     multipliers : rho_1, rho_2 over T (complex)
@@ -983,6 +1011,8 @@ class WellFloquet(Result):
     hill_coefficient: str
     symmetric: bool
     phi_half: float
+    phi_half_minus_one: float
+    phi_half_plus_one: float
     phi: float
     stable: bool
     multipliers: np.ndarray
@@ -992,11 +1022,19 @@ class WellFloquet(Result):
         """ln of the largest abs(rho) over T (0 where stable)."""
         return float(np.log(np.max(np.abs(self.multipliers)))) if not self.stable else 0.0
 
+    @property
+    def rotation_number(self) -> float:
+        """arccos(phi_half)/pi (:func:`rotation_number`, accurate near abs(phi_half) = 1;
+        NaN unless the well is symmetric)."""
+        return float(rotation_number(self.phi_half, self.phi_half_minus_one,
+                                     self.phi_half_plus_one))  # fmt: skip
+
     DIMS = {"multipliers": ("multiplier",)}
 
     def items(self) -> dict:
-        """The fields and the growth per period."""
-        return {**super().items(), "growth_per_period": self.growth_per_period}
+        """The fields, the growth per period and the rotation number."""
+        return {**super().items(), "growth_per_period": self.growth_per_period,
+                "rotation_number": self.rotation_number}  # fmt: skip
 
 
 def _even(expr) -> bool:
@@ -1151,11 +1189,12 @@ class WellHill:
         trace_half = y1 * dy2 + y2 * dy1
         if self.symmetric:
             phi_half = float(trace_half)
+            minus, plus = 2.0 * y2 * dy1, 2.0 * y1 * dy2  # the Wronskian y1 y2' - y2 y1' = 1
             phi = 2.0 * phi_half * phi_half - 1.0
             stable = bool(y2 * dy1 < 0 < y1 * dy2)
             period = 4.0 * t_event
         else:
-            phi_half, phi = math.nan, float(trace_half)
+            phi_half, minus, plus, phi = math.nan, math.nan, math.nan, float(trace_half)
             stable = bool(abs(phi) < 1)
             period = 2.0 * t_event
         root = np.sqrt(complex(phi * phi - 1.0))
@@ -1168,6 +1207,8 @@ class WellHill:
             hill_coefficient=self.hill_coefficient,
             symmetric=self.symmetric,
             phi_half=phi_half,
+            phi_half_minus_one=minus,
+            phi_half_plus_one=plus,
             phi=phi,
             stable=stable,
             multipliers=np.array([phi + root, phi - root]),

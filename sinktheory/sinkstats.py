@@ -94,7 +94,8 @@ def equipartition_container_energy(
 ) -> float:
     """E / (1 + k (d/2) (1 + 1/n)): the container's long-time share (see the module
     docstring) for k particles of d = ``dimension`` coordinates (2: the well; 1: a particle
-    on a line) in walls of exponent 2n (a positive integer, or math.inf for rigid walls).
+    on a line) in walls of exponent 2n: n > 0 (half the degree of a homogeneous well, such
+    as 3/2 for r^3), or math.inf for rigid walls.
 
     Examples
     --------
@@ -103,6 +104,8 @@ def equipartition_container_energy(
     >>> equipartition_container_energy(1.0, 1, 2, 1), equipartition_container_energy(
     ...     1.0, 1, math.inf, 1)
     (0.5714285714285714, 0.6666666666666666)
+    >>> equipartition_container_energy(1.0, 1, 1.5)  # r^3: 1 + 1 + 2/3 shares
+    0.375
     """
     e = v.positive("total_energy", total_energy)
     k = v.positive_int("particles", particles)
@@ -110,7 +113,7 @@ def equipartition_container_energy(
         raise ParameterError("dimension", dimension, "1 (a particle on a line) or 2 (the well)")
     d = int(dimension)
     if n != math.inf:
-        n = v.positive_int("n", n)
+        n = v.positive("n", n)
     return e / (1 + k * d / 2 * (1 + 1 / n))
 
 
@@ -144,7 +147,7 @@ def sink_measures(
     e0: float,
     total_energy: float,
     particles: int,
-    n: int,
+    n: float,
     transient: int | None = None,
     fractions=(0.8, 0.5, 0.3, 0.2),
 ) -> SinkMeasures:
@@ -156,8 +159,10 @@ def sink_measures(
         Container energy E(jT) per run.
     e0, total_energy : float > 0
         Initial container energy and the conserved total energy.
-    particles, n : int
-        k and the wall stiffness (for the equipartition estimate).
+    particles : int
+        k.
+    n : float > 0
+        The wall stiffness, half the well's degree (for the equipartition estimate).
     transient : int, optional
         Periods skipped before time averaging (default: the first half of the run).
     fractions : fractions f of E0 for the first-passage times.

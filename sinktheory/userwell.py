@@ -73,6 +73,7 @@ from __future__ import annotations
 
 import ast
 import json
+import keyword
 import math
 import re
 import tomllib
@@ -93,6 +94,7 @@ __all__ = [
     "check_well",
     "DIRECTIONS",
     "disc_grid",
+    "expression_text",
     "FUNCTIONS",
     "load_well",
     "MAX_DEPTH",
@@ -278,6 +280,10 @@ def _declared(parameters: Iterable[str], where: str = "parameters") -> dict[str,
                 where, name, "a parameter name must be a letter then up to 31 letters, "
                 "digits or _",
             )  # fmt: skip
+        if keyword.iskeyword(name):
+            raise WellDefinitionError(
+                where, name, "a Python keyword (it cannot be written in an expression)"
+            )
         if name in _RESERVED:
             raise WellDefinitionError(
                 where, name, "a reserved name (x, y, pi, a function, or a symbol of the "
@@ -673,6 +679,24 @@ class _WellPrinter(StrPrinter):
         return "exp(1)"
 
 
+def expression_text(expr: sp.Expr) -> str:
+    """``expr`` in the syntax of a well file: every symbol by its plain name (a parameter
+    named ``gamma``, ``beta`` or ``E`` prints as that name, not as a SymPy function or
+    constant), Euler's number as ``exp(1)``, powers as ``**``.  :func:`parse_potential`
+    reads a potential so printed back (:func:`well_text` checks it does); the derived
+    equations of ``sinktheory derive --well`` are printed so too.
+
+    Examples
+    --------
+    >>> E, gamma = sp.Symbol("E", real=True), sp.Symbol("gamma", real=True)
+    >>> expression_text(gamma * x**2 / 2 + E * sp.exp(1) * y**4)
+    'exp(1)*E*y**4 + gamma*x**2/2'
+    """
+    if not isinstance(expr, sp.Basic):
+        raise WellDefinitionError("expression", type(expr).__name__, "must be a SymPy expression")
+    return _WellPrinter().doprint(expr)
+
+
 def well_text(well: UserWell) -> str:
     """The TOML text of a well file that :func:`read_well` reads back as ``well`` (same
     name, potential, parameters, defaults, ranges and wall ratios, checked here): how a
@@ -693,11 +717,10 @@ def well_text(well: UserWell) -> str:
     """
     if not isinstance(well, UserWell):
         raise WellDefinitionError("well", type(well).__name__, "must be a UserWell")
-    printer = _WellPrinter()
     lines = [f"name = {json.dumps(well.name)}",
-             f"potential = {json.dumps(printer.doprint(well.potential))}"]  # fmt: skip
+             f"potential = {json.dumps(expression_text(well.potential))}"]  # fmt: skip
     if well.wall_ratios:
-        ratios = ", ".join(json.dumps(printer.doprint(r)) for r in well.wall_ratios)
+        ratios = ", ".join(json.dumps(expression_text(r)) for r in well.wall_ratios)
         lines.append(f"wall_ratios = [{ratios}]")
     lines.append("[parameters]")
     for p in well.parameters:

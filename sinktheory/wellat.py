@@ -188,6 +188,23 @@ class WellAt:
         return float(brentq(lambda t: float(size(t)) - 1.0, lo, scales[i], xtol=1e-14))
 
     @functools.cached_property
+    def leading_order(self):
+        """The leading term of V - V(0, 0) at the centre, its degree 2n
+        (:func:`sinktheory.basin.leading_order`, a WellDefinitionError where it is not a
+        positive form of x, y): what the law of E_c and the equipartition share read as the
+        well's wall exponent n (a user's parameter named n need not be it).
+
+        Examples
+        --------
+        >>> from sinktheory.userwell import UserWell
+        >>> WellAt(UserWell("quartic", "x**n + y**n", {"n": 4})).leading_order.n
+        2
+        """
+        from .basin import leading_order
+
+        return leading_order(self.definition.potential, self._values, self.shape)
+
+    @functools.cached_property
     def _ratios(self) -> list:
         """The wall ratios as NumPy functions of (x, y) at the well's values."""
         from .basin import numeric

@@ -14,7 +14,12 @@ file is never read; ``--fresh`` derives again and rewrites it.
 motion, the separable form, force, Hessian, and Hill's coefficient on y = 0 where y = 0
 is invariant), after the file and the well at its parameter values (``--well-param
 NAME=VALUE``, the defaults otherwise) pass :func:`sinktheory.userwell.check_well`; the
-escape energy found there is printed with how it was found.  A refused well is one line
+escape energy found there is printed with how it was found.  Its JSON strings are in the
+well file's own syntax (:func:`sinktheory.userwell.expression_text`): a parameter prints
+by its plain name even where SymPy has a function or constant of that name (``gamma``,
+``beta``, ``E``, ``I``, ``N``, ...), so ``sympify`` reads them back given those names as
+symbols, ``sympy.sympify(text, locals={name: sympy.Symbol(name) for name in
+data["parameters"]})``; ``parameters`` holds the values the well was checked at.  A refused well is one line
 on stderr, exit status 2; nothing is written (no cache: the file is read each time).
 """
 
@@ -138,13 +143,15 @@ def renderings() -> dict[str, dict[str, str] | str]:
 def well_renderings(well, given: dict, report) -> dict:
     """The ladder of a user's ``well`` (at the parameter values ``given``, its defaults for
     the others; ``report`` its :func:`~sinktheory.userwell.check_well` there) rendered as
-    :func:`renderings` renders the paper's equations, plus ``escape_energy`` (measured
+    :func:`renderings` renders the paper's equations, the JSON strings in the well file's
+    syntax (module docstring), plus ``parameters`` (their values), ``escape_energy`` (measured
     from V(0, 0), as everywhere: :attr:`sinktheory.basin.Basin.escape_energy`), ``escape``
     (how it was found) and ``normal_mode`` (why y = 0 is or is not a normal mode) in the
     JSON."""
     import sympy as sp
 
     from .. import symbolic as S
+    from ..userwell import expression_text
 
     steps = S.ladder(well, well.values(**given))
     eqs = steps.items()
@@ -164,9 +171,10 @@ def well_renderings(well, given: dict, report) -> dict:
         f"{key}:\n{sp.pretty(expr, use_unicode=True, wrap_line=False)}" for key, expr in eqs.items()
     )
     latex = "\n".join(f"% {key}\n{sp.latex(expr)}" for key, expr in eqs.items())
-    data = {key: sympifiable(expr) for key, expr in eqs.items()}
+    data = {key: expression_text(expr) for key, expr in eqs.items()}
     data |= {
         "well": well.name,
+        "parameters": {name: float(value) for name, value in report.values.items()},
         "escape_energy": e_star if math.isfinite(e_star) else None,
         "escape": escape.describe(report.basin.well.v0),
         "normal_mode": why,

@@ -304,7 +304,7 @@ def design_measures(
     e0: float,
     total_energy: float,
     particles: int,
-    n: int,
+    n: float,
     horizons: Sequence[int],
     transient: int | None = None,
     sigmas: float = 3.0,
@@ -323,8 +323,11 @@ def design_measures(
         Container energy E(jT) of every run.
     e0, total_energy : float > 0
         Initial container energy and the conserved total (mean over runs of H0).
-    particles, n : int
-        k and the wall stiffness (equipartition prediction).
+    particles : int
+        k.
+    n : float > 0
+        The wall stiffness: half the well's degree (equipartition prediction; a user's
+        well's :func:`~sinktheory.design.point.equipartition_n`).
     horizons : sequence of int in 1..P
         Periods at which to give the absorbed fraction.
     transient : int, optional

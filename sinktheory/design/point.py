@@ -10,7 +10,9 @@ the growth exponent per period) -- with those runs split into regular and chaoti
 (:func:`sinktheory.chaos.verdicts.split`: a run is regular when its lambda_1 <=
 3 ln t / t), since a mean over both groups is set by how many runs start in an island.
 ``lyapunov_runs = 0`` leaves them out (NaN).  A user's well on the shape axis
-(:func:`user_shape`) must declare n, which the equipartition share reads.
+(:func:`user_shape`) has the equipartition share of its own homogeneity
+(:func:`equipartition_n`): n is half the degree of V's leading term at the centre, not a
+parameter the well may call n.
 
 With a contact damping c0 = ``damping`` > 0 the ensemble is
 :func:`sinktheory.damped.simulate_inelastic` instead (same start states, same
@@ -86,6 +88,7 @@ __all__ = [
     "compute",
     "ensemble",
     "ENSEMBLE_RESULTS",
+    "equipartition_n",
     "lyapunov",
     "MAX_BOOTSTRAP",
     "SAMPLES",
@@ -188,13 +191,41 @@ def user_shape(p: dict) -> bool:
     return "wells" in p and p["shape"] in json.loads(p["wells"])
 
 
+def equipartition_n(p: dict) -> int | float:
+    """The n of a point's equipartition share E/(1 + k (1 + 1/n)) (the virial theorem: a
+    well homogeneous of degree 2n holds Theta/n of potential energy per particle against
+    Theta of kinetic): a registered shape's n, and for a user's well half the degree of
+    V's leading term at the centre (:attr:`sinktheory.wellat.WellAt.leading_order`, what
+    the law of E_c reads too), whatever its parameters are called.  Exact for a
+    homogeneous well; for another, the estimate of its leading order, as for a
+    registered shape with beta != 0.
+
+    Examples
+    --------
+    >>> from sinktheory.userwell import UserWell, well_text
+    >>> quartic = well_text(UserWell("quartic", "(x**2 + y**2)**2", {}))
+    >>> equipartition_n({"shape": "quartic", "wells": json.dumps({"quartic": quartic}),
+    ...                  "n": 4, "particles": 1, "mass": 0.2})
+    2
+    """
+    if not user_shape(p):
+        return p["n"]
+    return sink_of(p).well.leading_order.n
+
+
 def _check_user_well(p: dict, well) -> None:
-    """A user's well as a design: it declares n (the equipartition measure reads it) and
-    is the 2-D well itself (the 1-D attachments are built from a registered shape)."""
-    if "n" not in well.parameters:
-        raise ParameterError("shape", p["shape"], "a well that declares the wall exponent n",
-                             why="the design's equipartition share E/(1 + k (1 + 1/n)) reads "
-                             "it")  # fmt: skip
+    """A user's well as a design: its leading term at the centre gives the equipartition
+    share's n (:func:`equipartition_n`), and it is the 2-D well itself (the 1-D
+    attachments are built from a registered shape)."""
+    from ..errors import WellDefinitionError
+
+    try:
+        well.leading_order
+    except WellDefinitionError as exc:
+        raise ParameterError("shape", p["shape"], "a well whose leading term at the centre is "
+                             "a form positive in every direction", why="the design's "
+                             "equipartition share E/(1 + k (1 + 1/n)) reads n, half its "
+                             f"degree: {exc.value} is refused: {exc.allowed}") from None  # fmt: skip
     if p.get("attachment", "well") != "well":
         raise ParameterError("attachment", p["attachment"], f"well with the user's well "
                              f"{p['shape']} (the 1-D attachments take a registered "
@@ -322,7 +353,7 @@ def compute(p: dict, seed: int) -> dict[str, Any]:
         e0=p["container_energy"],
         total_energy=total,
         particles=p["particles"],
-        n=p["n"],
+        n=equipartition_n(p),
         horizons=horizons_of(p["horizons"], p["periods"]),
         transient=p["transient"],
         sigmas=p["sigmas"],

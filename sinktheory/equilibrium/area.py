@@ -266,8 +266,7 @@ class WellArea:
     def n(self) -> int | float:
         """Half the degree of V's leading term at the centre (the wall power 2n of an
         elliptic well; 1 for a well with a positive definite Hessian there)."""
-        half = self.order.degree / 2
-        return int(half) if half.is_integer else float(half)
+        return self.order.n
 
     @renamed(energy="particle_energy")
     def check_energy(self, particle_energy: float, *, name: str = "particle_energy") -> float:

@@ -3,6 +3,7 @@ shapes) and `sinktheory derive --well FILE`."""
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -226,3 +227,66 @@ def test_the_guide_well_file_derives(capsys):
     data = json.loads(out)
     assert code == 0 and data["well"] == load_well(path).name
     assert "hill_coefficient" in data and data["normal_mode"].startswith("y = 0 is a normal mode")
+
+
+# --- parameters named like SymPy's functions and constants ---------------------------------
+#: gamma and beta are SymPy functions, E is Euler's number: as parameters they are symbols
+GBE = "gamma*x**2/2 + beta*y**2/2 + E*(x**2 + y**2)**2"
+GBE_PARAMETERS = {"gamma": 1.5, "beta": 2.0, "E": 0.5}
+
+
+def test_parameters_named_like_sympy_functions_are_plain_symbols(tmp_path, capsys):
+    """Parsed as real symbols (potential and wall ratios), printed by their plain names in
+    every JSON string of `derive --well` (which printed Symbol('gamma') before), read back
+    with those names to the ladder typed here by hand, and passed to the engine as its own
+    run-time parameters."""
+    from _cli import write_well_file
+
+    from sinktheory.engine.printer import render
+    from sinktheory.engine.systems import sink_system
+
+    path = write_well_file(tmp_path, "gbe", GBE, GBE_PARAMETERS, ["sqrt(x**2 + y**2)/(E + beta)"])
+    well = load_well(path)
+    for expr in (well.potential, *well.wall_ratios):
+        assert not expr.atoms(sp.Function) and sp.E not in expr.atoms(sp.NumberSymbol)
+        assert {s.name for s in expr.free_symbols} <= {"x", "y", *GBE_PARAMETERS}
+        assert all(type(s) is sp.Symbol and s.is_real for s in expr.free_symbols)
+    code, out, err = run_cli(["derive", "--well", str(path), "--json"], capsys)
+    assert code == 0, err
+    data = json.loads(out)
+    texts = [v for k, v in data.items() if k not in ("well", "escape", "normal_mode")
+             and isinstance(v, str)]  # fmt: skip
+    assert len(texts) >= 14 and not [t for t in texts if "Symbol" in t]
+    assert data["parameters"] == GBE_PARAMETERS
+    assert data["potential"] == "E*(x**2 + y**2)**2 + beta*y**2/2 + gamma*x**2/2"
+    # read back with the parameters' names as symbols: the forces and Hill's coefficient
+    # of the potential typed here
+    g, b, e, x_, y_, mu_ = sp.symbols("gamma beta E x y mu")
+    names = {"gamma": g, "beta": b, "E": e}
+    V = g * x_**2 / 2 + b * y_**2 / 2 + e * (x_**2 + y_**2) ** 2
+    for key, want in (("potential", V), ("force_x", -sp.diff(V, x_)),
+                      ("force_y", -sp.diff(V, y_)),
+                      ("hill_coefficient", sp.diff(V, y_, 2).subs(y_, 0) / mu_)):  # fmt: skip
+        assert sp.simplify(sp.sympify(data[key], locals=names) - want) == 0, key
+    for flag, shown in (([], "γ"), (["--latex"], r"\gamma")):
+        code, out, _ = run_cli(["derive", "--well", str(path), *flag], capsys)
+        assert code == 0 and shown in out and "Symbol" not in out
+    engine = render(sink_system(well), "# gbe")
+    assert {"par_gamma", "par_beta", "par_E"} <= set(re.findall(r"\bpar_\w+", engine))
+
+
+def test_a_parameter_named_like_a_name_of_the_printed_code():
+    """abs is a name the numerical functions' code calls (|terms| of the basin's scale):
+    as a parameter it no longer shadows it.  The bowl k (x^2 + y^2)/2 reaches
+    sqrt(2 e / k) along each axis."""
+    from sinktheory.wellat import WellAt
+
+    bowl = WellAt(UserWell("bowl", "abs*(x**2 + y**2)/2 + numpy*x**4", {"abs": 1.5, "numpy": 0.0}))
+    for reach in bowl.reach(0.1):
+        assert reach == pytest.approx(math.sqrt(2 * 0.1 / 1.5), rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["lambda", "None", "if"])
+def test_a_python_keyword_is_not_a_parameter_name(name):
+    with pytest.raises(ValueError, match=f"'{name}' is refused: a Python keyword"):
+        UserWell("w", "x**2 + y**2", {name: 1.0})

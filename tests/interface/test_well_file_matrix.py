@@ -65,6 +65,16 @@ def check_sweep(d, argv, capsys, well):
     assert f'name = "{well}"' in ds.attrs["well"] and bool(ds.done.all())
 
 
+def check_design_hh(d, *_):
+    """Hénon–Heiles is harmonic at its centre: n = 1, the share E/(1 + 2k) of the total."""
+    import xarray as xr
+
+    ds = xr.open_zarr(d["store"])
+    assert bool(ds.done.all()) and ds.attrs["particles"] == 2
+    share = ds.total_energy.values / (1 + 2 * 2)
+    assert abs(ds.equipartition.values - share).max() <= 1e-12 * share.max()
+
+
 def check_well_hh(d, *_):
     assert abs(d["escape_energy"] - 1 / 6) < 1e-14 and not d["y_invariant"]
 
@@ -152,9 +162,13 @@ ROWS = [
     ("sweep", "elliptic", ["floquet", "--param", "amplitude=0.2", "--out", "s.zarr",
                            "--workers", "1", "--quiet"], check_sweep),
     ("sweep", "hh", ["floquet", "--param", "amplitude=0.2", "--out", "s.zarr"], NOT_INVARIANT),
-    # design: --well puts the well on the shape axis, where a well without n is refused
-    ("sweep", "hh", ["design", "--param", "beta=0.3", "--param", "n=4", "--out", "s.zarr"],
-     "a well that declares the wall exponent n"),
+    # design: --well puts the well on the shape axis; Hénon–Heiles' equipartition share
+    # is that of its leading term at the centre, harmonic (n = 1)
+    ("sweep", "hh", ["design", "--param", "beta=0.3", "--param", "n=4",
+                     "--param", "container_energy=E0", "--param", "particles=2",
+                     "--param", "runs=2", "--param", "periods=4", "--param", "horizons=2+4",
+                     "--param", "bootstrap=10", "--param", "lyapunov_runs=0", "--out",
+                     "s.zarr", "--workers", "1", "--quiet"], check_design_hh),
     ("relaxation", "elliptic", ["--particles", "2"], "the relaxation model reads a registered"),
     ("period", "hh", ["--n", "2"], "it has no well"),
     ("series", "hh", [], "it has no well"),
@@ -205,10 +219,14 @@ def test_every_command_runs_a_well_file_or_says_why_not(row, here, capsys, monke
 
 @pytest.mark.parametrize("well,reason", [
     ("elliptic", None),
-    ("hh", "must be a well that declares the wall exponent n"),
+    ("valley", "must be a well whose leading term at the centre is a form positive in every "
+               "direction"),
 ])  # fmt: skip
 def test_design_takes_a_well_file_on_its_shape_axis(well, reason, here, capsys, monkeypatch):
-    path = ELLIPSE if well == "elliptic" else "hh.toml"
+    """A well whose leading term x^2 vanishes along y (x^2 + y^4) has no equipartition
+    share of its leading order: refused."""
+    write_well_file(here, "valley", "x**2 + y**4")
+    path = ELLIPSE if well == "elliptic" else "valley.toml"
     argv = ["design", "--shape", path, *DESIGN]
     if reason:
         refused_well(argv, capsys, here, monkeypatch, reason)

@@ -27,6 +27,7 @@ from sinktheory.floquet import (
     pure_hill,
     pure_problem,
     rigid_limit_phi_half,
+    rotation_number,
     scan,
 )
 from sinktheory.hill import (
@@ -330,6 +331,21 @@ def test_multipliers_and_rotation_number_match_monodromy_eigenvalues():
             assert np.min(np.abs(eig - np.exp(2j * np.pi * nu))) < 1e-8
         else:
             assert chart.growth_per_period[0] == pytest.approx(np.log(np.abs(eig).max()), 1e-9)
+
+
+@pytest.mark.parametrize("d", [2e-12, 1e-8, 1e-3])
+def test_rotation_number_near_the_edges_against_mpmath(d):
+    """arccos(phi_half)/pi from phi_half -+ 1 given without cancellation, against mpmath
+    at 50 digits of the same differences: phi_half = 1 - d to 1e-15 relative, phi_half =
+    -1 + d to 4e-16 absolute (two ulps of a rotation number near 1).  Plain arccos of
+    the rounded phi_half is off by 1e-5 relative at d = 2e-12."""
+    with mpmath.workdps(50):
+        near_plus = rotation_number(1 - d, -d, 2 - d)
+        want = mpmath.acos(1 - mpmath.mpf(d)) / mpmath.pi
+        assert abs(near_plus - want) <= 1e-15 * want
+        near_minus = rotation_number(-1 + d, -2 + d, d)
+        want = mpmath.acos(-1 + mpmath.mpf(d)) / mpmath.pi
+        assert abs(near_minus - want) <= 4e-16
 
 
 # --- inputs and failures --------------------------------------------------------------

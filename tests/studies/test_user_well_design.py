@@ -40,6 +40,30 @@ def test_the_flat_well_typed_by_a_user_is_the_registry_design():
                                    err_msg=name)  # fmt: skip
 
 
+@pytest.mark.parametrize("potential,degree", [("x**n + y**n", 4),
+                                              ("sqrt(x**2 + y**2)**3 + x**2*y**2", 3)])
+def test_the_equipartition_share_of_a_user_s_well_is_that_of_its_degree(potential, degree):
+    """x^n + y^n is homogeneous of degree n, not 2n: by the virial theorem each particle
+    holds Theta of kinetic and 2 Theta/d of potential energy (degree d) against the
+    container's Theta, so the share is E/(1 + k (1 + 2/d)): E/(1 + 1.5 k) at n = 4 (it was
+    read as E/(1 + 1.25 k), the degree taken for 2n); r^3 + x^2 y^2 has the leading
+    degree 3 at the centre.  The design's measure of a point against that closed form, to
+    1e-12 (end to end, a whole design of Hénon–Heiles, harmonic at its centre, is
+    checked in tests/interface/test_well_file_matrix.py)."""
+    from sinktheory.design.measures import design_measures
+    from sinktheory.design.point import equipartition_n
+
+    well = UserWell("power", potential, {"n": (4, (2, 8))})
+    k, total = 2, 0.3
+    point = Sweep.make("design", {**BASE, "shape": [well], "particles": k}).grid.point(0)
+    n = equipartition_n(point)
+    assert n == degree / 2
+    energies = np.full((2, 13), 0.1) + 0.01 * np.arange(13)
+    m = design_measures(energies, e0=0.1, total_energy=total, particles=k, n=n,
+                        horizons=[6, 12], bootstrap=10)  # fmt: skip
+    assert m.equipartition == pytest.approx(total / (1 + k * (1 + 2 / degree)), rel=1e-12)
+
+
 def test_the_estimate_counts_one_engine_per_well():
     """After the flat engines exist, a new well (never compiled: no test runs it) is one
     engine to compile, whatever its n; the registry's flat and the user's flat none."""
@@ -80,10 +104,10 @@ def test_the_command_line_takes_a_well_file_on_the_shape_axis(tmp_path, capsys, 
     "shape,extra,reason",
     [
         (
-            "hh",
+            "valley",
             [],
-            "shape = 'hh' is not allowed: must be a well that declares the wall "
-            "exponent n (the design's equipartition share",
+            "shape = 'valley' is not allowed: must be a well whose leading term at the centre "
+            "is a form positive in every direction (the design's equipartition share",
         ),
         ("nosuch.toml", [], "must be one of flat, symmetric, circular or a TOML well file"),
         (
@@ -101,7 +125,7 @@ def test_the_command_line_takes_a_well_file_on_the_shape_axis(tmp_path, capsys, 
 )
 def test_a_well_the_design_cannot_use_is_refused(shape, extra, reason, tmp_path, capsys,
                                                  monkeypatch):  # fmt: skip
-    write_well_file(tmp_path, "hh", HH)
+    write_well_file(tmp_path, "valley", "x**2 + y**4")  # x^2 vanishes along y
     write_well_file(tmp_path, "paperflat", BUILT_IN["flat"], PAPER)
     args = ["design", "--shape", f"{shape}" + (".toml" if "." not in shape else ""),
             "--beta", "0.3", "--n", "4", "--out", str(tmp_path / "d.zarr"), "--quiet",

@@ -168,6 +168,22 @@ def test_a_floquet_sweep_of_the_elliptic_well_is_its_closed_form():
                   progress=False)  # fmt: skip
 
 
+def test_a_floquet_sweep_s_rotation_number_near_the_edges_of_stability():
+    """The elliptic well at n = 1 has rotation number a/b exactly (phi_half = cos(pi a/b)):
+    at a/b = 1e-6, phi_half = 1 - 4.9e-12, it is held to 1e-12 relative (measured 1.3e-15),
+    and at a/b = 1 - 1e-6 its distance from 1 to 1e-7 relative (measured 4.9e-9).  Plain
+    arccos of phi_half was off by 3e-5 and 1.5e-4 there."""
+    from _cli import ELLIPTIC
+
+    well = UserWell("elliptic", ELLIPTIC, {"a": 0.5, "b": 1.0, "gamma": 1.0, "n": 1})
+    bs = [5e5, 0.5 / (1 - 1e-6)]
+    ds = run_sweep("floquet", {"b": bs, "amplitude": 0.2}, well=well, workers=1,
+                   progress=False)  # fmt: skip
+    near_plus, near_minus = ds.rotation_number.values
+    assert abs(near_plus - 0.5 / bs[0]) <= 1e-12 * (0.5 / bs[0])
+    assert abs((1 - near_minus) - (1 - 0.5 / bs[1])) <= 1e-7 * (1 - 0.5 / bs[1])
+
+
 def test_well_bifurcation_over_the_flat_well_s_own_beta_is_the_registry_diagram():
     from sinktheory.bifurcation import bifurcation, well_bifurcation
 
