@@ -151,6 +151,8 @@ ROOT_XTOL = 1e-12
 #: The quarter-period factors whose zeros are the stability boundaries, with the value of
 #: phi_half there.
 BOUNDARY_FACTORS = {"y2": 1.0, "dy1": 1.0, "y1": -1.0, "dy2": -1.0}
+#: The order of the factors in :meth:`WellHill._factors`.
+_FACTOR_ORDER = ("y1", "dy1", "y2", "dy2")
 #: Magnitudes at or above this (or as small as its inverse) are written to JSON as decimal
 #: strings built from their logarithms.
 JSON_CAP = 1e300
@@ -612,14 +614,9 @@ class FloquetChart(Result):
 
     @property
     def log_abs_rho_half(self) -> np.ndarray:
-        """ln of the largest |multiplier| over T/2: arccosh|phi_half| (0 where stable)."""
-        d_plus = self.phi_half_minus_one  # >= 0 on the phi_half >= 1 side
-        d_minus = -self.phi_half_plus_one  # >= 0 on the phi_half <= -1 side
-        d = np.where(d_plus > 0, d_plus, np.where(d_minus > 0, d_minus, 0.0))
-        with np.errstate(over="ignore", invalid="ignore"):
-            small = np.log1p(d + np.sqrt(d * (d + 2.0)))
-        lh = self.log_abs_phi_half
-        return np.where(lh > 20.0, LN2 + lh, np.where(self.stable, 0.0, small))
+        """ln of the largest |multiplier| over T/2: arccosh|phi_half| (0 where stable;
+        :func:`_arccosh_abs` of the cancellation-free factors)."""
+        return _arccosh_abs(self.phi_half_minus_one, self.phi_half_plus_one, self.log_abs_phi_half)
 
     @property
     def growth_per_period(self) -> np.ndarray:
@@ -643,15 +640,40 @@ class FloquetChart(Result):
         Stable: exp(+-2 i theta).  Unstable: exp(+-g), g = growth_per_period (positive
         real, since rho = rho_half^2); the large one becomes inf beyond float range.
         """
-        theta = np.pi * self.rotation_number
-        g = self.growth_per_period
-        with np.errstate(over="ignore"):
-            big = np.exp(g)
-        small = np.exp(-g)
-        stable = self.stable
-        rho1 = np.where(stable, np.exp(2j * theta), big + 0j)
-        rho2 = np.where(stable, np.exp(-2j * theta), small + 0j)
-        return np.stack([rho1, rho2], axis=1)
+        return _multipliers(self.rotation_number, self.growth_per_period, self.stable)
+
+
+def _arccosh_abs(minus, plus, log_abs) -> np.ndarray:
+    """arccosh abs(c), the log of the larger abs(eigenvalue) of a unimodular 2x2 map of
+    half trace c, from ``minus`` = c - 1 and ``plus`` = c + 1 as the quarter-period factors
+    give them without cancellation (0 where abs(c) <= 1): log1p(d + sqrt(d (d + 2))),
+    d = abs(c) - 1, keeps its relative accuracy as d -> 0, where it is sqrt(2 d); above
+    ``log_abs`` = ln abs(c) = 20 (c may be beyond float range) it is ln 2 + ln abs(c),
+    exact to e^-40.  The one formula of the registered charts
+    (:attr:`FloquetChart.log_abs_rho_half`) and of a user's well (:class:`WellFloquet`)."""
+    minus, plus = np.asarray(minus, dtype=float), np.asarray(plus, dtype=float)
+    d = np.where(minus > 0, minus, np.where(plus < 0, -plus, 0.0))
+    with np.errstate(over="ignore", invalid="ignore"):
+        small = np.log1p(d + np.sqrt(d * (d + 2.0)))
+    return np.where(np.asarray(log_abs) > 20.0, LN2 + log_abs, small)
+
+
+def _multipliers(rotation, growth, stable, sign=1.0) -> np.ndarray:
+    """The Floquet multipliers (rho_1, rho_2) over a period, last axis, complex:
+    exp(+-2 i theta), theta = pi ``rotation``, where ``stable``; ``sign`` exp(+-``growth``)
+    otherwise (the large one inf beyond float range).  rho_1 rho_2 = 1 by construction, and
+    near abs(rho) = 1 each is as accurate as the rotation number or the growth it comes
+    from (rho = c +- sqrt(c^2 - 1) loses half the digits of c there).  The one formula of
+    the registered charts (:attr:`FloquetChart.multipliers`) and of a user's well
+    (:class:`WellFloquet`)."""
+    theta = np.pi * np.asarray(rotation, dtype=float)
+    g = np.asarray(growth, dtype=float)
+    with np.errstate(over="ignore"):
+        big = np.exp(g)
+    small = np.exp(-g)
+    rho1 = np.where(stable, np.exp(2j * theta), sign * big + 0j)
+    rho2 = np.where(stable, np.exp(-2j * theta), sign * small + 0j)
+    return np.stack([rho1, rho2], axis=-1)
 
 
 def rotation_number(phi_half, phi_half_minus_one, phi_half_plus_one) -> np.ndarray:
@@ -694,7 +716,9 @@ def rotation_number(phi_half, phi_half_minus_one, phi_half_plus_one) -> np.ndarr
 
 @dataclass(frozen=True)
 class Boundary:
-    """A located stability boundary: ``factor`` vanishes at ``value``; phi_half = ``phi_half``."""
+    """A located stability boundary: ``factor`` vanishes at ``value``; phi_half = ``phi_half``
+    (for a user's well without symmetry the factor is taken at the half period and the value
+    is phi's, :func:`well_scan`)."""
 
     value: float
     factor: str
@@ -793,16 +817,7 @@ def scan(problem: HillProblem, lo: float, hi: float, count: int) -> StabilitySca
     def one(value: float) -> FloquetChart:
         return FloquetChart(problem, np.array([value]), problem.quarter(np.array([value])))
 
-    boundaries: list[Boundary] = []
-    for name, phi_value in BOUNDARY_FACTORS.items():
-        sign = np.sign(chart.factor(name))
-        f = _scalar(one, name)
-        for i in np.nonzero(sign[:-1] * sign[1:] <= 0)[0]:
-            if sign[i] == 0 and i > 0:
-                continue  # a zero on a grid point was found from the previous cell
-            root = _brentq(f, grid[i], grid[i + 1], f"{name}(Q)")
-            boundaries.append(Boundary(root, name, phi_value))
-    boundaries.sort(key=lambda b: b.value)
+    boundaries = _factor_boundaries(grid, chart.factor, lambda name: _scalar(one, name), "Q")
     intervals = _stable_intervals(
         lo, hi, [b.value for b in boundaries], lambda mids: problem.evaluate(mids).stable
     )
@@ -817,6 +832,28 @@ def scan(problem: HillProblem, lo: float, hi: float, count: int) -> StabilitySca
             if vals[k] * vals[k + 1] < 0:
                 resonances.append(_brentq(f_phi, pts[k], pts[k + 1], "phi_half"))
     return StabilityScan(chart, boundaries, intervals, resonances)
+
+
+def _factor_boundaries(grid, on_grid, function, where: str) -> list[Boundary]:
+    """Every zero of the factors y1, y1', y2, y2' (:data:`BOUNDARY_FACTORS`, taken at the
+    time ``where``) between neighbouring points of ``grid``, located by brentq to
+    :data:`ROOT_XTOL`, sorted: ``on_grid(name)`` is a factor's values on the grid,
+    ``function(name)`` the factor as a function of the parameter.  Each factor crosses
+    zero at an edge with a slope of order 1 however narrow the gap, so the edge is located
+    to the factor's own accuracy (trace -+ 1 is quadratic across a closed gap and has a
+    slope of the gap's width at a narrow one).  Shared by :func:`scan` and
+    :func:`well_scan`."""
+    boundaries: list[Boundary] = []
+    for name, phi_value in BOUNDARY_FACTORS.items():
+        sign = np.sign(on_grid(name))
+        f = function(name)
+        for i in np.nonzero(sign[:-1] * sign[1:] <= 0)[0]:
+            if sign[i] == 0 and i > 0:
+                continue  # a zero on a grid point was found from the previous cell
+            root = _brentq(f, grid[i], grid[i + 1], f"{name}({where})")
+            boundaries.append(Boundary(root, name, phi_value))
+    boundaries.sort(key=lambda b: b.value)
+    return boundaries
 
 
 def _stable_intervals(lo: float, hi: float, cuts, stable_at) -> list[tuple[float, float]]:
@@ -998,9 +1035,18 @@ class WellFloquet(Result):
         2 y1 y2' at the quarter period, free of cancellation (symmetric wells; NaN
         otherwise)
     phi : half trace of M(T)
-    stable : abs(phi_half) < 1 from the factors' signs (symmetric), abs(phi) < 1 otherwise
-    multipliers : rho_1, rho_2 over T (complex)
-    growth_per_period : ln of the largest abs(rho) (0 where stable)
+    stable : abs(phi_half) < 1 (symmetric), abs(phi) < 1 (otherwise), decided from the
+        signs of the factors: y2 y1' < 0 < y1 y2'
+    multipliers : rho_1, rho_2 over T (complex), exp(+-2 pi i rotation number) where stable,
+        +-exp(+-growth) otherwise, by the registered charts' formula
+        (:attr:`FloquetChart.multipliers`)
+    growth_per_period : ln of the largest abs(rho) (0 where stable): 2 arccosh abs(phi_half)
+        (symmetric) or arccosh abs(phi), from the factors as
+        :attr:`FloquetChart.growth_per_period`
+
+    Near abs(phi_half) = 1 (abs(phi) = 1) each of these comes from the factors without
+    cancellation, so the multipliers' distance from 1 keeps the integration's relative
+    accuracy instead of losing half the digits in sqrt(phi^2 - 1).
     """
 
     name: str
@@ -1016,11 +1062,7 @@ class WellFloquet(Result):
     phi: float
     stable: bool
     multipliers: np.ndarray
-
-    @property
-    def growth_per_period(self) -> float:
-        """ln of the largest abs(rho) over T (0 where stable)."""
-        return float(np.log(np.max(np.abs(self.multipliers)))) if not self.stable else 0.0
+    growth_per_period: float
 
     @property
     def rotation_number(self) -> float:
@@ -1032,9 +1074,8 @@ class WellFloquet(Result):
     DIMS = {"multipliers": ("multiplier",)}
 
     def items(self) -> dict:
-        """The fields, the growth per period and the rotation number."""
-        return {**super().items(), "growth_per_period": self.growth_per_period,
-                "rotation_number": self.rotation_number}  # fmt: skip
+        """The fields and the rotation number."""
+        return {**super().items(), "rotation_number": self.rotation_number}
 
 
 def _even(expr) -> bool:
@@ -1120,7 +1161,7 @@ class WellHill:
     symmetric: bool
     rtol: float
 
-    def _factors(self, amplitude) -> tuple[float, float, float, float, float, float]:
+    def _factors(self, amplitude) -> tuple[float, ...]:
         """(A, energy, time to the event, y1, y1', y2, y2' there) for a checked A."""
         from scipy.integrate import solve_ivp
 
@@ -1177,27 +1218,37 @@ class WellHill:
             raise NumericalError(f"{where}: the solutions left float range")
         return (a, energy, t_event, *(float(f) for f in end[2:]))
 
-    def trace(self, amplitude: float) -> float:
-        """phi_half (symmetric) or phi (otherwise) at ``amplitude``: +-1 on the boundaries
-        of stability."""
-        _, _, _, y1, dy1, y2, dy2 = self._factors(amplitude)
-        return y1 * dy2 + y2 * dy1
+    def factor(self, name: str):
+        """The factor ``name`` (one of :data:`BOUNDARY_FACTORS`: y1, dy1, y2, dy2 at the
+        quarter period, or at the half period without symmetry) as a function of the
+        amplitude: its zeros are the boundaries of stability."""
+        k = 3 + _FACTOR_ORDER.index(name)
+        return lambda amplitude: self._factors(amplitude)[k]
 
     def at(self, amplitude: float) -> WellFloquet:
         """The :class:`WellFloquet` at ``amplitude``."""
-        a, energy, t_event, y1, dy1, y2, dy2 = self._factors(amplitude)
-        trace_half = y1 * dy2 + y2 * dy1
+        return self._floquet(*self._factors(amplitude))
+
+    def _floquet(self, a, energy, t_event, y1, dy1, y2, dy2) -> WellFloquet:
+        """The :class:`WellFloquet` of :meth:`_factors`'s values.  At the event (x = 0, or
+        the other turning point) the half trace c of the map there and back is
+        y1 y2' + y2 y1', and by the Wronskian y1 y2' - y2 y1' = 1, c - 1 = 2 y2 y1' and
+        c + 1 = 2 y1 y2' (module docstring): c is phi_half with symmetry (the multipliers
+        over T are the squares of those over T/2), phi without."""
+        trace = y1 * dy2 + y2 * dy1
+        minus, plus = 2.0 * y2 * dy1, 2.0 * y1 * dy2
+        stable = bool(y2 * dy1 < 0 < y1 * dy2)
+        with np.errstate(divide="ignore"):
+            growth = float(_arccosh_abs(minus, plus, np.log(abs(trace))))
+        rotation = float(rotation_number(trace, minus, plus))  # arccos(c)/pi
         if self.symmetric:
-            phi_half = float(trace_half)
-            minus, plus = 2.0 * y2 * dy1, 2.0 * y1 * dy2  # the Wronskian y1 y2' - y2 y1' = 1
-            phi = 2.0 * phi_half * phi_half - 1.0
-            stable = bool(y2 * dy1 < 0 < y1 * dy2)
-            period = 4.0 * t_event
-        else:
-            phi_half, minus, plus, phi = math.nan, math.nan, math.nan, float(trace_half)
-            stable = bool(abs(phi) < 1)
-            period = 2.0 * t_event
-        root = np.sqrt(complex(phi * phi - 1.0))
+            phi_half, phi, period = trace, 2.0 * trace * trace - 1.0, 4.0 * t_event
+            growth *= 2.0
+            multipliers = _multipliers(rotation, growth, stable)
+        else:  # theta_T = arccos(phi) = pi rotation, the multipliers' sign that of phi
+            phi_half, phi, period = math.nan, trace, 2.0 * t_event
+            multipliers = _multipliers(rotation / 2, growth, stable, math.copysign(1.0, phi))
+            minus = plus = math.nan
         return WellFloquet(
             name=self.name,
             parameters=self.parameters,
@@ -1211,7 +1262,8 @@ class WellHill:
             phi_half_plus_one=plus,
             phi=phi,
             stable=stable,
-            multipliers=np.array([phi + root, phi - root]),
+            multipliers=multipliers,
+            growth_per_period=growth,
         )
 
 
@@ -1225,8 +1277,9 @@ class WellScan(Result):
     amplitude : the grid of amplitudes A
     trace : phi_half (symmetric wells) or phi at each A
     stable : at each A
-    boundaries : amplitudes where the trace crosses +1 or -1, located by brentq to
-        :data:`ROOT_XTOL`, each with that value
+    boundaries : list of :class:`Boundary`, the zeros of the factors y1, y1', y2, y2'
+        (:meth:`WellHill.factor`) located by brentq to :data:`ROOT_XTOL`, each with the
+        factor and the trace's value there (+1 or -1)
     stable_intervals : maximal stable intervals of the range (an end equal to the range's
         end is not a boundary)
     """
@@ -1246,9 +1299,11 @@ class WellScan(Result):
 def well_scan(hill: WellHill, amplitude_range) -> WellScan:
     """The Floquet chart of ``hill`` (:func:`well_hill`) on COUNT amplitudes over [LO, HI]
     (``amplitude_range`` = (LO, HI, COUNT), as ``floquet --amplitude-range``), with the
-    stability boundaries between them located: each sign change of
-    trace - 1 or trace + 1 between neighbouring grid points is refined by brentq (two
-    crossings within one cell are missed).
+    stability boundaries between them located as :func:`scan` locates them: each sign
+    change of y1, y1', y2 or y2' at the quarter period (at the half period without
+    symmetry) between neighbouring grid points is refined by brentq, which finds the edges
+    of a gap narrower than the grid, and of a closed one, to the factors' accuracy (two
+    zeros of one factor within one cell are missed).
 
     Examples
     --------
@@ -1266,20 +1321,16 @@ def well_scan(hill: WellHill, amplitude_range) -> WellScan:
     if not lo < hi:
         raise ParameterError("hi", hi, f"> lo = {lo!r}")
     grid = np.linspace(lo, hi, count)
-    points = [hill.at(a) for a in grid]
+    values = [hill._factors(a) for a in grid]
+    points = [hill._floquet(*row) for row in values]
     trace = np.array([p.phi_half if hill.symmetric else p.phi for p in points])
-    boundaries = []
-    for target in (1.0, -1.0):
-        side = np.sign(trace - target)
-        for i in np.nonzero(side[:-1] * side[1:] < 0)[0]:
-            root = _brentq(
-                lambda a, target=target: hill.trace(a) - target, grid[i], grid[i + 1],
-                f"trace = {target:g}",
-            )  # fmt: skip
-            boundaries.append((root, target))
-    boundaries.sort()
+    table = {name: np.array([row[3 + k] for row in values])
+             for k, name in enumerate(_FACTOR_ORDER)}  # fmt: skip
+    boundaries = _factor_boundaries(
+        grid, table.__getitem__, hill.factor, "Q" if hill.symmetric else "T/2"
+    )
     intervals = _stable_intervals(
-        lo, hi, [b for b, _ in boundaries], lambda mids: [hill.at(m).stable for m in mids]
+        lo, hi, [b.value for b in boundaries], lambda mids: [hill.at(m).stable for m in mids]
     )
     return WellScan(
         hill.name, hill.parameters, hill.symmetric, grid, trace,

@@ -97,7 +97,8 @@ def _user_well(args: argparse.Namespace, user) -> Output:
         lines = [f"{chart.name} well {parameters_text(chart.parameters)}: {which} over the "
                  f"amplitude in [{lo:g}, {hi:g}]"]  # fmt: skip
         lines += [f"  stable  [{a:.12g}, {b:.12g}]" for a, b in chart.stable_intervals]
-        lines += [f"  {which} = {t:g} at A = {a:.12g}" for a, t in chart.boundaries]
+        lines += [f"  {which} = {b.phi_half:g} at A = {b.value:.12g} ({b.factor} = 0)"
+                  for b in chart.boundaries]  # fmt: skip
         return Output(chart.as_dict(), "\n".join(lines))
     f = hill.at(args.amplitude)
     data = f.as_dict()
@@ -110,7 +111,10 @@ def _user_well(args: argparse.Namespace, user) -> Output:
         f"  Hill's coefficient V_yy(x, 0) = {f.hill_coefficient}",
         (f"  phi_T/2 = {f.phi_half:.12g}  " if f.symmetric else "  ")
         + f"phi = {f.phi:.12g}  ({state})",
-        f"  multipliers {rho}; growth per period {f.growth_per_period:.12g}",
+        f"  multipliers {rho}",
+        # as the registered charts print it; without symmetry there is no half-period map
+        (f"  rotation number {f.rotation_number:.12g}, " if f.symmetric else "  ")
+        + f"growth per period {f.growth_per_period:.12g}",
     ]
     return Output(data, "\n".join(lines))
 

@@ -181,9 +181,12 @@ def test_floquet_amplitude_chart_finds_the_mathieu_tongue(tmp_path, capsys):
     data = cli_json(["floquet", "--well", str(path), "--amplitude-range", "0.5", "1.5", "5"],
                     capsys)  # fmt: skip
     q = optimize.brentq(lambda q: special.mathieu_a(2, q) - 4.8, 0.1, 3.0, xtol=1e-15)
-    assert [b[1] for b in data["boundaries"]] == [1.0]
-    assert data["boundaries"][0][0] == pytest.approx(q / 1.2, rel=1e-11)  # measured 6e-14
-    assert data["stable_intervals"] == [[0.5, data["boundaries"][0][0]]]
+    # the edge is a zero of one factor at the half period (no symmetry): 2 y2 y1' = phi - 1
+    assert [(b["phi_half"], b["factor"] in ("y2", "dy1")) for b in data["boundaries"]] == [
+        (1.0, True)
+    ]
+    assert data["boundaries"][0]["value"] == pytest.approx(q / 1.2, rel=1e-11)  # measured 6e-14
+    assert data["stable_intervals"] == [[0.5, data["boundaries"][0]["value"]]]
     assert data["stable"] == [True, True, True, True, False]  # A = 0.5, 0.75, ..., 1.5
 
 
