@@ -134,14 +134,17 @@ def _exit_interrupted(status: int) -> None:
     once the compiled kernels, Dask and Zarr are loaded (measured at load 6), and a second
     Ctrl-C during it ended the process with status -2 (SIGINT's default action, which
     Python restores while tearing down): benchmarks/bench_interrupt_sweep.py --again 0.3,
-    4 of 4.  So further signals are ignored, the exit handlers run (multiprocessing's
-    finalizers release its semaphores) and the process ends without the tear-down."""
-    import atexit
+    4 of 4.  So further signals are ignored and the process ends without the tear-down
+    and without the exit handlers.  None is needed: the clean-ups ran before, in the
+    ``finally`` blocks the interrupt passed through -- zarr's I/O settled
+    (:func:`~sinktheory.commands._common.settle_zarr`), stores closed, a sweep's worker
+    processes and forkserver ended and its pool freed, so that the pool's named
+    semaphores are unlinked at once (:func:`sinktheory.sweep.runner._end_workers`; left
+    over, the resource tracker would warn about them after the line)."""
     import os
 
     for signum in (signal.SIGINT, signal.SIGTERM):
         signal.signal(signum, signal.SIG_IGN)
-    atexit._run_exitfuncs()
     for stream in (sys.stdout, sys.stderr):
         with contextlib.suppress(Exception):
             stream.flush()

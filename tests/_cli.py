@@ -79,6 +79,71 @@ def probe(args, tmp_path):
     return int(last[1]), heavy, proc
 
 
+#: Starts ``sinktheory ARGV`` as a terminal starts a foreground command and as ``python -m
+#: sinktheory`` runs it (``main()`` reads the process's own arguments and may end the
+#: process itself): SIGINT and SIGTERM at their usual actions and unblocked, whatever the
+#: test process passed on (a shell's background job ignores SIGINT, an ignored signal stays
+#: ignored across exec, and Python then leaves it ignored: such a command never sees Ctrl-C,
+#: which is right for it, but not what an interrupt test means).  It says "ready" on stderr
+#: once the package is imported (a signal during Python's own start-up is not the
+#: command's to handle).
+LAUNCH = (
+    "import signal, sys; signal.signal(signal.SIGINT, signal.default_int_handler); "
+    "signal.signal(signal.SIGTERM, signal.SIG_DFL); "
+    "signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM}); "
+    "from sinktheory.cli import main; print('ready', file=sys.stderr, flush=True); "
+    "sys.exit(main())"
+)
+
+
+def launch(argv, cwd, env=None, group=False) -> subprocess.Popen:
+    """``sinktheory ARGV`` started by :data:`LAUNCH` in ``cwd`` (in a session and process
+    group of its own with ``group``, so that ``os.killpg`` reaches it as Ctrl-C would), once
+    it says ready; stdout and stderr are text pipes."""
+    proc = subprocess.Popen(
+        [sys.executable, "-c", LAUNCH, *argv], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        text=True, cwd=cwd, env=env, start_new_session=group,
+    )  # fmt: skip
+    line = proc.stderr.readline()
+    if line != "ready\n":
+        proc.kill()
+        out, err = proc.communicate()
+        raise AssertionError(f"the command did not start: {line}{err}")
+    return proc
+
+
+def _stat(pid: int) -> list[str]:
+    """The fields of /proc/PID/stat after the command name (empty if it is gone)."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().rsplit(")", 1)[1].split()
+    except OSError:
+        return []
+
+
+def descendants(pid: int) -> list[int]:
+    """Every process below ``pid`` (Linux /proc; a sweep's forkserver, resource tracker
+    and the workers the forkserver forks)."""
+    found = []
+    for entry in os.listdir("/proc"):
+        fields = _stat(int(entry)) if entry.isdigit() else []
+        if fields and int(fields[1]) == pid:
+            found += [int(entry), *descendants(int(entry))]
+    return found
+
+
+def cpu_ticks(pid: int) -> int:
+    """Clock ticks process ``pid`` has computed in user mode (0 if it is gone)."""
+    fields = _stat(pid)
+    return int(fields[11]) if fields else 0
+
+
+def alive(pid: int) -> bool:
+    """Whether process ``pid`` exists and is not a zombie."""
+    fields = _stat(pid)
+    return bool(fields) and fields[0] != "Z"
+
+
 #: The registry's shapes, an elliptic well and Henon-Heiles typed as a user would (the
 #: paper's parameters: defaults with ranges).
 BUILT_IN = {

@@ -300,10 +300,11 @@ class _Engine:
             workers, mp_context=context, initializer=_start_worker, initargs=(os.getpid(),)
         )
         starter: list[threading.Thread] = []  # the thread that submits (see _run_pool)
+        failed: list[BaseException] = []  # and what it raised
         self._close = lambda: pool.shutdown(wait=True, cancel_futures=True)
-        self._abort = lambda: _end_workers(pool, starter)
+        self._abort = lambda: _end_workers(pool, starter, failed)
         self.where = f"{workers} local processes"
-        return _run_pool(pool, kind.name, tasks, starter)
+        return _run_pool(pool, kind.name, tasks, starter, failed)
 
     def __exit__(self, kind, error, traceback) -> None:
         if kind is not None and self._abort is not None:
@@ -314,13 +315,23 @@ class _Engine:
 
 
 def _end_workers(
-    pool: ProcessPoolExecutor, starter: list[threading.Thread], grace: float = 0.5
+    pool: ProcessPoolExecutor,
+    starter: list[threading.Thread],
+    failed: list[BaseException],
+    grace: float = 0.5,
 ) -> None:
     """End a pool at once, its running tasks too (an interrupt, a failed point), in order:
     the forkserver first (:func:`_end_forkserver`; the thread still starting workers,
     ``starter``, waits for it, then fails and ends), then the worker processes (SIGTERM,
     then SIGKILL after ``grace`` seconds), then the pool's own thread, queued tasks
     cancelled.  Neither the driver nor its workers wait for tasks in flight.
+
+    What the starting thread raised (``failed``) is let go: its frames hold the process
+    it was starting, whose arguments hold the pool's queues, in a reference cycle through
+    ``failed``; their named semaphores were then unlinked only by a garbage collection or
+    multiprocessing's exit handlers, and an interrupted command, which ends without either
+    (:func:`sinktheory.cli.main`), left them to the resource tracker, whose warning about
+    "leaked semaphore objects" followed the command's one line.
 
     A worker holds SIGTERM while a compiled call runs (:func:`sinktheory.progress.chunks`,
     a tenth of a second), but its first task also loads the compiled kernels inside that
@@ -341,6 +352,7 @@ def _end_workers(
             process.join(1.0)
     # the workers are gone: the pool's manager thread sees it at once and cleans up
     pool.shutdown(wait=True, cancel_futures=True)
+    failed.clear()
 
 
 def _run_here(kind: str, tasks: list) -> Iterator[tuple[list, list]]:
@@ -349,7 +361,11 @@ def _run_here(kind: str, tasks: list) -> Iterator[tuple[list, list]]:
 
 
 def _run_pool(
-    pool: ProcessPoolExecutor, kind: str, tasks: list, starter: list[threading.Thread]
+    pool: ProcessPoolExecutor,
+    kind: str,
+    tasks: list,
+    starter: list[threading.Thread],
+    failed: list[BaseException],
 ) -> Iterator[tuple[list, list]]:
     """Submit the tasks and yield their results as they finish, a signal held while the
     pool's code runs and acted on every 0.2 s.
@@ -358,9 +374,8 @@ def _run_pool(
     forkserver has imported the package (2-5 s on a loaded machine).  They run in a thread
     of their own (appended to ``starter``), so that the main thread can answer Ctrl-C
     meanwhile (before, it waited with the signal held: the driver exited up to 2.4 s
-    after it, benchmarks/bench_interrupt_sweep.py)."""
+    after it, benchmarks/bench_interrupt_sweep.py); what it raises goes to ``failed``."""
     futures: dict = {}
-    failed: list[BaseException] = []
 
     def submit() -> None:
         try:

@@ -1,9 +1,9 @@
 """Adversarial input, second pass (issue 26): chaos, nnm, design and the newer sweep kinds.
 
 CLI cases go through the command (``refused``: exit 2, one line naming the parameter, no
-traceback, nothing written); interrupts through a real subprocess; damaged stores through
-the store API and the command; the Python API through a property-based test
-(test_api_fuzz.py).
+traceback, nothing written); damaged stores through the store API and the command; the
+Python API through a property-based test (test_api_fuzz.py).  (Interrupts of sweeps and
+of the design command: test_interrupts.py.)
 """
 
 import numpy as np
@@ -193,112 +193,6 @@ def test_sweep_prints_its_estimate_before_any_work(capsys, tmp_path, monkeypatch
     seconds = 2 * 2 * 3 * 512 * 1 * 4e-7
     assert err.startswith(f"sinktheory sweep: 2 point(s), estimated work {seconds:.3g} s in all")
     assert json.loads(out)["estimated_seconds"] == pytest.approx(seconds, rel=1e-12)
-
-
-# --------------------------------------------------------------------------- interrupts
-def _descendants(pid: int) -> list[int]:
-    """Every process below ``pid`` (the forkserver and the workers it forks)."""
-    import os
-
-    found = []
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
-        try:
-            with open(f"/proc/{entry}/stat") as f:
-                fields = f.read().rsplit(")", 1)[1].split()
-        except OSError:
-            continue
-        if int(fields[1]) == pid:
-            found += [int(entry), *_descendants(int(entry))]
-    return found
-
-
-def _cpu_ticks(pid: int) -> int:
-    try:
-        with open(f"/proc/{pid}/stat") as f:
-            return int(f.read().rsplit(")", 1)[1].split()[11])  # utime
-    except OSError:
-        return 0
-
-
-def _alive(pid: int) -> bool:
-    try:
-        with open(f"/proc/{pid}/stat") as f:
-            return f.read().rsplit(")", 1)[1].split()[0] != "Z"
-    except OSError:
-        return False
-
-
-SLOW_SWEEP = ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=-0.3:0.3:40"]
-SLOW_SWEEP += ["--param", "n=4", "--param", "runs=8", "--param", "periods=2000"]
-SLOW_DESIGN = ["design", "--beta", "-0.3:0.3:20", "--n", "4", "--no-estimate"]
-
-
-@pytest.mark.parametrize(
-    ("argv", "signame", "group", "status"),
-    [
-        (SLOW_SWEEP, "SIGINT", False, 130),  # kill -INT to the driver alone: hung before
-        (SLOW_SWEEP, "SIGINT", True, 130),  # Ctrl-C: the whole process group
-        (SLOW_SWEEP, "SIGTERM", False, 143),
-        (SLOW_DESIGN, "SIGINT", False, 130),
-        (SLOW_SWEEP, "SIGTERM", None, 143),  # None: as soon as the store exists
-    ],
-    ids=["sweep-int-main", "sweep-int-group", "sweep-term-main", "design-int-main", "starting"],
-)
-def test_interrupt_ends_workers_and_exits_promptly(argv, signame, group, status, tmp_path):
-    """Two workers busy on long points (or, with group None, the pool still starting: a
-    worker forked but not yet recorded by the pool once escaped and printed a traceback);
-    the signal ends driver and workers within a few seconds, with exactly one line on
-    stderr naming --resume (a resource-tracker warning of the workers' semaphores once
-    followed it), and the store stays readable."""
-    import os
-    import signal
-    import subprocess
-    import sys
-    import time
-
-    import xarray as xr
-
-    command = [sys.executable, "-m", "sinktheory.cli", *argv, "--workers", "2"]
-    command += ["--out", str(tmp_path / "s.zarr"), "--quiet"]
-    proc = subprocess.Popen(
-        command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-        start_new_session=True, cwd=tmp_path,
-    )  # fmt: skip
-    try:
-        deadline = time.monotonic() + 120
-        while time.monotonic() < deadline:  # two workers have computed for 1 s or more
-            busy = [p for p in _descendants(proc.pid) if _cpu_ticks(p) >= 100]
-            if len(busy) >= 2 or (group is None and (tmp_path / "s.zarr").exists()):
-                break
-            assert proc.poll() is None, proc.communicate()
-            time.sleep(0.2)
-        else:
-            pytest.fail("the workers did not start within 120 s")
-        below = _descendants(proc.pid)
-        sent = time.monotonic()
-        sig = getattr(signal, signame)
-        os.killpg(proc.pid, sig) if group else os.kill(proc.pid, sig)
-        out, err = proc.communicate(timeout=30)
-        took = time.monotonic() - sent
-    finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.communicate()
-    assert proc.returncode == status, err
-    # 10 s: the driver terminates its workers at once (2 s grace before SIGKILL); a
-    # driver waiting for the tasks in flight would take minutes
-    assert took < 10, took
-    assert err.splitlines() == [f"sinktheory {argv[0]}: interrupted; --resume continues"], err
-    assert "Traceback" not in err and out == ""
-    for _ in range(50):  # the resource tracker ends right after the driver
-        if not any(_alive(p) for p in below):
-            break
-        time.sleep(0.1)
-    assert not any(_alive(p) for p in below), [p for p in below if _alive(p)]
-    ds = xr.open_zarr(tmp_path / "s.zarr")  # whole: created before the points ran
-    assert ds.done.shape == ((40,) if argv is SLOW_SWEEP else (20,))
 
 
 # --------------------------------------------------------------------------- damaged stores

@@ -1,11 +1,19 @@
 """Ctrl-C (SIGINT) and SIGTERM end a long command at once and cleanly.
 
-Each command runs in a subprocess on a job that is long only because of its many periods;
-the signal comes once it is computing.  It must exit with 130 (SIGINT) or 143 (SIGTERM)
-within 2 s, with exactly one line on stderr (no traceback, no warning after it), nothing
-on stdout and no output file.  Before the fix the billiard kernels crashed with a
-segmentation fault some seconds after the signal (numba boxing their results while the
-interrupt was raised), and simulate and chaos ended with a traceback and status -2.
+Each command runs in a subprocess on a job that is long only because of its many periods
+(or, for a floquet sweep, its many points); the signal comes once it is computing (a
+sweep: once its store exists).  It must exit with 130 (SIGINT) or 143 (SIGTERM) within
+2 s, with exactly one line on stderr (no traceback, no warning after it), nothing on
+stdout and no output file; a sweep's line names --resume, and its store opens for
+resuming.  Every sweep kind is interrupted computing in the driver (``--workers 1``: the
+kind's own loops must act on the signal), and sweeps on two worker processes by a signal
+to the driver alone and to the whole process group, at work and while the pool starts.
+Before the fixes the billiard kernels crashed with a segmentation fault some seconds
+after the signal (numba boxing their results while the interrupt was raised), and
+simulate and chaos ended with a traceback and status -2.
+
+The commands start as a terminal starts them (:func:`_cli.launch`: SIGINT and SIGTERM at
+their usual actions), whatever this test process inherited.
 """
 
 from __future__ import annotations
@@ -18,18 +26,28 @@ import time
 from pathlib import Path
 
 import pytest
-from _cli import run_cli
+from _cli import alive, cpu_ticks, descendants, launch, run_cli
 
 ROOT = Path(__file__).resolve().parents[2]
 WELL = ["--alpha", "0.5", "--beta", "0.3"]
 LONG = ["--runs", "2", "--periods", "1000000"]
-#: Starts the command as ``python -m sinktheory`` does (``main()`` reads the process's own
-#: arguments and may end the process itself), saying on stderr when the package is
-#: imported (a signal during Python's own start-up is not the command's to handle).
-LAUNCH = (
-    "import sys; from sinktheory.cli import main; print('ready', file=sys.stderr, flush=True); "
-    "sys.exit(main())"
-)
+
+
+def _sweep(kind: str, *params: str, workers: int = 1) -> list[str]:
+    """``sweep KIND --param P ...`` into s.zarr, quiet."""
+    words = ["sweep", kind]
+    for param in params:
+        words += ["--param", param]
+    return [*words, "--workers", str(workers), "--quiet", "--out", "s.zarr"]
+
+
+def _params(argv: list[str]) -> list[str]:
+    """The ``--param`` values of ARGV."""
+    return [argv[i + 1] for i, word in enumerate(argv) if word == "--param"]
+
+
+#: A well of every sweep kind but floquet and design (which take no alpha, or sweep it)
+SWEPT_WELL = ("alpha=0.5", "beta=0.3", "n=4")
 
 
 #: The commands' environment: this tree, and numba's machine code in a folder of this
@@ -37,48 +55,61 @@ LAUNCH = (
 #: loads it.
 ENV: dict[str, str] = {}
 
+#: What :func:`compiled` runs once, in one process: every kernel path the signalled
+#: commands take, so that none compiles in them (a signal that comes while numba compiles
+#: is swallowed by LLVM's callbacks, not the command's).
+WARM = [
+    ["billiard", *WELL, "--runs", "1", "--periods", "1"],
+    ["billiard", *WELL, "--runs", "1", "--periods", "1", "--fixed", "--lyapunov"],
+    ["simulate", *WELL, "--n", "4", "--runs", "1", "--periods", "1"],
+    ["simulate", *WELL, "--n", "inf", "--runs", "1", "--periods", "1"],
+    ["chaos", *WELL, "--n", "4", "--runs", "1", "--periods", "1"],
+    ["simulate", *WELL, "--n", "4", "--runs", "1", "--periods", "1", "--stepper", "adaptive"],
+    ["lifetime", *WELL, "--n", "4", "--runs", "2", "--periods", "5", "--transient", "1"],
+    ["compare", "--damping", "0.05", "--runs", "2", "--periods", "1"],
+    _sweep("ensemble", *SWEPT_WELL, "runs=1", "periods=1"),
+    _sweep("floquet", "alpha=0.5", "beta=0.1,0.2", "n=4"),
+    _sweep("bifurcation", *SWEPT_WELL, "transient=1", "count=1"),
+    _sweep("chaos", *SWEPT_WELL, "runs=2", "periods=1"),
+    _sweep("ergodicity", *SWEPT_WELL, "runs=2", "periods=10", "transient=2",
+           "lyapunov_runs=2", "lyapunov_periods=1"),
+    _sweep("design", "beta=0.3", "n=4", "runs=2", "periods=2", "lyapunov_runs=2",
+           "lyapunov_periods=1"),
+]  # fmt: skip
+WARM_SCRIPT = """
+import shutil, sys
+from sinktheory.cli import main
+for argv in {warm!r}:
+    status = main(argv)
+    assert status == 0, (argv, status)
+    shutil.rmtree("s.zarr", ignore_errors=True)
+"""
+
 
 @pytest.fixture(scope="module", autouse=True)
 def compiled(tmp_path_factory):
-    """Compile the kernels the commands use, into this module's own numba cache: a signal
-    that comes while numba compiles is swallowed by LLVM's callbacks, not the command's,
-    and a cache another test process is rewriting at that moment would be compiled anew."""
+    """Compile the kernels the commands use (:data:`WARM`), into this module's own numba
+    cache: a cache another test process is rewriting while a command loads it would be
+    compiled anew."""
     out = tmp_path_factory.mktemp("warm")
     ENV.update(os.environ, PYTHONPATH=str(ROOT), NUMBA_CACHE_DIR=str(out / "numba"))
-    for argv in (
-        ["billiard", *WELL, "--runs", "1", "--periods", "1"],
-        ["billiard", *WELL, "--runs", "1", "--periods", "1", "--fixed", "--lyapunov"],
-        ["simulate", *WELL, "--n", "4", "--runs", "1", "--periods", "1"],
-        ["simulate", *WELL, "--n", "inf", "--runs", "1", "--periods", "1"],
-        ["chaos", *WELL, "--n", "4", "--runs", "1", "--periods", "1"],
-        ["simulate", *WELL, "--n", "4", "--runs", "1", "--periods", "1", "--stepper", "adaptive"],
-        ["lifetime", *WELL, "--n", "4", "--runs", "2", "--periods", "5", "--transient", "1"],
-        ["compare", "--damping", "0.05", "--runs", "2", "--periods", "1"],
-        ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=0.3", "--param", "n=4",
-         "--param", "runs=1", "--param", "periods=1", "--workers", "1", "--quiet",
-         "--out", str(out / "w.zarr")],
-    ):  # fmt: skip
-        done = subprocess.run([sys.executable, "-c", LAUNCH, *argv], env=ENV, cwd=out,
-                              capture_output=True, text=True, timeout=600)  # fmt: skip
-        assert done.returncode == 0, done.stderr
+    done = subprocess.run([sys.executable, "-c", WARM_SCRIPT.format(warm=WARM)], env=ENV,
+                          cwd=out, capture_output=True, text=True, timeout=900)  # fmt: skip
+    assert done.returncode == 0, done.stderr
 
 
 def _interrupt(argv, signum, cwd, wait=2.5, until=None):
     """(status, seconds from the signal to the exit, stdout, stderr) of ``sinktheory
-    ARGV`` sent ``signum`` ``wait`` seconds after it started (and, with ``until``, not
-    before that path exists: a loaded machine may take longer to get there).  The command
-    runs in :data:`ENV`, where :func:`compiled` left its kernels compiled."""
-    proc = subprocess.Popen(
-        [sys.executable, "-c", LAUNCH, *argv],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd,
-        env=ENV,
-    )  # fmt: skip
+    ARGV`` sent ``signum`` ``wait`` seconds after it started or, with ``until``, after
+    that path exists (a loaded machine may take longer to get there).  The command runs
+    in :data:`ENV`, where :func:`compiled` left its kernels compiled."""
+    proc = launch(argv, cwd, env=ENV)
     try:
-        assert proc.stderr.readline() == "ready\n"
-        time.sleep(wait)
         deadline = time.monotonic() + 60
         while until is not None and not until.exists() and time.monotonic() < deadline:
-            time.sleep(0.1)
+            assert proc.poll() is None, proc.communicate()
+            time.sleep(0.05)
+        time.sleep(wait)
         assert proc.poll() is None, proc.communicate()  # still computing
         sent = time.monotonic()
         proc.send_signal(signum)
@@ -90,43 +121,71 @@ def _interrupt(argv, signum, cwd, wait=2.5, until=None):
             proc.communicate()
 
 
-SWEEP = "sweep ensemble --param alpha=0.5 --param beta=0.3 --param n=4 --param runs=2"
-SWEEP += " --param periods=1000000 --workers 1 --quiet --out s.zarr"
+def _resumable(argv: list[str], store: Path) -> None:
+    """The store of the sweep ARGV opens for resuming (as --resume opens it: coordinates,
+    checksums and flags checked) with none of its points, or only whole ones, done."""
+    from sinktheory.commands.sweep import params_of
+    from sinktheory.sweep.plan import Sweep
+    from sinktheory.sweep.store import SweepStore
+
+    sweep = Sweep.make(argv[1], params_of(_params(argv)))
+    opened = SweepStore.open(store, sweep)
+    try:
+        assert opened.done().shape == sweep.grid.shape
+        assert not opened.done().all()
+    finally:
+        opened.close()
+
+
+SWEEP = _sweep("ensemble", *SWEPT_WELL, "runs=2", "periods=1000000")
 CASES = {
-    "billiard-fixed": (["billiard", *WELL, *LONG, "--fixed", "--lyapunov"], signal.SIGTERM, None),
+    "billiard-fixed": (["billiard", *WELL, *LONG, "--fixed", "--lyapunov"], signal.SIGTERM),
     "simulate-rigid": (["simulate", *WELL, "--n", "inf", *LONG, "--plot", "out.png"],
-                       signal.SIGINT, None),
-    "simulate": (["simulate", *WELL, "--n", "4", *LONG, "--plot", "out.png"], signal.SIGTERM,
-                 None),
+                       signal.SIGINT),
+    "simulate": (["simulate", *WELL, "--n", "4", *LONG, "--plot", "out.png"], signal.SIGTERM),
     # its tangent vectors are priced above the one-hour limit at LONG's length
-    "chaos": (["chaos", *WELL, "--n", "4", *LONG, "--max-hours", "100"], signal.SIGINT, None),
+    "chaos": (["chaos", *WELL, "--n", "4", *LONG, "--max-hours", "100"], signal.SIGINT),
     "simulate-adaptive": (["simulate", *WELL, "--n", "4", *LONG, "--stepper", "adaptive"],
-                          signal.SIGINT, None),
-    "lifetime": (["lifetime", *WELL, "--n", "4", *LONG], signal.SIGTERM, None),
+                          signal.SIGINT),
+    "lifetime": (["lifetime", *WELL, "--n", "4", *LONG], signal.SIGTERM),
     "compare": (["compare", "--damping", "0.05", "--runs", "2", "--periods", "100000",
-                 "--max-hours", "100"], signal.SIGINT, None),
+                 "--max-hours", "100"], signal.SIGINT),
     # one period of ~1e10 impacts: the compiled call does not return for minutes, so the
     # signal's watcher ends the process (SIGTERM could not stop it, not even timeout's);
     # estimated at 21.6 h, so the one-hour limit is raised
     "billiard-one-long-period": (["billiard", *WELL, "--runs", "1", "--periods", "1",
                                   "--fixed", "--container-energy", "1e18", "--max-hours", "100"],
-                                 signal.SIGTERM, None),
-    "sweep": (SWEEP.split(), signal.SIGTERM, "--resume continues"),
+                                 signal.SIGTERM),
+    # every sweep kind, computing in the driver: its own loops act on the signal
+    "sweep-ensemble": (SWEEP, signal.SIGTERM),
+    # many cheap points (a task of 64 a few hundredths of a second): stored as they come
+    "sweep-floquet": (_sweep("floquet", "alpha=0.5", "beta=-0.3:0.3:4000", "n=4"),
+                      signal.SIGINT),
+    "sweep-bifurcation": (_sweep("bifurcation", *SWEPT_WELL, "transient=1000000", "count=3"),
+                          signal.SIGTERM),
+    "sweep-chaos": (_sweep("chaos", *SWEPT_WELL, "runs=2", "periods=1000000"), signal.SIGINT),
+    "sweep-ergodicity": (_sweep("ergodicity", *SWEPT_WELL, "runs=2", "periods=1000000",
+                                "lyapunov_runs=2"), signal.SIGTERM),
+    "sweep-design": (_sweep("design", "beta=0.3", "n=4", "runs=2", "periods=1000000",
+                            "lyapunov_runs=2"), signal.SIGINT),
 }  # fmt: skip
 
 
 @pytest.mark.parametrize("case", list(CASES))
 def test_signal_ends_a_long_command_with_one_line(case, tmp_path):
-    argv, signum, hint = CASES[case]
-    store = tmp_path / "s.zarr" if hint else None
-    status, took, out, err = _interrupt(argv, signum, tmp_path, until=store)
+    argv, signum = CASES[case]
+    store = tmp_path / "s.zarr" if argv[0] == "sweep" else None
+    wait = 0.5 if store else 2.5  # a sweep: once it computes, past its store's creation
+    status, took, out, err = _interrupt(argv, signum, tmp_path, wait=wait, until=store)
     assert status == 128 + signum, err
     assert took < 2.0, (took, err)
-    line = f"sinktheory {argv[0]}: interrupted" + (f"; {hint}" if hint else "")
+    line = f"sinktheory {argv[0]}: interrupted" + ("; --resume continues" if store else "")
     assert err.splitlines() == [line], err
     assert out == ""
     assert not (tmp_path / "out.png").exists()
-    assert [p.name for p in tmp_path.iterdir()] == (["s.zarr"] if hint else [])
+    assert [p.name for p in tmp_path.iterdir()] == (["s.zarr"] if store else [])
+    if store:
+        _resumable(argv, store)
 
 
 def test_interrupt_behind_a_compiled_call_is_an_interrupt(capsys, monkeypatch):
@@ -193,6 +252,7 @@ def test_sweep_names_resume_only_when_there_is_a_store(exists, tmp_path, capsys,
 
 FORKSERVER_RACE = """
 import os, signal, time
+signal.signal(signal.SIGINT, signal.default_int_handler)  # whatever the test inherited
 from multiprocessing import forkserver
 from sinktheory.sweep import runner
 runner._context()
@@ -227,12 +287,8 @@ def test_a_second_ctrl_c_while_exiting_changes_nothing(tmp_path):
     The command line (``main()`` without arguments, as ``python -m sinktheory`` runs it)
     now ends the process at once and ignores further signals."""
     argv = ["simulate", *WELL, "--n", "4", *LONG]
-    proc = subprocess.Popen(
-        [sys.executable, "-c", LAUNCH, *argv],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path, env=ENV,
-    )  # fmt: skip
+    proc = launch(argv, tmp_path, env=ENV)
     try:
-        assert proc.stderr.readline() == "ready\n"
         time.sleep(2.5)
         assert proc.poll() is None, proc.communicate()  # still computing
         proc.send_signal(signal.SIGINT)
@@ -247,3 +303,82 @@ def test_a_second_ctrl_c_while_exiting_changes_nothing(tmp_path):
             proc.communicate()
     assert proc.returncode == 130, (line, err)
     assert (line, err, out) == ("sinktheory simulate: interrupted\n", "", "")
+
+
+# --------------------------------------------------------------------------- worker pools
+SLOW_SWEEP = ["sweep", "ensemble", "--param", "alpha=0.5", "--param", "beta=-0.3:0.3:40"]
+SLOW_SWEEP += ["--param", "n=4", "--param", "runs=8", "--param", "periods=2000"]
+SLOW_DESIGN = ["design", "--beta", "-0.3:0.3:20", "--n", "4", "--no-estimate"]
+
+
+@pytest.mark.skipif(not Path("/proc/self/status").exists(), reason="reads /proc")
+@pytest.mark.parametrize(
+    ("argv", "signame", "group", "status"),
+    [
+        (SLOW_SWEEP, "SIGINT", False, 130),  # kill -INT to the driver alone: hung before
+        (SLOW_SWEEP, "SIGINT", True, 130),  # Ctrl-C: the whole process group
+        (SLOW_SWEEP, "SIGTERM", False, 143),
+        (SLOW_DESIGN, "SIGINT", False, 130),
+        (SLOW_SWEEP, "SIGTERM", None, 143),  # None: as soon as the store exists
+    ],
+    ids=["sweep-int-main", "sweep-int-group", "sweep-term-main", "design-int-main", "starting"],
+)
+def test_interrupt_ends_workers_and_exits_promptly(argv, signame, group, status, tmp_path):
+    """Two workers busy on long points (or, with group None, the pool still starting: a
+    worker forked but not yet recorded by the pool once escaped and printed a traceback);
+    the signal ends driver and workers within a few seconds, with exactly one line on
+    stderr naming --resume (a resource-tracker warning of the workers' semaphores once
+    followed it), and the store stays readable."""
+    import xarray as xr
+
+    argv = [*argv, "--workers", "2", "--out", str(tmp_path / "s.zarr"), "--quiet"]
+    proc = launch(argv, tmp_path, env=ENV, group=True)
+    try:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline:  # two workers have computed for 1 s or more
+            busy = [p for p in descendants(proc.pid) if cpu_ticks(p) >= 100]
+            if len(busy) >= 2 or (group is None and (tmp_path / "s.zarr").exists()):
+                break
+            assert proc.poll() is None, proc.communicate()
+            time.sleep(0.2)
+        else:
+            pytest.fail("the workers did not start within 120 s")
+        below = descendants(proc.pid)
+        sent = time.monotonic()
+        sig = getattr(signal, signame)
+        os.killpg(proc.pid, sig) if group else os.kill(proc.pid, sig)
+        out, err = proc.communicate(timeout=30)
+        took = time.monotonic() - sent
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.communicate()
+    assert proc.returncode == status, err
+    # 10 s: the driver terminates its workers at once (0.5 s grace before SIGKILL); a
+    # driver waiting for the tasks in flight would take minutes
+    assert took < 10, took
+    assert err.splitlines() == [f"sinktheory {argv[0]}: interrupted; --resume continues"], err
+    assert "Traceback" not in err and out == ""
+    for _ in range(50):  # the resource tracker ends right after the driver
+        if not any(alive(p) for p in below):
+            break
+        time.sleep(0.1)
+    assert not any(alive(p) for p in below), [p for p in below if alive(p)]
+    ds = xr.open_zarr(tmp_path / "s.zarr")  # whole: created before the points ran
+    assert ds.done.shape == ((40,) if argv[0] == "sweep" else (20,))
+
+
+def test_ctrl_c_reaches_a_command_whatever_the_tests_inherited(tmp_path):
+    """A test process that ignores SIGINT (started as a shell's background job, or left so
+    by an earlier test) passes that on to every command it starts, and an ignored SIGINT
+    stays ignored: the sweep ran on to its end, and the test timed out after 30 s
+    (``test_interrupt_ends_workers_and_exits_promptly[sweep-int-main]`` and
+    ``[design-int-main]``, one xdist worker of a CI run).  :func:`_cli.launch` starts the
+    command as a terminal does, so Ctrl-C reaches it."""
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        status, took, out, err = _interrupt(["simulate", *WELL, "--n", "4", *LONG],
+                                            signal.SIGINT, tmp_path)  # fmt: skip
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    assert (status, err, out) == (130, "sinktheory simulate: interrupted\n", ""), (took, err)
