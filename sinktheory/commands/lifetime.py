@@ -88,13 +88,14 @@ def run(args: argparse.Namespace) -> Output:
     from ..equilibrium.law import check_fractions
     from ..equilibrium.lifetime import measure_lifetimes
     from ..model import RunSettings, Sink
+    from ..runstats import check_runs
 
     sink = Sink(sink_well_from_args(args), particles=args.particles, mass=args.mass)
     settings = RunSettings(
         container_energy=args.container_energy, runs=args.runs, periods=args.periods,
         seed=args.seed,
     )  # fmt: skip
-    v.positive_int("runs", settings.runs, minimum=2)
+    check_runs("runs", settings.runs)
     periods = settings.periods
     transient = periods // 3 if args.transient is None else args.transient
     v.positive_int("transient", transient, minimum=0, maximum=periods - 4)
