@@ -101,6 +101,8 @@ CASES = [
     ([*SWEEP_DESIGN, "--param", "lyapunov_runs=1", *OUT], "lyapunov_runs",
      "0 (none) or an integer in [2, 25]"),
     ([*DESIGN, "--lyapunov-runs", "1"], "lyapunov_runs", "0 (none) or an integer in [2, 25]"),
+    ([*SWEEP_CHAOS, "--param", "runs=1", *OUT], "runs", "an integer in [2, 10000000] (a"),
+    (["lifetime", *WELL, "--runs", "1"], "runs", "an integer in [2, 10000000] (a"),
 ]  # fmt: skip
 
 
