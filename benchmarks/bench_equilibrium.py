@@ -108,7 +108,8 @@ def fig8_against_law(k: int, transient: int, periods: int, seed: int):
     print(f"\n2. Fig. 8, k = {k}: {sim.message} ({seconds:.1f} s)")
     print(
         f"   kept {c.runs} x {c.samples} periods after {c.transient}; autocorrelation time "
-        f"{c.autocorrelation_time:.3g} periods, {c.effective_samples:.3g} effective samples"
+        f"{c.autocorrelation_time:.3g} +- {c.autocorrelation_time_stderr:.2g} periods, "
+        f"{c.effective_samples:.3g} effective samples"
     )
     print(
         f"   <E_c> measured {c.mean:.5f} +- {c.mean_stderr:.5f}; law {law.mean:.5f} "

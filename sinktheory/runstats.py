@@ -9,7 +9,10 @@ of one run are NaN: undefined, never 0 (which would claim an exact mean) and nev
 error (one run is a valid simulation).  ``as_dict()`` turns NaN into ``null`` in JSON, the
 text of the commands says "no standard error from one run" (:func:`plus_minus`), and a
 verdict that needs a standard error (chaotic or regular, agreement with a law) is not
-given from one run.
+given from one run.  Where a quantity is computed *for* its standard error or its
+verdict (a sweep point's lambda_1, a statistic across runs), asking for one run is
+refused instead, by one check (:func:`check_runs`): 0 runs (none) where the quantity is
+optional, else at least 2, and the range quoted is the set allowed.
 
 Examples
 --------
@@ -28,7 +31,7 @@ import numpy as np
 
 from .errors import ParameterError
 
-__all__ = ["as_runs", "ensemble_mean", "mean_stderr", "plus_minus", "spread"]
+__all__ = ["as_runs", "check_runs", "ensemble_mean", "mean_stderr", "plus_minus", "spread"]
 
 
 def as_runs(energy_runs) -> np.ndarray:
@@ -49,6 +52,37 @@ def as_runs(energy_runs) -> np.ndarray:
     if not np.all(np.isfinite(e)):
         raise ParameterError("energy_runs", "an array with NaN or inf", "finite values")
     return e
+
+
+def check_runs(name: str, value: object, *, maximum: int | None = None, none: bool = False) -> int:
+    """The number of runs ``name`` of a quantity given with its standard error or a
+    verdict that needs one: an integer in [2, ``maximum``] (default the model's
+    MAX_RUNS), or 0 (none) where ``none`` is allowed; anything else is refused with that
+    set as the range (module docstring: one run has no standard error).
+
+    Examples
+    --------
+    >>> check_runs("lyapunov_runs", 0, none=True), check_runs("runs", 2.0)
+    (0, 2)
+    >>> try:
+    ...     check_runs("lyapunov_runs", 1, none=True)
+    ... except ParameterError as e:
+    ...     print(e.allowed)
+    0 (none) or an integer in [2, 10000000]
+    """
+    from .limits import MAX_RUNS
+    from .validation import positive_int
+
+    maximum = MAX_RUNS if maximum is None else maximum
+    allowed = f"{'0 (none) or ' if none else ''}an integer in [2, {maximum}]"
+    why = "a standard error needs two runs"
+    try:
+        runs = positive_int(name, value, minimum=0, maximum=maximum)
+    except ParameterError as e:
+        raise ParameterError(name, e.value, allowed, why=why) from None
+    if runs == 1 or (runs == 0 and not none):
+        raise ParameterError(name, value, allowed, why=why)
+    return runs
 
 
 def ensemble_mean(energy_runs) -> tuple[np.ndarray, np.ndarray]:

@@ -142,8 +142,13 @@ _TEMPLATE = Path(__file__).with_name("_template.py")
 _MARK = "# --- template starts\n"
 
 
-def check_eps(eps: object) -> float:
-    """eps as a float in (0, MAX_EPS], else ParameterError.
+def check_eps(eps: object, sink: Sink | None = None, total_energy: float | None = None) -> float:
+    """eps as a float in (0, MAX_EPS], else ParameterError naming ``eps``; with ``sink``
+    and ``total_energy``, also no smaller than the well and energy allow: the estimated
+    steps a period (:func:`estimated_steps`, growing like 1 / eps) within
+    :data:`MAX_STEPS`, where a run would be stopped anyway (eps = 1e-320 overflowed the
+    estimate, 1e-300 was refused naming ``runs``).  The bound is rounded up to three
+    digits, so the range quoted is the set allowed.
 
     Examples
     --------
@@ -153,10 +158,25 @@ def check_eps(eps: object) -> float:
     Traceback (most recent call last):
     ...
     sinktheory.errors.ParameterError: eps = 2 is not allowed: must be a number in (0, 0.25]
+    >>> from sinktheory import Sink, Well
+    >>> check_eps(1e-5, Sink(Well(0.5, 0.3, 4)), 0.5)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: eps = 1e-05 is not allowed: must be a number in \
+[0.000453, 0.25] for this well and energy (...)
     """
     value = v.finite("eps", eps) if not isinstance(eps, bool) else None
     if value is None or not 0.0 < value <= MAX_EPS:
         raise ParameterError("eps", eps, f"a number in (0, {MAX_EPS:g}]")
+    if sink is None:
+        return value
+    estimate = MAX_EPS * estimated_steps(sink, total_energy, MAX_EPS) / MAX_STEPS
+    unit = 10.0 ** (math.floor(math.log10(estimate)) - 2)
+    smallest = float(f"{math.ceil(estimate / unit) * unit:.3g}")
+    if value < smallest:
+        raise ParameterError("eps", eps, f"a number in [{smallest:g}, {MAX_EPS:g}] for this well "
+                             f"and energy", why=f"the adaptive step would take over {MAX_STEPS} "
+                             "steps a period (estimated)")  # fmt: skip
     return value
 
 
@@ -358,7 +378,8 @@ def simulate_adaptive(
 
     eps : float in (0, MAX_EPS] = (0, 0.25]
         Step factor, h = eps / rho (default :data:`DEFAULT_EPS` = 0.25; the energy error
-        it gives is measured in the module docstring).
+        it gives is measured in the module docstring), no smaller than the well and energy
+        allow (:func:`check_eps`).
     scheme : str
         Splitting scheme of each step (default blanes-moan6).
     record : subset of {"container", "particles", "final"}
@@ -386,7 +407,9 @@ def simulate_adaptive(
                     energy_bound=energy_bound, allowed=RECORDS)  # fmt: skip
     settings, record, bound, values = begun.settings, begun.record, begun.bound, begun.values
     t0, h0, runs, periods = begun.time, begun.reference_energy, begun.runs, settings.periods
-    check_work(replace(settings, runs=runs), sink, estimated_steps(sink, float(np.max(h0)), eps))
+    energy = float(np.max(h0))
+    check_eps(eps, sink, energy)
+    check_work(replace(settings, runs=runs), sink, estimated_steps(sink, energy, eps))
     module, q, vel, table = _engine_state(sink, values)
     ctl = _control(eps, sink)
     rho, rem = _carried(initial_state, runs)

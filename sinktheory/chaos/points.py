@@ -15,7 +15,7 @@ import numpy as np
 from .. import validation as v
 from ..ensemble import settings_of, sink_of
 from ..errors import ParameterError
-from ..runstats import ensemble_mean
+from ..runstats import check_runs, ensemble_mean
 from ..simulate import check_point as ensemble_check
 
 __all__ = ["check_point", "points"]
@@ -28,9 +28,7 @@ def check_point(p: dict) -> None:
     from ..chaos.sink import check_tangent_work
 
     steps = ensemble_check(p)
-    if p["runs"] < 2:  # the rule for a single run (sinktheory.runstats): no verdict
-        raise ParameterError("runs", p["runs"], "at least 2 in a chaos map: the verdict needs "
-                             "lambda_1's standard error, which one run does not have")  # fmt: skip
+    check_runs("runs", p["runs"])  # the verdict needs lambda_1's standard error
     check_renorm(p["renorm"])
     v.positive_int("megno", p["megno"], minimum=0, maximum=1)
     v.positive_int("transverse", p["transverse"], minimum=0, maximum=1)

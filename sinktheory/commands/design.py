@@ -157,7 +157,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     r.add_argument("--rqa-eps", type=number, default=0.01, help="RQA eps / E0 (default 0.01)")
     r.add_argument("--bootstrap", type=number, default=50, help="bootstrap resamples (50)")
     r.add_argument(
-        "--lyapunov-runs", type=number, default=10, help="runs for lambda_1 (0: none; 10)"
+        "--lyapunov-runs", type=number, default=10, help="runs for lambda_1, 0 (none) or >= 2 (10)"
     )
     r.add_argument("--lyapunov-periods", type=number, default=100, help="periods (100)")
     r.add_argument("--box", type=number, default=0.01, help="start box half-width (0.01)")

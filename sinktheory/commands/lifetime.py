@@ -65,12 +65,19 @@ def _pm(value: float, stderr: float) -> str:
     return f"{value:.4g} +- {stderr:.2g}".ljust(17)
 
 
-def _autocorrelation(tau: float, effective: float) -> str:
+def _autocorrelation(c) -> str:
+    """The autocorrelation time with its error and the effective samples of a
+    :class:`~sinktheory.equilibrium.lifetime.LawComparison` ``c``: never more effective
+    samples than samples (a time below 1 gives a lower bound)."""
     import math
 
+    tau = c.autocorrelation_time
     if not math.isfinite(tau):
         return "autocorrelation time not measurable (runs shorter than ~12 of it)"
-    return f"autocorrelation time {tau:.3g} periods ({effective:.3g} effective samples)"
+    text = f"autocorrelation time {_pm(tau, c.autocorrelation_time_stderr).rstrip()} periods"
+    if tau < 1:
+        return f"{text} (below 1: at least the {c.runs * c.samples} samples taken are effective)"
+    return f"{text} (about {c.effective_samples:.3g} effective samples)"
 
 
 def run(args: argparse.Namespace) -> Output:
@@ -81,13 +88,14 @@ def run(args: argparse.Namespace) -> Output:
     from ..equilibrium.law import check_fractions
     from ..equilibrium.lifetime import measure_lifetimes
     from ..model import RunSettings, Sink
+    from ..runstats import check_runs
 
     sink = Sink(sink_well_from_args(args), particles=args.particles, mass=args.mass)
     settings = RunSettings(
         container_energy=args.container_energy, runs=args.runs, periods=args.periods,
         seed=args.seed,
     )  # fmt: skip
-    v.positive_int("runs", settings.runs, minimum=2)
+    check_runs("runs", settings.runs)
     periods = settings.periods
     transient = periods // 3 if args.transient is None else args.transient
     v.positive_int("transient", transient, minimum=0, maximum=periods - 4)
@@ -106,8 +114,7 @@ def run(args: argparse.Namespace) -> Output:
         f"E0={settings.container_energy:g} "
         f"(total E={law.total_energy:.6g})",
         f"  {sim.message}",
-        f"  kept {c.runs} runs x {c.samples} periods after {c.transient}; "
-        + _autocorrelation(c.autocorrelation_time, c.effective_samples),
+        f"  kept {c.runs} runs x {c.samples} periods after {c.transient}; " + _autocorrelation(c),
         f"  <E_c>  measured {c.mean:.6g} +- {c.mean_stderr:.2g}, law {law.mean:.6g}, "
         f"homogeneous estimate {law.homogeneous_mean:.6g}",
         f"  KS distance to the law {c.ks_distance:.3g}, run-bootstrap p-value {c.ks_pvalue:.3g}",

@@ -124,7 +124,7 @@ def _initial(values: list | None, sink: Sink) -> np.ndarray | None:
     particles = sink.particles
     if len(values) != 2 * particles:
         raise ParameterError(
-            "--initial",
+            "initial",
             f"{len(values)} number(s)",
             f"2 x particles = {2 * particles} numbers (x y for each particle)",
         )
@@ -132,7 +132,7 @@ def _initial(values: list | None, sink: Sink) -> np.ndarray | None:
 
     positions = np.array(values, dtype=float).reshape(particles, 2)
     for x, y in positions:
-        sink.well.check_position("--initial", x, y)
+        sink.well.check_position("initial", x, y)
     return positions
 
 
@@ -146,28 +146,16 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
         )
     settings.check_memory(sink, ("container",))
     if args.dt is not None:
-        time_step("--dt", args.dt)
+        time_step("dt", args.dt)
     from ..simulate import STEPPERS
 
-    chosen = STEPPERS[choice("--stepper", args.stepper or "fixed", tuple(STEPPERS))]
+    chosen = STEPPERS[choice("stepper", args.stepper or "fixed", tuple(STEPPERS))]
     for name in ("scheme", "dt", "tol", "eps"):
         value = getattr(args, name)
         if value is not None and name not in chosen.options:
             takes = ", ".join("--" + o for o in chosen.options if hasattr(args, o))
             raise ParameterError(f"--{name}", value, f"absent with --stepper {chosen.name} (it "
                                  f"takes {takes})")  # fmt: skip
-    if chosen.name == "adaptive":
-        from ..adaptive import MAX_EPS, MAX_STEPS, check_eps, estimated_steps
-
-        if args.eps is not None:
-            # the estimate grows like 1 / eps: the smallest eps within the steps a period
-            # may take (1e-320 overflowed it; 1e-300 was refused naming --runs)
-            energy = settings.total_energy_bound(sink)
-            smallest = MAX_EPS * estimated_steps(sink, energy, MAX_EPS) / MAX_STEPS
-            if not check_eps(args.eps) >= smallest:
-                raise ParameterError("--eps", args.eps, f">= {smallest:.3g} for this well and "
-                                     f"energy", why=f"the adaptive step would take over "
-                                     f"{MAX_STEPS} steps a period (estimated)")  # fmt: skip
 
 
 def run(args: argparse.Namespace) -> Output:

@@ -34,7 +34,7 @@ from ..attachments import KINDS, Attachment
 from ..errors import ParameterError
 from ..glossary import old_attribute, renamed
 from ..results import Result
-from ..runstats import mean_stderr
+from ..runstats import check_runs, mean_stderr
 
 __all__ = [
     "attachments_of",
@@ -350,7 +350,7 @@ def compare(
     if energies.ndim != 1 or not energies.size or not np.all(energies > 0):
         raise ParameterError("energies", energies.tolist(), "a non-empty list of numbers > 0")
     check_damping(damping, attachments)
-    runs = v.positive_int("runs", runs, minimum=2)
+    runs = check_runs("runs", runs)
     samples_per_period = v.positive_int("samples_per_period", samples_per_period,
                                         maximum=100_000)  # fmt: skip
     work(attachments, energies, runs=runs, periods=periods,

@@ -9,10 +9,11 @@ container energy, the measures are :func:`~sinktheory.design.measures.design_mea
 the growth exponent per period) -- with those runs split into regular and chaotic ones
 (:func:`sinktheory.chaos.verdicts.split`: a run is regular when its lambda_1 <=
 3 ln t / t), since a mean over both groups is set by how many runs start in an island.
-``lyapunov_runs = 0`` leaves them out (NaN).  A user's well on the shape axis
-(:func:`user_shape`) has the equipartition share of its own homogeneity
-(:func:`equipartition_n`): n is half the degree of V's leading term at the centre, not a
-parameter the well may call n.
+``lyapunov_runs = 0`` leaves them out (NaN); one run is refused, as in every sweep
+(:func:`sinktheory.runstats.check_runs`: it has no standard error to judge lambda_1 by).
+A user's well on the shape axis (:func:`user_shape`) has the equipartition share of its
+own homogeneity (:func:`equipartition_n`): n is half the degree of V's leading term at the
+centre, not a parameter the well may call n.
 
 With a contact damping c0 = ``damping`` > 0 the ensemble is
 :func:`sinktheory.damped.simulate_inelastic` instead (same start states, same
@@ -77,7 +78,7 @@ from ..chaos.verdicts import SPLIT_RESULTS
 from ..ensemble import settings_of, sink_of
 from ..errors import ParameterError
 from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings
-from ..runstats import ensemble_mean, mean_stderr
+from ..runstats import check_runs, ensemble_mean, mean_stderr
 from ..stepsize import check_tol, step_of
 from ..worklimit import check_particle_steps, tangent_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of
@@ -163,7 +164,8 @@ def check(p: dict) -> None:
         f"{p['bootstrap']} resample(s) of {p['runs']} run(s) x {p['periods'] + 1} values",
         "smaller",
     )
-    v.positive_int("lyapunov_runs", p["lyapunov_runs"], minimum=0, maximum=p["runs"])
+    check_runs("runs", p["runs"])
+    check_runs("lyapunov_runs", p["lyapunov_runs"], maximum=p["runs"], none=True)
     if p["lyapunov_runs"]:
         RunSettings(
             container_energy=p["container_energy"],
@@ -172,8 +174,6 @@ def check(p: dict) -> None:
         ).check(sink)
     v.nonnegative("damping", p["damping"])
     v.choice("damping_kind", p.get("damping_kind", "contact"), DAMPING_KINDS)
-    if p["runs"] < 2:
-        raise ParameterError("runs", p["runs"], "at least 2 (standard errors need two runs)")
     lyapunov = p["lyapunov_runs"] * p["lyapunov_periods"] * tangent_steps(p["particles"], 1)
     ensemble = p["runs"] * p["periods"] * p["particles"]
     name = "periods" if ensemble >= lyapunov else "lyapunov_periods"

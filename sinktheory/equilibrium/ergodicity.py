@@ -48,6 +48,7 @@ import numpy as np
 from .. import validation as v
 from ..chaos.verdicts import SPLIT_RESULTS
 from ..results import Result
+from ..runstats import check_runs
 from .law import check_fractions
 from .lifetime import check_one_shell
 
@@ -153,18 +154,14 @@ def check_point(p: dict) -> None:
     sink, settings = _sink_settings(p, 0)
     settings.check(sink)
     check_one_shell(sink, settings)
-    v.positive_int("runs", p["runs"], minimum=2)
+    check_runs("runs", p["runs"])
     v.positive_int("transient", p["transient"], minimum=0, maximum=p["periods"] - 4)
     fractions_of(p["fractions"])
     v.positive_int(REPLICA, p.get(REPLICA, 0), minimum=0)
     tol = check_tol(p["tol"])
     _, _, steps, _ = step_of(sink, settings.total_energy_bound(sink), tol=tol, settings=settings)
     check_work(settings, sink, steps)
-    lyapunov_runs = v.positive_int("lyapunov_runs", p["lyapunov_runs"], minimum=0)
-    if lyapunov_runs == 1:
-        raise v.ParameterError(
-            "lyapunov_runs", 1, "0 (none) or an integer >= 2 (a standard error needs two runs)"
-        )
+    lyapunov_runs = check_runs("lyapunov_runs", p["lyapunov_runs"], none=True)
     periods = v.positive_int("lyapunov_periods", p["lyapunov_periods"])
     if lyapunov_runs:
         try:

@@ -66,6 +66,7 @@ from ..glossary import old_attribute, renamed
 from ..limits import MAX_PERIODS
 from ..model import RunSettings, Sink
 from ..results import Result
+from ..runstats import check_runs
 from ..worklimit import check_particle_steps
 from .law import EquilibriumLaw
 from .microcanonical import shell_states
@@ -335,7 +336,7 @@ def measure_kramers_moyal(
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     e = v.positive("total_energy", total_energy)
     points = v.positive_int("points", points, minimum=2)
-    runs = v.positive_int("runs", runs, minimum=2)
+    runs = check_runs("runs", runs)
     seed = v.positive_int("seed", seed, minimum=0)
     lags = set(_lags(lags).tolist())
     base_lag = v.positive_int("base_lag", base_lag, minimum=0, maximum=MAX_PERIODS)

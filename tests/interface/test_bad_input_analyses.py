@@ -92,8 +92,18 @@ CASES = [
         "lyapunov_periods",
         "[1, 1000000000]",
     ),  # fmt: skip
-    ([*SWEEP_ERGODICITY, "--param", "lyapunov_runs=1", *OUT], "lyapunov_runs", ">= 2"),
-]
+    # one rule for one lambda_1 run (runstats.check_runs): refused alike by ergodicity
+    # and design (design stored a NaN error with no verdict), quoting the set allowed
+    ([*SWEEP_ERGODICITY, "--param", "lyapunov_runs=1", *OUT], "lyapunov_runs",
+     "0 (none) or an integer in [2, 10000000] (a standard error needs two runs)"),
+    ([*SWEEP_ERGODICITY, "--param", "lyapunov_runs=1e11", *OUT], "lyapunov_runs",
+     "0 (none) or an integer in [2, 10000000]"),
+    ([*SWEEP_DESIGN, "--param", "lyapunov_runs=1", *OUT], "lyapunov_runs",
+     "0 (none) or an integer in [2, 25]"),
+    ([*DESIGN, "--lyapunov-runs", "1"], "lyapunov_runs", "0 (none) or an integer in [2, 25]"),
+    ([*SWEEP_CHAOS, "--param", "runs=1", *OUT], "runs", "an integer in [2, 10000000] (a"),
+    (["lifetime", *WELL, "--runs", "1"], "runs", "an integer in [2, 10000000] (a"),
+]  # fmt: skip
 
 
 @pytest.mark.parametrize(("argv", "name", "says"), CASES, ids=lambda a: " ".join(a)[-48:])

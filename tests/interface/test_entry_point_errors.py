@@ -223,9 +223,9 @@ def test_billiard_without_impacts_says_so(fixed):
 SIMULATE = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--runs", "2"]
 CLI = {
     "billiard alpha 1e308": (["billiard", "--alpha", "1e308", "--beta", "0.3"], "alpha"),
-    # an overflow at 1e-320; 1e-300 was refused naming --runs
-    "adaptive eps 1e-320": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-320"], "--eps"),
-    "adaptive eps 1e-300": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-300"], "--eps"),
+    # an overflow at 1e-320; 1e-300 was refused naming --runs (now by the API, as eps)
+    "adaptive eps 1e-320": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-320"], "eps"),
+    "adaptive eps 1e-300": ([*SIMULATE, "--stepper", "adaptive", "--eps", "1e-300"], "eps"),
     # documented as allowed, failed in period 1: the range is now (0, 0.25]
     "adaptive eps 0.5": ([*SIMULATE, "--stepper", "adaptive", "--eps", "0.5"], "eps"),
     "compare damping 1e308": (["compare", "--damping", "1e308"], "damping"),  # LinAlgError

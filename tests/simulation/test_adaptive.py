@@ -11,10 +11,16 @@ import re
 import numba
 import numpy as np
 import pytest
-from _cli import run_cli
+from _cli import refused, run_cli
 
 from sinktheory import ParameterError, RunSettings, Sink, Well
-from sinktheory.adaptive import controller_steps, simulate_adaptive
+from sinktheory.adaptive import (
+    MAX_STEPS,
+    check_eps,
+    controller_steps,
+    estimated_steps,
+    simulate_adaptive,
+)
 from sinktheory.canonical import FIG8_SINK
 from sinktheory.ensemble import random_positions
 from sinktheory.errors import EnergyDriftError
@@ -180,6 +186,34 @@ def test_bad_input_is_refused(kwargs, name):
 def test_eps_without_the_adaptive_method_is_refused():
     with pytest.raises(ParameterError, match="^eps = "):
         simulate(_fig8(4, 1), RunSettings(runs=1, periods=1), eps=0.2)
+
+
+@pytest.mark.parametrize("eps", [1e-320, 1e-300, 1e-5, 0.26])
+def test_eps_is_refused_alike_by_the_api_and_the_command(eps, capsys, tmp_path, monkeypatch):
+    """Issue 34 audit, note 5: the command refused a small eps as "--eps = " (a check of
+    its own) and a large one as "eps = " (the API's), while the API overflowed at 1e-320
+    and blamed runs at 1e-300.  One check (adaptive.check_eps) now refuses both ways,
+    naming eps as the command names every value it passes on: by the keyword, which is
+    the option with "_" for "-" (sinktheory.glossary)."""
+    with pytest.raises(ParameterError) as info:
+        simulate(_fig8(4, 1), RunSettings(runs=2, periods=1), stepper="adaptive", eps=eps)
+    assert info.value.name == "eps"
+    argv = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--runs", "2",
+            "--periods", "1", "--stepper", "adaptive", "--eps", repr(eps)]  # fmt: skip
+    line = refused(argv, capsys, tmp_path, monkeypatch, "eps")
+    assert line == f"sinktheory simulate: error: {info.value}"
+
+
+def test_the_smallest_eps_quoted_is_the_smallest_allowed():
+    sink = _fig8(4, 1)
+    with pytest.raises(ParameterError) as info:
+        check_eps(1e-300, sink, 0.5)
+    low = float(re.search(r"\[([^,]+), 0\.25\]", info.value.allowed).group(1))
+    assert check_eps(low, sink, 0.5) == low
+    with pytest.raises(ParameterError, match="^eps = "):
+        check_eps(np.nextafter(low, 0), sink, 0.5)
+    # the estimate it bounds (steps a period, growing like 1 / eps) is within MAX_STEPS
+    assert estimated_steps(sink, 0.5, low) <= MAX_STEPS < estimated_steps(sink, 0.5, low / 1.01)
 
 
 def test_cli(tmp_path, capsys):

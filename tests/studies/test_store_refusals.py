@@ -40,6 +40,30 @@ def test_ergodicity_refusal_names_the_parameter_and_leaves_no_store(extra, name,
     assert list(tmp_path.iterdir()) == []
 
 
+#: Small points of the two kinds that compute lambda_1 over lyapunov_runs runs.
+SMALL = {
+    "ergodicity": {**POINT, "runs": 3, "periods": 40, "transient": 10, "lyapunov_periods": 5},
+    "design": {"beta": 0.3, "n": 4, "runs": 3, "periods": 40, "lyapunov_periods": 5},
+}
+
+
+@pytest.mark.parametrize("kind", sorted(SMALL))
+@pytest.mark.parametrize("runs", [1, 10**11])
+def test_lyapunov_runs_follow_one_rule_quoting_the_set_allowed(kind, runs, tmp_path):
+    """Issue 34 audit, note 2: ergodicity refused lyapunov_runs = 1 while design stored a
+    NaN standard error and no verdict from it, and 10**11 was refused with the range
+    [1, 10000000], which holds the refused 1.  Both kinds now refuse one run, and say
+    what is allowed: 0 or [2, the most] (design: the point's runs, whose first ones they
+    are)."""
+    with pytest.raises(ParameterError) as info:
+        run_sweep(kind, {**SMALL[kind], "lyapunov_runs": runs}, store=tmp_path / "s.zarr",
+                  workers=1, progress=False)  # fmt: skip
+    top = 10**7 if kind == "ergodicity" else SMALL[kind]["runs"]
+    assert info.value.name == "lyapunov_runs"
+    assert info.value.allowed == f"0 (none) or an integer in [2, {top}]"
+    assert list(tmp_path.iterdir()) == []
+
+
 @pytest.mark.parametrize(
     ("point", "name"),
     [
