@@ -315,9 +315,9 @@ def check_flights(
     Traceback (most recent call last):
     ...
     sinktheory.errors.ParameterError: clearance = 1e-09 is not allowed: must be larger: \
-at most 9e+09 particle steps (1 h) in a computation that cannot resume (1 run(s) x \
+at most 3e+10 particle steps (1 h) in a computation that cannot resume (1 run(s) x \
 10000 period(s), 160000 sample(s) and about 3.14e+13 impact(s) at the start's relative \
-speed is 3.93e+14 particle steps at 4e-07 s each, estimated 1.57e+08 s (about 1.82e+03 \
+speed is 1.31e+15 particle steps at 1.2e-07 s each, estimated 1.57e+08 s (about 1.82e+03 \
 days); use fewer runs, periods or particles, raise the limit (--max-hours, or \
 sinktheory.worklimit.interactive_limit; up to 720 h), or split the work into the points \
 of a resumable `sinktheory sweep`)

@@ -48,7 +48,7 @@ from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..model import SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 from ..stepsize import aligned_step, step_of
-from ..worklimit import check_particle_steps, tangent_steps
+from ..worklimit import check_particle_steps, ensemble_steps
 from .general import (
     check_block,
     check_gali,
@@ -115,11 +115,10 @@ def check_tangent_work(
     dim = 1 + 2 * sink.particles
     R, P = settings.runs, settings.periods
     vectors = tangent_runs(dim, spectrum, gali, transverse)
-    base = R * P * steps
 
     def work(vecs):
         setup = R * 2 * dim * max(vecs) ** 2 * ORTHONORMALISE_SECONDS / SECONDS_PER_PARTICLE_STEP
-        return base * sum(tangent_steps(sink.particles, m) for m in vecs) + setup
+        return sum(ensemble_steps(R, float(P) * steps, sink.particles, m) for m in vecs) + setup
 
     def check(name, vecs):
         value = {"spectrum": spectrum, "periods": P, "runs": R}[name]

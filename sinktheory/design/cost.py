@@ -42,7 +42,7 @@ from .. import validation as v
 from ..ensemble import engine_name, settings_of, sink_of
 from ..errors import ParameterError
 from ..stepsize import choose
-from ..worklimit import duration
+from ..worklimit import DISSIPATIVE, duration
 from .point import user_shape
 
 #: Seconds to generate and compile the engine of one well shape the first time (any n),
@@ -57,11 +57,6 @@ COMPILE_SECONDS = 90.0
 #: it again when lambda_1 is asked for.
 TANGENT = 2.4
 
-#: Cost of one step of the engine with contact damping relative to a plain step: measured
-#: 2.3, 2.5 and 2.8 for k = 1, 3, 5 (flat n = 4, 25 runs x 150 periods, damping 0.5, by
-#: ``benchmarks/bench_inelastic.py --quick``, 2-core AVX-512 Xeon, load 0.8); the
-#: calibration measures it again when the grid has damped designs.
-DISSIPATIVE = 2.5
 
 
 @dataclass(frozen=True)

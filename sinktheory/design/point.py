@@ -77,7 +77,7 @@ from ..errors import ParameterError
 from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings
 from ..runstats import ensemble_mean, mean_stderr
 from ..stepsize import check_tol, step_of
-from ..worklimit import check_particle_steps, tangent_steps
+from ..worklimit import DISSIPATIVE, check_particle_steps, ensemble_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of
 
 __all__ = [
@@ -171,13 +171,17 @@ def check(p: dict) -> None:
     v.choice("damping_kind", p.get("damping_kind", "contact"), DAMPING_KINDS)
     if p["runs"] < 2:
         raise ParameterError("runs", p["runs"], "at least 2 (standard errors need two runs)")
-    lyapunov = p["lyapunov_runs"] * p["lyapunov_periods"] * tangent_steps(p["particles"], 1)
-    ensemble = p["runs"] * p["periods"] * p["particles"]
+    lyapunov = 0.0
+    if p["lyapunov_runs"]:
+        lyapunov = ensemble_steps(p["lyapunov_runs"], steps * p["lyapunov_periods"], p["particles"], 1)
+    ensemble = ensemble_steps(p["runs"], steps * p["periods"], p["particles"])
+    if p["damping"] > 0 or p.get("attachment", "well") == "nes":  # the damped engine
+        ensemble *= DISSIPATIVE
     name = "periods" if ensemble >= lyapunov else "lyapunov_periods"
     check_particle_steps(
         name,
         p[name],
-        steps * (ensemble + lyapunov),
+        ensemble + lyapunov,
         f"{p['runs']} run(s) x {p['periods']} period(s) and {p['lyapunov_runs']} lambda_1 "
         f"run(s) x {p['lyapunov_periods']} period(s) at {steps} steps per period",
     )
