@@ -39,24 +39,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import validation as v
+from ..engine.cache import COMPILE_SECONDS
 from ..ensemble import engine_name, settings_of, sink_of
 from ..errors import ParameterError
 from ..stepsize import choose
 from ..worklimit import DISSIPATIVE, duration
 from .point import user_shape
 
-#: Seconds to generate and compile the engine of one well shape the first time (any n),
-#: with its tangent-map functions for lambda_1 (30-60 s each on the development machine
-#: under load; a 36-design demo that compiled three engines took 200 s against an
-#: estimate of 54 s made with 45 s per engine); added once per engine not yet cached.
-COMPILE_SECONDS = 90.0
-
 #: Cost of one step with a tangent vector (chaos) relative to a plain step: measured
 #: 2.4 (flat n = 4, k = 5: 10 x 100 periods of chaos against 25 x 100 of simulate,
 #: whose step is also 1.4x shorter) on the development machine; the calibration measures
 #: it again when lambda_1 is asked for.
 TANGENT = 2.4
-
 
 
 @dataclass(frozen=True)
@@ -76,7 +70,7 @@ class Estimate:
     overhead : float
         Measured seconds per point besides the integration (measures, step choice).
     compile_seconds : float
-        :data:`COMPILE_SECONDS` for each engine (well shape) not compiled yet (included in
+        :data:`~sinktheory.engine.cache.COMPILE_SECONDS` for each engine (well shape) not compiled yet (included in
         ``total_seconds``; a damped design runs the same engine).
     tangent : float
         Cost of a chaos step relative to a plain one (measured or :data:`TANGENT`).
