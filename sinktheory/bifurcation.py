@@ -390,8 +390,8 @@ def check_point(p: dict) -> None:
     settings.check(sink)
     # a well too stiff to integrate names the parameter responsible, and the section's
     # periods are checked against the work limit
-    _, _, steps, _ = step_of(sink, p["container_energy"], settings=settings)
-    check_work(settings, sink, steps)
+    scheme, _, steps, _ = step_of(sink, p["container_energy"], settings=settings)
+    check_work(settings, sink, steps, scheme)
 
 
 def points(points: list) -> list[dict]:

@@ -60,7 +60,8 @@ from contextvars import ContextVar
 
 from . import validation as v
 from .errors import ParameterError
-from .limits import MAX_INTERACTIVE_SECONDS
+from .integrators import get_scheme
+from .limits import DEFAULT_SCHEME, MAX_INTERACTIVE_SECONDS
 from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 
 __all__ = [
@@ -75,6 +76,7 @@ __all__ = [
     "MAX_INTERACTIVE_SECONDS",
     "max_seconds",
     "resumable",
+    "scheme_factor",
     "tally",
     "tangent_steps",
     "TANGENT_OVERHEAD",
@@ -132,13 +134,33 @@ def tangent_steps(particles: int, vectors: int) -> float:
     return particles * (1.0 + VECTOR_STEP * vectors) + (TANGENT_OVERHEAD if vectors else 0.0)
 
 
-def ensemble_steps(runs: int, steps: float, particles: int, vectors: int = 0) -> float:
+def scheme_factor(scheme: str | None) -> float:
+    """The cost of a step of splitting scheme ``scheme`` relative to a step of
+    :data:`~sinktheory.limits.DEFAULT_SCHEME` (blanes-moan6, 11 stages), at which the
+    prices here were measured: (stages + 1) / 12.  On one thread at a fixed dt (2-core
+    AVX-512 Xeon, load 7.2, 2026-11-26; k = 1, 5 and 20) a step took 0.07-0.15 (verlet,
+    1 stage), 0.26-0.31 (yoshida4, 3), 0.53-0.58 (blanes-moan4, 6), 0.63-0.73 (yoshida6,
+    7) and 1.2-1.4 (suzuki-umeno8, 15) of a blanes-moan6 step.  None: blanes-moan6.
+
+    >>> scheme_factor(None), scheme_factor("blanes-moan4"), scheme_factor("verlet")
+    (1.0, 0.5833333333333334, 0.16666666666666666)
+    """
+    if scheme is None:
+        return 1.0
+    return (get_scheme(scheme).stages + 1) / (get_scheme(DEFAULT_SCHEME).stages + 1)
+
+
+def ensemble_steps(
+    runs: int, steps: float, particles: int, vectors: int = 0, scheme: str | None = None
+) -> float:
     """Particle steps of ``steps`` integration steps of ``runs`` runs of ``particles``
     particles with ``vectors`` deviation vectors each: every run's :func:`tangent_steps`
-    and every block's overhead (:data:`BLOCK_STEP` per :data:`BLOCK_RUNS` runs or fewer).
-    The one price of an ensemble's work, used by every check of it."""
+    and every block's overhead (:data:`BLOCK_STEP` per :data:`BLOCK_RUNS` runs or fewer),
+    in steps of ``scheme`` (:func:`scheme_factor`).  The one price of an ensemble's work,
+    used by every check of it."""
     blocks = math.ceil(runs / BLOCK_RUNS)
-    return float(steps) * (runs * tangent_steps(particles, vectors) + blocks * BLOCK_STEP)
+    per_step = runs * tangent_steps(particles, vectors) + blocks * BLOCK_STEP
+    return float(steps) * per_step * scheme_factor(scheme)
 
 
 def max_seconds() -> float:
@@ -242,16 +264,20 @@ def check_particle_steps(
     )
 
 
-def check_work(settings: RunSettings, sink: Sink, steps_per_period: int) -> None:
-    """Refuse an ensemble of ``settings`` over ``sink`` at ``steps_per_period`` that would
-    exceed the work limit (:func:`check_particle_steps`), naming the larger of
-    ``periods`` and ``runs``."""
+def check_work(
+    settings: RunSettings, sink: Sink, steps_per_period: int, scheme: str | None = None
+) -> None:
+    """Refuse an ensemble of ``settings`` over ``sink`` at ``steps_per_period`` steps of
+    ``scheme`` (None: blanes-moan6) that would exceed the work limit
+    (:func:`check_particle_steps`), naming the larger of ``periods`` and ``runs``."""
     name = "periods" if settings.periods > settings.runs else "runs"
     check_particle_steps(
         name,
         getattr(settings, name),
-        ensemble_steps(settings.runs, float(settings.periods) * steps_per_period, sink.particles),
+        ensemble_steps(settings.runs, float(settings.periods) * steps_per_period, sink.particles,
+                       scheme=scheme),
         f"{settings.runs} run(s) x {settings.periods} period(s) x {steps_per_period} "
         f"step(s) x {sink.particles} particle(s), with {BLOCK_STEP:g} per step of each block "
-        f"of up to {BLOCK_RUNS} runs",
+        f"of up to {BLOCK_RUNS} runs"
+        + (f", x {scheme_factor(scheme):.3g} for {scheme}" if scheme_factor(scheme) != 1 else ""),
     )

@@ -318,7 +318,8 @@ def controller_steps(
     if not np.isfinite(rows).all():
         raise ParameterError("values", "non-finite values", allowed)
     runs = len(rows)
-    check_particle_steps("count", count, ensemble_steps(runs, 2.0 * count, sink.particles),
+    check_particle_steps("count", count, ensemble_steps(runs, 2.0 * count, sink.particles,
+                                                        scheme=get_scheme(scheme).name),
                          f"{count} step(s) x {runs} run(s) x {sink.particles} particle(s) at "
                          "2 particle steps each (estimated_steps)")  # fmt: skip
     module, q, vel, table = _engine_state(sink, rows)
@@ -386,7 +387,8 @@ def simulate_adaptive(
                     energy_bound=energy_bound, allowed=RECORDS)  # fmt: skip
     settings, record, bound, values = begun.settings, begun.record, begun.bound, begun.values
     t0, h0, runs, periods = begun.time, begun.reference_energy, begun.runs, settings.periods
-    check_work(replace(settings, runs=runs), sink, estimated_steps(sink, float(np.max(h0)), eps))
+    check_work(replace(settings, runs=runs), sink, estimated_steps(sink, float(np.max(h0)), eps),
+               scheme)
     module, q, vel, table = _engine_state(sink, values)
     ctl = _control(eps, sink)
     rho, rem = _carried(initial_state, runs)

@@ -138,7 +138,7 @@ def check(p: dict) -> None:
         attachment_of(p)
     settings.check(sink)
     check_tol(p["tol"])
-    _, _, steps, _ = step_of(
+    scheme, _, steps, _ = step_of(
         sink, settings.total_energy_bound(sink), tol=p["tol"], settings=settings
     )
     v.positive_int("replica", p["replica"], minimum=0)
@@ -173,8 +173,9 @@ def check(p: dict) -> None:
         raise ParameterError("runs", p["runs"], "at least 2 (standard errors need two runs)")
     lyapunov = 0.0
     if p["lyapunov_runs"]:
-        lyapunov = ensemble_steps(p["lyapunov_runs"], steps * p["lyapunov_periods"], p["particles"], 1)
-    ensemble = ensemble_steps(p["runs"], steps * p["periods"], p["particles"])
+        lyapunov = ensemble_steps(p["lyapunov_runs"], steps * p["lyapunov_periods"],
+                                  p["particles"], 1, scheme)
+    ensemble = ensemble_steps(p["runs"], steps * p["periods"], p["particles"], scheme=scheme)
     if p["damping"] > 0 or p.get("attachment", "well") == "nes":  # the damped engine
         ensemble *= DISSIPATIVE
     name = "periods" if ensemble >= lyapunov else "lyapunov_periods"
