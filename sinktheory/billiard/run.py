@@ -373,10 +373,16 @@ def simulate_billiard(
         if cont.shape != (R, 2) or not np.all(np.isfinite(cont)):
             raise ParameterError("container", f"shape {cont.shape}", f"finite, shape ({R}, 2)")
     check_flights(table, vel, mu, cont, periods + discard, "periods", periods)
+    return _fly(table, pos, vel, mu, cont, periods, lyapunov, seed, discard, parameters)
+
+
+def _fly(table, pos, vel, mu, cont, periods, lyapunov, seed, discard, parameters):
+    """The runs of :func:`simulate_billiard` from checked inputs (their work checked too)."""
+    R, k, _ = pos.shape
     arrays = _table_arrays(table)
     rng = np.random.default_rng(seed)
     times = PERIOD * np.arange(periods + 1)
-    if container is None:
+    if cont is None:
         tan = rng.normal(size=(R, k, 4)) if lyapunov else np.zeros((R, 0, 4))
         if lyapunov:
             tan /= np.sqrt((tan**2).sum(axis=(1, 2)))[:, None, None]
@@ -413,7 +419,7 @@ def simulate_billiard(
             _raise_status(status, where, what)
         method = "two trajectories"
     result = BilliardResult(
-        table, container is None, k, mu, times, cont_e, total, hits,
+        table, cont is None, k, mu, times, cont_e, total, hits,
         logs if lyapunov else None, method if lyapunov else "", parameters or {},
     )  # fmt: skip
     err = result.max_relative_energy_error
@@ -546,11 +552,10 @@ def _table_runs(make_table, k, mass, settings, fixed, lyapunov, params) -> Billi
         container = np.zeros((settings.runs, 2))
         container[:, 0] = math.sqrt(2.0 * settings.container_energy)
     name = "periods" if settings.periods >= settings.runs else "runs"
+    table.check_positions("positions", pos)
     check_flights(table, vel, mu, container, settings.periods, name, getattr(settings, name))
-    return simulate_billiard(
-        table, pos, vel, mu=mu, container=container, periods=settings.periods,
-        lyapunov=lyapunov, seed=settings.seed, parameters=params,
-    )  # fmt: skip
+    return _fly(table, pos, vel, mu, container, settings.periods, lyapunov, settings.seed, 0,
+                params)  # fmt: skip
 
 
 @dataclass(frozen=True)
