@@ -92,9 +92,11 @@ PERIOD = 2 * math.pi
 #: expected collision: fixed 1.9-4.2e-6 s at every E0 from 1e-3 up; moving 1.9-2.4e-6 s
 #: (k = 1) and 4.2e-6 s (k = 5) at E0 = 0.5, 0.8-1.3e-6 and 2.1-2.2e-6 s at E0 = 50,
 #: 0.64-0.86e-6 and 1.0-1.6e-6 s from E0 = 5e3 up; and 0.6-1.4e-6 s per particle and
-#: period at E0 = 1e-6 (almost no collision).  With these prices the work took 0.32-0.83
-#: of the estimate for a fixed container, 0.4-0.8 for a moving one (0.16 at k = 5,
-#: E0 = 1e-3, where the expected collisions do not happen and a period takes 1e-5 s).
+#: period at E0 = 1e-6 (almost no collision).  With these prices a run of the script at
+#: load 8.9 (same day) timed the work at 0.48-0.71 of the estimate for a fixed container,
+#: 0.30-0.83 for a moving one (0.18 at k = 5, E0 = 1e-3, where the expected collisions do
+#: not happen and a period takes 1e-5 s); ``billiard --runs 2`` at the default E0 0.57
+#: (fixed) and 0.81 (moving) in benchmarks/bench_estimates.py at load 9.4.
 BILLIARD_SECONDS = {"period": 1.5e-6, "collision": 5e-6, "moving": 1e-6, "per_particle": 0.4e-6}
 
 
