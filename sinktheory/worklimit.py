@@ -102,9 +102,11 @@ BLOCK_RUNS = 16
 #: fixed dt (2-core AVX-512 Xeon, 2026-11-26, load 1-1.5, best of 3) a step of R = 1, 2
 #: and 8 runs of 1 particle took 3.2e-7, 3.4e-7 and 4.0e-7 s, of 64 runs (4 blocks)
 #: 1.0e-6 s, while a particle step of 20 or 100 particles took 2.2-4.4e-8 s: a block
-#: costs about 8-14 particle steps at that price, and 8 with the price of
-#: :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP`, whose measurement
-#: (benchmarks/bench_estimates.py, small and large ensembles) includes this overhead.
+#: costs about 7-14 particle steps at that price.  At the price of
+#: :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP` it is taken as 8 (9.6e-7 s, above
+#: the 4.4e-7 s a step of 2 runs of 1 particle took at load 5): in
+#: benchmarks/bench_estimates.py 1 particle x 2 runs, the case the price per particle
+#: alone made 1.55x optimistic, took 0.47-0.81 of its estimate (load 5-9, same day).
 BLOCK_STEP = 8.0
 #: Cost of one step of the engine with damping on (:mod:`sinktheory.damped`: ``compare``'s
 #: attachments, damped design points) relative to a plain step: measured 2.3, 2.5 and 2.8
