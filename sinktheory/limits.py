@@ -50,12 +50,12 @@ MAX_PERIODS = 10**9
 #: within MAX_SECONDS (30 days: a sweep's point) or MAX_INTERACTIVE_SECONDS (an hour: a
 #: computation that cannot resume).  An ensemble's step also pays its blocks' overhead
 #: (:data:`sinktheory.worklimit.BLOCK_STEP`, :func:`sinktheory.worklimit.ensemble_steps`).
-#: benchmarks/bench_estimates.py (2-core AVX-512 Xeon, 2026-11-26) timed the fixed-step
-#: engine's work at 0.32-0.81 of this estimate at load 5-6 for 1 particle x 2, 8 and 4
-#: runs, 5 x 2, 20 x 2 and 100 x 2 particles x runs (0.18 for 64 runs of 1 particle,
-#: whose vector lanes share a block's work), and at 0.14-0.47 in a second run at load 6-9:
-#: the same work's time varies about 2x with the load (the earlier calibration, 4e-7 s a
-#: particle step without the block's overhead, was made at load 6-8).
+#: benchmarks/bench_estimates.py (2-core AVX-512 Xeon, 2026-11-26, two runs at load 6-9)
+#: timed the fixed-step engine's work at 0.14-0.47 and 0.33-0.82 of this estimate for
+#: 1 particle x 2, 8, 4 and 64 runs and 5 x 2, 20 x 2 and 100 x 2 particles x runs (the
+#: lowest for 64 runs of 1 particle, whose vector lanes share a block's work, and for 100
+#: particles): the same work's time varies about 2x with the load (the earlier
+#: calibration, 4e-7 s a particle step without the block's overhead, was made at load 6-8).
 SECONDS_PER_PARTICLE_STEP = 1.2e-7
 MAX_SECONDS = 30 * 86400.0
 #: The longest estimated work (seconds at SECONDS_PER_PARTICLE_STEP) a computation that
