@@ -13,7 +13,7 @@ Wall-clock times include the machine's load, printed with the machine.
 
 Usage::
 
-    python benchmarks/bench_estimates.py [--only simulate,chaos] [--repeats 2]
+    python benchmarks/bench_estimates.py [--only simulate,chaos,design] [--repeats 2]
 
 Prints one row per case: its two lengths, the estimates and the seconds (best of
 ``--repeats``) of both, the fixed cost (the straight line through both, at no work) and
@@ -31,20 +31,40 @@ import time
 from pathlib import Path
 
 WELL = ["--alpha", "0.5", "--beta", "0.3"]
+#: A small design grid (Fig. 8's well at two beta and two k, lambda_1 of 2 runs each).
+DESIGN = {
+    "shape": "flat",
+    "alpha": 0.5,
+    "beta": [0.2, 0.3],
+    "n": 4,
+    "particles": [1, 5],
+    "runs": 4,
+    "lyapunov_runs": 2,
+    "lyapunov_periods": 50,
+    "bootstrap": 50,
+}
 #: (command, case, argv without --periods, periods of the small and the large run): each
 #: case runs at both lengths, so the fixed cost of a command (its set-up, statistics and
 #: output) and the cost of its work (what the estimate prices) are told apart.
 CASES = [
-    ("simulate", "n=4 k=5 8 runs", ["simulate", *WELL, "--n", "4", "--runs", "8"], 1000, 4000),
+    ("simulate", "n=4 k=1 2 runs", ["simulate", *WELL, "--n", "4", "--particles", "1",
+                                    "--runs", "2"], 2000, 8000),
+    ("simulate", "n=4 k=1 64 runs", ["simulate", *WELL, "--n", "4", "--particles", "1",
+                                     "--runs", "64"], 500, 2000),
+    ("simulate", "n=4 k=1 8 runs", ["simulate", *WELL, "--n", "4", "--runs", "8"], 1000, 4000),
+    ("simulate", "n=4 k=5 2 runs", ["simulate", *WELL, "--n", "4", "--particles", "5",
+                                    "--runs", "2"], 500, 2000),
+    ("simulate", "n=4 k=100 2 runs", ["simulate", *WELL, "--n", "4", "--particles", "100",
+                                      "--runs", "2"], 20, 80),
     ("simulate", "n=10 k=20 2 runs", ["simulate", *WELL, "--n", "10", "--particles", "20",
                                       "--runs", "2"], 20, 80),
-    ("simulate", "n=4 tol 1e-11", ["simulate", *WELL, "--n", "4", "--runs", "4", "--tol",
+    ("simulate", "n=4 k=1 tol 1e-11", ["simulate", *WELL, "--n", "4", "--runs", "4", "--tol",
                                    "1e-11"], 400, 1600),
     ("simulate adaptive", "n=4 2 runs", ["simulate", *WELL, "--n", "4", "--runs", "2",
                                          "--stepper", "adaptive"], 500, 2000),
     ("simulate adaptive", "n=10 2 runs", ["simulate", *WELL, "--n", "10", "--runs", "2",
                                           "--stepper", "adaptive"], 500, 2000),
-    ("simulate --n inf", "k=5 2 runs", ["simulate", *WELL, "--n", "inf", "--runs", "2"],
+    ("simulate --n inf", "k=1 2 runs", ["simulate", *WELL, "--n", "inf", "--runs", "2"],
      10000, 40000),
     ("billiard", "fixed 2 runs", ["billiard", *WELL, "--runs", "2", "--fixed"], 5000, 20000),
     ("billiard", "moving 2 runs", ["billiard", *WELL, "--runs", "2"], 5000, 20000),
@@ -55,6 +75,13 @@ CASES = [
                                        "--runs", "2", "--spectrum"], 2, 8),
     ("lifetime", "n=4 2 runs", ["lifetime", *WELL, "--n", "4", "--runs", "2"], 2000, 8000),
     ("compare", "2 runs", ["compare", "--damping", "0.05", "--runs", "2"], 50, 200),
+    ("compare", "well k=5 4 runs", ["compare", "--damping", "0.05", "--runs", "4",
+                                    "--attachments", "well", "--particles", "5"], 50, 200),
+    # a design sweep (one worker, in this process): the work limit's estimate of its points
+    # (what ``sweep`` prints) and the design estimator's (design.cost.estimate, which times
+    # a short run of the heaviest point and scales it)
+    ("design limit", "2x2 designs", DESIGN, 200, 800),
+    ("design estimator", "2x2 designs", DESIGN, 200, 800),
 ]  # fmt: skip
 
 
@@ -71,6 +98,24 @@ def run_case(argv: list[str]) -> tuple[float, float]:
     if status != 0:
         raise SystemExit(f"{' '.join(argv)}: status {status}: {sink.getvalue()[-500:]}")
     return seconds, sum(estimates)
+
+
+def run_design(command: str, params: dict) -> tuple[float, float]:
+    """(seconds, estimated seconds) of the design sweep of ``params`` on one worker:
+    the estimate of the work limit (``command`` "design limit") or of the design
+    estimator ("design estimator")."""
+    from sinktheory.design import explore
+    from sinktheory.design.cost import estimate
+    from sinktheory.design.explorer import plan
+
+    sweep = plan(params)
+    if command == "design limit":
+        estimated = sweep.estimate
+    else:
+        estimated = estimate(sweep, workers=1, seconds=1.0).total_seconds
+    start = time.perf_counter()
+    explore(params, workers=1, progress=False, estimate_first=False)
+    return time.perf_counter() - start, estimated
 
 
 def main() -> None:
@@ -90,6 +135,11 @@ def main() -> None:
             continue
         runs = {}
         for periods in (small, large):
+            if command.startswith("design"):
+                case = {**argv, "periods": periods}
+                run_design(command, case)  # compile or load the kernels, fill caches
+                runs[periods] = min(run_design(command, case) for _ in range(args.repeats))
+                continue
             case = [*argv, "--periods", str(periods)]
             run_case(case)  # compile or load the kernels, fill caches
             runs[periods] = min(run_case(case) for _ in range(args.repeats))

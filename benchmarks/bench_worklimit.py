@@ -4,7 +4,7 @@ Times, on one thread, a plain ensemble (:func:`sinktheory.simulate.simulate`) an
 same runs with one deviation vector (lambda_1) and with the full spectrum (2 (1 + 2k)
 vectors) of :func:`sinktheory.chaos.chaos`, at the same fixed step, and prints the cost
 of one particle step and the particle steps one vector adds per particle and step
-(``VECTOR_STEP`` is set below the smallest value measured, so the limit stays
+(``VECTOR_STEP`` is set at the largest value measured, rounded up, so the limit is not
 optimistic).  Run: ``python benchmarks/bench_worklimit.py`` (about a minute).
 """
 

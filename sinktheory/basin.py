@@ -219,8 +219,11 @@ def _sum_of_even_powers(form: sp.Expr) -> bool:
     > 0 away from the origin, which decides at once what the real roots of a form of
     high degree (the flat well at n = 100: degree 200, minutes) would."""
     terms = sp.Poly(form, x, y).terms()
-    return (all(c > 0 and i % 2 == 0 and j % 2 == 0 for (i, j), c in terms)
-            and any(j == 0 for (_, j), _c in terms) and any(i == 0 for (i, _), _c in terms))
+    return (
+        all(c > 0 and i % 2 == 0 and j % 2 == 0 for (i, j), c in terms)
+        and any(j == 0 for (_, j), _c in terms)
+        and any(i == 0 for (i, _), _c in terms)
+    )
 
 
 def _vanishing_direction(form: sp.Expr) -> str | None:

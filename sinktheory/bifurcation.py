@@ -43,7 +43,7 @@ from .model import RunSettings, Sink, Well
 from .results import Result
 from .simulate import simulate
 from .stepsize import default_step, ladder_step, step_of
-from .worklimit import check_particle_steps, check_work
+from .worklimit import check_particle_steps, check_work, ensemble_steps
 
 __all__ = [
     "bifurcation",
@@ -161,7 +161,7 @@ def _check_work(sinks, steps, transient: int, count: int) -> None:
     plan may add: at most min(63, 3 R) per step count) exceeds the memory limit, naming
     ``count``."""
     periods = transient + count
-    _, runs = np.unique(steps, return_counts=True)
+    per_period, runs = np.unique(steps, return_counts=True)
     inert = int(np.minimum(63, 3 * runs).sum())
     rows = 48.0 * (len(sinks) + inert)  # bytes per recorded period
     v.fits_memory(
@@ -174,7 +174,10 @@ def _check_work(sinks, steps, transient: int, count: int) -> None:
     check_particle_steps(
         "count",
         count,
-        float(np.sum(steps)) * periods,
+        sum(
+            ensemble_steps(int(r), float(s) * periods, 1)
+            for s, r in zip(per_period, runs, strict=True)
+        ),
         f"{len(sinks)} well(s) x {periods} period(s) x up to {int(np.max(steps))} step(s) "
         "x 1 particle",
     )
@@ -390,8 +393,8 @@ def check_point(p: dict) -> None:
     settings.check(sink)
     # a well too stiff to integrate names the parameter responsible, and the section's
     # periods are checked against the work limit
-    _, _, steps, _ = step_of(sink, p["container_energy"], settings=settings)
-    check_work(settings, sink, steps)
+    scheme, _, steps, _ = step_of(sink, p["container_energy"], settings=settings)
+    check_work(settings, sink, steps, scheme)
 
 
 def points(points: list) -> list[dict]:

@@ -48,14 +48,15 @@ MAX_RUNS = 10**7
 MAX_PERIODS = 10**9
 #: The estimated cost of one particle step, used to refuse work that could not finish
 #: within MAX_SECONDS (30 days: a sweep's point) or MAX_INTERACTIVE_SECONDS (an hour: a
-#: computation that cannot resume).  benchmarks/bench_estimates.py (2-core Xeon, load
-#: 6-8, 2026-11-26) timed each command's work against its estimate at 1e-7 s: 1.1-2.3x
-#: longer for simulate, 2.7-4.0x for the adaptive stepper, 2.2-4.2x for compare and
-#: lifetime, 0.7-1.5x for the billiard and --n inf (chaos as simulate once its vectors are
-#: priced as measured, :data:`~sinktheory.worklimit.VECTOR_STEP`).  At 4e-7 s no command's
-#: estimate is more than about 5 % optimistic at that load; it is 2-5x pessimistic for the
-#: billiard and for simulate at its default tolerance, and more on a quiet machine.
-SECONDS_PER_PARTICLE_STEP = 4e-7
+#: computation that cannot resume).  An ensemble's step also pays its blocks' overhead
+#: (:data:`sinktheory.worklimit.BLOCK_STEP`, :func:`sinktheory.worklimit.ensemble_steps`).
+#: benchmarks/bench_estimates.py (2-core AVX-512 Xeon, 2026-11-26, two runs at load 6-9)
+#: timed the fixed-step engine's work at 0.14-0.47 and 0.33-0.82 of this estimate for
+#: 1 particle x 2, 8, 4 and 64 runs and 5 x 2, 20 x 2 and 100 x 2 particles x runs (the
+#: lowest for 64 runs of 1 particle, whose vector lanes share a block's work, and for 100
+#: particles): the same work's time varies about 2x with the load (the earlier
+#: calibration, 4e-7 s a particle step without the block's overhead, was made at load 6-8).
+SECONDS_PER_PARTICLE_STEP = 1.2e-7
 MAX_SECONDS = 30 * 86400.0
 #: The longest estimated work (seconds at SECONDS_PER_PARTICLE_STEP) a computation that
 #: cannot resume may start unless the user raises it (``--max-hours``,

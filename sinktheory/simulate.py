@@ -262,7 +262,7 @@ def _run_fixed(sink, settings, *, scheme, dt, tol, stride, record, initial, init
     name, dt, steps, tol = step_of(
         sink, float(np.max(h0)), scheme=name, dt=dt, tol=tol, settings=drawn
     )
-    check_work(replace(settings, runs=runs), sink, steps)
+    check_work(replace(settings, runs=runs), sink, steps, name)
     scheme = get_scheme(name)
     if "trajectory" in record:
         stride = max(1, steps // 32) if stride is None else v.positive_int("stride", stride)
@@ -351,8 +351,8 @@ def check_point(p: dict) -> int:
     v.positive("energy_bound", p["energy_bound"])
     v.positive_int("replica", p.get("replica", 0), minimum=0)
     energy = settings.total_energy_bound(sink)
-    _, _, steps, _ = step_of(sink, energy, scheme=p["scheme"], dt=p["dt"], settings=settings)
-    check_work(settings, sink, steps)
+    name, _, steps, _ = step_of(sink, energy, scheme=p["scheme"], dt=p["dt"], settings=settings)
+    check_work(settings, sink, steps, name)
     return steps
 
 

@@ -86,12 +86,14 @@ MAX_ITERATIONS = 100_000
 HIT_TOL = 1e-12
 #: Largest condition number of the eigenvector matrix P accepted.
 MAX_CONDITION = 1e8
-#: Seconds of a run's period, of a sample interval and of an impact, at least, in the work
-#: estimate (:func:`check_flights`).  Measured 2026-11 on the 2-core development machine
-#: (mass 0.2): 1.8e-5 s a period with one sample and no impact, 7.4e-5 to 2e-4 s with 16
-#: samples (clearance 10, damping 0 and 0.05), 9e-6 to 1e-4 s an impact (clearance 0.01
-#: to 0.2); rounded down, so the estimate stays optimistic like the engine's.
-FLIGHT_SECONDS = {"period": 1e-5, "sample": 2e-6, "impact": 5e-6}
+#: Seconds of a run's period, of a sample interval and of an impact in the work estimate
+#: (:func:`check_flights`).  Measured with :func:`simulate_vibroimpact` (4 runs from an
+#: impulse X' = 1, mass 0.2, best of 2; 2-core AVX-512 Xeon, load 5.2, 2026-11-26): a
+#: period with one sample and no impact 2.0e-6 s; a sample 2.2e-6 s undamped and 5e-6 s
+#: with damping 0.05 (16 samples: 3.6e-5 and 8.2e-5 s a period); an impact 3.6-4.3e-6 s
+#: (clearance 0.2, 0.05 and 0.01, 3e4-6e4 impacts).  The prices are the larger values
+#: rounded up: the work took 0.36-0.85 of the estimate with 16 samples (0.22 with one).
+FLIGHT_SECONDS = {"period": 3e-6, "sample": 6e-6, "impact": 5e-6}
 _OK, _STUCK, _DRIFT, _NONFINITE = 0, 1, 2, 3
 
 
@@ -326,9 +328,9 @@ def check_flights(
     Traceback (most recent call last):
     ...
     sinktheory.errors.ParameterError: clearance = 1e-09 is not allowed: must be larger: \
-at most 9e+09 particle steps (1 h) in a computation that cannot resume (1 run(s) x \
+at most 3e+10 particle steps (1 h) in a computation that cannot resume (1 run(s) x \
 10000 period(s), 160000 sample(s) and about 3.14e+13 impact(s) at the start's relative \
-speed is 3.93e+14 particle steps at 4e-07 s each, estimated 1.57e+08 s (about 1.82e+03 \
+speed is 1.31e+15 particle steps at 1.2e-07 s each, estimated 1.57e+08 s (about 1.82e+03 \
 days); use fewer runs, periods or particles, raise the limit (--max-hours, or \
 sinktheory.worklimit.interactive_limit; up to 720 h), or split the work into the points \
 of a resumable `sinktheory sweep`)

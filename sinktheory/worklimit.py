@@ -5,8 +5,9 @@ design points, sweep kinds, normal-mode continuation); the step they price comes
 :func:`sinktheory.stepsize.step_of`, which names the parameter of a well too stiff to
 integrate:
 
-* :func:`check_particle_steps` -- the work of a computation in particle steps, tangent
-  vectors included (:func:`tangent_steps`), priced at
+* :func:`check_particle_steps` -- the work of a computation in particle steps (an
+  ensemble's by :func:`ensemble_steps`, the one price of a step of R runs of k particles:
+  its blocks' overhead, its particles and their tangent vectors), priced at
   :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP` (calibrated by
   benchmarks/bench_estimates.py not to be optimistic), against the limit in force
   (:func:`max_seconds`); :func:`check_work` prices an ensemble the same way.
@@ -26,6 +27,8 @@ Examples
 >>> from sinktheory import RunSettings, Sink, Well
 >>> tangent_steps(particles=1, vectors=0), tangent_steps(particles=5, vectors=1)
 (1.0, 15.1)
+>>> ensemble_steps(runs=2, steps=1, particles=1), ensemble_steps(runs=40, steps=1, particles=1)
+(10.0, 64.0)
 >>> max_seconds() / 3600
 1.0
 >>> with resumable():
@@ -36,7 +39,7 @@ Examples
 Traceback (most recent call last):
 ...
 sinktheory.errors.ParameterError: periods = 100000 is not allowed: must be smaller: at most \
-9e+09 particle steps (1 h) in a computation that cannot resume (...about 11.1 h); use \
+3e+10 particle steps (1 h) in a computation that cannot resume (...about 6 h); use \
 fewer runs, periods or particles, raise the limit (--max-hours, or \
 sinktheory.worklimit.interactive_limit; up to 720 h), or split the work into the points \
 of a resumable `sinktheory sweep`)
@@ -45,28 +48,35 @@ of a resumable `sinktheory sweep`)
 >>> with resumable(), tally() as estimates:
 ...     check_work(settings, sink, steps_per_period=10**5)
 >>> duration(sum(estimates))
-'11.1 h'
+'6 h'
 """
 
 from __future__ import annotations
 
 import contextlib
+import math
 from collections.abc import Iterator
 from contextvars import ContextVar
 
 from . import validation as v
 from .errors import ParameterError
-from .limits import MAX_INTERACTIVE_SECONDS
+from .integrators import get_scheme
+from .limits import DEFAULT_SCHEME, MAX_INTERACTIVE_SECONDS
 from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 
 __all__ = [
     "check_particle_steps",
     "check_work",
+    "BLOCK_RUNS",
+    "BLOCK_STEP",
+    "DISSIPATIVE",
     "duration",
+    "ensemble_steps",
     "interactive_limit",
     "MAX_INTERACTIVE_SECONDS",
     "max_seconds",
     "resumable",
+    "scheme_factor",
     "tally",
     "tangent_steps",
     "TANGENT_OVERHEAD",
@@ -83,6 +93,27 @@ VECTOR_STEP = 0.7
 #: vectors' (the same measurement: a = 2.33 plain steps at k = 5 and 1.07 at k = 20, i.e.
 #: 6.6 and 1.4 particle steps; the larger is taken, so at k = 20 it is 1.2x pessimistic).
 TANGENT_OVERHEAD = 6.6
+#: Runs the engine steps side by side in one block (LLVM's vector body takes 16 runs at a
+#: time, :mod:`sinktheory.engine.blocks`): a step of 1 to 16 runs of few particles costs
+#: about the same.
+BLOCK_RUNS = 16
+#: Particle steps one block's step costs beyond its particles': the step's fixed work
+#: (the container, the scheme's stages, the loop over the block).  On one thread at a
+#: fixed dt (2-core AVX-512 Xeon, 2026-11-26, load 1-1.5, best of 3) a step of R = 1, 2
+#: and 8 runs of 1 particle took 3.2e-7, 3.4e-7 and 4.0e-7 s, of 64 runs (4 blocks)
+#: 1.0e-6 s, while a particle step of 20 or 100 particles took 2.2-4.4e-8 s: a block
+#: costs about 7-14 particle steps at that price.  At the price of
+#: :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP` it is taken as 8 (9.6e-7 s, above
+#: the 4.4e-7 s a step of 2 runs of 1 particle took at load 5): in
+#: benchmarks/bench_estimates.py 1 particle x 2 runs, the case the price per particle
+#: alone made 1.55x optimistic, took 0.47-0.81 of its estimate (load 5-9, same day).
+BLOCK_STEP = 8.0
+#: Cost of one step of the engine with damping on (:mod:`sinktheory.damped`: ``compare``'s
+#: attachments, damped design points) relative to a plain step: measured 2.3, 2.5 and 2.8
+#: for k = 1, 3, 5 (flat n = 4, 25 runs x 150 periods, damping 0.5, by
+#: ``benchmarks/bench_inelastic.py --quick``, 2-core AVX-512 Xeon, load 0.8); the design
+#: estimator measures it again when its grid has damped designs.
+DISSIPATIVE = 2.5
 
 
 #: Whether the work being checked is a resumable sweep's (set by :func:`resumable`).
@@ -103,6 +134,35 @@ def tangent_steps(particles: int, vectors: int) -> float:
     without vectors).
     """
     return particles * (1.0 + VECTOR_STEP * vectors) + (TANGENT_OVERHEAD if vectors else 0.0)
+
+
+def scheme_factor(scheme: str | None) -> float:
+    """The cost of a step of splitting scheme ``scheme`` relative to a step of
+    :data:`~sinktheory.limits.DEFAULT_SCHEME` (blanes-moan6, 11 stages), at which the
+    prices here were measured: (stages + 1) / 12.  On one thread at a fixed dt (2-core
+    AVX-512 Xeon, load 7.2, 2026-11-26; k = 1, 5 and 20) a step took 0.07-0.15 (verlet,
+    1 stage), 0.26-0.31 (yoshida4, 3), 0.53-0.58 (blanes-moan4, 6), 0.63-0.73 (yoshida6,
+    7) and 1.2-1.4 (suzuki-umeno8, 15) of a blanes-moan6 step.  None: blanes-moan6.
+
+    >>> scheme_factor(None), scheme_factor("blanes-moan4"), scheme_factor("verlet")
+    (1.0, 0.5833333333333334, 0.16666666666666666)
+    """
+    if scheme is None:
+        return 1.0
+    return (get_scheme(scheme).stages + 1) / (get_scheme(DEFAULT_SCHEME).stages + 1)
+
+
+def ensemble_steps(
+    runs: int, steps: float, particles: int, vectors: int = 0, scheme: str | None = None
+) -> float:
+    """Particle steps of ``steps`` integration steps of ``runs`` runs of ``particles``
+    particles with ``vectors`` deviation vectors each: every run's :func:`tangent_steps`
+    and every block's overhead (:data:`BLOCK_STEP` per :data:`BLOCK_RUNS` runs or fewer),
+    in steps of ``scheme`` (:func:`scheme_factor`).  The one price of an ensemble's work,
+    used by every check of it."""
+    blocks = math.ceil(runs / BLOCK_RUNS)
+    per_step = runs * tangent_steps(particles, vectors) + blocks * BLOCK_STEP
+    return float(steps) * per_step * scheme_factor(scheme)
 
 
 def max_seconds() -> float:
@@ -206,15 +266,21 @@ def check_particle_steps(
     )
 
 
-def check_work(settings: RunSettings, sink: Sink, steps_per_period: int) -> None:
-    """Refuse an ensemble of ``settings`` over ``sink`` at ``steps_per_period`` that would
-    exceed the work limit (:func:`check_particle_steps`), naming the larger of
-    ``periods`` and ``runs``."""
+def check_work(
+    settings: RunSettings, sink: Sink, steps_per_period: int, scheme: str | None = None
+) -> None:
+    """Refuse an ensemble of ``settings`` over ``sink`` at ``steps_per_period`` steps of
+    ``scheme`` (None: blanes-moan6) that would exceed the work limit
+    (:func:`check_particle_steps`), naming the larger of ``periods`` and ``runs``."""
     name = "periods" if settings.periods > settings.runs else "runs"
     check_particle_steps(
         name,
         getattr(settings, name),
-        float(settings.runs) * settings.periods * steps_per_period * sink.particles,
+        ensemble_steps(
+            settings.runs, float(settings.periods) * steps_per_period, sink.particles, scheme=scheme
+        ),
         f"{settings.runs} run(s) x {settings.periods} period(s) x {steps_per_period} "
-        f"step(s) x {sink.particles} particle(s)",
+        f"step(s) x {sink.particles} particle(s), with {BLOCK_STEP:g} per step of each block "
+        f"of up to {BLOCK_RUNS} runs"
+        + (f", x {scheme_factor(scheme):.3g} for {scheme}" if scheme_factor(scheme) != 1 else ""),
     )

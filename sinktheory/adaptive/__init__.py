@@ -93,7 +93,7 @@ from ..limits import DEFAULT_EPS, MAX_EPS
 from ..model import RunSettings, Sink, Well
 from ..progress import ProgressBar, chunks
 from ..stepsize import DEFAULT_TOL, PERIOD, choose
-from ..worklimit import check_particle_steps, check_work
+from ..worklimit import check_particle_steps, check_work, ensemble_steps
 
 __all__ = [
     "BLOCK",
@@ -338,7 +338,8 @@ def controller_steps(
     if not np.isfinite(rows).all():
         raise ParameterError("values", "non-finite values", allowed)
     runs = len(rows)
-    check_particle_steps("count", count, 2.0 * count * runs * sink.particles,
+    check_particle_steps("count", count, ensemble_steps(runs, 2.0 * count, sink.particles,
+                                                        scheme=get_scheme(scheme).name),
                          f"{count} step(s) x {runs} run(s) x {sink.particles} particle(s) at "
                          "2 particle steps each (estimated_steps)")  # fmt: skip
     module, q, vel, table = _engine_state(sink, rows)
@@ -409,7 +410,7 @@ def simulate_adaptive(
     t0, h0, runs, periods = begun.time, begun.reference_energy, begun.runs, settings.periods
     energy = float(np.max(h0))
     check_eps(eps, sink, energy)
-    check_work(replace(settings, runs=runs), sink, estimated_steps(sink, energy, eps))
+    check_work(replace(settings, runs=runs), sink, estimated_steps(sink, energy, eps), scheme)
     module, q, vel, table = _engine_state(sink, values)
     ctl = _control(eps, sink)
     rho, rem = _carried(initial_state, runs)

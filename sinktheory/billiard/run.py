@@ -40,7 +40,7 @@ import numpy as np
 from ..chaos.verdicts import Split, split
 from ..ensemble import random_positions
 from ..errors import BracketError, EnergyDriftError, ParameterError
-from ..model import MAX_PERIODS, RunSettings, Sink, Well
+from ..model import MAX_PERIODS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink, Well
 from ..progress import chunks
 from ..results import Result
 from ..runstats import mean_stderr
@@ -50,12 +50,13 @@ from . import kernels as K
 from .table import Table, rigid_table, well_table
 
 __all__ = [
-    "ADVANCEMENT_STEP",
-    "advancement_steps",
     "billiard",
+    "BILLIARD_SECONDS",
     "BilliardResult",
     "check_flights",
     "ENERGY_BOUND",
+    "expected_collisions",
+    "flight_seconds",
     "PERIOD",
     "RENORMALISATIONS",
     "rigid_limit",
@@ -79,14 +80,24 @@ RENORMALISATIONS = 32
 #: next to the motion, SHADOW_DISTANCE <= 1e-3 x the container's amplitude sqrt(2 E0).
 MIN_SHADOW_ENERGY = 0.5 * (1e3 * SHADOW_DISTANCE) ** 2
 PERIOD = 2 * math.pi
-#: Particle steps (:data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP`) one
-#: conservative-advancement step counts for in the work estimate: 1.2e-6 to 4e-5 s per
-#: step of the lower bound of :func:`advancement_steps` were measured (flat table,
-#: E0 = 0.5 to 5e7, fixed and moving, 2026-11 on the 2-core development machine), and
-#: 0.4-1.1e-6 s at the default E0 (benchmarks/bench_estimates.py, load 5-8).  10 steps
-#: (4e-6 s) is 4-10x pessimistic at the default E0 and up to 10x optimistic at the
-#: largest: the lower bound's cost per step varies 30-fold with E0.
-ADVANCEMENT_STEP = 10.0
+#: Seconds of the engine's work in the estimate (:func:`flight_seconds`): per particle and
+#: period, per expected collision (:func:`expected_collisions`) of a fixed container's
+#: particle, and of a moving one's: ("moving" + "per_particle" x k, as an impact ends the
+#: flight of every particle) x (1 + 3 / (1 + A / mean free path)), A = sqrt(2 E) the
+#: largest amplitude of the container: when A dwarfs the table the particles ride with it
+#: and collide far less often than their speed says (75 collisions a period at E0 = 5e3
+#: against 2300 expected), while the search still steps through the container's motion.
+#: benchmarks/bench_billiard_estimate.py (flat table 0.5, 0.3; E0 = 1e-6 .. 5e9; k = 1 and
+#: 5; 2 runs; 2-core AVX-512 Xeon, load 4.5-6.2, 2026-11-26; two runs of it) measured per
+#: expected collision: fixed 1.9-4.2e-6 s at every E0 from 1e-3 up; moving 1.9-2.4e-6 s
+#: (k = 1) and 4.2e-6 s (k = 5) at E0 = 0.5, 0.8-1.3e-6 and 2.1-2.2e-6 s at E0 = 50,
+#: 0.64-0.86e-6 and 1.0-1.6e-6 s from E0 = 5e3 up; and 0.6-1.4e-6 s per particle and
+#: period at E0 = 1e-6 (almost no collision).  With these prices a run of the script at
+#: load 8.9 (same day) timed the work at 0.48-0.71 of the estimate for a fixed container,
+#: 0.30-0.83 for a moving one (0.18 at k = 5, E0 = 1e-3, where the expected collisions do
+#: not happen and a period takes 1e-5 s); ``billiard --runs 2`` at the default E0 0.57
+#: (fixed) and 0.81 (moving) in benchmarks/bench_estimates.py at load 9.4.
+BILLIARD_SECONDS = {"period": 1.5e-6, "collision": 5e-6, "moving": 1e-6, "per_particle": 0.4e-6}
 
 
 def _stats(values: np.ndarray) -> dict[str, float]:
@@ -229,43 +240,76 @@ def _outputs(R: int, walls: int, periods: int, records: int) -> tuple:
             np.zeros((R, 2)))  # fmt: skip
 
 
-def advancement_steps(table: Table, velocities, mu: float, container, periods: int) -> float:
-    """A lower bound on the conservative-advancement steps of ``periods`` periods.
+def _collisions_per_period(table: Table, vel: np.ndarray, mu: float, cont) -> np.ndarray:
+    """Each run's expected collisions per period (:func:`expected_collisions`)."""
+    if cont is None:
+        speed = np.sqrt((vel**2).sum(axis=-1)).sum(axis=-1)
+    else:
+        k = vel.shape[1]
+        speed = k * np.sqrt(2.0 * _energies(vel, mu, cont) / (k * mu))
+    return PERIOD * speed / table.mean_free_path
 
-    A flight search steps at most ``table.reach / vr`` at a time, where the bound speed vr
-    is at least the particle's speed and at least the container's amplitude
-    sqrt(X^2 + X'^2) (:func:`~sinktheory.billiard.kernels.next_hit`).  Fixed container:
-    each particle keeps its speed |v|, so at least |v| T / reach steps a period.  Moving
-    container: the energy E = (X^2 + X'^2) / 2 + mu sum |v|^2 / 2 is conserved, and the
-    larger of the amplitude and the fastest particle's speed is at least
-    sqrt(2 E / (1 + k mu)), so at least that speed x T / reach steps a period.
+
+def _energies(vel: np.ndarray, mu: float, cont: np.ndarray) -> np.ndarray:
+    return 0.5 * (cont**2).sum(axis=-1) + 0.5 * mu * (vel**2).sum(axis=(1, 2))
+
+
+def expected_collisions(table: Table, velocities, mu: float, container, periods: int) -> float:
+    """The collisions ``periods`` periods of the runs are expected to have, for the work
+    estimate: a particle of speed v crosses the table's mean free path (Santalo's
+    pi A / perimeter) every mean_free_path / v.  Fixed container: each particle keeps its
+    speed |v|.  Moving container: the energy E = (X^2 + X'^2) / 2 + mu sum |v|^2 / 2 is
+    conserved, and each of the k particles is counted at the speed sqrt(2 E / (k mu)) it
+    has when they share E evenly.
 
     Examples
     --------
     >>> from sinktheory.billiard.table import stadium_table
     >>> t = stadium_table(1, 1)
-    >>> advancement_steps(t, [[[3.0, 4.0]]], 1.0, None, 2) == 2 * PERIOD * 5 / t.reach
+    >>> expected_collisions(t, [[[3.0, 4.0]]], 1.0, None, 2) == 2 * PERIOD * 5 / t.mean_free_path
     True
     """
     vel = np.asarray(velocities, dtype=float)
+    cont = None if container is None else np.asarray(container, dtype=float)
+    return periods * float(_collisions_per_period(table, vel, mu, cont).sum())
+
+
+def flight_seconds(table: Table, velocities, mu: float, container, periods: int) -> float:
+    """Estimated seconds of ``periods`` periods of the runs: every particle's periods and
+    the :func:`expected_collisions` at :data:`BILLIARD_SECONDS`.
+
+    Examples
+    --------
+    >>> from sinktheory.billiard.table import stadium_table
+    >>> t, cost = stadium_table(1, 1), BILLIARD_SECONDS
+    >>> seconds = 2 * cost["period"] + 10 * PERIOD / t.mean_free_path * cost["collision"]
+    >>> bool(np.isclose(flight_seconds(t, [[[3.0, 4.0]]], 1.0, None, 2), seconds, rtol=1e-14))
+    True
+    """
+    vel = np.asarray(velocities, dtype=float)
+    R, k = vel.shape[:2]
+    cost = BILLIARD_SECONDS
     if container is None:
-        speed = float(np.sqrt((vel**2).sum(axis=-1)).sum())
-    else:
+        price = cost["collision"]
+        cont = None
+    else:  # each run at its own energy
         cont = np.asarray(container, dtype=float)
-        energy = 0.5 * (cont**2).sum(axis=-1) + 0.5 * mu * (vel**2).sum(axis=(1, 2))
-        speed = float(np.sqrt(2.0 * energy / (1.0 + vel.shape[1] * mu)).sum())
-    return periods * PERIOD * speed / table.reach
+        amplitude = np.sqrt(2.0 * _energies(vel, mu, cont))
+        slow = 1.0 + 3.0 / (1.0 + amplitude / table.mean_free_path)
+        price = (cost["moving"] + k * cost["per_particle"]) * slow
+    collisions = _collisions_per_period(table, vel, mu, cont)
+    return periods * (float(R) * k * cost["period"] + float((collisions * price).sum()))
 
 
 def check_flights(table: Table, velocities, mu, container, periods: int, name, value) -> None:
     """Refuse, naming ``name``, billiard runs whose flights would exceed the work limit
-    (:func:`sinktheory.worklimit.check_particle_steps`; :func:`advancement_steps` at
-    :data:`ADVANCEMENT_STEP` particle steps each)."""
-    steps = advancement_steps(table, velocities, mu, container, periods)
+    (:func:`sinktheory.worklimit.check_particle_steps`; :func:`flight_seconds`)."""
+    seconds = flight_seconds(table, velocities, mu, container, periods)
+    collisions = expected_collisions(table, velocities, mu, container, periods)
     R = np.shape(velocities)[0]
     check_particle_steps(
-        name, value, ADVANCEMENT_STEP * steps, f"{R} run(s) x {periods} period(s) of "
-        f"billiard flights, at least {steps:.3g} conservative-advancement steps",
+        name, value, seconds / SECONDS_PER_PARTICLE_STEP, f"{R} run(s) x {periods} period(s) "
+        f"of billiard flights with about {collisions:.3g} collisions",
     )  # fmt: skip
 
 
@@ -331,10 +375,16 @@ def simulate_billiard(
         if cont.shape != (R, 2) or not np.all(np.isfinite(cont)):
             raise ParameterError("container", f"shape {cont.shape}", f"finite, shape ({R}, 2)")
     check_flights(table, vel, mu, cont, periods + discard, "periods", periods)
+    return _fly(table, pos, vel, mu, cont, periods, lyapunov, seed, discard, parameters)
+
+
+def _fly(table, pos, vel, mu, cont, periods, lyapunov, seed, discard, parameters):
+    """The runs of :func:`simulate_billiard` from checked inputs (their work checked too)."""
+    R, k, _ = pos.shape
     arrays = _table_arrays(table)
     rng = np.random.default_rng(seed)
     times = PERIOD * np.arange(periods + 1)
-    if container is None:
+    if cont is None:
         tan = rng.normal(size=(R, k, 4)) if lyapunov else np.zeros((R, 0, 4))
         if lyapunov:
             tan /= np.sqrt((tan**2).sum(axis=(1, 2)))[:, None, None]
@@ -371,7 +421,7 @@ def simulate_billiard(
             _raise_status(status, where, what)
         method = "two trajectories"
     result = BilliardResult(
-        table, container is None, k, mu, times, cont_e, total, hits,
+        table, cont is None, k, mu, times, cont_e, total, hits,
         logs if lyapunov else None, method if lyapunov else "", parameters or {},
     )  # fmt: skip
     err = result.max_relative_energy_error
@@ -504,11 +554,10 @@ def _table_runs(make_table, k, mass, settings, fixed, lyapunov, params) -> Billi
         container = np.zeros((settings.runs, 2))
         container[:, 0] = math.sqrt(2.0 * settings.container_energy)
     name = "periods" if settings.periods >= settings.runs else "runs"
+    table.check_positions("positions", pos)
     check_flights(table, vel, mu, container, settings.periods, name, getattr(settings, name))
-    return simulate_billiard(
-        table, pos, vel, mu=mu, container=container, periods=settings.periods,
-        lyapunov=lyapunov, seed=settings.seed, parameters=params,
-    )  # fmt: skip
+    return _fly(table, pos, vel, mu, container, settings.periods, lyapunov, settings.seed, 0,
+                params)  # fmt: skip
 
 
 @dataclass(frozen=True)

@@ -48,7 +48,7 @@ from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..model import SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 from ..stepsize import aligned_step, step_of
-from ..worklimit import check_particle_steps, tangent_steps
+from ..worklimit import check_particle_steps, ensemble_steps
 from .general import (
     check_block,
     check_gali,
@@ -101,7 +101,13 @@ def tangent_runs(dim: int, spectrum: str | None, gali: int, transverse: bool) ->
 
 
 def check_tangent_work(
-    sink: Sink, settings: RunSettings, steps: int, spectrum: str | None, gali: int, transverse
+    sink: Sink,
+    settings: RunSettings,
+    steps: int,
+    spectrum: str | None,
+    gali: int,
+    transverse,
+    scheme: str | None = None,
 ) -> None:
     """Refuse, before any integration, an analysis whose deviation vectors would not fit in
     memory or could not finish within the work limit (:mod:`sinktheory.worklimit`).
@@ -110,16 +116,17 @@ def check_tangent_work(
     number of particles, and their set-up (drawing and orthonormalising them, 2D x (2D)^2
     per run at :data:`~sinktheory.chaos.vectors.ORTHONORMALISE_SECONDS`) with its cube;
     it is named when the analysis without it would fit, else the larger of ``runs`` and
-    ``periods``.
+    ``periods``.  ``steps`` are steps of ``scheme`` (:func:`sinktheory.worklimit.scheme_factor`).
     """
     dim = 1 + 2 * sink.particles
     R, P = settings.runs, settings.periods
     vectors = tangent_runs(dim, spectrum, gali, transverse)
-    base = R * P * steps
 
     def work(vecs):
         setup = R * 2 * dim * max(vecs) ** 2 * ORTHONORMALISE_SECONDS / SECONDS_PER_PARTICLE_STEP
-        return base * sum(tangent_steps(sink.particles, m) for m in vecs) + setup
+        return setup + sum(
+            ensemble_steps(R, float(P) * steps, sink.particles, m, scheme) for m in vecs
+        )
 
     def check(name, vecs):
         value = {"spectrum": spectrum, "periods": P, "runs": R}[name]
@@ -215,7 +222,13 @@ def chaos(
         sink, point.top, scheme=scheme.name, dt=dt, tol=tol, settings=settings
     )
     check_tangent_work(
-        sink, settings, steps, options["spectrum"], options["gali"], options["transverse"]
+        sink,
+        settings,
+        steps,
+        options["spectrum"],
+        options["gali"],
+        options["transverse"],
+        scheme.name,
     )
     result = _together([point], scheme.name, [dt], [steps], block, options)[0]
     return replace(result, transient=transient)
@@ -273,7 +286,7 @@ def chaos_batch(
     options = _options(sinks[0], spectrum, gali, megno, transverse, renorm, energy_bound, progress)
     for p, n in zip(points, steps, strict=True):
         check_tangent_work(p.sink, p.settings, n, options["spectrum"], options["gali"],
-                           options["transverse"])  # fmt: skip
+                           options["transverse"], scheme.name)  # fmt: skip
     return _together(points, scheme.name, dts, steps, None, options)
 
 

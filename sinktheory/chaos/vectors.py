@@ -32,11 +32,11 @@ __all__ = ["MAX_DIM", "ORTHONORMALISE_SECONDS", "orthonormalise", "random_vector
 
 #: Largest number of coordinates D (1 + 2k for k = 10^5 particles).
 MAX_DIM = 200_001
-#: Seconds :func:`orthonormalise` takes per component and squared column, at least
-#: (n^3 columns of n components: 1.7e-8 at n = 400, 1.4e-8 at n = 1000, measured 2026-11 on
-#: the 2-core development machine; 13.7 s at n = 1000); rounded down, so the set-up of a
-#: spectrum is priced optimistically, like the integration (:mod:`sinktheory.worklimit`).
-ORTHONORMALISE_SECONDS = 1e-8
+#: Seconds :func:`orthonormalise` takes per component and squared column (n^3 columns of
+#: n components: 1.7e-8 at n = 400, 1.4e-8 at n = 1000, measured 2026-11 on the 2-core
+#: development machine; 13.7 s at n = 1000); rounded up, so the set-up of a spectrum is
+#: not priced optimistically (the goal of :mod:`sinktheory.worklimit`'s estimates).
+ORTHONORMALISE_SECONDS = 2e-8
 
 
 def orthonormalise(W: np.ndarray) -> np.ndarray:

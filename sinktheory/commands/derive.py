@@ -19,8 +19,9 @@ well file's own syntax (:func:`sinktheory.userwell.expression_text`): a paramete
 by its plain name even where SymPy has a function or constant of that name (``gamma``,
 ``beta``, ``E``, ``I``, ``N``, ...), so ``sympify`` reads them back given those names as
 symbols, ``sympy.sympify(text, locals={name: sympy.Symbol(name) for name in
-data["parameters"]})``; ``parameters`` holds the values the well was checked at.  A refused well is one line
-on stderr, exit status 2; nothing is written (no cache: the file is read each time).
+data["parameters"]})``; ``parameters`` holds the values the well was checked at.  A
+refused well is one line on stderr, exit status 2; nothing is written (no cache: the file
+is read each time).
 """
 
 from __future__ import annotations

@@ -243,16 +243,25 @@ def work(
     tol: float | None = None,
 ) -> float:
     """Particle steps of the whole comparison, checked against the work limit before
-    anything runs (:func:`sinktheory.worklimit.check_particle_steps`, naming ``periods``)."""
-    from ..worklimit import check_particle_steps
+    anything runs (:func:`sinktheory.worklimit.check_particle_steps`, naming ``periods``):
+    the damped engine's steps at :data:`~sinktheory.worklimit.DISSIPATIVE` plain ones, the
+    vibro-impact attachment's periods and samples at
+    :data:`~sinktheory.vibroimpact.FLIGHT_SECONDS` (its impacts are checked when it runs)."""
+    from ..limits import SECONDS_PER_PARTICLE_STEP
+    from ..vibroimpact import FLIGHT_SECONDS
+    from ..worklimit import DISSIPATIVE, check_particle_steps, ensemble_steps
 
     periods = v.positive_int("periods", periods)
     total = 0.0
     for att in attachments:
         for e in energies:
+            if att.kind == "impact":
+                seconds = FLIGHT_SECONDS["period"] + samples_per_period * FLIGHT_SECONDS["sample"]
+                total += float(runs) * periods * seconds / SECONDS_PER_PARTICLE_STEP
+                continue
             steps = steps_per_period(att, float(e), runs=runs, periods=periods, tol=tol)
             steps = max(steps, samples_per_period)  # steps are a multiple of the samples
-            total += float(runs) * periods * steps * att.particles
+            total += DISSIPATIVE * ensemble_steps(runs, float(periods) * steps, att.particles)
     check_particle_steps(
         "periods",
         periods,

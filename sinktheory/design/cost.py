@@ -1,22 +1,24 @@
 """How long a design sweep will take: a quick calibration of the per-point cost.
 
-The cost of a point is dominated by the integration: (steps per period) x (runs) x
-(periods) steps of a system with 1 + 2k degrees of freedom, plus the same for the
-lambda_1 ensemble with its tangent vector.  :func:`estimate` times a short run (after a
-warm-up that compiles or loads the engine) at the point with the most work, in this
-process on one thread, and scales it to every point by
+The cost of a point is dominated by the integration: (steps per period) x (periods)
+steps of its runs, plus the same for the lambda_1 ensemble with its tangent vector.
+:func:`estimate` times a short run (after a warm-up that compiles or loads the engine) at
+the point with the most work, in this process on one thread, and scales it to every point
+by the work limit's price of an ensemble (:func:`sinktheory.worklimit.ensemble_steps`:
+the blocks' overhead, the particles, the vectors and the scheme's stages)
 
-    work(point) = steps_per_period x (1 + 2k) x (runs x periods
-                  + TANGENT x lyapunov_runs x lyapunov_periods),
+    work(point) = ensemble_steps(runs, steps x periods, k)
+                  + TANGENT x ensemble_steps(lyapunov_runs, steps x lyapunov_periods, k, 1),
 
-with the steps per period from :func:`sinktheory.stepsize.choose` (no integration needed)
-and ``TANGENT`` the measured cost of a chaos step relative to a plain one; a design with
-contact damping (``damping`` > 0) or the 1-D NES attachment runs the engine with its
-damping on instead (:mod:`sinktheory.damped`, no lambda_1), whose step costs
-``DISSIPATIVE`` plain steps (measured too when the grid has such designs), and the
-vibro-impact attachment (exact flights) about one unit per run and period, plus a fixed
-overhead per point (the measures on data of the point's size, with their bootstrap and
-RQA, and the step choice), timed as well.  Times are wall-clock, so the current load of
+with the steps per period and the scheme from :func:`sinktheory.stepsize.choose` (no
+integration needed) and ``TANGENT`` the measured cost of a chaos step relative to its
+price; a design with contact damping (``damping`` > 0) or the 1-D NES attachment runs the
+engine with its damping on instead (:mod:`sinktheory.damped`, no lambda_1), whose step
+costs ``DISSIPATIVE`` plain steps (measured too when the grid has such designs), and the
+vibro-impact attachment (exact flights) its periods and samples at
+:data:`~sinktheory.vibroimpact.FLIGHT_SECONDS`, plus a fixed overhead per point (the
+measures on data of the point's size, with their bootstrap and RQA, and the step choice),
+timed as well.  Times are wall-clock, so the current load of
 the machine is included; the total is divided by the number of workers.  It is an
 estimate: the per-step cost depends on k and on the scheme.
 
@@ -39,29 +41,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import validation as v
+from ..engine.cache import COMPILE_SECONDS
 from ..ensemble import engine_name, settings_of, sink_of
 from ..errors import ParameterError
+from ..limits import SECONDS_PER_PARTICLE_STEP
 from ..stepsize import choose
-from ..worklimit import duration
-from .point import user_shape
+from ..vibroimpact import FLIGHT_SECONDS
+from ..worklimit import DISSIPATIVE, duration, ensemble_steps
+from .point import SAMPLES, user_shape
 
-#: Seconds to generate and compile the engine of one well shape the first time (any n),
-#: with its tangent-map functions for lambda_1 (30-60 s each on the development machine
-#: under load; a 36-design demo that compiled three engines took 200 s against an
-#: estimate of 54 s made with 45 s per engine); added once per engine not yet cached.
-COMPILE_SECONDS = 90.0
-
-#: Cost of one step with a tangent vector (chaos) relative to a plain step: measured
-#: 2.4 (flat n = 4, k = 5: 10 x 100 periods of chaos against 25 x 100 of simulate,
-#: whose step is also 1.4x shorter) on the development machine; the calibration measures
-#: it again when lambda_1 is asked for.
-TANGENT = 2.4
-
-#: Cost of one step of the engine with contact damping relative to a plain step: measured
-#: 2.3, 2.5 and 2.8 for k = 1, 3, 5 (flat n = 4, 25 runs x 150 periods, damping 0.5, by
-#: ``benchmarks/bench_inelastic.py --quick``, 2-core AVX-512 Xeon, load 0.8); the
-#: calibration measures it again when the grid has damped designs.
-DISSIPATIVE = 2.5
+#: Cost of a step with a tangent vector (chaos) relative to its price in
+#: :func:`~sinktheory.worklimit.ensemble_steps` (which already counts the vector at
+#: :data:`~sinktheory.worklimit.VECTOR_STEP`, measured by benchmarks/bench_worklimit.py):
+#: 1 unless the calibration measures it, which it does when lambda_1 is asked for.
+TANGENT = 1.0
 
 
 @dataclass(frozen=True)
@@ -77,12 +70,14 @@ class Estimate:
     per_point : ndarray
         Estimated seconds of each point on one core.
     seconds_per_unit : float
-        Measured seconds per unit of work (step x degree of freedom x run).
+        Measured seconds per unit of work (a particle step as
+        :func:`sinktheory.worklimit.ensemble_steps` counts it).
     overhead : float
         Measured seconds per point besides the integration (measures, step choice).
     compile_seconds : float
-        :data:`COMPILE_SECONDS` for each engine (well shape) not compiled yet (included in
-        ``total_seconds``; a damped design runs the same engine).
+        :data:`~sinktheory.engine.cache.COMPILE_SECONDS` for each engine (well shape) not
+        compiled yet (included in ``total_seconds``; a damped design runs the same
+        engine).
     tangent : float
         Cost of a chaos step relative to a plain one (measured or :data:`TANGENT`).
     calibration_point : dict
@@ -120,18 +115,27 @@ class Estimate:
 
 
 def work(point: dict, tangent: float = TANGENT, dissipative: float = DISSIPATIVE) -> float:
-    """Units of work of a point (see the module docstring)."""
+    """Units of work of a point (see the module docstring): particle steps as the work limit
+    prices them."""
     attachment = point.get("attachment", "well")
-    if attachment == "impact":  # exact flights: about one unit per recorded sample
-        return float(point["runs"] * point["periods"])
-    steps = choose(sink_of(point), point["container_energy"], point["tol"]).steps_per_period
-    dof = 1 + 2 * point["particles"]
+    if attachment == "impact":  # exact flights: the vibro-impact's own price
+        per_period = FLIGHT_SECONDS["period"] + SAMPLES * FLIGHT_SECONDS["sample"]
+        return point["runs"] * point["periods"] * per_period / SECONDS_PER_PARTICLE_STEP
+    choice = choose(sink_of(point), point["container_energy"], point["tol"])
+    steps, scheme, k = choice.steps_per_period, choice.scheme, point["particles"]
+    units = ensemble_steps(point["runs"], steps * point["periods"], k, scheme=scheme)
     if point["damping"] > 0 or attachment == "nes":  # the dissipative integrator
-        return float(steps * dof * dissipative * point["runs"] * point["periods"])
-    runs = point["runs"] * point["periods"]
-    if not user_shape(point):  # a user's well gets no lambda_1
-        runs += tangent * point["lyapunov_runs"] * point["lyapunov_periods"]
-    return float(steps * dof * runs)
+        return dissipative * units
+    if point["lyapunov_runs"] and not user_shape(point):  # a user's well gets no lambda_1
+        lyapunov = steps * point["lyapunov_periods"]
+        units += tangent * ensemble_steps(point["lyapunov_runs"], lyapunov, k, 1, scheme)
+    return units
+
+
+def _units(p: dict, steps: int, vectors: int = 0) -> float:
+    """The work limit's units of ``p``'s ensemble at ``steps`` steps per period."""
+    scheme = choose(sink_of(p), p["container_energy"], p["tol"]).scheme
+    return ensemble_steps(p["runs"], steps * p["periods"], p["particles"], vectors, scheme)
 
 
 def _time_simulate(point: dict, runs: int, periods: int) -> tuple[float, float]:
@@ -143,7 +147,7 @@ def _time_simulate(point: dict, runs: int, periods: int) -> tuple[float, float]:
     start = time.perf_counter()
     res = simulate(sink, settings_of(p, 0), tol=p["tol"], progress=False)
     seconds = time.perf_counter() - start
-    return seconds, res.steps_per_period * (1 + 2 * p["particles"]) * runs * periods
+    return seconds, _units(p, res.steps_per_period)
 
 
 def _time_inelastic(point: dict, runs: int, periods: int) -> tuple[float, float]:
@@ -153,7 +157,7 @@ def _time_inelastic(point: dict, runs: int, periods: int) -> tuple[float, float]
     start = time.perf_counter()
     res = simulate_inelastic(sink_of(p), settings_of(p, 0), damping=p["damping"], tol=p["tol"])
     seconds = time.perf_counter() - start
-    return seconds, res.steps_per_period * (1 + 2 * p["particles"]) * runs * periods
+    return seconds, _units(p, res.steps_per_period)
 
 
 def _time_chaos(point: dict, runs: int, periods: int) -> tuple[float, float]:
@@ -164,7 +168,7 @@ def _time_chaos(point: dict, runs: int, periods: int) -> tuple[float, float]:
     chaos(sink_of(p), settings_of(p, 0), progress=False)
     seconds = time.perf_counter() - start
     steps = choose(sink_of(p), p["container_energy"], p["tol"]).steps_per_period
-    return seconds, steps * (1 + 2 * p["particles"]) * runs * periods
+    return seconds, _units(p, steps, vectors=1)
 
 
 def uncompiled(points) -> list[str]:

@@ -80,7 +80,7 @@ from ..errors import ParameterError
 from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings
 from ..runstats import check_runs, ensemble_mean, mean_stderr
 from ..stepsize import check_tol, step_of
-from ..worklimit import check_particle_steps, tangent_steps
+from ..worklimit import DISSIPATIVE, check_particle_steps, ensemble_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of
 
 __all__ = [
@@ -142,7 +142,7 @@ def check(p: dict) -> None:
         attachment_of(p)
     settings.check(sink)
     check_tol(p["tol"])
-    _, _, steps, _ = step_of(
+    scheme, _, steps, _ = step_of(
         sink, settings.total_energy_bound(sink), tol=p["tol"], settings=settings
     )
     v.positive_int("replica", p["replica"], minimum=0)
@@ -174,13 +174,19 @@ def check(p: dict) -> None:
         ).check(sink)
     v.nonnegative("damping", p["damping"])
     v.choice("damping_kind", p.get("damping_kind", "contact"), DAMPING_KINDS)
-    lyapunov = p["lyapunov_runs"] * p["lyapunov_periods"] * tangent_steps(p["particles"], 1)
-    ensemble = p["runs"] * p["periods"] * p["particles"]
+    lyapunov = 0.0
+    if p["lyapunov_runs"]:
+        lyapunov = ensemble_steps(
+            p["lyapunov_runs"], steps * p["lyapunov_periods"], p["particles"], 1, scheme
+        )
+    ensemble = ensemble_steps(p["runs"], steps * p["periods"], p["particles"], scheme=scheme)
+    if p["damping"] > 0 or p.get("attachment", "well") == "nes":  # the damped engine
+        ensemble *= DISSIPATIVE
     name = "periods" if ensemble >= lyapunov else "lyapunov_periods"
     check_particle_steps(
         name,
         p[name],
-        steps * (ensemble + lyapunov),
+        ensemble + lyapunov,
         f"{p['runs']} run(s) x {p['periods']} period(s) and {p['lyapunov_runs']} lambda_1 "
         f"run(s) x {p['lyapunov_periods']} period(s) at {steps} steps per period",
     )
@@ -220,12 +226,14 @@ def _check_user_well(p: dict, well) -> None:
     from ..errors import WellDefinitionError
 
     try:
-        well.leading_order
+        _ = well.leading_order  # decided (and cached) on first access
     except WellDefinitionError as exc:
-        raise ParameterError("shape", p["shape"], "a well whose leading term at the centre is "
-                             "a form positive in every direction", why="the design's "
-                             "equipartition share E/(1 + k (1 + 1/n)) reads n, half its "
-                             f"degree: {exc.value} is refused: {exc.allowed}") from None  # fmt: skip
+        why = (
+            "the design's equipartition share E/(1 + k (1 + 1/n)) reads n, half its degree: "
+            f"{exc.value} is refused: {exc.allowed}"
+        )
+        allowed = "a well whose leading term at the centre is a form positive in every direction"
+        raise ParameterError("shape", p["shape"], allowed, why=why) from None
     if p.get("attachment", "well") != "well":
         raise ParameterError("attachment", p["attachment"], f"well with the user's well "
                              f"{p['shape']} (the 1-D attachments take a registered "

@@ -159,15 +159,16 @@ def check_point(p: dict) -> None:
     fractions_of(p["fractions"])
     v.positive_int(REPLICA, p.get(REPLICA, 0), minimum=0)
     tol = check_tol(p["tol"])
-    _, _, steps, _ = step_of(sink, settings.total_energy_bound(sink), tol=tol, settings=settings)
-    check_work(settings, sink, steps)
+    scheme, _, steps, _ = step_of(sink, settings.total_energy_bound(sink), tol=tol,
+                                  settings=settings)  # fmt: skip
+    check_work(settings, sink, steps, scheme)
     lyapunov_runs = check_runs("lyapunov_runs", p["lyapunov_runs"], none=True)
     periods = v.positive_int("lyapunov_periods", p["lyapunov_periods"])
     if lyapunov_runs:
         try:
             lyapunov = replace(settings, runs=lyapunov_runs, periods=periods)
             lyapunov.check(sink)
-            check_tangent_work(sink, lyapunov, steps, None, 0, False)
+            check_tangent_work(sink, lyapunov, steps, None, 0, False, scheme)
         except v.ParameterError as e:
             if e.name not in ("runs", "periods"):
                 raise

@@ -59,7 +59,7 @@ from scipy.optimize import brentq, minimize_scalar
 from .. import validation as v
 from ..errors import ParameterError
 from ..glossary import old_attribute, refusals_named, renamed
-from ..worklimit import check_particle_steps, tangent_steps
+from ..worklimit import check_particle_steps, ensemble_steps
 from .shooting import (
     Orbit,
     ShootingError,
@@ -285,7 +285,7 @@ def continue_orbits(
     if ds_max is not None and not ds_max >= ds:
         raise ParameterError("ds_max", ds_max, f">= ds = {ds:g} (the largest step)")
     max_points = v.positive_int("max_points", max_points, maximum=MAX_POINTS)
-    work = 2 * max_points * steps * tangent_steps(system.members or 1, 2 * system.dim)
+    work = ensemble_steps(1, 2 * max_points * steps, system.members or 1, 2 * system.dim)
     check_particle_steps(
         "steps", steps, work, f"{max_points} point(s) x {steps} step(s) per period, each "
         f"shooting at least twice with {2 * system.dim} tangent vectors"

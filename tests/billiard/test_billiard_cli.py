@@ -70,41 +70,45 @@ def test_bad_input_one_line_exit_2_nothing_written(capsys, tmp_path, extra, name
 
 
 def test_huge_energy_is_refused_with_its_estimate_before_any_flight(capsys, tmp_path, monkeypatch):
-    """Issue 34: E0 = 1e18 ran 28 s, then failed.  The flights' work is bounded below by
-    speed x time / reach steps (moving container: speed sqrt(2 E0 / (1 + m))), counted
-    at ADVANCEMENT_STEP particle steps each (4e-7 s); here by hand: 29.4 days, over the
-    hour."""
+    """Issue 34: E0 = 1e18 ran 28 s, then failed.  The flights' work is priced by the
+    collisions expected at the particles' speed sqrt(2 E0 / m) over the table's mean free
+    path (BILLIARD_SECONDS per collision and per particle-period); here by hand."""
     import math
 
     from _cli import refused
 
-    from sinktheory.billiard.run import ADVANCEMENT_STEP
+    from sinktheory.billiard.run import BILLIARD_SECONDS as cost
     from sinktheory.billiard.table import rigid_table
 
-    reach = rigid_table("flat", 0.5, 0.3).reach
-    steps = 2 * 10 * 2 * math.pi * math.sqrt(2e18 / 1.2) / reach
+    mfp = rigid_table("flat", 0.5, 0.3).mean_free_path
+    collisions = 2 * 10 * 2 * math.pi * math.sqrt(2e18 / 0.2) / mfp
     argv = ["billiard", "--alpha", "0.5", "--beta", "0.3", "--container-energy", "1e18",
             "--runs", "2", "--periods", "10"]  # fmt: skip
     line = refused(argv, capsys, tmp_path, monkeypatch, "periods")
-    assert f"at least {steps:.3g} conservative-advancement steps" in line, line
-    assert f"about {ADVANCEMENT_STEP * steps * 4e-7 / 86400:.3g} days" in line, line
-    # fixed container: every particle keeps its speed sqrt(2 E0 / m)
+    assert f"about {collisions:.3g} collisions" in line, line
+    slow = 1 + 3 / (1 + math.sqrt(2e18) / mfp)  # the container's amplitude over the table
+    seconds = 20 * cost["period"] + collisions * (cost["moving"] + cost["per_particle"]) * slow
+    assert f"about {seconds / 86400:.3g} days" in line, line
+    # fixed container: the one particle has the same speed, each collision its own price
     line = refused([*argv, "--fixed"], capsys, tmp_path, monkeypatch, "periods")
-    fixed = 2 * 10 * 2 * math.pi * math.sqrt(2e18 / 0.2) / reach
-    assert f"at least {fixed:.3g} conservative-advancement steps" in line, line
+    assert f"about {collisions:.3g} collisions" in line, line
+    seconds = 20 * cost["period"] + collisions * cost["collision"]
+    assert f"about {seconds / 86400:.3g} days" in line, line
 
 
-def test_flight_work_bound_against_a_hand_count():
-    """advancement_steps of a moving container: E = (3^2 + 4^2) / 2 + 0.5 x 0.2 x 1^2 =
-    12.6, bound speed sqrt(2 E / 1.2); two runs add up."""
+def test_expected_collisions_against_a_hand_count():
+    """expected_collisions of a moving container: E = (3^2 + 4^2) / 2 + 0.5 x 0.2 x 1^2 =
+    12.6 and 0.5 in the two runs, a particle's speed sqrt(2 E / (k mu)); two runs add up."""
     import math
 
-    from sinktheory.billiard.run import advancement_steps
+    from sinktheory.billiard.run import expected_collisions
     from sinktheory.billiard.table import stadium_table
 
     t = stadium_table(1, 1)
     vel = np.array([[[1.0, 0.0]], [[0.0, 0.0]]])
     cont = np.array([[3.0, 4.0], [0.0, 1.0]])
-    speeds = math.sqrt(2 * 12.6 / 1.2) + math.sqrt(2 * 0.5 / 1.2)
-    got = advancement_steps(t, vel, 0.2, cont, 3)
-    assert got == pytest.approx(3 * 2 * math.pi * speeds / t.reach, rel=1e-14)
+    speeds = math.sqrt(2 * 12.6 / 0.2) + math.sqrt(2 * 0.5 / 0.2)
+    got = expected_collisions(t, vel, 0.2, cont, 3)
+    assert got == pytest.approx(3 * 2 * math.pi * speeds / t.mean_free_path, rel=1e-14)
+    # area pi + 4, perimeter 2 pi + 4 (two half discs of radius 1 and a 2 x 2 square)
+    assert t.mean_free_path == pytest.approx(math.pi * (math.pi + 4) / (2 * math.pi + 4))

@@ -53,10 +53,11 @@ CASES = [
         "4002",
     ),  # fmt: skip
     # the job issue 34 found estimated at 15.6 days (0.3 particle steps a vector, 1e-7 s
-    # each), by hand 25 runs x 1500 periods x 7426 steps x (200 (1 + 0.7 x 802) + 6.6)
-    # particle steps at 4e-7 s = 145 days: refused under the one-shot hour with its
-    # estimate (lambda_1 alone takes hours here, so periods is named)
-    (["chaos", *WELL, "--particles", "200", "--runs", "25", "--spectrum"], "periods", "145 days"),
+    # each), by hand 1500 periods x 7426 steps x (25 runs x (200 (1 + 0.7 x 802) + 6.6)
+    # + 2 blocks x 8) particle steps at 1.2e-7 s, and the vectors' set-up (25 x 802^3 x
+    # 1e-8 s) = 43.5 days: refused under the one-shot hour with its estimate (lambda_1
+    # alone takes hours here, so periods is named)
+    (["chaos", *WELL, "--particles", "200", "--runs", "25", "--spectrum"], "periods", "43.5 days"),
     # issue 34: over the hour, refused before the vectors' set-up (which alone took minutes)
     (
         ["chaos", *WELL, "--particles", "1000", "--runs", "2", "--periods", "1", "--spectrum"],
@@ -118,15 +119,16 @@ def test_spectrum_cost_grows_with_the_square_of_the_dimension():
     from sinktheory.chaos.sink import check_tangent_work, tangent_runs
     from sinktheory.errors import ParameterError
     from sinktheory.model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
-    from sinktheory.worklimit import TANGENT_OVERHEAD, VECTOR_STEP, resumable
+    from sinktheory.worklimit import BLOCK_STEP, TANGENT_OVERHEAD, VECTOR_STEP, resumable
 
     assert tangent_runs(201, "full", 0, False) == [402]
     assert tangent_runs(201, "half", 4, True) == [201, 4, 1]
     sink = Sink(FIG8_WELL, particles=100, mass=0.2)
-    # 100 particles, 402 vectors: k (1 + 0.7 x 402) + 6.6 particle steps per step and run
-    per_step = 100 * (1 + VECTOR_STEP * 402) + TANGENT_OVERHEAD
+    # 100 particles, 402 vectors: k (1 + 0.7 x 402) + 6.6 particle steps per step and run,
+    # and the block's overhead for the 10 runs (their vectors' set-up is less than a period)
+    per_step = 10 * (100 * (1 + VECTOR_STEP * 402) + TANGENT_OVERHEAD) + BLOCK_STEP
     limit = MAX_SECONDS / SECONDS_PER_PARTICLE_STEP
-    periods = int(limit / (per_step * 1000 * 10)) + 1  # just over the limit at 1000 steps
+    periods = int(limit / (per_step * 1000)) + 1  # just over the limit at 1000 steps
     with resumable():  # the 30-day limit
         check_tangent_work(sink, RunSettings(runs=10, periods=periods - 2), 1000, "full", 0, 0)
         with pytest.raises(ParameterError) as info:
@@ -140,10 +142,10 @@ def test_spectrum_cost_grows_with_the_square_of_the_dimension():
 
 
 def test_one_shot_work_limit_is_an_hour_and_a_sweep_point_30_days():
-    """The same ensemble, estimated by hand at 9.26 days (100 runs x 1e5 periods x 1000
-    steps x 200 particles at 4e-7 s): simulate() refuses it naming periods and pointing to
-    --max-hours and a sweep; a sweep point accepts it, and refuses ten times more (92.6
-    days)."""
+    """The same ensemble, estimated by hand at 2.79 days (1e5 periods x 1000 steps x
+    (100 runs x 200 particles + 7 blocks of up to 16 runs x 8) particle steps at 1.2e-7 s):
+    simulate() refuses it naming periods and pointing to --max-hours and a sweep; a sweep
+    point accepts it, and refuses twenty times more (55.7 days)."""
     import math
 
     from sinktheory import RunSettings, Sink
@@ -154,41 +156,43 @@ def test_one_shot_work_limit_is_an_hour_and_a_sweep_point_30_days():
     from sinktheory.worklimit import MAX_INTERACTIVE_SECONDS
 
     dt = 2 * math.pi / 1000
-    seconds = 100 * 10**5 * 1000 * 200 * 4e-7
-    assert SECONDS_PER_PARTICLE_STEP == 4e-7
+    seconds = 10**5 * 1000 * (100 * 200 + 7 * 8) * 1.2e-7
+    assert SECONDS_PER_PARTICLE_STEP == 1.2e-7
     assert MAX_INTERACTIVE_SECONDS == 3600 < seconds < MAX_SECONDS
-    with pytest.raises(ParameterError, match=r"cannot resume .*9.26 days.*--max-hours.*sweep"):
+    with pytest.raises(ParameterError, match=r"cannot resume .*2.79 days.*--max-hours.*sweep"):
         simulate(Sink(FIG8_WELL, 200), RunSettings(runs=100, periods=10**5), dt=dt)
     point = {"alpha": 0.5, "beta": 0.3, "n": 4, "runs": 100, "periods": 10**5, "dt": dt}
     sweep = Sweep.make("ensemble", {**point, "particles": 200})
     assert sweep.estimate == pytest.approx(seconds, rel=1e-12)  # what the sweep prints
-    with pytest.raises(ParameterError, match=r"per point of a sweep .*92.6 days") as info:
-        Sweep.make("ensemble", {**point, "particles": 200, "dt": dt / 10})
+    with pytest.raises(ParameterError, match=r"per point of a sweep .*55.7 days") as info:
+        Sweep.make("ensemble", {**point, "particles": 200, "dt": dt / 20})
     assert info.value.name == "periods"
 
 
 def test_interactive_limit_is_raised_and_lowered_by_the_user():
-    """An ensemble estimated by hand at 11.1 h (10 runs x 1e5 periods x 1e5 steps x 1
-    particle at 4e-7 s) is refused under the default hour and passes the check with
-    ``interactive_limit(12)``; 11 h refuses it again, and the limit is restored after."""
+    """An ensemble estimated by hand at 6 h (1e5 periods x 1e5 steps x (10 runs x 1
+    particle + 8 for their block) at 1.2e-7 s) is refused under the default hour and passes
+    the check with ``interactive_limit(7)``; 5 h refuses it again, and the limit is
+    restored after."""
     from sinktheory import RunSettings, Sink
     from sinktheory.errors import ParameterError
     from sinktheory.worklimit import check_work, interactive_limit, max_seconds
 
     settings, sink = RunSettings(runs=10, periods=10**5), Sink(FIG8_WELL)
-    with pytest.raises(ParameterError, match=r"\(1 h\) .*about 11.1 h"):
+    with pytest.raises(ParameterError, match=r"\(1 h\) .*about 6 h"):
         check_work(settings, sink, 10**5)
-    with interactive_limit(12):
+    with interactive_limit(7):
         check_work(settings, sink, 10**5)
-        assert max_seconds() == 12 * 3600
-    with interactive_limit(11), pytest.raises(ParameterError, match=r"\(11 h\)"):
+        assert max_seconds() == 7 * 3600
+    with interactive_limit(5), pytest.raises(ParameterError, match=r"\(5 h\)"):
         check_work(settings, sink, 10**5)
     assert max_seconds() == 3600
 
 
 def test_sweep_prints_its_estimate_before_any_work(capsys, tmp_path, monkeypatch):
     """The estimate line comes first on stderr, and equals the hand count: 2 points x 2 runs
-    x 3 periods x 512 steps x 1 particle at 4e-7 s."""
+    x 3 periods x 512 steps x 1 particle, + 8 particle steps a step for the block of the
+    runs, at 1.2e-7 s."""
     import json
 
     from _cli import run_cli
@@ -200,7 +204,7 @@ def test_sweep_prints_its_estimate_before_any_work(capsys, tmp_path, monkeypatch
              "--json"]  # fmt: skip
     code, out, err = run_cli(argv, capsys)
     assert code == 0, err
-    seconds = 2 * 2 * 3 * 512 * 1 * 4e-7
+    seconds = 2 * 3 * 512 * (2 * 1 + 8) * 1.2e-7
     assert err.startswith(f"sinktheory sweep: 2 point(s), estimated work {seconds:.3g} s in all")
     assert json.loads(out)["estimated_seconds"] == pytest.approx(seconds, rel=1e-12)
 

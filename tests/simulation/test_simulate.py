@@ -342,14 +342,15 @@ def test_the_steppers_registry_is_what_simulate_dispatches_on():
 
 
 def test_tiny_step_is_estimated_and_refused_over_the_hour(capsys, tmp_path, monkeypatch):
-    """Issue 34: --dt 1e-7 ran past a minute unannounced.  2 runs x 3 periods is 3.8e8
-    particle steps (151 s at 4e-7 s: allowed); 300 periods are 2 x 300 x
-    ceil(2 pi / 1e-7) = 3.77e10 particle steps, over the hour's 9e9: refused."""
+    """Issue 34: --dt 1e-7 ran past a minute unannounced.  A step of 2 runs of 1 particle
+    counts 2 + 8 particle steps (the block's overhead): 3 periods are 1.9e9 particle steps
+    (226 s at 1.2e-7 s: allowed); 300 periods are 10 x 300 x ceil(2 pi / 1e-7) = 1.9e11,
+    over the hour's 3e10: refused."""
     import math
 
     from _cli import refused
 
-    steps = 2 * 300 * math.ceil(2 * math.pi / 1e-7)
+    steps = (2 + 8) * 300 * math.ceil(2 * math.pi / 1e-7)
     argv = ["simulate", "--alpha", "0.5", "--beta", "0.3", "--n", "4", "--dt", "1e-7",
             "--runs", "2", "--periods", "300", "--quiet"]  # fmt: skip
     line = refused(argv, capsys, tmp_path, monkeypatch, "periods")

@@ -50,9 +50,9 @@ def test_controller_steps_refuses_what_it_cannot_step(kwargs, name):
 
 
 def test_controller_steps_estimates_its_count_before_stepping():
-    """count = 1e12 hung.  By hand: 1e12 steps x 1 run x 1 particle x 2 (the rate) is
-    2e12 particle steps, over the hour's 9e9."""
-    with pytest.raises(ParameterError, match=r"^count = 1000000000000 .*is 2e\+12 particle"):
+    """count = 1e12 hung.  By hand: 1e12 steps x 2 (the rate) x (1 run x 1 particle + 8
+    for its block) is 1.8e13 particle steps, over the hour's 3e10."""
+    with pytest.raises(ParameterError, match=r"^count = 1000000000000 .*is 1.8e\+13 particle"):
         controller_steps(SINK, _start(), 10**12)
 
 

@@ -392,13 +392,13 @@ def test_vibroimpact_work_is_estimated_before_any_flight():
     assert f"about {2 * math.pi / 2e-300:.3g} impact(s)" in str(info.value)
     with pytest.raises(ParameterError, match=r"^periods = 100000 .*memory"):
         simulate_vibroimpact(np.repeat(start, 1000, 0), clearance=0.2, periods=10**5, **args)
-    # 10 runs x 1e6 periods with one sample each, at 1e-5 + 2e-6 s: 120 s, over 36 s
+    # 10 runs x 1e6 periods with one sample each, at 3e-6 + 6e-6 s: 90 s, over 36 s
     from sinktheory.worklimit import interactive_limit
 
     with interactive_limit(0.01), pytest.raises(ParameterError, match=r"^periods = ") as info:
         simulate_vibroimpact(np.repeat(start, 10, 0), clearance=0.2, periods=10**6,
                              samples_per_period=1, **args)  # fmt: skip
-    assert "estimated 120 s (about 2 min)" in str(info.value), str(info.value)
+    assert "estimated 90 s (about 1.5 min)" in str(info.value), str(info.value)
 
 
 def test_vibroimpact_counts_impacts_driven_from_relative_rest():

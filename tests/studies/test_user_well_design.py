@@ -11,7 +11,7 @@ import json
 import numpy as np
 import pytest
 import xarray as xr
-from _cli import BUILT_IN, HH, PAPER, refused_well, run_cli, write_well_file
+from _cli import BUILT_IN, PAPER, refused_well, run_cli, write_well_file
 
 from sinktheory.design.cost import uncompiled
 from sinktheory.design.explorer import explore
@@ -40,8 +40,9 @@ def test_the_flat_well_typed_by_a_user_is_the_registry_design():
                                    err_msg=name)  # fmt: skip
 
 
-@pytest.mark.parametrize("potential,degree", [("x**n + y**n", 4),
-                                              ("sqrt(x**2 + y**2)**3 + x**2*y**2", 3)])
+@pytest.mark.parametrize(
+    "potential,degree", [("x**n + y**n", 4), ("sqrt(x**2 + y**2)**3 + x**2*y**2", 3)]
+)
 def test_the_equipartition_share_of_a_user_s_well_is_that_of_its_degree(potential, degree):
     """x^n + y^n is homogeneous of degree n, not 2n: by the virial theorem each particle
     holds Theta of kinetic and 2 Theta/d of potential energy (degree d) against the
