@@ -89,10 +89,11 @@ def _case(command: str, action, value: str) -> list[str]:
 
 OUTPUT_CASES = [(c, a.dest, _case(c, a, "")) for c, a in _actions() if a.dest in OUTPUTS]
 NUMBER_CASES = [(c, a.dest, _case(c, a, "nan")) for c, a in _actions() if a.type is number]
-#: Text options whose values reach code that used to name another parameter.
-TEXT_CASES = [
-    ("compare", "shapes", ["compare", *BASE["compare"], "--shapes", "square"]),  # was shape
-    ("design", "well_param", ["design", *BASE["design"], "--well-param", "a"]),  # was --param
+#: Values that used to be blamed on another parameter.
+BLAMED_CASES = [
+    ("compare", "shapes", ["compare", *BASE["compare"], "--shapes", "square"]),  # shape
+    ("design", "well_param", ["design", *BASE["design"], "--well-param", "a"]),  # --param
+    ("lifetime", "periods", ["lifetime", *WELL, "--runs", "2", "--periods", "4"]),  # transient
 ]
 
 
@@ -105,7 +106,7 @@ def test_the_walk_sees_the_commands():
     assert len(NUMBER_CASES) > 100
 
 
-@pytest.mark.parametrize(("command", "name", "argv"), OUTPUT_CASES + NUMBER_CASES + TEXT_CASES,
+@pytest.mark.parametrize(("command", "name", "argv"), OUTPUT_CASES + NUMBER_CASES + BLAMED_CASES,
                          ids=lambda x: x if isinstance(x, str) else None)  # fmt: skip
 def test_a_refused_value_is_named_by_its_keyword(command, name, argv, capsys, tmp_path,
                                                  monkeypatch, request):  # fmt: skip
