@@ -52,11 +52,17 @@ OTHER_BASE = {
 OUTPUTS = {"plot", "out", "wavelet_plot", "report"}
 #: (command, option) -> the name its refusal still gives instead of the keyword (each
 #: entry must still be needed: the test fails when one is fixed, so the list only
-#: shrinks).  The scans name the part of LO HI COUNT (floquet.scan's keywords).
-KNOWN = {("floquet", "beta_range"): "count", ("floquet", "lam_range"): "count"}
+#: shrinks): the scans name the part of LO HI COUNT (floquet.scan's keywords), and
+#: sweep.grid.parse_param names its text --param (test_api_fuzz_analyses expects that).
+KNOWN = {
+    ("floquet", "beta_range"): "count",
+    ("floquet", "lam_range"): "count",
+    ("sweep", "param"): "--param",
+}
 #: (command, option) -> why its refusal is not one line yet.
 NOT_ONE_LINE = {
     ("sweep", "workers"): "the estimate is printed before run_sweep checks the workers",
+    ("sweep", "scheduler"): "the estimate is printed before run_sweep reaches the scheduler",
 }
 
 
@@ -89,6 +95,14 @@ def _case(command: str, action, value: str) -> list[str]:
 
 OUTPUT_CASES = [(c, a.dest, _case(c, a, "")) for c, a in _actions() if a.dest in OUTPUTS]
 NUMBER_CASES = [(c, a.dest, _case(c, a, "nan")) for c, a in _actions() if a.type is number]
+#: Free-text options given "bogus" (argparse refuses a bad choice itself, naming the
+#: option; a well file's refusal is a WellDefinitionError, "WHERE: TOKEN is refused: ...",
+#: tested in test_well_file_*).
+TEXT_CASES = [
+    (c, a.dest, _case(c, a, "bogus"))
+    for c, a in _actions()
+    if a.type is None and a.nargs != 0 and not a.choices and a.dest not in OUTPUTS | {"well"}
+]
 #: Values that used to be blamed on another parameter.
 BLAMED_CASES = [
     ("compare", "shapes", ["compare", *BASE["compare"], "--shapes", "square"]),  # shape
@@ -106,7 +120,10 @@ def test_the_walk_sees_the_commands():
     assert len(NUMBER_CASES) > 100
 
 
-@pytest.mark.parametrize(("command", "name", "argv"), OUTPUT_CASES + NUMBER_CASES + BLAMED_CASES,
+CASES = OUTPUT_CASES + NUMBER_CASES + TEXT_CASES + BLAMED_CASES
+
+
+@pytest.mark.parametrize(("command", "name", "argv"), CASES,
                          ids=lambda x: x if isinstance(x, str) else None)  # fmt: skip
 def test_a_refused_value_is_named_by_its_keyword(command, name, argv, capsys, tmp_path,
                                                  monkeypatch, request):  # fmt: skip
