@@ -4,8 +4,9 @@ The convention: a value the command refuses is named as Python names it, the opt
 ``dest`` (``plot = 'x.txt' is not allowed: ...``, ``container_energy = nan ...``), not as
 the option (``--plot``); only a refusal of an option's presence ("left out with --n inf",
 "absent with --stepper fixed") names the ``--option``.  The cases are walked from the
-parsers: every output option of every command with the empty path, and every numeric
-option with NaN, each added to a valid command line.
+parsers: every output option of every command with the empty path, every numeric option
+with NaN and every free-text option with "bogus", each added to a valid command line (220
+in-process refusals, about 6 s).
 """
 
 import argparse
