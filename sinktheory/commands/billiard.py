@@ -82,7 +82,7 @@ def run(args: argparse.Namespace) -> Output:
         for name in ("alpha", "beta"):
             if getattr(args, name) is None:
                 raise ParameterError(name, None, "given (or --well FILE instead of the shape)")
-    plot = png_path("--plot", args.plot)
+    plot = png_path("plot", args.plot)
     settings = RunSettings(
         container_energy=args.container_energy, runs=args.runs, periods=args.periods,
         seed=args.seed,

@@ -94,7 +94,7 @@ def _fmt(mean, se) -> str:
 
 
 def run(args: argparse.Namespace) -> Output:
-    plot = png_path("--plot", args.plot)
+    plot = png_path("plot", args.plot)
     unsupported = {
         "--spectrum": args.spectrum, "--gali": args.gali, "--megno": args.megno,
         "--transverse": args.transverse, "--tol": args.tol, "--dt": args.dt,

@@ -124,8 +124,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> Output:
-    plot = png_path("--plot", args.plot)
-    wavelet = png_path("--wavelet-plot", args.wavelet_plot)
+    plot = png_path("plot", args.plot)
+    wavelet = png_path("wavelet_plot", args.wavelet_plot)
     from .. import validation as v
     from ..compare.efficiency import attachments_of, compare, energies_of
     from ..wellat import WellAt

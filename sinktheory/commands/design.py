@@ -209,7 +209,10 @@ def _shapes(values: list, items: list[str]) -> list:
                                  "well file (an existing FILE.toml)")  # fmt: skip
     given = {}
     for item in items:
-        name, values_ = parse_param(item)
+        try:  # its own refusals name --param, NAME or LO:HI:COUNT, not this option
+            name, values_ = parse_param(item)
+        except ParameterError:
+            name, values_ = None, []
         if len(values_) != 1 or not isinstance(values_[0], int | float):
             raise ParameterError("well_param", item, "NAME=VALUE, VALUE a number")
         if name in GRID:

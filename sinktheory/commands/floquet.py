@@ -91,7 +91,7 @@ def _user_well(args: argparse.Namespace, user) -> Output:
     if args.amplitude_range is not None:
         lo, hi, count = args.amplitude_range
         if not isinstance(count, int):
-            raise ParameterError("COUNT", count, "an integer >= 2")
+            raise ParameterError("count", count, "an integer >= 2")
         chart = well_scan(hill, args.amplitude_range)
         which = "phi_T/2" if chart.symmetric else "phi"
         lines = [f"{chart.name} well {parameters_text(chart.parameters)}: {which} over the "
@@ -158,7 +158,7 @@ def run(args: argparse.Namespace) -> Output:
         return Output(data, text)
     lo, hi, count = ranged
     if not isinstance(count, int):
-        raise ParameterError("COUNT", count, "an integer >= 2")
+        raise ParameterError("count", count, "an integer >= 2")
     if beta_mode:
         result = floquet.model_scan(args.alpha, args.beta_range, args.n, **well)
     else:

@@ -96,7 +96,8 @@ def run(args: argparse.Namespace) -> Output:
         seed=args.seed,
     )  # fmt: skip
     check_runs("runs", settings.runs)
-    periods = settings.periods
+    # 4 periods after the transient; the default one, periods // 3, leaves them from 5 on
+    periods = v.positive_int("periods", settings.periods, minimum=4 + (args.transient is None))
     transient = periods // 3 if args.transient is None else args.transient
     v.positive_int("transient", transient, minimum=0, maximum=periods - 4)
     fractions = check_fractions(args.fractions)

@@ -115,7 +115,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _npz_path(value: str | None) -> Path | None:
-    return output_file("--out", value, (".npz",))
+    return output_file("out", value, (".npz",))
 
 
 def _initial(values: list | None, sink: Sink) -> np.ndarray | None:
@@ -142,7 +142,7 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
     checked by :func:`~sinktheory.simulate.simulate` before it integrates."""
     if initial is not None and args.runs not in (None, 1):
         raise ParameterError(
-            "--runs", args.runs, "1 with --initial (one set of positions starts one run)"
+            "runs", args.runs, "1 with --initial (one set of positions starts one run)"
         )
     settings.check_memory(sink, ("container",))
     if args.dt is not None:
@@ -159,7 +159,7 @@ def _check_size(args: argparse.Namespace, sink: Sink, settings: RunSettings, ini
 
 
 def run(args: argparse.Namespace) -> Output:
-    plot = png_path("--plot", args.plot)
+    plot = png_path("plot", args.plot)
     out = _npz_path(args.out)
     user = user_well_from_args(args)
     unsupported = {

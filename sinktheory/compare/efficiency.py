@@ -92,7 +92,7 @@ def attachments_of(
             if value is not None:
                 raise ParameterError(name, value, "left out with well (the user's well is "
                                      "the 2-D attachment)")  # fmt: skip
-    shapes = _names("shape", ("flat",) if shapes is None else shapes, None)
+    shapes = _names("shapes", ("flat",) if shapes is None else shapes, None)
     n = 4 if n is None else n
     counts = [v.positive_int("particles", k) for k in _listed("particles", particles)]
     if len(set(counts)) != len(counts):
@@ -104,10 +104,32 @@ def attachments_of(
         elif kind == "well":
             for shape in shapes:
                 for k in counts:
-                    out.append(Attachment("well", shape, alpha, beta, n, k, mass))
+                    out.append(_made({"shape": "shapes"}, "well", shape, alpha, beta, n, k, mass))
         else:
-            out.append(Attachment(kind, shapes[0], alpha, beta, nes_n, 1, mass))
+            out.append(_made({"shape": "shapes", "n": "nes_n"}, kind, shapes[0], alpha, beta,
+                             nes_n, 1, mass))  # fmt: skip
     return out
+
+
+def _made(keywords: dict[str, str], *fields) -> Attachment:
+    """``Attachment(*fields)``; its refusal of a field is named by the keyword of
+    :func:`attachments_of` the value came from (``keywords``: field -> keyword).
+
+    Examples
+    --------
+    >>> _made({"n": "nes_n"}, "nes", "flat", 0.5, 0.3, 0, 1, 0.2)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: nes_n = 0 is not allowed: must be an integer ...
+    """
+    try:
+        return Attachment(*fields)
+    except ParameterError as e:
+        if e.name not in keywords:
+            raise
+        text = keywords[e.name] + str(e)[len(e.name) :]
+        e.name, e.args = keywords[e.name], (text,)
+        raise
 
 
 def _listed(name: str, values) -> list:

@@ -63,7 +63,7 @@ def test_all_indicators_text_and_plot(capsys, tmp_path):
         (["--renorm", "-3"], "renorm"),
         (["--runs", "0"], "runs"),
         (["--scheme", "euler"], "scheme"),
-        (["--plot", "out.txt"], "--plot"),
+        (["--plot", "out.txt"], "plot"),
     ],
 )
 def test_bad_input_one_line_exit_2_nothing_written(capsys, tmp_path, monkeypatch, extra, name):

@@ -112,7 +112,7 @@ REFUSALS = [
     (["--damping", "0.01", "--particles", "0"], "particles"),
     (["--damping", "0.01", "--mass", "0"], "mass"),
     (["--damping", "0.01", "--periods", "1e15"], "periods"),
-    (["--damping", "0.01", "--plot", "out.txt"], "--plot"),
+    (["--damping", "0.01", "--plot", "out.txt"], "plot"),
     (["--damping", "0.01", "--wavelet-energy", "0.1"], "wavelet_energy"),
     (
         ["--damping", "0.01", "--wavelet-plot", "w.png", "--samples-per-period", "4"],
