@@ -157,12 +157,19 @@ def run(args: argparse.Namespace) -> Output:
         )
         return Output(data, text)
     lo, hi, count = ranged
-    if not isinstance(count, int):
-        raise ParameterError("count", count, "an integer >= 2")
-    if beta_mode:
-        result = floquet.model_scan(args.alpha, args.beta_range, args.n, **well)
-    else:
-        result = floquet.pure_scan(args.lam_range, args.n, args.amplitude)
+    option = "beta_range" if beta_mode else "lam_range"
+    try:  # the scan names the parts (lo, hi, count); the command names its option
+        if not isinstance(count, int):
+            raise ParameterError("count", count, "an integer >= 2")
+        if beta_mode:
+            result = floquet.model_scan(args.alpha, args.beta_range, args.n, **well)
+        else:
+            result = floquet.pure_scan(args.lam_range, args.n, args.amplitude)
+    except ParameterError as exc:
+        if exc.name not in ("lo", "hi", "count"):
+            raise
+        allowed = "LO HI COUNT: finite LO < HI and a whole COUNT >= 2"
+        raise ParameterError(option, (lo, hi, count), allowed, why=str(exc)) from None
     problem = result.chart.problem
     data = result.as_dict()
     lines = [f"{problem.kind} Hill equation, n = {problem.n}, {key} in [{lo:g}, {hi:g}]"]

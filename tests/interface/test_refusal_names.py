@@ -56,8 +56,6 @@ OUTPUTS = {"plot", "out", "wavelet_plot", "report"}
 #: shrinks): the scans name the part of LO HI COUNT (floquet.scan's keywords), and
 #: sweep.grid.parse_param names its text --param (test_api_fuzz_analyses expects that).
 KNOWN = {
-    ("floquet", "beta_range"): "count",
-    ("floquet", "lam_range"): "count",
     ("sweep", "param"): "--param",
 }
 #: (command, option) -> why its refusal is not one line yet.
