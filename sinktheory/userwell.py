@@ -85,7 +85,7 @@ import sympy as sp
 from sympy.printing.str import StrPrinter
 
 from .basin import Basin, guards, numeric
-from .errors import WellDefinitionError
+from .errors import ParameterError, WellDefinitionError
 from .limits import MAX_N
 from .symbolic import SHAPES, x, y, y_invariance
 
@@ -106,6 +106,7 @@ __all__ = [
     "ring_grid",
     "UserWell",
     "WellCheck",
+    "well_report",
     "well_text",
     "y_invariant",
 ]
@@ -936,3 +937,32 @@ the box |x|, |y| <= 1.04858e+06
         reason,
         basin,
     )
+
+
+def well_report(well: UserWell, values=None, well_check=None) -> tuple[dict, WellCheck]:
+    """(``values`` by name, the well's :func:`check_well` at them): ``well_check`` when the
+    caller has run that check at those values already, else the check run now.  The entry
+    points that take a user's well at its values start here.
+
+    Examples
+    --------
+    >>> well = UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})
+    >>> given, report = well_report(well)
+    >>> given, report.y_invariant
+    ({}, False)
+    >>> well_report(well, well_check="yes")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: well_check = 'yes' is not allowed: must be None or the \
+well's check at those values, a sinktheory.userwell.WellCheck
+    """
+    from .validation import mapping
+
+    given = mapping("values", values)
+    if well_check is None:
+        return given, check_well(well, **given)
+    if not isinstance(well_check, WellCheck):
+        raise ParameterError("well_check", well_check,
+                             "None or the well's check at those values, a "
+                             "sinktheory.userwell.WellCheck")  # fmt: skip
+    return given, well_check

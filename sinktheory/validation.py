@@ -22,6 +22,7 @@ import math
 import numbers
 import os
 import tempfile
+from collections.abc import Mapping
 from pathlib import Path
 
 from .errors import ParameterError
@@ -34,6 +35,7 @@ __all__ = [
     "finite_array",
     "fits_memory",
     "flag",
+    "mapping",
     "MAX_STEPS_PER_PERIOD",
     "memory_limit",
     "nbytes_text",
@@ -175,6 +177,27 @@ def flag(name: str, value: object) -> bool:
     if not _is_bool(value):
         raise ParameterError(name, value, "True or False")
     return bool(value)
+
+
+def mapping(name: str, value: object) -> dict:
+    """Values by name: a mapping with text keys, or None for none (a user's well's parameter
+    ``values``; each value is checked by the well).
+
+    Examples
+    --------
+    >>> mapping("values", {"a": 0.3}), mapping("values", None)
+    ({'a': 0.3}, {})
+    >>> mapping("values", [0.3])
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: values = [0.3] is not allowed: must be a mapping of \
+parameter names to numbers, or None
+    """
+    if value is None:
+        return {}
+    if not isinstance(value, Mapping) or not all(isinstance(k, str) for k in value):
+        raise ParameterError(name, value, "a mapping of parameter names to numbers, or None")
+    return dict(value)
 
 
 def choice(name: str, value: object, options: tuple[str, ...]) -> str:

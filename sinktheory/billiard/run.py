@@ -44,7 +44,7 @@ from ..model import MAX_PERIODS, RunSettings, Sink, Well
 from ..progress import chunks
 from ..results import Result
 from ..runstats import mean_stderr
-from ..validation import fits_memory, flag, positive, positive_int, real_array
+from ..validation import fits_memory, flag, mapping, positive, positive_int, real_array
 from ..worklimit import check_particle_steps
 from . import kernels as K
 from .table import Table, rigid_table, well_table
@@ -454,7 +454,7 @@ def well_billiard(
     """
     settings = _settings(settings)
     k, m = Sink.check_particles(particles, mass)
-    table = well_table(well, **dict(values or {}))
+    table = well_table(well, **mapping("values", values))
     b = settings.box
     try:
         table.check_positions("box", np.array([[b, b], [b, -b], [-b, b], [-b, -b]]))
