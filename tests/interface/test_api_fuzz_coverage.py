@@ -101,7 +101,7 @@ def _fixed_leaks():
     import math
 
     import numpy as np
-    from _fuzz import _overrides, fig8_sink
+    from _fuzz import _overrides, fig8_sink, newer_entries
 
     from sinktheory.adaptive import estimated_steps
     from sinktheory.billiard import well_billiard
@@ -116,6 +116,7 @@ def _fixed_leaks():
     )
     from sinktheory.equilibrium import well_law
     from sinktheory.equilibrium.microcanonical import particle_energies, shell_states
+    from sinktheory.equilibrium.relaxation import measure_relaxation
     from sinktheory.floquet import rigid_limit_phi_half, well_floquet, well_hill
     from sinktheory.model import confining_betas, user_well_summary
     from sinktheory.nnm.backbone import harmonic_balance, harmonic_balance_frequency
@@ -126,6 +127,7 @@ def _fixed_leaks():
     from sinktheory.worklimit import check_work
 
     ellipse = _overrides()["sinktheory.floquet.well_hill"]["well"]
+    relaxation = next(e[2] for e in newer_entries() if e[0] == "measure_relaxation")
     sink, rng, fig8 = fig8_sink(), np.random.default_rng(0), fig8_sink().well
     return [
         (lambda: averaged_share(0.2, 625.0, 1e-5, horizon=1e308), "horizon"),  # Overflow
@@ -176,6 +178,7 @@ def _fixed_leaks():
         (lambda: particle_energies(fig8, 2, 0.4, 1e308, rng), "size"),  # OverflowError
         (lambda: wall_ratios(None), "shape"),  # ValueError (in 11 symbolic functions)
         (lambda: potential([1]), "shape"),  # TypeError (unhashable)
+        (lambda: measure_relaxation(**{**relaxation, "target": 1e308}), "target"),  # NaN z
     ]
 
 
