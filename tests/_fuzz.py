@@ -527,6 +527,21 @@ def _overrides():
         s + "worklimit.check_work": dict(steps_per_period=100),
         s + "scenes.estimate": dict(number=2, quick=True),
         s + "userwell.well_report": dict(well=ellipse),
+        s + "chaos.vectors.vector_seed": dict(run=0),
+        s + "equilibrium.prediction.settling_time": dict(rate_time=10.0, visible=0.5, s0=0.5,
+                                                         mu=0.2, fraction=0.05),
+        s + "equilibrium.ergodicity.verdict": dict(lambda1=0.1, lambda1_se=0.01, ks_pvalue=0.5,
+                                                   mean_z=0.1),
+        s + "validation.writable_directory": dict(name="x", value="x", directory="."),
+        s + "validation.fits_memory": dict(name="x", value=1, nbytes=8.0, what="x",
+                                           allowed="smaller"),
+        s + "worklimit.tangent_steps": dict(particles=1, vectors=1),
+        s + "worklimit.check_particle_steps": dict(name="x", value=1, steps=10.0, what="x"),
+        s + "design.measures.longest_excursion": dict(threshold=0.25),
+        s + "design.measures.sustained_crossing": dict(threshold=0.25),
+        s + "glossary.modern_argv": dict(argv=["simulate"]),
+        s + "compare.efficiency.work": dict(samples_per_period=4),
+        s + "billiard.impact.kinetic_energy": dict(vx=0.1, vy=0.2, vc=0.3),
         s + "damped.simulate_inelastic": dict(settings=small),
     }  # fmt: skip
 
@@ -580,6 +595,7 @@ PENDING_BY_REASON = {
         "sinktheory.bifurcation.sections",  # sinks=None: TypeError
         "sinktheory.billiard.convergence.wall_ratios",  # well=None: AttributeError
         "sinktheory.billiard.convergence.wall_terms",  # well=None: AttributeError
+        "sinktheory.billiard.impact.kinetic_energy",  # vc=None: TypeError
         "sinktheory.billiard.kinetic.kinetic_relaxation",  # cells=1000000000000: MemoryError
         "sinktheory.billiard.kinetic.wall_moment",  # table=None: AttributeError
         "sinktheory.billiard.relaxation.rigid_shell_states",  # particles=1000000000000: MemoryError
@@ -592,6 +608,7 @@ PENDING_BY_REASON = {
         "sinktheory.chaos.sink.tangent_runs",  # gali=None: TypeError
         "sinktheory.chaos.sink.transverse_mask",  # particles=None: TypeError
         "sinktheory.chaos.staged.looks",  # periods=None: TypeError
+        "sinktheory.chaos.vectors.vector_seed",  # run=None: TypeError
         "sinktheory.chaos.verdicts.chaotic",  # mean='x': ValueError
         "sinktheory.chaos.verdicts.split",  # lambda1='x': ValueError
         "sinktheory.chaos.verdicts.threshold",  # periods=None: TypeError
@@ -600,10 +617,13 @@ PENDING_BY_REASON = {
         "sinktheory.codegen.KernelPrinter",  # settings=True: TypeError
         "sinktheory.codegen.write",  # directory=None: TypeError
         "sinktheory.commands.derive.cached_renderings",  # fresh=True: Hang
+        "sinktheory.compare.efficiency.work",  # attachments=None: TypeError
         "sinktheory.design.inelastic_reference.contact_weight",  # q=None: TypeError
         "sinktheory.design.inelastic_reference.solve_damped_ivp",  # damping=None: TypeError
         "sinktheory.design.measures.default_window",  # periods=None: TypeError
         "sinktheory.design.measures.horizons_of",  # text=None: TypeError
+        "sinktheory.design.measures.longest_excursion",  # mean=None: nonfinite
+        "sinktheory.design.measures.sustained_crossing",  # mean='x': ValueError
         "sinktheory.design.point.user_shape",  # p=None: TypeError
         "sinktheory.design.report.fmt",  # digits=None: ValueError
         "sinktheory.engine.blocks.groups_of",  # steps=None: TypeError
@@ -616,11 +636,14 @@ PENDING_BY_REASON = {
         "sinktheory.ensemble.run_parameters",  # runs=nan: nonfinite
         "sinktheory.ensemble.start_positions",  # settings=None: AttributeError
         "sinktheory.ensemble.start_state",  # container_energy=None: TypeError
+        "sinktheory.equilibrium.ergodicity.verdict",  # lambda1=None: TypeError
         "sinktheory.equilibrium.lifetime.check_one_shell",  # settings=None: AttributeError
         "sinktheory.equilibrium.lifetime.one_shell_box",  # settings=None: AttributeError
         "sinktheory.equilibrium.microcanonical.basin_points",  # energies='x': ValueError
         "sinktheory.equilibrium.microcanonical.particle_energies",  # well=None: AttributeError
+        "sinktheory.equilibrium.prediction.settling_time",  # fraction=None: TypeError
         "sinktheory.equilibrium.prediction.start_total_energy",  # sink=None: AttributeError
+        "sinktheory.glossary.modern_argv",  # argv=None: TypeError
         "sinktheory.glossary.option_of",  # name=None: AttributeError
         "sinktheory.layout.StateLayout",  # particles=nan: nonfinite
         "sinktheory.layout.pack_params",  # sink=None: AttributeError
@@ -656,12 +679,16 @@ PENDING_BY_REASON = {
         "sinktheory.symbolic.separable_hamiltonian",  # k=None: TypeError
         "sinktheory.symbolic.y_invariance",  # V=None: TypeError
         "sinktheory.validation.choice",  # options=None: TypeError
+        "sinktheory.validation.fits_memory",  # nbytes=None: TypeError
         "sinktheory.validation.nbytes_text",  # n=None: TypeError
         "sinktheory.validation.positive_int",  # maximum='x': TypeError
         "sinktheory.validation.real_array",  # value=None: nonfinite
         "sinktheory.validation.stiffness",  # value=inf: nonfinite
         "sinktheory.validation.time_step",  # period=None: TypeError
+        "sinktheory.validation.writable_directory",  # directory=None: TypeError
+        "sinktheory.worklimit.check_particle_steps",  # steps=None: TypeError
         "sinktheory.worklimit.duration",  # seconds=None: TypeError
+        "sinktheory.worklimit.tangent_steps",  # particles=None: TypeError
     ),
     "a SymPy function head: symbolic arguments, no numbers": (
         "sinktheory.codegen.ipow",
@@ -688,7 +715,6 @@ PENDING_BY_REASON = {
         "sinktheory.billiard.convergence.lyapunov_chart",
         "sinktheory.billiard.convergence.measure",
         "sinktheory.billiard.convergence.power_rate",
-        "sinktheory.billiard.impact.kinetic_energy",
         "sinktheory.billiard.impact.velocities_after",
         "sinktheory.billiard.kinetic.kinetic_coefficients",
         "sinktheory.billiard.relaxation.measure_rigid_settling",
@@ -707,7 +733,6 @@ PENDING_BY_REASON = {
         "sinktheory.chaos.staged.staged_chaos",
         "sinktheory.chaos.staged.staged_exponent",
         "sinktheory.chaos.vectors.orthonormalise",
-        "sinktheory.chaos.vectors.vector_seed",
         "sinktheory.chaos.verdicts.agreement",
         "sinktheory.chaos.verdicts.box_starts",
         "sinktheory.chaos.verdicts.map_calls",
@@ -720,7 +745,6 @@ PENDING_BY_REASON = {
         "sinktheory.codegen.integer_powers",
         "sinktheory.codegen.kernel_lines",
         "sinktheory.codegen.lowest_powers",
-        "sinktheory.compare.efficiency.work",
         "sinktheory.compare.transfer.transfer_maps",
         "sinktheory.compare.wavelet.ridge_of",
         "sinktheory.design.cost.work",
@@ -728,8 +752,6 @@ PENDING_BY_REASON = {
         "sinktheory.design.inelastic_reference.dissipate",
         "sinktheory.design.inelastic_reference.simulate_inelastic_reference",
         "sinktheory.design.measures.design_measures",
-        "sinktheory.design.measures.longest_excursion",
-        "sinktheory.design.measures.sustained_crossing",
         "sinktheory.design.point.attachment_of",
         "sinktheory.design.point.check",
         "sinktheory.design.point.compute",
@@ -757,7 +779,6 @@ PENDING_BY_REASON = {
         "sinktheory.ensemble.well_of_text",
         "sinktheory.equilibrium.ergodicity.check_point",
         "sinktheory.equilibrium.ergodicity.ergodicity_map",
-        "sinktheory.equilibrium.ergodicity.verdict",
         "sinktheory.equilibrium.prediction.check_reading",
         "sinktheory.equilibrium.prediction.fit_line",
         "sinktheory.equilibrium.prediction.law_chain",
@@ -765,7 +786,6 @@ PENDING_BY_REASON = {
         "sinktheory.equilibrium.prediction.measure_settings",
         "sinktheory.equilibrium.prediction.measure_settling",
         "sinktheory.equilibrium.prediction.read_settling",
-        "sinktheory.equilibrium.prediction.settling_time",
         "sinktheory.equilibrium.prediction.shell_lags",
         "sinktheory.equilibrium.prediction.shell_prediction",
         "sinktheory.equilibrium.prediction.slow_mode",
@@ -773,7 +793,6 @@ PENDING_BY_REASON = {
         "sinktheory.floquet.json_value",
         "sinktheory.floquet.point",
         "sinktheory.floquet.well_scan",
-        "sinktheory.glossary.modern_argv",
         "sinktheory.nnm.agreement.agreement_report",
         "sinktheory.nnm.agreement.statement",
         "sinktheory.nnm.agreement.transverse_chart",
@@ -821,14 +840,10 @@ PENDING_BY_REASON = {
         "sinktheory.twins.python_kernel",
         "sinktheory.userwell.read_well",
         "sinktheory.userwell.well_text",
-        "sinktheory.validation.fits_memory",
-        "sinktheory.validation.writable_directory",
         "sinktheory.vibroimpact.advancement_bound",
         "sinktheory.vibroimpact.check_flights",
         "sinktheory.vibroimpact.flight",
         "sinktheory.vibroimpact.next_hit",
-        "sinktheory.worklimit.check_particle_steps",
-        "sinktheory.worklimit.tangent_steps",
     ),
     "a result record the package builds": (
         "sinktheory.attachments.ImpulseResponse",
