@@ -928,7 +928,12 @@ def rigid_limit_phi_half(lam, amplitude: float = 1.0) -> np.ndarray:
     [1.0, 0.0, -1.0]
     """
     a = v.positive("amplitude", amplitude)
-    return 1.0 - 2.0 * np.asarray(lam, dtype=float) * a * a
+    lam = v.finite_array("lam", lam)
+    with np.errstate(over="ignore"):
+        out = 1.0 - 2.0 * lam * a * a
+    if not np.all(np.isfinite(out)):
+        raise ParameterError("amplitude", amplitude, "an amplitude with 2 lam A0^2 finite")
+    return out
 
 
 # ----------------------------------------------------------------- one sweep point
@@ -1123,12 +1128,11 @@ def well_hill(well, values=None, *, well_check=None, rtol: float = WELL_RTOL) ->
     import sympy as sp
 
     from .symbolic import mu, normal_mode, y
-    from .userwell import UserWell, check_well
+    from .userwell import UserWell, well_report
 
     if not isinstance(well, UserWell):
         raise ParameterError("well", well, "a sinktheory.userwell.UserWell")
-    given = dict(values or {})
-    report = check_well(well, **given) if well_check is None else well_check
+    given, report = well_report(well, values, well_check)
     exact = well.values(**given)
     mode = normal_mode(well, exact)
     if not mode.invariant:

@@ -387,7 +387,13 @@ def confining_betas(
     ...  for a, b in confining_betas(1.0, 6, 0.5, shape="symmetric")]
     [(-0.4959, 0.2955), (0.7045, 1.0)]
     """
-    hi = alpha if hi is None else hi
+    Well(alpha, 0.0, n, gamma=gamma, shape=shape)  # checks alpha, n, gamma and shape
+    particle_energy = v.positive("particle_energy", particle_energy)
+    lo = v.finite("lo", lo)
+    hi = alpha if hi is None else v.finite("hi", hi)
+    if not lo < hi:
+        raise ParameterError("hi", hi, f"a number > lo = {lo:g}")
+    points = v.positive_int("points", points, minimum=2, maximum=10**6)
 
     def ok(beta: float) -> bool:
         try:
@@ -406,6 +412,8 @@ def confining_betas(
         a, b = grid[i - 1], grid[i]  # validity changes in (a, b): bisect
         while b - a > 1e-12:
             mid = 0.5 * (a + b)
+            if not a < mid < b:  # float resolution reached (a large alpha)
+                break
             if ok(mid) == flags[i - 1]:
                 a = mid
             else:
@@ -732,12 +740,11 @@ def user_well_summary(
     >>> round(s.escape_energy * 6, 12), s.y_invariant, round(s.reach.y, 9)  # y^2/2 - y^3/3 = 0.1
     (1.0, False, 0.567068923)
     """
-    from .userwell import UserWell, check_well
+    from .userwell import UserWell, well_report
 
     if not isinstance(well, UserWell):
         raise ParameterError("well", well, "a sinktheory.userwell.UserWell")
-    given = dict(values or {})
-    report = check_well(well, **given) if well_check is None else well_check
+    given, report = well_report(well, values, well_check)
     basin = report.basin
     e = basin.check_energy(particle_energy)
     r = basin.reach(basin.well.v0 + e)

@@ -82,7 +82,6 @@ CALIBRATION: dict[str, tuple[float, float]] = {
 
 
 @renamed(energy="total_energy")
-@functools.lru_cache(maxsize=1024)
 def stiffness_frequency(sink: Sink, total_energy: float, *, angles: int = 46) -> float:
     """Fastest oscillation frequency the ``total_energy`` allows (an upper estimate;
     remembered per sink and energy, since every ``simulate`` call asks and the search
@@ -103,9 +102,20 @@ def stiffness_frequency(sink: Sink, total_energy: float, *, angles: int = 46) ->
     >>> 50 < w < 500
     True
     """
+    from .model import Sink
+
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    energy = v.positive("total_energy", total_energy)
+    return _stiffness_frequency(sink, energy, v.positive_int("angles", angles, maximum=10**5))
+
+
+@functools.lru_cache(maxsize=1024)
+def _stiffness_frequency(sink: Sink, energy: float, angles: int) -> float:
+    """:func:`stiffness_frequency` of checked arguments."""
     from .model import Well
 
-    well, energy = sink.well, total_energy
+    well = sink.well
     x_max, y_max = well.reach(energy)
     # a registered shape is even in x and in y: one quadrant; a user's well: every direction
     quadrant = isinstance(well, Well)
@@ -195,8 +205,12 @@ def check_tol(tol: float) -> float:
 def step_for(scheme: str, omega: float, tol: float) -> StepChoice:
     """The largest step of ``scheme`` whose modelled error at ``omega`` is <= ``tol``."""
     scheme = get_scheme(scheme)
+    omega, tol = v.positive("omega", omega), check_tol(tol)
     C, cliff = CALIBRATION[scheme.name]
     h_omega = min(cliff, (tol / C) ** (1.0 / scheme.order))
+    if not math.isfinite(PERIOD * omega / h_omega):
+        raise ParameterError("omega", omega, "a frequency whose steps per period are a float "
+                             f"(at {h_omega:.3g} radians a step)")  # fmt: skip
     dt, steps = aligned_step(h_omega / omega)
     h_used = dt * omega
     return StepChoice(
@@ -237,6 +251,8 @@ def cost_table(sink: Sink, total_energy: float, tol: float, schemes=None) -> lis
     ``schemes``, default all), cheapest (fewest force evaluations per period) first."""
     tol = check_tol(tol)
     omega = stiffness_frequency(sink, total_energy)
+    if schemes is not None and (isinstance(schemes, str) or not isinstance(schemes, list | tuple)):
+        raise ParameterError("schemes", schemes, "None or a list of scheme names")
     options = [step_for(name, omega, tol) for name in (schemes or SCHEMES)]
     return sorted(options, key=lambda c: (c.force_evaluations_per_period, c.scheme))
 
@@ -324,7 +340,7 @@ that the well can be integrated ... (with gamma = 1 it can)
     try:
         return resolve_step(sink, total_energy, scheme=scheme, dt=dt, tol=tol)
     except ParameterError as e:
-        if e.name != "tol" or dt is not None or not isinstance(sink.well, Well):
+        if e.name not in ("tol", "omega") or dt is not None or not isinstance(sink.well, Well):
             raise  # (a user's well: its parameters are its own, no suspects to try)
         error = e
     limit = tol if tol is not None else DEFAULT_TOL

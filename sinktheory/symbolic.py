@@ -43,6 +43,8 @@ from typing import Protocol, runtime_checkable
 
 import sympy as sp
 
+from .errors import ParameterError
+
 __all__ = [
     "A0",
     "alpha",
@@ -358,12 +360,12 @@ SHAPES = _Shapes()
 
 
 def shape_definition(shape: str | WellDefinition) -> Shape | WellDefinition:
-    """The :class:`Shape` called ``shape`` (ValueError naming the allowed ones), or
+    """The :class:`Shape` called ``shape`` (ParameterError naming the allowed ones), or
     ``shape`` itself when it is a :class:`WellDefinition` (a user's well)."""
     if not isinstance(shape, str) and isinstance(shape, WellDefinition):
         return shape
-    if shape not in SHAPES:
-        raise ValueError(f"shape = {shape!r} is not allowed: must be one of {tuple(SHAPES)}")
+    if not isinstance(shape, str) or shape not in SHAPES:
+        raise ParameterError("shape", shape, f"one of {tuple(SHAPES)}")
     return SHAPES[shape]
 
 

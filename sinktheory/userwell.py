@@ -86,7 +86,7 @@ import sympy as sp
 from sympy.printing.str import StrPrinter
 
 from .basin import Basin, guards, numeric
-from .errors import WellDefinitionError
+from .errors import ParameterError, WellDefinitionError
 from .limits import MAX_N
 from .symbolic import SHAPES, x, y, y_invariance
 
@@ -102,12 +102,14 @@ __all__ = [
     "MAX_EXPONENT",
     "MAX_FILE_BYTES",
     "MAX_TEXT_LENGTH",
+    "parameter_values",
     "parse_potential",
     "read_well",
     "Parameter",
     "ring_grid",
     "UserWell",
     "WellCheck",
+    "well_report",
     "well_text",
     "y_invariant",
 ]
@@ -959,3 +961,51 @@ the box |x|, |y| <= 1.04858e+06
         reason,
         basin,
     )
+
+
+def parameter_values(values: object) -> dict:
+    """A user's well's parameter ``values`` by name: a mapping with text keys, or None for
+    none (each value is checked by the well).
+
+    Examples
+    --------
+    >>> parameter_values({"a": 0.3}), parameter_values(None)
+    ({'a': 0.3}, {})
+    >>> parameter_values([0.3])
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: values = [0.3] is not allowed: must be a mapping of \
+parameter names to numbers, or None
+    """
+    if values is None:
+        return {}
+    if not isinstance(values, Mapping) or not all(isinstance(k, str) for k in values):
+        raise ParameterError("values", values, "a mapping of parameter names to numbers, or None")
+    return dict(values)
+
+
+def well_report(well: UserWell, values=None, well_check=None) -> tuple[dict, WellCheck]:
+    """(``values`` by name, the well's :func:`check_well` at them): ``well_check`` when the
+    caller has run that check at those values already, else the check run now.  The entry
+    points that take a user's well at its values start here.
+
+    Examples
+    --------
+    >>> well = UserWell("hh", "(x**2 + y**2)/2 + x**2*y - y**3/3", {})
+    >>> given, report = well_report(well)
+    >>> given, report.y_invariant
+    ({}, False)
+    >>> well_report(well, well_check="yes")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: well_check = 'yes' is not allowed: must be None or the \
+well's check at those values, a sinktheory.userwell.WellCheck
+    """
+    given = parameter_values(values)
+    if well_check is None:
+        return given, check_well(well, **given)
+    if not isinstance(well_check, WellCheck):
+        raise ParameterError("well_check", well_check,
+                             "None or the well's check at those values, a "
+                             "sinktheory.userwell.WellCheck")  # fmt: skip
+    return given, well_check

@@ -272,6 +272,11 @@ def check_work(
     """Refuse an ensemble of ``settings`` over ``sink`` at ``steps_per_period`` steps of
     ``scheme`` (None: blanes-moan6) that would exceed the work limit
     (:func:`check_particle_steps`), naming the larger of ``periods`` and ``runs``."""
+    if not isinstance(settings, RunSettings):
+        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    steps_per_period = v.positive_int("steps_per_period", steps_per_period)
     name = "periods" if settings.periods > settings.runs else "runs"
     check_particle_steps(
         name,

@@ -266,6 +266,7 @@ def estimated_steps(sink: Sink, total_energy: float, eps: float) -> int:
     >>> estimated_steps(Sink(Well(0.5, 0.3, 4), particles=5, mass=0.2), 0.5, 0.25)
     3771
     """
+    eps = check_eps(eps)
     fixed = choose(sink, total_energy, DEFAULT_TOL, DEFAULT_SCHEME).steps_per_period
     return max(1, math.ceil(fixed * 3 * 1.05 * 0.25 / eps))
 

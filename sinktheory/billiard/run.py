@@ -44,6 +44,7 @@ from ..model import MAX_PERIODS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink, W
 from ..progress import chunks
 from ..results import Result
 from ..runstats import mean_stderr
+from ..userwell import parameter_values
 from ..validation import fits_memory, flag, positive, positive_int, real_array
 from ..worklimit import check_particle_steps
 from . import kernels as K
@@ -504,7 +505,7 @@ def well_billiard(
     """
     settings = _settings(settings)
     k, m = Sink.check_particles(particles, mass)
-    table = well_table(well, **dict(values or {}))
+    table = well_table(well, **parameter_values(values))
     b = settings.box
     try:
         table.check_positions("box", np.array([[b, b], [b, -b], [-b, b], [-b, -b]]))

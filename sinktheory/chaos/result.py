@@ -38,7 +38,9 @@ def sali_from_gali2(g: np.ndarray) -> np.ndarray:
     >>> bool(np.allclose(sali_from_gali2(np.sin(th)), direct, rtol=1e-12, atol=0))
     True
     """
-    g = np.clip(np.asarray(g, float), 0.0, 1.0)
+    from ..validation import finite_array
+
+    g = np.clip(finite_array("g", g, "GALI_2 values (finite numbers in [0, 1])"), 0.0, 1.0)
     return g / np.cos(0.5 * np.arcsin(g))
 
 

@@ -26,6 +26,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import validation as val
+from ..errors import ParameterError
 from ..glossary import renamed
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from .general import check_block, check_params, check_run
@@ -81,7 +82,16 @@ def monodromy(
 
 def canonical(M: np.ndarray, masses) -> np.ndarray:
     """M in (q, v) coordinates -> S M S^-1 in canonical (q, p = m v) coordinates."""
-    s = np.concatenate([np.ones(len(masses)), np.asarray(masses, float)])
+    masses = val.finite_array("masses", masses, "the D masses (finite numbers > 0)", ndim=1)
+    if not (masses.size and np.all(masses > 0)):
+        raise ParameterError("masses", masses.tolist(), "the D masses (finite numbers > 0)")
+    D = masses.size
+    M = val.finite_array("M", M, f"matrices (..., {2 * D}, {2 * D}) of finite numbers (D = "
+                         f"{D} masses)")  # fmt: skip
+    if M.ndim < 2 or M.shape[-2:] != (2 * D, 2 * D):
+        raise ParameterError("M", f"shape {M.shape}", f"matrices (..., {2 * D}, {2 * D}) "
+                                 f"(D = {D} masses)")  # fmt: skip
+    s = np.concatenate([np.ones(D), masses])
     return M * s[:, None] / s[None, :]
 
 
@@ -90,7 +100,9 @@ def symplectic_defect(M: np.ndarray, masses) -> np.ndarray:
 
     Round-off in the product is of order eps ||M_w||^2, hence the scale.
     """
-    W = canonical(np.asarray(M, float), masses)
+    W = canonical(M, masses)
+    if W.ndim != 3:
+        raise ParameterError("M", f"shape {W.shape}", "matrices (runs, 2D, 2D), one a run")
     D = W.shape[-1] // 2
     J = np.block([[np.zeros((D, D)), np.eye(D)], [-np.eye(D), np.zeros((D, D))]])
     E = np.einsum("rji,jk,rkl->ril", W, J, W) - J

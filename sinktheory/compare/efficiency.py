@@ -142,6 +142,8 @@ def _names(name: str, values, options) -> list[str]:
     values = _listed(name, values)
     if options is not None:
         values = [v.choice(name, x, options) for x in values]
+    elif not all(isinstance(x, str) for x in values):
+        raise ParameterError(name, values, "a list of names")
     if len(set(values)) != len(values):
         raise ParameterError(name, values, "a list without repeated entries")
     return values
@@ -248,6 +250,8 @@ def steps_per_period(att, container_energy: float, *, runs: int, periods: int, t
     from ..model import RunSettings
     from ..stepsize import step_of
 
+    if not isinstance(att, Attachment):
+        raise ParameterError("att", att, "a sinktheory.attachments.Attachment")
     if att.kind == "impact":
         return 0
     settings = RunSettings(container_energy=container_energy, runs=runs, periods=periods)

@@ -46,6 +46,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 from ..glossary import renamed
+from ..worklimit import check_particle_steps
 
 __all__ = [
     "AVERAGED_HORIZON",
@@ -66,7 +67,15 @@ AVERAGED_STEP = 0.05
 
 
 def _check(mu: float, k3: float) -> tuple[float, float]:
-    return v.positive("mu", mu), v.positive("k3", k3)
+    """mu and k3 > 0 whose energy scale :func:`_scale` is well inside float range."""
+    mu, k3 = v.positive("mu", mu), v.positive("k3", k3)
+    if mu > 1e300:
+        raise ParameterError("mu", mu, "a finite number in (0, 1e300]")
+    scale = _scale(mu, k3)
+    if not 1e-290 < scale < 1e290:
+        raise ParameterError("k3", k3, "a stiffness whose energy scale 8 mu / (81 k3 (1 + mu)) "
+                             f"is in (1e-290, 1e290), not {scale:.3g}")  # fmt: skip
+    return mu, k3
 
 
 @renamed(energy="container_energy")
@@ -92,10 +101,12 @@ def averaged_share(mu: float, k3: float, container_energy, horizon: float = AVER
     if not (np.all(np.isfinite(e)) and np.all(e > 0)):
         raise ParameterError("container_energy", container_energy, "finite energies > 0")
     horizon = v.positive("horizon", horizon)
+    steps = horizon / AVERAGED_STEP  # inf beyond float range: refused below
+    check_particle_steps("horizon", horizon, steps * e.size, "the averaged flow's RK4 steps")
+    steps = math.ceil(steps)
     amp = np.sqrt(2 * e.ravel())
     # in units of the start amplitude: the cubic term's coefficient carries amp^2
-    low = _lowest_container_share(0.375 * k3 * amp**2, mu, AVERAGED_STEP,
-                                  int(math.ceil(horizon / AVERAGED_STEP)))  # fmt: skip
+    low = _lowest_container_share(0.375 * k3 * amp**2, mu, AVERAGED_STEP, steps)
     out = 1 - low
     return float(out[0]) if np.ndim(container_energy) == 0 else out.reshape(e.shape)
 

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import validation as v
+from ..attachments import Attachment
 from ..errors import ParameterError
 from ..glossary import old_attribute, renamed
 from ..results import Result
@@ -203,7 +204,9 @@ def transfer_maps(
 
 def _check_backbone(att) -> None:
     """Refuse an attachment whose backbone :func:`backbone` cannot draw: a user's well."""
-    if getattr(att, "user_well", None) is not None:
+    if not isinstance(att, Attachment):
+        raise ParameterError("att", att, "a sinktheory.attachments.Attachment")
+    if att.user_well is not None:
         raise ParameterError(
             "attachments", att.label, "attachments of registered shapes for the backbones",
             why="the normal modes are continued in a registered shape's well (alpha, beta, "

@@ -252,12 +252,11 @@ class WellArea:
         :func:`~sinktheory.userwell.check_well` (``well_check``, its result when it has
         been run at those values already) and :func:`~sinktheory.basin.leading_order` (each raises
         :class:`~sinktheory.errors.WellDefinitionError` for a refused well)."""
-        from ..userwell import UserWell, check_well
+        from ..userwell import UserWell, well_report
 
         if not isinstance(well, UserWell):
             raise ParameterError("well", well, "a sinktheory.userwell.UserWell")
-        given = dict(values or {})
-        report = check_well(well, **given) if well_check is None else well_check
+        given, report = well_report(well, values, well_check)
         order = leading_order(well.potential, well.values(**given), well.name)
         values = {name: float(value) for name, value in report.values.items()}
         return cls(well.name, values, report.basin, order)

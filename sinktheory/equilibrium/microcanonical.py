@@ -112,9 +112,12 @@ def particle_energies(
     >>> e.shape, bool(np.allclose(e.sum(axis=1), 0.4))
     ((5, 3), True)
     """
-    k = v.positive_int("particles", particles)
+    k = v.positive_int("particles", particles, maximum=10**15)
     total = v.positive("total", total)
-    size = v.positive_int("size", size)
+    size = v.positive_int("size", size, maximum=10**15)
+    name, value = ("particles", k) if k > size else ("size", size)  # the larger one
+    v.fits_memory(name, value, 8.0 * (2 * size + 16) * k * 4, f"{size} x {k} energies",
+                  "smaller: the samples must fit in memory")  # fmt: skip
     rng = _check_rng(rng)
     well.check_energy(total, name="total_energy")
     if k == 1:
@@ -197,6 +200,8 @@ def shell_states(
     runs = v.positive_int("runs", runs)
     rng = _check_rng(rng)
     well, k = sink.well, sink.particles
+    v.fits_memory("runs", runs, 8.0 * runs * (2 + 4 * k) * 4, f"{runs} state rows",
+                  "smaller: the states must fit in memory")  # fmt: skip
     well.check_energy(e, name="total_energy")
     phase = rng.uniform(0.0, 2 * math.pi, size=runs)
     amplitude = math.sqrt(2 * ec)

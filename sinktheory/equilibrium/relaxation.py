@@ -280,6 +280,9 @@ def measure_relaxation(
     if not np.abs(per_run).max() < 1e100:  # the fit squares it
         why = "the relative excess |<E_c> - target| / target is fitted"
         raise ParameterError("target", target, "within 1e100 of the energies' scale", why=why)
+    if target > 1e15 * np.abs(e).max():  # the excess is -1 to the last bit: nothing to fit
+        why = "beyond it the relative excess |<E_c> - target| / target is 1 in every bit"
+        raise ParameterError("target", target, "at most 1e15 times the largest energy", why=why)
     times = (np.arange(n) + 0.5) * window
     means, stderr = _curve(np.vstack([np.ones(R), _draws(R, resamples, seed)]), per_run)
     stderr = np.where(stderr > 0, stderr, np.min(stderr[stderr > 0], initial=1.0))

@@ -99,11 +99,19 @@ def harmonic_balance(sink: Sink, omega: float) -> tuple[float, float, float]:
         raise ParameterError("omega", omega, f"a frequency in (0, 1/sqrt(1 + m) = {top:.6g})")
     p = 2 * n - 1
     c = math.comb(p, n - 1) / 2 ** (p - 1)
-    r = (1 - omega**2) / (m * omega**2)
-    A = (m * omega**2 * r / (kappa * c * (r - 1) ** p)) ** (1 / (p - 1))
-    B = r * A
-    well = sink.particles * float(sink.well.potential(B - A, 0.0))  # k V(x, 0)
-    return A, B, 0.5 * A**2 + well
+    try:
+        r = (1 - omega**2) / (m * omega**2)
+        A = (m * omega**2 * r / (kappa * c * (r - 1) ** p)) ** (1 / (p - 1))
+        B = r * A
+        with np.errstate(over="ignore"):
+            well = sink.particles * float(sink.well.potential(B - A, 0.0))  # k V(x, 0)
+        E = 0.5 * A**2 + well
+    except (ZeroDivisionError, OverflowError):
+        E = math.inf
+    if not 0 < E < math.inf:
+        raise ParameterError("omega", omega, f"a frequency in (0, {top:.6g}) whose mode's "
+                             "amplitudes and energy are finite floats")  # fmt: skip
+    return A, B, E
 
 
 @renamed(energy="total_energy")
@@ -115,13 +123,13 @@ def harmonic_balance_frequency(sink: Sink, total_energy: float) -> float:
     top = 1 / math.sqrt(1 + sink.mass)
 
     def gap(omega):
-        return math.log(harmonic_balance(sink, omega)[2] / energy)
+        return math.log(harmonic_balance(sink, omega)[2]) - math.log(energy)
 
     lo, hi = 1e-9 * top, top * (1 - 1e-15)
     if gap(lo) > 0 or gap(hi) < 0:
         raise ParameterError("total_energy", energy, "an energy the one-harmonic balance reaches "
-                             f"in ({math.exp(gap(lo)) * energy:.3g}, "
-                             f"{math.exp(gap(hi)) * energy:.3g})")  # fmt: skip
+                             f"in ({harmonic_balance(sink, lo)[2]:.3g}, "
+                             f"{harmonic_balance(sink, hi)[2]:.3g})")  # fmt: skip
     return float(brentq(gap, lo, hi, xtol=1e-15, rtol=1e-14))
 
 

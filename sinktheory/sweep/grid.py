@@ -76,6 +76,8 @@ def parse_range(name: str, text: str) -> list[int | float]:
     0.0
     """
     allowed = "LO:HI:COUNT with finite numbers LO <= HI and an integer COUNT >= 1"
+    if not isinstance(text, str):
+        raise ParameterError(name, text, allowed)
     parts = text.split(":")
     if len(parts) != 3:
         raise ParameterError(name, text, allowed)
@@ -127,6 +129,8 @@ def parse_param(text: str) -> tuple[str, list[Value]]:
 
 def point_seed(seed: int, index: int) -> int:
     """The seed of point ``index`` of a sweep seeded with ``seed`` (a 64-bit integer)."""
+    seed = v.positive_int("seed", seed, minimum=0)
+    index = v.positive_int("index", index, minimum=0)
     sequence = np.random.SeedSequence(seed, spawn_key=(index,))
     return int(sequence.generate_state(1, np.uint64)[0])
 

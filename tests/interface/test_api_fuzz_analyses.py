@@ -11,13 +11,19 @@ small; SINKTHEORY_FUZZ_SCALE=10 runs ten times as many.
 
 import math
 
-import numpy as np
 import pytest
-from _cli import ELLIPTIC, FUZZ_SCALE, HH, HOSTILE, call_hostile, fuzz_one, non_finite
+from _cli import ELLIPTIC, FUZZ_SCALE, HOSTILE, call_hostile, fuzz_one, non_finite
+from _fuzz import (
+    DESIGN,
+    bifurcation_entries,
+    design_entries,
+    kramers_entries,
+    oscillator_entries,
+    sweep_and_well_entries,
+)
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from sinktheory.canonical import FIG8_WELL
 from sinktheory.errors import ParameterError, WellDefinitionError
 
 #: Fixed examples (derandomize): CI sees the same cases every run.
@@ -25,153 +31,8 @@ FUZZ = settings(max_examples=25 * FUZZ_SCALE, deadline=None, derandomize=True,
                 suppress_health_check=[HealthCheck.too_slow])  # fmt: skip
 
 
-def _sink():
-    from sinktheory import Sink
-
-    return Sink(FIG8_WELL, particles=1, mass=0.2)
-
-
-def _kramers():
-    """The Kramers-Moyal entry points, on the Jacobi diffusion of known law Beta(1, 2)."""
-    from sinktheory import Sink, Well
-    from sinktheory.equilibrium import equilibrium_law
-    from sinktheory.equilibrium.kramers import (
-        check_fluctuation_dissipation,
-        gauss_grid,
-        jacobi_increments,
-        kramers_moyal,
-        measure_kramers_moyal,
-        solve_fokker_planck,
-    )
-
-    s = gauss_grid(4, 1)[0]
-    inc = jacobi_increments(s, (1, 2), 20, np.random.default_rng(0), a=1.0, b=2.0, c=0.01)
-    km = kramers_moyal(s, 1.0, 1, (1, 2), inc)
-    law = equilibrium_law(Sink(Well(0.5, 0.0, 1), particles=1), 1.0)
-    grid = np.linspace(0, 1, 11)
-    return [
-        ("gauss_grid", gauss_grid, dict(points=4, n=4)),
-        ("kramers_moyal", kramers_moyal,
-         dict(s=s, total_energy=1.0, n=1, lags=(1, 2), increments=inc, weights=None, base_lag=0)),
-        ("measure_kramers_moyal", measure_kramers_moyal,
-         dict(sink=_sink(), total_energy=0.5, points=2, lags=(1,), runs=2, seed=1, tol=1e-6,
-              base_lag=0)),
-        ("check_fluctuation_dissipation", check_fluctuation_dissipation,
-         dict(km=km, law=law, lag=None, tests=2, exact=False)),
-        ("solve_fokker_planck", solve_fokker_planck,
-         dict(total_energy=1.0, points=grid, drift=0.01 * (1 - 3 * grid),
-              diffusion=0.01 * grid * (1 - grid), start=0.5, periods=3, cells=20, substeps=2)),
-        ("jacobi_increments", jacobi_increments,
-         dict(s0=[0.5], lags=(1, 2), runs=3, rng=np.random.default_rng(1), a=1.0, b=1.0,
-              c=0.1, substeps=5)),
-    ]  # fmt: skip
-
-
-def _bifurcation():
-    from sinktheory import RunSettings
-    from sinktheory.bifurcation import bifurcation, sampled_run, section, section_step
-
-    return [
-        ("bifurcation", bifurcation,
-         dict(betas=[0.3], alpha=0.5, n=4, gamma=1.0, shape="flat", mass=0.2,
-              container_energy=0.5, transient=1, count=2, quantity="y")),
-        ("section", section, dict(sink=_sink(), transient=1, count=2, quantity="y",
-                                  container_energy=0.5)),
-        ("section_step", section_step, dict(sink=_sink(), container_energy=0.5)),
-        ("sampled_run", sampled_run,
-         dict(sink=_sink(), settings=RunSettings(runs=1, periods=2), start=(0.0, 0.01),
-              per_period=2)),
-    ]  # fmt: skip
-
-
-def _oscillator():
-    """Hill's equation, the power-law oscillator and its triangle-wave series."""
-    import mpmath
-
-    from sinktheory import hill, oscillator, series
-
-    return [
-        ("integrate_quarter_period", hill.integrate_quarter_period,
-         dict(n=2, params=np.array([0.5]), coefficient=hill.PURE, amplitude=1.0, alpha=0.0,
-              rtol=1e-10, max_steps=1000, implementation="python")),
-        ("quarter_period_mpmath", hill.quarter_period_mpmath, dict(n=2, lam=0.5, dps=15)),
-        ("monodromy_solve_ivp", hill.monodromy_solve_ivp,
-         dict(n=2, param=0.5, coefficient=hill.PURE, amplitude=1.0, alpha=0.0,
-              half_periods=1, rtol=1e-8)),
-        ("check_amplitude", hill.check_amplitude, dict(n=4, amplitude=2.0)),
-        ("quarter_period_length", hill.quarter_period_length, dict(n=2)),
-        ("oscillator", oscillator.oscillator, dict(n=2, amplitude=1.0, energy=None, dps=15)),
-        ("period", oscillator.period, dict(n=2, amplitude=None, energy=0.5, dps=15)),
-        ("triangle_wave", oscillator.triangle_wave, dict(phase=[0.1, 0.3])),
-        ("triangle_wave_derivative", oscillator.triangle_wave_derivative, dict(phase=0.3)),
-        ("exact_shape", oscillator.exact_shape, dict(tau=[0.1, 0.5], n=2)),
-        ("exact_solution", oscillator.exact_solution,
-         dict(t=[0.0, 1.0], n=2, amplitude=1.0, start="turning")),
-        ("exact_shape_mp", oscillator.exact_shape_mp, dict(tau=0.3, n=2, dps=15)),
-        ("exact_solution_mp", oscillator.exact_solution_mp,
-         dict(t=1.0, n=2, amplitude=1.0, start="turning", dps=15)),
-        ("significant", oscillator.significant, dict(x=mpmath.mpf(1.5), digits=5)),
-        ("triangle_series", series.triangle_series, dict(n=2, order=3)),
-        ("bound", series.bound, dict(tau=0.5, n=2, i=1)),
-        ("check_bounds", series.check_bounds, dict(n_values=[2], orders=[2])),
-        ("error_table", series.error_table, dict(n=2, order=3, samples=101)),
-        ("accuracy", series.accuracy, dict(n=2, order=3, samples=101)),
-    ]  # fmt: skip
-
-
-#: A small design grid (two designs, a few seconds).
-DESIGN = {"beta": 0.3, "n": 4, "particles": [1, 2], "runs": 2, "periods": 12,
-          "horizons": "6+12", "lyapunov_runs": 0, "bootstrap": 10}  # fmt: skip
-
-
-def _design():
-    from sinktheory.design import cost, explorer, ranking
-
-    sweep = explorer.plan(DESIGN)
-    return [
-        ("plan", explorer.plan, dict(params=DESIGN, seed=0)),
-        ("estimate", cost.estimate, dict(sweep=sweep, workers=1, seconds=0.05, todo=None)),
-        ("explore", explorer.explore,
-         dict(params=DESIGN, seed=0, store=None, scheduler=None, workers=1, resume=False,
-              repair=False, progress=False, estimate_first=False, report=None, top=10)),
-        ("pareto_layers", ranking.pareto_layers,
-         dict(speed=[1.0, 2.0], depth=[0.5, 0.4], spread=[0.1, 0.2])),
-    ]  # fmt: skip
-
-
-def _sweep_and_wells():
-    from sinktheory.sweep import parse_param, run_sweep
-    from sinktheory.userwell import (
-        Parameter,
-        UserWell,
-        check_well,
-        disc_grid,
-        parse_potential,
-        ring_grid,
-        y_invariant,
-    )
-
-    well = UserWell("hh", HH, {})
-    return [
-        ("run_sweep", run_sweep,
-         dict(kind="floquet", params={"alpha": 0.5, "beta": [-0.2, 0.1], "n": 4}, seed=0,
-              store=None, scheduler=None, workers=1, resume=False, progress=False,
-              repair=False)),
-        ("parse_param", parse_param, dict(text="beta=0:0.3:4")),
-        ("UserWell", UserWell,
-         dict(name="ellipse", potential=ELLIPTIC,
-              parameters={"a": 0.3, "b": 0.2, "gamma": 1, "n": (2, (1, 20))},
-              wall_ratios=())),
-        ("Parameter", Parameter, dict(name="a", default=0.3, range=(0.01, 10))),
-        ("parse_potential", parse_potential, dict(text=HH, parameters=(), where="potential")),
-        ("check_well", check_well, dict(well=well, radius=0.5)),
-        ("disc_grid", disc_grid, dict(radius=1.0)),
-        ("ring_grid", ring_grid, dict(radius=1.0)),
-        ("y_invariant", y_invariant, dict(V=well.potential)),
-    ]  # fmt: skip
-
-
-ENTRIES = _kramers() + _bifurcation() + _oscillator() + _design() + _sweep_and_wells()
+ENTRIES = (kramers_entries() + bifurcation_entries() + oscillator_entries() + design_entries()
+           + sweep_and_well_entries())  # fmt: skip
 _BASELINE: dict = {}  # entry -> where its valid call's result is not finite (or None)
 
 
@@ -325,7 +186,8 @@ def _leaks():
     from sinktheory.userwell import disc_grid, parse_potential, ring_grid
 
     kramers, bif, osc, design, wells = (dict((e[0], e[2]) for e in group) for group in (
-        _kramers(), _bifurcation(), _oscillator(), _design(), _sweep_and_wells()))  # fmt: skip
+        kramers_entries(), bifurcation_entries(), oscillator_entries(), design_entries(),
+        sweep_and_well_entries()))  # fmt: skip
     km = kramers["check_fluctuation_dissipation"]
     fp, jacobi = kramers["solve_fokker_planck"], kramers["jacobi_increments"]
     moyal, measure = kramers["kramers_moyal"], kramers["measure_kramers_moyal"]
@@ -398,10 +260,10 @@ def test_numerical_trouble_of_the_fuzz_says_where():
     from sinktheory.equilibrium.kramers import jacobi_increments, solve_fokker_planck
     from sinktheory.errors import NonFiniteStateError
 
-    fp = dict(_kramers()[4][2])
+    fp = dict(kramers_entries()[4][2])
     with pytest.raises(NonFiniteStateError, match="Fokker-Planck solution"):
         solve_fokker_planck(**{**fp, "total_energy": 1e308, "start": 0.5e308})
-    jacobi = dict(_kramers()[5][2])
+    jacobi = dict(kramers_entries()[5][2])
     with pytest.raises(NonFiniteStateError, match="Jacobi diffusion"):
         jacobi_increments(**{**jacobi, "c": 1e308})
 
