@@ -267,6 +267,8 @@ def test_local_processes_and_dask_cluster_match_bitwise(tmp_path, capsys):
 
 def test_unreachable_scheduler_is_a_parameter_error_and_writes_nothing(tmp_path):
     import dask
+    import distributed  # noqa: F401 (its config first: set() would drop it on exit if
+    # it were loaded inside, and a later dask compute in this process would fail)
 
     store = tmp_path / "never.zarr"
     with dask.config.set({"distributed.comm.timeouts.connect": "0.5s"}):
