@@ -98,6 +98,7 @@ import numpy as np
 
 from . import validation as v
 from ._generated import oscillator as _osc
+from ._generated import shapes as _shapes
 from .errors import BracketError, ParameterError
 from .hill import (
     DEFAULT_RTOL,
@@ -215,7 +216,7 @@ class HillProblem:
     def coefficient(self):
         """The compiled coefficient q(x, alpha, p, n): Lam x^(2n), or the well shape's
         generated ``hill_coefficient``."""
-        return PURE if self.kind == "pure" else self._well(0.0).kernels.hill_coefficient
+        return PURE if self.kind == "pure" else _shapes.bundle(self.kind).hill_coefficient
 
     def _well(self, beta: float) -> Well:
         return Well(self.alpha, beta, self.n, gamma=self.gamma, shape=self.kind)
@@ -237,7 +238,7 @@ class HillProblem:
         if arr.ndim != 1 or arr.size == 0:
             raise ParameterError(self.parameter, values, "a non-empty 1-d list of numbers")
         check_amplitude(self.n, self.amplitude)
-        for value in (arr.min(), arr.max()):
+        for value in dict.fromkeys((arr.min(), arr.max())):  # one beta: checked once
             if self.kind == "pure":
                 v.finite("lam", value)
             else:
@@ -281,7 +282,7 @@ class HillProblem:
         for the paper's wells, 1 for the circular one)."""
         if self.kind == "pure":
             return np.asarray(values, dtype=float)
-        hill_lambda = self._well(0.0).kernels.hill_lambda
+        hill_lambda = _shapes.bundle(self.kind).hill_lambda  # the well is checked already
         return np.array([hill_lambda(self.alpha, b) for b in values])
 
     def quarter(self, values: np.ndarray) -> QuarterPeriod:

@@ -132,9 +132,10 @@ def _stiffness_frequency(sink: Sink, energy: float, angles: int) -> float:
             below = well.potential(x, y) <= energy
             lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
     largest = 0.0
+    hessian = well.kernels.hessian if quadrant else None  # looked up once, not per ray
     for r, t in zip(hi, theta[:, 0], strict=True):
         if quadrant:
-            vxx, vxy, vyy = well.kernels.hessian(
+            vxx, vxy, vyy = hessian(
                 r * math.cos(t), r * math.sin(t), well.alpha, well.beta, well.gamma, well.n
             )
             h = [[vxx, vxy], [vxy, vyy]]

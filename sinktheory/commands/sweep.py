@@ -76,7 +76,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="with --resume: remove chunks that no longer decode and recompute their points",
     )
-    parser.add_argument("--quiet", action="store_true", help="no estimate line, no progress bar")
+    parser.add_argument(
+        "--quiet", action="store_true", help="no estimate line, no progress of the check or run"
+    )
     add_json(parser)
     add_well_file(parser)
     parser.epilog = (
@@ -149,7 +151,7 @@ def _run(args: argparse.Namespace) -> Output:
     from ..sweep.plan import Sweep  # imports xarray, zarr and dask: only when sweeping
     from ..sweep.runner import execute
 
-    sweep = Sweep.make(args.kind, params_with_well(args), args.seed)
+    sweep = Sweep.make(args.kind, params_with_well(args), args.seed, progress=not args.quiet)
     if not args.quiet:  # before any work: the estimate
         print(f"sinktheory sweep: {estimate_line(sweep)}", file=sys.stderr, flush=True)
     done = execute(

@@ -31,14 +31,17 @@ import xarray as xr
 from .. import __version__
 from .. import validation as v
 from ..errors import ParameterError
+from ..progress import ProgressBar
 from ..worklimit import resumable, tally
 from .grid import Grid, fingerprint, point_seed
 from .kinds import Kind, get_kind
 
-__all__ = ["MARK", "Sweep"]
+__all__ = ["CHECK_DELAY", "MARK", "Sweep"]
 
 #: Attribute that marks a store as a sinktheory sweep (its value: the fingerprint).
 MARK = "sweep_fingerprint"
+#: Seconds of checking the grid before :meth:`Sweep.make` shows its progress.
+CHECK_DELAY = 1.0
 
 
 @dataclass(frozen=True)
@@ -56,8 +59,14 @@ class Sweep:
     estimate: float = 0.0
 
     @classmethod
-    def make(cls, kind: str, params: Mapping[str, Any], seed: int = 0) -> Sweep:
-        """Check ``params`` (name -> value or list of values) for ``kind`` at every point."""
+    def make(
+        cls, kind: str, params: Mapping[str, Any], seed: int = 0, *, progress: bool = False
+    ) -> Sweep:
+        """Check ``params`` (name -> value or list of values) for ``kind`` at every point.
+
+        With ``progress``, a check lasting over :data:`CHECK_DELAY` seconds shows the
+        points checked on stderr (:class:`~sinktheory.progress.ProgressBar`): a user's
+        well is checked at each point's parameter values, about 0.4 s a point."""
         k = get_kind(kind)
         if not isinstance(params, Mapping):
             raise ParameterError(
@@ -66,12 +75,18 @@ class Sweep:
         seed = v.positive_int("seed", seed, minimum=0)
         grid = Grid.from_params(k.complete(params))
         estimates = []
-        with resumable():  # points are stored and resumed one by one: the 30-day limit
-            for index in range(grid.size):
-                point = grid.point(index)
-                with tally() as checked:
-                    k.check(point)
-                estimates.append(math.fsum(checked) if checked else k.cost(point))
+        bar = ProgressBar(grid.size, enabled=progress, delay=CHECK_DELAY,
+                          label="checking the grid ", unit="point")  # fmt: skip
+        try:
+            with resumable():  # points are stored and resumed one by one: the 30-day limit
+                for index in range(grid.size):
+                    point = grid.point(index)
+                    with tally() as checked:
+                        k.check(point)
+                    estimates.append(math.fsum(checked) if checked else k.cost(point))
+                    bar.update(1)
+        finally:
+            bar.close()
         _check_memory(k, grid)
         spec, digest = fingerprint(k.name, grid, seed)
         return cls(k, grid, seed, spec, digest, math.fsum(estimates))

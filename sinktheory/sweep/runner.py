@@ -115,7 +115,8 @@ def run_sweep(
         Continue the sweep in ``store``, computing only the points not yet done; a store
         made by a different sweep is refused.  Without it an existing store is refused.
     progress : bool
-        Progress bar on stderr (points done, rate, time left; only on a terminal).
+        Progress bar on stderr (points done, rate, time left; only on a terminal), and
+        of the check of the grid's points when it lasts over a second.
     repair : bool
         On resuming, remove chunks that no longer decode and recompute their points
         instead of refusing the store.  (Points whose stored results no longer match
@@ -152,7 +153,7 @@ def run_sweep(
                                  "has a well too)")  # fmt: skip
         params = {**params, "well": well} if isinstance(params, Mapping) else params
     done = execute(
-        Sweep.make(kind, params, seed),
+        Sweep.make(kind, params, seed, progress=progress),
         store=store,
         scheduler=scheduler,
         workers=workers,

@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 import xarray as xr
 import zarr
+from _cli import refused
 
 from sinktheory.bifurcation import bifurcation, section
 from sinktheory.canonical import FIG8_WELL
@@ -32,6 +33,7 @@ from sinktheory.progress import ProgressBar
 from sinktheory.simulate import simulate
 from sinktheory.sweep import (
     Grid,
+    Sweep,
     SweepPointError,
     bifurcation_diagram,
     parse_param,
@@ -265,6 +267,8 @@ def test_local_processes_and_dask_cluster_match_bitwise(tmp_path, capsys):
 
 def test_unreachable_scheduler_is_a_parameter_error_and_writes_nothing(tmp_path):
     import dask
+    import distributed  # noqa: F401 (its config first: set() would drop it on exit if
+    # it were loaded inside, and a later dask compute in this process would fail)
 
     store = tmp_path / "never.zarr"
     with dask.config.set({"distributed.comm.timeouts.connect": "0.5s"}):
@@ -459,6 +463,45 @@ def test_cli_bad_input_exits_2_and_writes_nothing(tmp_path, capsys):
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "sinktheory sweep: error:" in err
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_grids_check_shows_its_progress_when_asked(monkeypatch):
+    """Sweep.make(progress=True) counts the points it has checked on stderr once the
+    check lasts CHECK_DELAY (set to 0 here); without progress it shows nothing."""
+    from sinktheory.sweep import plan
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    monkeypatch.setattr(plan, "CHECK_DELAY", 0.0)
+    grid = {"alpha": 0.5, "beta": [-0.2, 0.0, 0.2], "n": 4}
+    for progress in (True, False):
+        monkeypatch.setattr(sys, "stderr", Terminal())
+        Sweep.make("floquet", grid, progress=progress)
+        shown = sys.stderr.getvalue()
+        assert ("checking the grid" in shown and "3/3" in shown) if progress else not shown
+
+
+def test_one_bad_point_among_many_good_ones_is_named(tmp_path, capsys, monkeypatch):
+    """The grid's check reaches every point: a single bad combination (beta = 0.45 at
+    alpha = 0.4, a negative wall distance) among good ones is refused naming beta and its
+    value, in Python and on the command line (one line, exit 2, no store)."""
+    grid = {"alpha": [0.5, 0.6, 0.4, 0.7], "beta": [-0.3, 0.0, 0.2, 0.45], "n": 4,
+            "transient": 2, "count": 3}  # fmt: skip
+    with pytest.raises(ParameterError) as refusal:
+        Sweep.make("bifurcation", grid)
+    assert (refusal.value.name, refusal.value.value) == ("beta", 0.45)
+    assert "< alpha = 0.4" in str(refusal.value)
+    fine = Sweep.make("bifurcation", {**grid, "alpha": [0.5, 0.6, 0.7]})  # the others pass
+    assert fine.grid.size == 12
+    betas = [*np.linspace(-0.3, 0.4, 30).tolist(), 0.5, -0.2]  # floquet: the 31st point
+    with pytest.raises(ParameterError, match="beta = 0.5 is not allowed: must be < alpha"):
+        Sweep.make("floquet", {"alpha": 0.5, "beta": betas, "n": 4})
+    line = refused(["sweep", "bifurcation", "--param", "alpha=0.5,0.6,0.4,0.7", "--param",
+                    "beta=-0.3,0,0.2,0.45", "--param", "n=4", "--out", "s.zarr"], capsys,
+                   tmp_path, monkeypatch, "beta")  # fmt: skip
+    assert "beta = 0.45 is not allowed" in line
 
 
 def test_cli_text_summary(tmp_path, capsys):
