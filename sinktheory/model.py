@@ -135,29 +135,6 @@ def _points_loop():
     return numba.njit(signature, cache=True)(_on_points)
 
 
-@functools.cache
-def _potential_address(shape: str):
-    """The shape's compiled ``potential`` as :func:`_points_loop` takes it, its machine
-    address looked up once: passed as the numba dispatcher itself, every call looked the
-    address up again (47 us of a 46-point call's 65 us; the step search of every point of
-    a sweep's grid makes 41 such calls).  The same machine code, so the same bits."""
-    from numba.core import types
-    from numba.experimental.function_type import WrapperAddressProtocol, _get_wrapper_address
-
-    f64, i64 = types.float64, types.int64
-    signature = f64(f64, f64, f64, f64, f64, i64)
-    address = _get_wrapper_address(_shapes.bundle(shape).potential, signature)
-
-    class Kernel(WrapperAddressProtocol):
-        def __wrapper_address__(self) -> int:
-            return address
-
-        def signature(self):
-            return signature
-
-    return Kernel()
-
-
 @dataclass(frozen=True)
 class Well:
     """The soft-wall potential well V(x, y) (paper eqs. V definition / V definition2).
@@ -253,7 +230,7 @@ class Well:
         x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
         out = np.empty(x.size)
         _points_loop()(
-            _potential_address(self.shape), np.ascontiguousarray(x).ravel(),
+            self.kernels.potential, np.ascontiguousarray(x).ravel(),
             np.ascontiguousarray(y).ravel(), float(self.alpha), float(self.beta),
             float(self.gamma), int(self.n), out,
         )  # fmt: skip
