@@ -29,8 +29,14 @@ FIXED = {
     "ensemble": {"alpha": 0.5, "n": 4, "runs": 2, "periods": 1000},
     "design": {"alpha": 0.5, "n": 4, "runs": 2, "periods": 1000, "lyapunov_runs": 2},
     "chaos": {"alpha": 0.5, "n": 4, "runs": 2, "periods": 1000},
-    "ergodicity": {"alpha": 0.5, "n": 4, "runs": 2, "periods": 1000, "transient": 500,
-                   "lyapunov_runs": 2},
+    "ergodicity": {
+        "alpha": 0.5,
+        "n": 4,
+        "runs": 2,
+        "periods": 1000,
+        "transient": 500,
+        "lyapunov_runs": 2,
+    },
 }
 #: Grid sizes per kind when --sizes is not given (floquet's points are ~100x cheaper).
 SIZES = {"floquet": (100, 1000, 10000)}

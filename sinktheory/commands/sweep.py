@@ -152,8 +152,11 @@ def _run(args: argparse.Namespace) -> Output:
     from ..sweep.runner import execute
 
     sweep = Sweep.make(args.kind, params_with_well(args), args.seed, progress=not args.quiet)
-    if not args.quiet:  # before any work: the estimate
-        print(f"sinktheory sweep: {estimate_line(sweep)}", file=sys.stderr, flush=True)
+
+    def announce() -> None:  # before any work, after every refusal: the estimate
+        if not args.quiet:
+            print(f"sinktheory sweep: {estimate_line(sweep)}", file=sys.stderr, flush=True)
+
     done = execute(
         sweep,
         store=args.out,
@@ -162,6 +165,7 @@ def _run(args: argparse.Namespace) -> Output:
         resume=args.resume,
         repair=args.repair,
         progress=not args.quiet,
+        announce=announce,
     )
     data = {
         "store": str(done.store),

@@ -114,11 +114,11 @@ def parse_param(text: str) -> tuple[str, list[Value]]:
     (:func:`sinktheory.sweep.kinds.get_kind`).
     """
     if not isinstance(text, str):
-        raise ParameterError("--param", text, "NAME=LO:HI:COUNT, NAME=V1,V2,... or NAME=VALUE")
+        raise ParameterError("param", text, "NAME=LO:HI:COUNT, NAME=V1,V2,... or NAME=VALUE")
     name, sep, rhs = text.partition("=")
     name = name.strip()
     if not sep or not name or not rhs.strip():
-        raise ParameterError("--param", text, "NAME=LO:HI:COUNT, NAME=V1,V2,... or NAME=VALUE")
+        raise ParameterError("param", text, "NAME=LO:HI:COUNT, NAME=V1,V2,... or NAME=VALUE")
     if ":" in rhs:
         return name, parse_range(name, rhs.strip())
     items = rhs.split(",")

@@ -40,7 +40,7 @@ import sys
 import threading
 import time
 import warnings
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass
 from pathlib import Path
@@ -179,8 +179,12 @@ def execute(
     resume: bool = False,
     progress: bool = True,
     repair: bool = False,
+    announce: Callable[[], None] | None = None,
 ) -> SweepRun:
-    """Run a checked :class:`~sinktheory.sweep.plan.Sweep` (see :func:`run_sweep`)."""
+    """Run a checked :class:`~sinktheory.sweep.plan.Sweep` (see :func:`run_sweep`);
+    ``announce`` is called once every argument is checked and the scheduler reached, just
+    before the store is opened (the command prints the estimate there, so a refused
+    argument stays one line)."""
     start = time.perf_counter()
     workers = None if workers is None else v.positive_int("workers", workers)
     for name, flag in (("resume", resume), ("repair", repair)):
@@ -191,6 +195,8 @@ def execute(
     # reach the scheduler first: a bad address must not leave a new store behind
     created = False
     with _Engine(scheduler, workers) as engine:
+        if announce is not None:
+            announce()
         if store is None:
             target = MemoryStore(sweep)
         elif resume and Path(store).exists():

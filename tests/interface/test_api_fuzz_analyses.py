@@ -238,7 +238,7 @@ def _leaks():
         (lambda: series.check_bounds(5, [2]), "n_values"),  # TypeError
         (lambda: pareto_layers([1.0], [1.0, 2.0], [1.0]), "depth"),  # ValueError
         (lambda: pareto_layers("x", [1.0], [1.0]), "speed"),  # ValueError
-        (lambda: parse_param(None), "--param"),  # AttributeError
+        (lambda: parse_param(None), "param"),  # AttributeError
         (lambda: parse_potential("x", None), "parameters"),  # TypeError
         (lambda: disc_grid(math.nan), "radius"),  # NaN returned
         (lambda: ring_grid("x"), "radius"),  # UFuncTypeError

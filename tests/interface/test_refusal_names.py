@@ -51,18 +51,6 @@ OTHER_BASE = {
 }
 #: The options that name a file or directory the command writes.
 OUTPUTS = {"plot", "out", "wavelet_plot", "report"}
-#: (command, option) -> the name its refusal still gives instead of the keyword (each
-#: entry must still be needed: the test fails when one is fixed, so the list only
-#: shrinks): the scans name the part of LO HI COUNT (floquet.scan's keywords), and
-#: sweep.grid.parse_param names its text --param (test_api_fuzz_analyses expects that).
-KNOWN = {
-    ("sweep", "param"): "--param",
-}
-#: (command, option) -> why its refusal is not one line yet.
-NOT_ONE_LINE = {
-    ("sweep", "workers"): "the estimate is printed before run_sweep checks the workers",
-    ("sweep", "scheduler"): "the estimate is printed before run_sweep reaches the scheduler",
-}
 
 
 def _actions():
@@ -125,12 +113,9 @@ CASES = OUTPUT_CASES + NUMBER_CASES + TEXT_CASES + BLAMED_CASES
 @pytest.mark.parametrize(("command", "name", "argv"), CASES,
                          ids=lambda x: x if isinstance(x, str) else None)  # fmt: skip
 def test_a_refused_value_is_named_by_its_keyword(command, name, argv, capsys, tmp_path,
-                                                 monkeypatch, request):  # fmt: skip
-    if (command, name) in NOT_ONE_LINE:
-        request.applymarker(pytest.mark.xfail(reason=NOT_ONE_LINE[command, name], strict=True))
-    said = KNOWN.get((command, name), name)  # a fixed KNOWN entry fails here
-    line = refused(argv, capsys, tmp_path, monkeypatch, said)
-    assert line.startswith(f"sinktheory {command}: error: {said} = "), line
+                                                 monkeypatch):  # fmt: skip
+    line = refused(argv, capsys, tmp_path, monkeypatch, name)
+    assert line.startswith(f"sinktheory {command}: error: {name} = "), line
 
 
 @pytest.mark.parametrize(
