@@ -10,6 +10,7 @@ import os
 import shutil
 import signal
 import sys
+import threading
 import uuid
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
@@ -33,6 +34,10 @@ class Output:
     writers: dict[Path, Any] = field(default_factory=dict)
     #: 1 when the command finished but part of it failed numerically (reported in data)
     exit_status: int = 0
+
+
+#: Seconds after which an interrupt swallowed by a callback is sent again (:func:`interruptible`).
+RESEND_SECONDS = 0.05
 
 
 class Interrupted(KeyboardInterrupt):
@@ -62,10 +67,24 @@ def interruptible(
     def on_term(signum, frame):
         raise Interrupted(signum)
 
+    def on_unraisable(unraisable) -> None:
+        """An interrupt raised where Python can only print it (a ctypes callback, e.g.
+        llvmlite's while numba compiles) is not lost: the signal is sent again
+        :data:`RESEND_SECONDS` later, from a thread, so that its handler runs in the main
+        thread's Python outside the callback (sent at once, it would run inside this hook,
+        where it is swallowed too)."""
+        if not isinstance(unraisable.exc_value, KeyboardInterrupt):
+            return hook(unraisable)
+        signum = getattr(unraisable.exc_value, "signum", signal.SIGINT)
+        resend = threading.Timer(RESEND_SECONDS, os.kill, (os.getpid(), signum))
+        resend.daemon = True
+        resend.start()
+
     try:
         previous = signal.signal(signal.SIGTERM, on_term)
     except ValueError:  # not the main thread: leave SIGTERM alone
         previous = None
+    hook, sys.unraisablehook = sys.unraisablehook, on_unraisable
     from ..progress import HeldSignals
 
     # a compiled call that keeps a held signal waiting too long ends the process with it
@@ -73,7 +92,7 @@ def interruptible(
     try:
         try:
             yield
-        except SystemError as e:  # see interrupt_behind
+        except Exception as e:  # an interrupt behind another error: see interrupt_behind
             interrupt = interrupt_behind(e)
             if interrupt is None:
                 raise
@@ -88,6 +107,7 @@ def interruptible(
         status = None
     finally:
         HeldSignals.forced_line = forced
+        sys.unraisablehook = hook
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
     if status is not None:
@@ -120,8 +140,10 @@ def interrupt_behind(error: BaseException) -> KeyboardInterrupt | None:
     A signal that arrives while a compiled (numba) function runs is acted on when it
     returns, and if that is while numba boxes its results (which calls Python), the
     interrupt surfaces as a SystemError ("returned a result with an exception set") caused
-    by it.  Long compiled loops hold the signals (:func:`sinktheory.progress.chunks`);
-    this finds the interrupt behind any other compiled call.
+    by it; one that arrives while a C extension module initialises (SciPy's, on a
+    command's first import of it) surfaces as an ImportError ("initialization failed").
+    Long compiled loops hold the signals (:func:`sinktheory.progress.chunks`); this finds
+    the interrupt behind any other error.
 
     Examples
     --------

@@ -176,9 +176,9 @@ def test_beta_range_minus_inf_names_the_end(capsys, tmp_path, monkeypatch):
         capsys,
         tmp_path,
         monkeypatch,
-        "lo",
+        "beta_range",
     )
-    assert "-inf" in line
+    assert "(lo = -inf is not allowed" in line
 
 
 # --------------------------------------------------------------------------- start-up

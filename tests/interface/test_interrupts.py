@@ -206,6 +206,55 @@ def test_interrupt_behind_a_compiled_call_is_an_interrupt(capsys, monkeypatch):
     assert capsys.readouterr().err == "sinktheory period: interrupted\n"
 
 
+def test_interrupt_behind_an_import_is_an_interrupt(capsys, monkeypatch):
+    """Ctrl-C while a C extension module initialises (SciPy's, on a command's first import
+    of it) surfaces as ImportError("initialization failed") caused by KeyboardInterrupt:
+    it ended a rigid simulate with status 1 and a traceback (full suite, 2026-11-26)."""
+    from sinktheory.commands import period
+
+    def import_interrupted(args):
+        try:
+            raise KeyboardInterrupt
+        except KeyboardInterrupt as e:
+            raise ImportError("initialization failed") from e
+
+    monkeypatch.setattr(period, "run", import_interrupted)
+    with pytest.raises(SystemExit) as info:
+        run_cli(["period", "--n", "2", "--amplitude", "1"], capsys)
+    assert info.value.code == 130
+    assert capsys.readouterr().err == "sinktheory period: interrupted\n"
+
+
+def test_interrupt_swallowed_by_a_callback_is_raised_again(capsys, monkeypatch):
+    """Ctrl-C while numba compiles can land in llvmlite's ctypes callback, where Python
+    only prints "Exception ignored" and goes on: a floquet sweep ran to its end with status
+    0 (full suite, 2026-11-26).  The command still ends as an interrupt, at the next line
+    of Python after the callback, printing nothing else."""
+    import ctypes
+
+    from sinktheory.commands import period
+
+    @ctypes.CFUNCTYPE(None)
+    def callback():
+        raise KeyboardInterrupt
+
+    after = []
+
+    def compiling(args):
+        callback()  # swallowed here, as in llvmlite's object-cache notification
+        after.append("reached")  # the signal is raised again before or at this line
+        for _ in range(100):
+            time.sleep(0.01)
+        after.append("ran on")
+
+    monkeypatch.setattr(period, "run", compiling)
+    with pytest.raises(SystemExit) as info:
+        run_cli(["period", "--n", "2", "--amplitude", "1"], capsys)
+    assert info.value.code == 130
+    assert "ran on" not in after
+    assert capsys.readouterr().err == "sinktheory period: interrupted\n"
+
+
 def test_interrupt_lets_zarr_finish_the_io_in_flight():
     """An interrupt during a store write left zarr's tasks pending; exiting then closed
     zarr's event loop under them ("Task was destroyed but it is pending!" after the
