@@ -273,14 +273,32 @@ def check_work(
     ``scheme`` (None: blanes-moan6) that would exceed the work limit
     (:func:`check_particle_steps`), naming the larger of ``periods`` and ``runs``."""
     name = "periods" if settings.periods > settings.runs else "runs"
+    steps = ensemble_steps(
+        settings.runs, float(settings.periods) * steps_per_period, sink.particles, scheme=scheme
+    )
+    seconds, compiling = (0.0, "") if _RESUMABLE.get() else _first_compilation(sink)
+    steps += seconds / SECONDS_PER_PARTICLE_STEP
     check_particle_steps(
         name,
         getattr(settings, name),
-        ensemble_steps(
-            settings.runs, float(settings.periods) * steps_per_period, sink.particles, scheme=scheme
-        ),
+        steps,
         f"{settings.runs} run(s) x {settings.periods} period(s) x {steps_per_period} "
         f"step(s) x {sink.particles} particle(s), with {BLOCK_STEP:g} per step of each block "
         f"of up to {BLOCK_RUNS} runs"
-        + (f", x {scheme_factor(scheme):.3g} for {scheme}" if scheme_factor(scheme) != 1 else ""),
+        + (f", x {scheme_factor(scheme):.3g} for {scheme}" if scheme_factor(scheme) != 1 else "")
+        + compiling,
     )
+
+
+def _first_compilation(sink: Sink) -> tuple[float, str]:
+    """(seconds, ", plus compiling the engine NAME first (... s)") when the engine of
+    ``sink`` is not compiled yet (:func:`sinktheory.engine.cache.compiled`;
+    :data:`~sinktheory.engine.cache.COMPILE_SECONDS`), else (0, "").  A sweep's points
+    leave it out: their sum would count the one compilation once a point."""
+    from .engine.cache import COMPILE_SECONDS, compiled  # numba loads when first needed
+    from .ensemble import engine_name
+
+    name = engine_name(sink)
+    if compiled(name):
+        return 0.0, ""
+    return COMPILE_SECONDS, f", plus compiling the engine {name} first ({COMPILE_SECONDS:g} s)"

@@ -67,3 +67,26 @@ def test_quiet_option_silences_the_note(tmp_path, monkeypatch, capsys):
     assert main([*argv, "--periods", "1"]) == 2
     assert capsys.readouterr().err.count("compiling the engine sink_flat") == 1
     assert seen == [True, False]
+
+
+def test_interactive_check_counts_a_first_compilation(monkeypatch):
+    """A job of a few particle steps is refused under a 36 s limit only when its engine
+    must be compiled first (COMPILE_SECONDS, 75 s); a sweep's points never count it."""
+    import pytest
+
+    from sinktheory import RunSettings, Sink, Well
+    from sinktheory.errors import ParameterError
+    from sinktheory.worklimit import check_work, interactive_limit, resumable, tally
+
+    settings, sink = RunSettings(runs=2, periods=1), Sink(Well(0.5, 0.3, 4))
+    monkeypatch.setattr(cache, "compiled", lambda name: True)
+    with interactive_limit(hours=0.01), tally() as estimates:
+        check_work(settings, sink, steps_per_period=10)
+    assert estimates[0] < 1e-3
+    monkeypatch.setattr(cache, "compiled", lambda name: False)
+    with interactive_limit(hours=0.01), pytest.raises(ParameterError) as refusal:
+        check_work(settings, sink, steps_per_period=10)
+    assert "plus compiling the engine sink_flat first (75 s)" in str(refusal.value)
+    with resumable(), tally() as estimates:
+        check_work(settings, sink, steps_per_period=10)
+    assert estimates[0] < 1e-3
