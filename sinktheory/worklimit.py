@@ -10,7 +10,9 @@ integrate:
   its blocks' overhead, its particles and their tangent vectors), priced at
   :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP` (calibrated by
   benchmarks/bench_estimates.py not to be optimistic), against the limit in force
-  (:func:`max_seconds`); :func:`check_work` prices an ensemble the same way.
+  (:func:`max_seconds`); :func:`check_work` prices an ensemble the same way, plus
+  :data:`~sinktheory.engine.cache.COMPILE_SECONDS` outside a sweep when its engine is not
+  compiled yet.
 
 Two limits.  A computation that cannot resume (a simulation, ``chaos``, ``nnm``, any call
 of the Python API) may start at most :data:`MAX_INTERACTIVE_SECONDS` (one hour) of
