@@ -82,7 +82,65 @@ CASES = [
     # a short run of the heaviest point and scales it)
     ("design limit", "2x2 designs", DESIGN, 200, 800),
     ("design estimator", "2x2 designs", DESIGN, 200, 800),
+    # entry points of the Python API without a command (called by :func:`run_api`; the
+    # lengths are periods, lags or continuation points)
+    ("solve_fokker_planck", "10 cells", 10, 100, 400),
+    ("solve_fokker_planck", "1000 cells", 1000, 100, 400),
+    ("jacobi_increments", "5 points 100 runs", 100, 5, 20),
+    ("jacobi_increments", "5 points 1000 runs", 1000, 5, 20),
+    ("continue_orbits", "duffing2 64 steps", 64, 10, 40),
+    ("continue_orbits", "duffing2 1024 steps", 1024, 5, 20),
 ]  # fmt: skip
+#: The entry points of the API cases: (size, length) -> the call.
+API = {
+    "solve_fokker_planck": lambda cells, periods: _fokker_planck(cells, periods),
+    "jacobi_increments": lambda runs, lag: _jacobi(runs, lag),
+    "continue_orbits": lambda steps, points: _continuation(steps, points),
+}
+
+
+def _fokker_planck(cells: int, periods: int) -> None:
+    from numpy import linspace
+
+    from sinktheory.equilibrium.kramers import solve_fokker_planck
+
+    s = linspace(0, 1, 101)
+    solve_fokker_planck(1.0, s, 0.01 * (1 - 2.25 * s), 0.01 * s * (1 - s), 0.5, periods,
+                        cells=cells)  # fmt: skip
+
+
+def _jacobi(runs: int, lag: int) -> None:
+    from numpy import linspace, random
+
+    from sinktheory.equilibrium.kramers import jacobi_increments
+
+    jacobi_increments(linspace(0.1, 0.9, 5), (1, lag), runs, random.default_rng(0), a=1, b=1,
+                      c=0.1)  # fmt: skip
+
+
+def _continuation(steps: int, points: int) -> None:
+    """Duffing2's branch from the module's example, run to ``points`` points (its
+    interval wide enough that none stops it sooner)."""
+    from numpy import array, pi
+
+    from sinktheory.nnm.continuation import continue_orbits
+    from sinktheory.nnm.system import FlowSystem
+
+    branch = continue_orbits(FlowSystem("duffing2", []), array([0.1, 0.1, 0, 0]), 2 * pi,
+                             steps=steps, total_energy=0.01, interval=(1e-3, 1e3), ds=0.3,
+                             max_points=points)  # fmt: skip
+    if len(branch.frequency) != points:
+        raise SystemExit(f"continue_orbits stopped at {len(branch.frequency)} of {points} points")
+
+
+def run_api(name: str, size: int, length: int) -> tuple[float, float]:
+    """(seconds, estimated seconds) of the API entry point ``name`` in this process."""
+    from sinktheory.worklimit import tally
+
+    start = time.perf_counter()
+    with tally() as estimates:
+        API[name](size, length)
+    return time.perf_counter() - start, sum(estimates)
 
 
 def run_case(argv: list[str]) -> tuple[float, float]:
@@ -135,6 +193,10 @@ def main() -> None:
             continue
         runs = {}
         for periods in (small, large):
+            if command in API:
+                API[command](argv, periods)  # compile or load the kernels, fill caches
+                runs[periods] = min(run_api(command, argv, periods) for _ in range(args.repeats))
+                continue
             if command.startswith("design"):
                 case = {**argv, "periods": periods}
                 run_design(command, case)  # compile or load the kernels, fill caches

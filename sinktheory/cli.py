@@ -175,7 +175,13 @@ def _main(argv: list[str], command: str | None) -> int:
             from .worklimit import interactive_limit
 
             limit = interactive_limit(hours)
-        with limit:
+        if getattr(args, "quiet", False):  # no note before compiling an engine either
+            from .engine.cache import quiet_compilation
+
+            quiet = quiet_compilation()
+        else:
+            quiet = contextlib.nullcontext()
+        with limit, quiet:
             out = args.module.run(args)
         write_outputs(out.writers)
     except ParameterError as e:

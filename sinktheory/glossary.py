@@ -106,7 +106,7 @@ GLOSSARY: dict[str, str] = {
     "samples": "samples per period of the records",
     "transient": "periods left out at the start before measuring",
     "progress": "progress bar on stderr",
-    "quiet": "no progress bar (and no estimate line)",
+    "quiet": "no progress bar, no note before compiling an engine (and no estimate line)",
     "settings": "RunSettings: container energy E0, runs, periods, seed, box",
     "sink": "Sink: the well, the particles and their mass",
     "well": "the particles' well: a Well (shape, alpha, beta, n, gamma), a user's well "

@@ -10,7 +10,9 @@ integrate:
   its blocks' overhead, its particles and their tangent vectors), priced at
   :data:`~sinktheory.model.SECONDS_PER_PARTICLE_STEP` (calibrated by
   benchmarks/bench_estimates.py not to be optimistic), against the limit in force
-  (:func:`max_seconds`); :func:`check_work` prices an ensemble the same way.
+  (:func:`max_seconds`); :func:`check_work` prices an ensemble the same way, plus
+  :data:`~sinktheory.engine.cache.COMPILE_SECONDS` outside a sweep when its engine is not
+  compiled yet.
 
 Two limits.  A computation that cannot resume (a simulation, ``chaos``, ``nnm``, any call
 of the Python API) may start at most :data:`MAX_INTERACTIVE_SECONDS` (one hour) of
@@ -278,14 +280,32 @@ def check_work(
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     steps_per_period = v.positive_int("steps_per_period", steps_per_period)
     name = "periods" if settings.periods > settings.runs else "runs"
+    steps = ensemble_steps(
+        settings.runs, float(settings.periods) * steps_per_period, sink.particles, scheme=scheme
+    )
+    seconds, compiling = (0.0, "") if _RESUMABLE.get() else _first_compilation(sink)
+    steps += seconds / SECONDS_PER_PARTICLE_STEP
     check_particle_steps(
         name,
         getattr(settings, name),
-        ensemble_steps(
-            settings.runs, float(settings.periods) * steps_per_period, sink.particles, scheme=scheme
-        ),
+        steps,
         f"{settings.runs} run(s) x {settings.periods} period(s) x {steps_per_period} "
         f"step(s) x {sink.particles} particle(s), with {BLOCK_STEP:g} per step of each block "
         f"of up to {BLOCK_RUNS} runs"
-        + (f", x {scheme_factor(scheme):.3g} for {scheme}" if scheme_factor(scheme) != 1 else ""),
+        + (f", x {scheme_factor(scheme):.3g} for {scheme}" if scheme_factor(scheme) != 1 else "")
+        + compiling,
     )
+
+
+def _first_compilation(sink: Sink) -> tuple[float, str]:
+    """(seconds, ", plus compiling the engine NAME first (... s)") when the engine of
+    ``sink`` is not compiled yet (:func:`sinktheory.engine.cache.compiled`;
+    :data:`~sinktheory.engine.cache.COMPILE_SECONDS`), else (0, "").  A sweep's points
+    leave it out: their sum would count the one compilation once a point."""
+    from .engine.cache import COMPILE_SECONDS, compiled  # numba loads when first needed
+    from .ensemble import engine_name
+
+    name = engine_name(sink)
+    if compiled(name):
+        return 0.0, ""
+    return COMPILE_SECONDS, f", plus compiling the engine {name} first ({COMPILE_SECONDS:g} s)"

@@ -20,12 +20,15 @@ Examples
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import hashlib
 import importlib.util
 import os
 import sys
 import tempfile
+from collections.abc import Iterator
+from contextvars import ContextVar
 from pathlib import Path
 
 import llvmlite.binding as _llvm
@@ -35,11 +38,15 @@ from ..errors import ParameterError
 
 __all__ = [
     "cache_dir",
+    "compile_note",
+    "compiled",
+    "COMPILE_SECONDS",
     "cost_table_path",
     "engine_system",
     "import_generated",
     "LLVM_OPTIONS",
     "load",
+    "quiet_compilation",
     "sink_name",
     "user_well",
     "well_definition",
@@ -213,10 +220,43 @@ def compiled(name: str) -> bool:
     return any((cache_dir() / "__pycache__").glob(f"{stem}.advance-*.nbi"))
 
 
+#: Whether :func:`load` notes on stderr that it is about to compile (off inside
+#: :func:`quiet_compilation`, i.e. with a command's ``--quiet``).
+_NOTE: ContextVar[bool] = ContextVar("sinktheory_compile_note", default=True)
+
+
+@contextlib.contextmanager
+def quiet_compilation() -> Iterator[None]:
+    """No note from :func:`load` before a compilation (the commands' ``--quiet``)."""
+    token = _NOTE.set(False)
+    try:
+        yield
+    finally:
+        _NOTE.reset(token)
+
+
+def compile_note(name: str) -> str:
+    """The line :func:`load` writes on stderr before engine ``name``'s first compilation.
+
+    Examples
+    --------
+    >>> compile_note("sink_flat")  # doctest: +ELLIPSIS
+    'sinktheory: compiling the engine sink_flat (about 1 min, once; cached in ...)'
+    """
+    return (
+        f"sinktheory: compiling the engine {name} (about {COMPILE_SECONDS / 60:.0f} min, once; "
+        f"cached in {cache_dir()})"
+    )
+
+
 def load(name: str):
-    """The compiled engine module of system ``name`` (generated on first use)."""
+    """The compiled engine module of system ``name`` (generated on first use; the first
+    compilation, about :data:`COMPILE_SECONDS`, is announced on stderr by
+    :func:`compile_note` unless inside :func:`quiet_compilation`)."""
     if name in _loaded:
         return _loaded[name]
+    if _NOTE.get() and not compiled(name):
+        print(compile_note(name), file=sys.stderr, flush=True)
 
     def text() -> str:
         from .printer import render

@@ -76,6 +76,7 @@ __all__ = [
     "FluctuationDissipation",
     "gauss_grid",
     "jacobi_increments",
+    "SOLVE_CELLS",
     "kramers_moyal",
     "KramersMoyal",
     "LAGS",
@@ -519,6 +520,14 @@ def _verdict(km: KramersMoyal, law: EquilibriumLaw, j: int, integrals, cov, scal
     )
 
 
+#: Cell steps one banded solve costs beyond its cells' (scipy's call overhead):
+#: ``python benchmarks/bench_estimates.py --only solve_fokker_planck`` (2-core AVX-512 Xeon,
+#: load 2, 2026-11-26) took 2.8e-5 s a solve at 10 cells and 5.2e-5 s at 1000, i.e. about
+#: 230 + cells particle steps at SECONDS_PER_PARTICLE_STEP; priced per cell alone it was
+#: 1.3x optimistic at 200 cells and 23x at 10.  With 250 the work took 0.37-0.88 of it (load 1).
+SOLVE_CELLS = 250
+
+
 @renamed(energy="total_energy")
 def solve_fokker_planck(
     total_energy: float,
@@ -567,9 +576,9 @@ def solve_fokker_planck(
             raise ParameterError(name, f"{values.size} value(s)", f"{points.size}, one per point")
         coefficients.append(values)
     v.fits_memory("periods", periods, 16.0 * (periods + 1), f"{periods + 1} periods", "fewer")
-    check_particle_steps("periods", periods, float(cells) * substeps * periods,
-                         f"{periods} period(s) x {substeps} step(s) x {cells} cells, a cell "
-                         "step priced as a particle step")  # fmt: skip
+    check_particle_steps("periods", periods, (cells + SOLVE_CELLS) * float(substeps) * periods,
+                         f"{periods} period(s) x {substeps} step(s) x ({cells} + {SOLVE_CELLS}) "
+                         "cells, a cell step priced as a particle step")  # fmt: skip
     h = e / cells
     centres = (np.arange(cells) + 0.5) * h
     faces = np.arange(1, cells) * h

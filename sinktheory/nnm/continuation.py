@@ -72,6 +72,7 @@ from .stability import angles, classify
 from .system import FlowSystem
 
 __all__ = [
+    "POINT_STEPS",
     "Branch",
     "check_ds",
     "check_stop",
@@ -227,6 +228,16 @@ def _orient(t: np.ndarray, usc: np.ndarray) -> np.ndarray:
     return t * usc
 
 
+#: Particle steps a continuation point costs beyond its integrations (the predictor,
+#: the corrector's Newton iterations and the event tests, in Python).  On duffing2 (2-core
+#: AVX-512 Xeon, load 1-2, 2026-11-26, ``python benchmarks/bench_estimates.py --only
+#: continue_orbits``) a point took 3.4e-3-6.8e-3 s at 64-1024 steps a period (later points
+#: of a branch cost more), while ensemble_steps alone priced it at 2.8e-4 s at 64 steps:
+#: 13-17x optimistic.  80000 (9.6e-3 s at SECONDS_PER_PARTICLE_STEP) is above the dearest:
+#: the work took 0.39-0.69 of it (load 1).
+POINT_STEPS = 80000.0
+
+
 @renamed(parameter="continue_in", energy="total_energy", stop="interval")
 def continue_orbits(
     system: FlowSystem,
@@ -287,8 +298,9 @@ def continue_orbits(
     max_points = v.positive_int("max_points", max_points, maximum=MAX_POINTS)
     work = ensemble_steps(1, 2 * max_points * steps, system.members or 1, 2 * system.dim)
     check_particle_steps(
-        "steps", steps, work, f"{max_points} point(s) x {steps} step(s) per period, each "
-        f"shooting at least twice with {2 * system.dim} tangent vectors"
+        "steps", steps, work + max_points * POINT_STEPS, f"{max_points} point(s) x {steps} "
+        f"step(s) per period, each shooting at least twice with {2 * system.dim} tangent "
+        f"vectors, plus {POINT_STEPS:.0f} particle steps a point for its Newton iterations"
     )  # fmt: skip
     free = subspace_indices(system, subspace)
     with refusals_named(parameter="continue_in"):
