@@ -671,7 +671,6 @@ PENDING_BY_REASON = {
         "sinktheory.scenes.wells.level_line_curvature",  # h=None: TypeError
         "sinktheory.simulate.first_order_rhs",  # sink=None: AttributeError
         "sinktheory.sweep.grid.parse_value",  # text=None: AttributeError
-        "sinktheory.sweep.runner.execute",  # sweep=None: AttributeError
         "sinktheory.symbolic.denominator",  # s=None: TypeError
         "sinktheory.symbolic.y_invariance",  # V=None: TypeError
         "sinktheory.validation.choice",  # options=None: TypeError
