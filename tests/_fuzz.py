@@ -552,6 +552,7 @@ def _overrides():
         s + "runstats.ensemble_mean": dict(energy_runs=[[0.5, 0.4]]),
         s + "runstats.mean_stderr": dict(values=[0.5]),
         s + "runstats.spread": dict(values=[0.5]),
+        s + "plot.floquet.plot_fig7": dict(ns=(2,), count=20),
     }  # fmt: skip
 
 
@@ -660,7 +661,6 @@ PENDING_BY_REASON = {
         "sinktheory.model.Reach",  # x=nan: nonfinite
         "sinktheory.nnm.modes.fixed_container_amplitude",  # sink=None: AttributeError
         "sinktheory.nnm.system.parameter_names",  # system=None: AttributeError
-        "sinktheory.plot.floquet.plot_fig7",  # beta_range=None: TypeError
         "sinktheory.plot.simulate.well_title",  # well=None: AttributeError
         "sinktheory.progress.ProgressBar",  # delay=None: TypeError
         "sinktheory.results.attribute",  # x=nan: nonfinite
