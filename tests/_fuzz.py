@@ -669,7 +669,6 @@ PENDING_BY_REASON = {
         "sinktheory.scenes.orbits.false_call",  # runs=None: TypeError
         "sinktheory.scenes.trajectories.indicators",  # periods=None: TypeError
         "sinktheory.scenes.wells.level_line_curvature",  # h=None: TypeError
-        "sinktheory.simulate.first_order_rhs",  # sink=None: AttributeError
         "sinktheory.sweep.grid.parse_value",  # text=None: AttributeError
         "sinktheory.symbolic.denominator",  # s=None: TypeError
         "sinktheory.symbolic.y_invariance",  # V=None: TypeError
