@@ -656,7 +656,6 @@ PENDING_BY_REASON = {
         "sinktheory.equilibrium.prediction.start_total_energy",  # sink=None: AttributeError
         "sinktheory.glossary.modern_argv",  # argv=None: TypeError
         "sinktheory.glossary.option_of",  # name=None: AttributeError
-        "sinktheory.layout.StateLayout",  # particles=nan: nonfinite
         "sinktheory.layout.pack_params",  # sink=None: AttributeError
         "sinktheory.model.Reach",  # x=nan: nonfinite
         "sinktheory.nnm.modes.fixed_container_amplitude",  # sink=None: AttributeError
