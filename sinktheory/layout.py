@@ -69,6 +69,11 @@ class StateLayout:
     X: ClassVar[int] = 0
     XDOT: ClassVar[int] = 1
 
+    def __post_init__(self):
+        from .validation import positive_int
+
+        object.__setattr__(self, "particles", positive_int("particles", self.particles))
+
     @classmethod
     def of(cls, values) -> StateLayout:
         """The layout of state rows ``values`` (..., 2 + 4k), read from their width."""

@@ -26,6 +26,7 @@ Examples
 from __future__ import annotations
 
 import math
+import numbers
 
 import numpy as np
 
@@ -103,15 +104,15 @@ def ensemble_mean(energy_runs) -> tuple[np.ndarray, np.ndarray]:
 
 
 def spread(values) -> float:
-    """Standard deviation (ddof = 1) of the values, one per run; NaN for fewer than two
-    (a NaN value gives NaN: callers that drop failed runs do so first, and say so).
+    """Standard deviation (ddof = 1) of the values, one per run; NaN for fewer than two.
+    The values must be finite (callers that drop failed runs do so first, and say so).
 
     Examples
     --------
     >>> spread([1.0, 3.0]), spread([2.0])
     (1.4142135623730951, nan)
     """
-    x = np.asarray(values, dtype=float).ravel()
+    x = _finite_values(values)
     return float(x.std(ddof=1)) if x.size > 1 else math.nan
 
 
@@ -124,10 +125,18 @@ def mean_stderr(values) -> tuple[float, float]:
     >>> mean_stderr([1.0, 2.0, 3.0, 4.0])
     (2.5, 0.6454972243679028)
     """
-    x = np.asarray(values, dtype=float).ravel()
+    x = _finite_values(values)
     if not x.size:
         return math.nan, math.nan
     return float(x.mean()), spread(x) / math.sqrt(x.size)
+
+
+def _finite_values(values) -> np.ndarray:
+    """``values`` as a flat float array of finite numbers, else ParameterError naming
+    ``values`` (None, text, NaN, infinities)."""
+    from .validation import finite_array
+
+    return finite_array("values", values, "finite real numbers, one per run").ravel()
 
 
 def plus_minus(
@@ -141,6 +150,18 @@ def plus_minus(
     >>> plus_minus(0.25, 0.01), plus_minus(0.25, None)
     ('0.25 +- 0.01', '0.25 (no standard error from one run)')
     """
+    for name, x in (("mean", mean), ("stderr", stderr)):
+        if (x is not None or name == "mean") and (
+            isinstance(x, bool | np.bool_) or not isinstance(x, numbers.Real)
+        ):
+            raise ParameterError(
+                name, x, "a real number" + (" or None" if name == "stderr" else "")
+            )
+    for name, spec in (("digits", digits), ("se_digits", se_digits)):
+        try:
+            format(0.0, spec)
+        except (TypeError, ValueError):
+            raise ParameterError(name, spec, "a format spec of a float, such as '.6g'") from None
     if stderr is None or math.isnan(stderr):
         return f"{mean:{digits}} (no standard error from one run)"
     return f"{mean:{digits}} +- {stderr:{se_digits}}"

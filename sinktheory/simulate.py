@@ -100,6 +100,8 @@ def first_order_rhs(sink: Sink):
     """
     from .engine.cache import load
 
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.Sink")
     module = load(engine_name(sink))
     params = module.table_of(engine_params(sink), 1)
     L = StateLayout(sink.particles)

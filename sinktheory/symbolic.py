@@ -37,6 +37,7 @@ Examples
 from __future__ import annotations
 
 import functools
+import numbers
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Protocol, runtime_checkable
@@ -44,6 +45,7 @@ from typing import Protocol, runtime_checkable
 import sympy as sp
 
 from .errors import ParameterError
+from .limits import MAX_N
 
 __all__ = [
     "A0",
@@ -391,7 +393,15 @@ def potential_of_ratios(shape: str | WellDefinition) -> sp.Expr:
 def potential(shape: str | WellDefinition, xs: sp.Expr = x, ys: sp.Expr = y) -> sp.Expr:
     """The well V(x, y): paper eqs. (V definition), (V definition2), or another shape."""
     V = substitute_ratios(potential_of_ratios(shape), shape)
-    return V.subs({x: xs, y: ys}, simultaneous=True)
+    return V.subs({x: _expression("xs", xs), y: _expression("ys", ys)}, simultaneous=True)
+
+
+def _expression(name: str, value: object) -> sp.Expr:
+    """``value`` as a SymPy expression, else ParameterError naming ``name``."""
+    try:
+        return sp.sympify(value, strict=True)
+    except (sp.SympifyError, TypeError, ValueError):
+        raise ParameterError(name, value, "a SymPy expression or a number") from None
 
 
 # --- derivatives in atom form ------------------------------------------------------
@@ -568,10 +578,20 @@ class Mechanics:
         return self.coordinates[1 + self.k :]
 
 
+#: The largest particle count of the symbolic derivations (the engine derives k = 1 and
+#: replicates it): separable_hamiltonian takes about 1.5 s at k = 2 and 10 s at k = 4.
+MAX_K = 4
+
+
+def _integer_in(value: object, top: int) -> bool:
+    """Whether ``value`` is an integer (not a bool) in [1, top]."""
+    return not isinstance(value, bool) and isinstance(value, numbers.Integral) and 1 <= value <= top
+
+
 def mechanics(k: int) -> Mechanics:
     """Symbols for the container (X, P) and k particles."""
-    if k < 1:
-        raise ValueError(f"k = {k!r} is not allowed: must be an integer >= 1")
+    if not _integer_in(k, MAX_K):
+        raise ParameterError("k", k, f"an integer in [1, {MAX_K}]")
     if k == 1:
         xs, ys, pxs, pys = (x,), (y,), (p_x,), (p_y,)
     else:
@@ -919,7 +939,6 @@ def _linear_coefficient(ay: sp.Expr) -> sp.Expr:
     return sp.simplify(-slope.subs(y, 0))
 
 
-@functools.cache
 def rescaled_equations(shape: str = "flat", n_value: int | None = None) -> RescaledSystem:
     """Paper eqs. (x-oscill) and (y-oscill), derived from the Lagrangian.
 
@@ -930,10 +949,16 @@ def rescaled_equations(shape: str = "flat", n_value: int | None = None) -> Resca
         integer, e.g. 1, where the y-term of the well adds a linear restoring force.
     """
     if not isinstance(shape_definition(shape), Shape):
-        raise ValueError(
-            "rescaled_equations: the paper's rescaling (by alpha - beta) applies to the "
-            "registered shapes only; a user's well has normal_mode(well)"
-        )
+        why = "the paper's rescaling is for registered shapes only; a user's well has normal_mode"
+        raise ParameterError("shape", "a user's well", f"one of {tuple(SHAPES)}", why=why)
+    if n_value is not None and not _integer_in(n_value, MAX_N):
+        raise ParameterError("n_value", n_value, f"None or an integer in [1, {MAX_N}]")
+    return _rescaled_equations(shape, None if n_value is None else int(n_value))
+
+
+@functools.cache
+def _rescaled_equations(shape: str, n_value: int | None) -> RescaledSystem:
+    """:func:`rescaled_equations` of checked arguments (cached)."""
     if n_value is None:
         m = sp.Symbol("m", integer=True, nonnegative=True)  # n = m + 2 >= 2
         nv = m + 2

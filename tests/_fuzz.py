@@ -547,6 +547,12 @@ def _overrides():
         s + "compare.efficiency.work": dict(samples_per_period=4),
         s + "billiard.impact.kinetic_energy": dict(vx=0.1, vy=0.2, vc=0.3),
         s + "damped.simulate_inelastic": dict(settings=small),
+        # leaksb: one run, whose standard error is NaN by the package's rule (runstats.py),
+        # so a hostile value read as one run (a number, [1.0, 2.0]) may give NaN too
+        s + "runstats.ensemble_mean": dict(energy_runs=[[0.5, 0.4]]),
+        s + "runstats.mean_stderr": dict(values=[0.5]),
+        s + "runstats.spread": dict(values=[0.5]),
+        s + "plot.floquet.plot_fig7": dict(ns=(2,), count=20),
     }  # fmt: skip
 
 
@@ -650,38 +656,20 @@ PENDING_BY_REASON = {
         "sinktheory.equilibrium.prediction.start_total_energy",  # sink=None: AttributeError
         "sinktheory.glossary.modern_argv",  # argv=None: TypeError
         "sinktheory.glossary.option_of",  # name=None: AttributeError
-        "sinktheory.layout.StateLayout",  # particles=nan: nonfinite
         "sinktheory.layout.pack_params",  # sink=None: AttributeError
         "sinktheory.model.Reach",  # x=nan: nonfinite
-        "sinktheory.nnm.backbone.inphase_pieces",  # ds=2.5: Hang
         "sinktheory.nnm.modes.fixed_container_amplitude",  # sink=None: AttributeError
         "sinktheory.nnm.system.parameter_names",  # system=None: AttributeError
-        "sinktheory.plot.floquet.plot_fig7",  # beta_range=None: TypeError
-        "sinktheory.plot.recurrence.plot_recurrence",  # ax=True: AttributeError
         "sinktheory.plot.simulate.well_title",  # well=None: AttributeError
-        "sinktheory.plot.well.plot_well",  # ax=True: AttributeError
         "sinktheory.progress.ProgressBar",  # delay=None: TypeError
         "sinktheory.results.attribute",  # x=nan: nonfinite
         "sinktheory.results.plain",  # x=object(): TypeError
-        "sinktheory.runstats.ensemble_mean",  # energy_runs=[1.0, 2.0]: nonfinite
-        "sinktheory.runstats.mean_stderr",  # values=None: nonfinite
-        "sinktheory.runstats.plus_minus",  # digits=None: ValueError
-        "sinktheory.runstats.spread",  # values=None: nonfinite
         "sinktheory.scenes.estimate",  # number=None: KeyError
         "sinktheory.scenes.orbits.false_call",  # runs=None: TypeError
         "sinktheory.scenes.trajectories.indicators",  # periods=None: TypeError
         "sinktheory.scenes.wells.level_line_curvature",  # h=None: TypeError
-        "sinktheory.simulate.first_order_rhs",  # sink=None: AttributeError
         "sinktheory.sweep.grid.parse_value",  # text=None: AttributeError
-        "sinktheory.sweep.runner.execute",  # sweep=None: AttributeError
         "sinktheory.symbolic.denominator",  # s=None: TypeError
-        "sinktheory.symbolic.equations_of_motion",  # k=None: TypeError
-        "sinktheory.symbolic.hamiltonian",  # k=None: TypeError
-        "sinktheory.symbolic.lagrangian",  # k=None: TypeError
-        "sinktheory.symbolic.mass_matrix",  # k=None: TypeError
-        "sinktheory.symbolic.potential",  # xs=None: SympifyError
-        "sinktheory.symbolic.rescaled_equations",  # n_value=-1: AssertionError
-        "sinktheory.symbolic.separable_hamiltonian",  # k=None: TypeError
         "sinktheory.symbolic.y_invariance",  # V=None: TypeError
         "sinktheory.validation.choice",  # options=None: TypeError
         "sinktheory.validation.fits_memory",  # nbytes=None: TypeError

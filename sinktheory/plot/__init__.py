@@ -12,3 +12,14 @@ worker) never loads it.
 
 #: Nothing here but the submodules (import them by name).
 __all__: list[str] = []
+
+
+def checked_axes(ax):
+    """``ax`` if it is None or a matplotlib Axes, else ParameterError naming ``ax``."""
+    from matplotlib.axes import Axes
+
+    from ..errors import ParameterError
+
+    if ax is not None and not isinstance(ax, Axes):
+        raise ParameterError("ax", ax, "a matplotlib Axes or None")
+    return ax

@@ -20,9 +20,13 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import SymmetricalLogLocator
 
 from .. import validation as v
+from ..errors import ParameterError
 from ..floquet import StabilityScan, model_problem, pure_problem, scan
 
 __all__ = ["plot_fig7", "plot_scan", "plot_tongues"]
+
+#: Most panels (wall stiffnesses) of :func:`plot_fig7`.
+MAX_PANELS = 10
 
 _LABEL = {"lam": r"$\Lambda$", "beta": r"$\beta$"}
 _CAP = 1e300
@@ -126,12 +130,21 @@ def plot_fig7(
     -------
     matplotlib.figure.Figure
     """
-    ns = tuple(v.positive_int("n", n) for n in ns)
+    if isinstance(ns, str) or not hasattr(ns, "__len__") or not 1 <= len(ns) <= MAX_PANELS:
+        raise ParameterError("ns", ns, f"a sequence of 1 to {MAX_PANELS} wall stiffnesses n")
+    ns = tuple(v.positive_int("ns", n) for n in ns)
+    pair = "two finite numbers (from, to)"
+    lo_hi = v.finite_array("beta_range", beta_range, pair, ndim=1)
+    if lo_hi.size != 2:
+        raise ParameterError("beta_range", f"{lo_hi.size} numbers", pair)
+    lo, hi = lo_hi
+    if title is not None and not isinstance(title, str):
+        raise ParameterError("title", title, "a text or None")
     fig = Figure(figsize=(8, 3.2 * len(ns) + 0.5), layout="constrained")
     for k, n in enumerate(ns):
         ax = fig.add_subplot(len(ns), 1, k + 1)
         problem = model_problem(alpha, n, gamma=gamma, shape=shape)
-        result = scan(problem, beta_range[0], beta_range[1], count)
+        result = scan(problem, lo, hi, count)
         _draw_scan(
             ax, result, rf"{shape} well, $\alpha$ = {alpha:g}, $\gamma$ = {gamma:g}, n = {n}"
         )

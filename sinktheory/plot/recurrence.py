@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from ..glossary import renamed
 from ..recurrence import epsilon_for_rate, recurrence_image
+from . import checked_axes
 
 __all__ = ["plot_recurrence"]
 
@@ -22,6 +23,7 @@ def plot_recurrence(series, eps: float | None = None, ax=None, title: str | None
     """Draw the recurrence plot of ``series`` (ones dark, zeros white); return the Figure."""
     eps = epsilon_for_rate(series) if eps is None else eps
     img = recurrence_image(series, eps)  # checks the series and eps
+    checked_axes(ax)
     last = len(series) - 1
     if ax is None:
         from matplotlib.figure import Figure

@@ -5,11 +5,16 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from ..errors import ParameterError
 from ..glossary import renamed
 from ..model import Well
+from ..validation import positive_int
+from . import checked_axes
 
 __all__ = ["LEVEL_FRACTIONS", "plot_user_well", "plot_well"]
 
+#: Most grid points per axis of a level-line plot (16 M points, 128 MB an array).
+MAX_GRID = 4001
 #: Level lines drawn, as fractions of the energy E (the outermost one, E itself, is bold).
 LEVEL_FRACTIONS = (1e-3, 1e-2, 0.05, 0.15, 0.35, 0.65, 1.0)
 
@@ -39,6 +44,10 @@ def plot_well(well: Well, particle_energy: float = 0.5, ax=None, points: int = 3
     >>> fig.axes[0].get_xlabel()
     '$x$'
     """
+    if not isinstance(well, Well):
+        raise ParameterError("well", well, "a sinktheory.Well (a user's well: plot_user_well)")
+    points = positive_int("points", points, minimum=2, maximum=MAX_GRID)
+    checked_axes(ax)
     energy = particle_energy
     x_max, y_max = well.reach(energy)
     title = (

@@ -186,10 +186,13 @@ def execute(
     before the store is opened (the command prints the estimate there, so a refused
     argument stays one line)."""
     start = time.perf_counter()
+    if not isinstance(sweep, Sweep):
+        raise ParameterError("sweep", sweep, "a Sweep (from Sweep.make)")
     workers = None if workers is None else v.positive_int("workers", workers)
-    for name, flag in (("resume", resume), ("repair", repair)):
-        if not isinstance(flag, bool):
-            raise ParameterError(name, flag, "True or False")
+    for name, flag in (("resume", resume), ("repair", repair), ("progress", progress)):
+        v.flag(name, flag)
+    if announce is not None and not callable(announce):
+        raise ParameterError("announce", announce, "a function of no arguments or None")
     if store is not None:
         store = _checked_path(store)  # before reaching a scheduler or computing anything
     # reach the scheduler first: a bad address must not leave a new store behind

@@ -179,6 +179,35 @@ def _fixed_leaks():
         (lambda: wall_ratios(None), "shape"),  # ValueError (in 11 symbolic functions)
         (lambda: potential([1]), "shape"),  # TypeError (unhashable)
         (lambda: measure_relaxation(**{**relaxation, "target": 1e308}), "target"),  # NaN z
+        *_fixed_leaks_leaksb(),
+    ]
+
+
+def _fixed_leaks_leaksb():
+    """The leaks fixed on branch leaksb (glossary ... worklimit of the pending list)."""
+    import math
+
+    from sinktheory.canonical import FIG8_WELL
+    from sinktheory.layout import StateLayout
+    from sinktheory.plot.floquet import plot_fig7
+    from sinktheory.plot.well import plot_well
+    from sinktheory.runstats import mean_stderr, plus_minus, spread
+    from sinktheory.simulate import first_order_rhs
+    from sinktheory.sweep.runner import execute
+    from sinktheory.symbolic import lagrangian, rescaled_equations
+
+    return [
+        (lambda: mean_stderr(None), "values"),  # NaN returned
+        (lambda: spread([1.0, math.inf]), "values"),  # NaN returned
+        (lambda: plus_minus(1.0, 0.1, digits=None), "digits"),  # ValueError
+        (lambda: lagrangian(None), "k"),  # TypeError
+        (lambda: rescaled_equations("flat", -1), "n_value"),  # AssertionError
+        (lambda: rescaled_equations("flat", [2]), "n_value"),  # TypeError (unhashable)
+        (lambda: execute(None), "sweep"),  # AttributeError
+        (lambda: plot_fig7(beta_range=None), "beta_range"),  # TypeError
+        (lambda: plot_well(FIG8_WELL, ax=True), "ax"),  # AttributeError
+        (lambda: first_order_rhs(None), "sink"),  # AttributeError
+        (lambda: StateLayout(math.nan), "particles"),  # NaN kept
     ]
 
 
