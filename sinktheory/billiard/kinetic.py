@@ -53,6 +53,8 @@ def wall_moment(table: Table) -> float:
     W'^2 dx / sqrt(1 + W'^2))."""
     from scipy.integrate import quad
 
+    if not isinstance(table, Table):
+        raise ParameterError("table", table, "a sinktheory.billiard.table.Table")
     total = 0.0
     for piece in table.pieces:
 
@@ -107,10 +109,13 @@ def kinetic_relaxation(table: Table, particles: int, mass: float, total_energy: 
     from scipy import stats
     from scipy.optimize import brentq
 
-    from ..equilibrium.prediction import law_chain
+    from ..equilibrium.prediction import check_fraction, law_chain
 
     k = v.positive_int("particles", particles)
     e = v.positive("total_energy", total_energy)
+    fraction = check_fraction(fraction)
+    if not 0 < v.finite("start", start) <= 1:
+        raise ParameterError("start", start, "a number in (0, 1]")
     law = stats.beta(1, k)
     s = np.linspace(0.0, 1.0, 201)
     d1 = kinetic_coefficients(table, k, mass, e, e * s)[0] / e
