@@ -596,7 +596,6 @@ PENDING_BY_REASON = {
     "written yet": (
         "sinktheory.attachments.start_rows",  # att=None: AttributeError
         "sinktheory.basin.numeric",  # expr=None: AttributeError
-        "sinktheory.bifurcation.sections",  # sinks=None: TypeError
         "sinktheory.billiard.convergence.wall_ratios",  # well=None: AttributeError
         "sinktheory.billiard.convergence.wall_terms",  # well=None: AttributeError
         "sinktheory.billiard.impact.kinetic_energy",  # vc=None: TypeError
@@ -639,8 +638,6 @@ PENDING_BY_REASON = {
         "sinktheory.ensemble.start_positions",  # settings=None: AttributeError
         "sinktheory.ensemble.start_state",  # container_energy=None: TypeError
         "sinktheory.equilibrium.ergodicity.verdict",  # lambda1=None: TypeError
-        "sinktheory.equilibrium.lifetime.check_one_shell",  # settings=None: AttributeError
-        "sinktheory.equilibrium.lifetime.one_shell_box",  # settings=None: AttributeError
         "sinktheory.equilibrium.prediction.settling_time",  # fraction=None: TypeError
         "sinktheory.equilibrium.prediction.start_total_energy",  # sink=None: AttributeError
         "sinktheory.glossary.modern_argv",  # argv=None: TypeError
