@@ -360,6 +360,8 @@ def start_total_energy(sink: Sink, container_energy: float, seed: int = 0, runs:
     """
     from ..ensemble import random_positions, start_state, total_energy
 
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     settings = RunSettings(container_energy=container_energy, runs=runs, seed=seed)
     settings.check(sink)
     rows = start_state(sink, container_energy, random_positions(settings, sink.particles))
