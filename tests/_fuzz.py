@@ -625,7 +625,6 @@ PENDING_BY_REASON = {
         "sinktheory.design.report.fmt",  # digits=None: ValueError
         "sinktheory.engine.blocks.groups_of",  # steps=None: TypeError
         "sinktheory.engine.cache.user_well",  # name=[]: TypeError
-        "sinktheory.engine.core.Ensemble",  # dq='x': ValueError
         "sinktheory.ensemble.default_energy_bound",  # tol=1e+308: nonfinite
         "sinktheory.ensemble.engine_name",  # sink=None: AttributeError
         "sinktheory.ensemble.join_values",  # q=None: AttributeError

@@ -52,6 +52,8 @@ def rigid_shell_states(table: Table, particles: int, mass: float, total_energy: 
     k = v.positive_int("particles", particles)
     e = v.positive("total_energy", total_energy)
     mu = v.positive("mass", mass) / k
+    if not math.isfinite(2 * e / mu):  # the particles' speeds squared
+        raise ParameterError("total_energy", total_energy, "a number > 0 whose speeds are finite")
     runs = v.positive_int("runs", runs)
     if not 0 <= v.finite("s", s) < 1:
         raise ParameterError("s", s, "a fraction in [0, 1)")

@@ -203,6 +203,8 @@ def law_chain(pdf, s_points, drift, *, cells: int = 150) -> LawChain:
     p = np.asarray(pdf(nodes), dtype=float) * weights
     masses = p.sum(axis=1)
     total = masses.sum()
+    if not (np.isfinite(total) and total > 0):
+        raise NumericalError(f"law_chain: the density integrates to {total:g} over {cells} cells")
     p, masses = p / total, masses / total
     centres = (p * nodes).sum(axis=1) / np.maximum(masses, 1e-300)
     d1 = np.interp(nodes, s_points, drift)
