@@ -20,6 +20,7 @@ A diagram is a pure function of its parameters: the same input gives the same po
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 
 import numpy as np
@@ -206,6 +207,8 @@ def sections(
     >>> bool((both[1] == section(wells[1], transient=2, count=3)).all())
     True
     """
+    if isinstance(sinks, Sink) or not isinstance(sinks, Iterable):
+        raise ParameterError("sinks", sinks, "a list of sinktheory.model.Sink objects")
     sinks = list(sinks)
     for sink in sinks:
         if not isinstance(sink, Sink):

@@ -40,7 +40,7 @@ import math
 import numpy as np
 
 from .. import validation as v
-from ..errors import ParameterError
+from ..errors import NumericalError, ParameterError
 from ..glossary import renamed
 from .table import Table
 
@@ -53,6 +53,8 @@ def wall_moment(table: Table) -> float:
     W'^2 dx / sqrt(1 + W'^2))."""
     from scipy.integrate import quad
 
+    if not isinstance(table, Table):
+        raise ParameterError("table", table, "a sinktheory.billiard.table.Table")
     total = 0.0
     for piece in table.pieces:
 
@@ -107,13 +109,18 @@ def kinetic_relaxation(table: Table, particles: int, mass: float, total_energy: 
     from scipy import stats
     from scipy.optimize import brentq
 
-    from ..equilibrium.prediction import law_chain
+    from ..equilibrium.prediction import check_fraction, law_chain
 
     k = v.positive_int("particles", particles)
     e = v.positive("total_energy", total_energy)
+    fraction = check_fraction(fraction)
+    if not 0 < v.finite("start", start) <= 1:
+        raise ParameterError("start", start, "a number in (0, 1]")
     law = stats.beta(1, k)
     s = np.linspace(0.0, 1.0, 201)
     d1 = kinetic_coefficients(table, k, mass, e, e * s)[0] / e
+    if not np.all(np.isfinite(d1)):
+        raise NumericalError(f"kinetic_relaxation: the drift D1 overflows at mass={mass:g}")
     chain = law_chain(law.pdf, s, d1, cells=cells)
     lam = chain.spectrum[0]
     mu = 1 / (k + 1)
@@ -124,5 +131,10 @@ def kinetic_relaxation(table: Table, particles: int, mass: float, total_energy: 
     t = 0.01
     while excess(t) > 0 and t < 1e7:
         t *= 1.5
+    if excess(t) > 0:
+        raise NumericalError(
+            f"kinetic_relaxation: the mean is not within fraction={fraction:g} of the law's "
+            f"after {t:.3g} periods"
+        )
     settle = float(brentq(excess, t / 1.5, t, xtol=1e-3)) if t > 0.01 else 0.0
     return settle, -1 / float(np.sort(lam)[-2])

@@ -52,9 +52,18 @@ def rigid_shell_states(table: Table, particles: int, mass: float, total_energy: 
     k = v.positive_int("particles", particles)
     e = v.positive("total_energy", total_energy)
     mu = v.positive("mass", mass) / k
+    if not math.isfinite(2 * e / mu):  # the particles' speeds squared
+        raise ParameterError("total_energy", total_energy, "a number > 0 whose speeds are finite")
     runs = v.positive_int("runs", runs)
-    if not 0 <= s < 1:
+    if not 0 <= v.finite("s", s) < 1:
         raise ParameterError("s", s, "a fraction in [0, 1)")
+    if not isinstance(table, Table):
+        raise ParameterError("table", table, "a sinktheory.billiard.table.Table")
+    if not isinstance(rng, np.random.Generator):
+        raise ParameterError("rng", rng, "a numpy.random.Generator")
+    larger = ("runs", runs) if runs >= k else ("particles", particles)
+    v.fits_memory(*larger, 112.0 * runs * k, f"{runs} run(s) x {k} particle(s)",
+                  "fewer runs x particles")  # fmt: skip
     bx, by = table.box
     pos = np.empty((runs * k, 2))
     filled = 0

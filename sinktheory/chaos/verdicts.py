@@ -49,7 +49,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import validation as v
 from ..errors import ParameterError
+from ..limits import MAX_PERIODS
 from ..runstats import mean_stderr, plus_minus
 
 __all__ = [
@@ -76,7 +78,10 @@ THRESHOLD_FACTOR = 3.0
 
 def threshold(periods: int) -> float:
     """THRESHOLD_FACTOR ln(t) / t at t = periods x 2 pi (per unit time)."""
-    t = periods * 2.0 * math.pi
+    count = v.positive("periods", periods)
+    if count > MAX_PERIODS:
+        raise ParameterError("periods", periods, f"a number in (0, {MAX_PERIODS:g}]")
+    t = count * 2.0 * math.pi
     return THRESHOLD_FACTOR * math.log(t) / t
 
 
@@ -93,7 +98,13 @@ def chaotic(mean, se, periods: int):
     sinktheory.errors.ParameterError: se = nan is not allowed: must be finite standard \
 errors >= 0 (from two runs or more: one run has none, so no verdict)
     """
-    mean, se = np.asarray(mean, dtype=float), np.asarray(se, dtype=float)
+    mean, se = v.real_array("mean", mean), v.real_array("se", se)
+    try:
+        np.broadcast_shapes(mean.shape, se.shape)
+    except ValueError:
+        raise ParameterError(
+            "se", f"shape {se.shape}", f"one per mean, shape {mean.shape}"
+        ) from None
     bad = ~(np.isfinite(se) & (se >= 0))
     if bad.any():
         raise ParameterError(
@@ -213,7 +224,7 @@ def split(lambda1, periods: float, starts: str = "") -> Split:
     """
     from ..errors import ParameterError
 
-    lam = np.asarray(lambda1, dtype=float).ravel()
+    lam = v.real_array("lambda1", lambda1).ravel()
     if lam.size == 0 or not np.all(np.isfinite(lam)):
         raise ParameterError("lambda1", "empty or not finite", "finite values, one per run")
     cut = threshold(periods)

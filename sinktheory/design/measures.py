@@ -48,7 +48,7 @@ Examples
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -206,8 +206,10 @@ def horizons_of(text: str | Sequence[int], periods: int) -> tuple[int, ...]:
             raise ParameterError(
                 "horizons", text, "'auto' or periods separated by '+', e.g. 100+500+1500"
             ) from None
-    else:
+    elif isinstance(text, Iterable):
         values = list(text)
+    else:
+        raise ParameterError("horizons", text, "'auto', periods separated by '+', or a list")
     out = [v.positive_int("horizons", x, maximum=periods) for x in values]
     if len(set(out)) != len(out) or not out:
         raise ParameterError("horizons", text, "distinct periods (at least one)")

@@ -31,7 +31,7 @@ import numpy as np
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from ..model import DAMPING_KINDS
 from ..progress import ProgressBar, chunks
-from ..validation import nonnegative
+from ..validation import choice, nonnegative, real_array
 from . import blocks
 from .cache import cost_table_path, load
 
@@ -111,11 +111,19 @@ class Ensemble:
         damping: float = 0.0,
         damping_kind: str = "contact",
     ):
-        self.module = load(system)
+        if not isinstance(system, str):
+            raise ParameterError("system", system, "the name of an engine system")
+        try:
+            self.module = load(system)
+        except KeyError as e:
+            raise ParameterError("system", system, "the name of an engine system",
+                                 why=e.args[0]) from None  # fmt: skip
         self.system = system
         # copies: the engine advances its state in place and must not touch the caller's
-        self.q = np.array(q, dtype=float, order="C")
-        self.v = np.array(v, dtype=float, order="C")
+        self.q = np.array(real_array("q", q), order="C")
+        self.v = np.array(real_array("v", v), order="C")
+        if self.q.ndim != 2:
+            raise ParameterError("q", f"shape {self.q.shape}", "an array (D, R)")
         D, R = self.q.shape
         mod = self.module
         C = mod.MEMBER_COORDS
@@ -136,18 +144,15 @@ class Ensemble:
         if dq is None:
             dq = np.zeros((D, 0, R))
             dv = np.zeros((D, 0, R))
-        self.dq = np.array(dq, dtype=float, order="C")
-        self.dv = np.array(dv, dtype=float, order="C")
+        self.dq = np.array(real_array("dq", dq), order="C")
+        self.dv = np.array(real_array("dv", dv), order="C")
         if self.dq.shape != self.dv.shape or self.dq.shape[::2] != (D, R):
             raise ParameterError("dq, dv", f"shapes {self.dq.shape}", f"({D}, M, {R}) each")
-        if tangent not in TANGENT_MODES:
-            raise ParameterError("tangent", tangent, f"one of {tuple(TANGENT_MODES)}")
-        self.tangent = tangent
+        self.tangent = tangent = choice("tangent", tangent, tuple(TANGENT_MODES))
         damping = nonnegative("damping", damping)
         if damping and not mod.DAMPED:
             raise ParameterError("damping", damping, f"0 (system {system} has no damping)")
-        if damping_kind not in DAMPING_KINDS:
-            raise ParameterError("damping_kind", damping_kind, f"one of {DAMPING_KINDS}")
+        damping_kind = choice("damping_kind", damping_kind, tuple(DAMPING_KINDS))
         self.damping = damping
         self.weighted = damping_kind == "contact"
         self.diss = np.zeros((2, R))  # work taken by the damping, integral of E_shared
@@ -161,7 +166,8 @@ class Ensemble:
         self._seconds: dict = {}  # plan -> seconds per segment, as last timed (_Chooser)
         self._warm = False  # the compiled code has run once in this ensemble
         total = self.energies()[0]
-        self.h0 = total if reference_energy is None else np.asarray(reference_energy, float)
+        self.h0 = total if reference_energy is None else real_array("reference_energy",
+                                                                    reference_energy)  # fmt: skip
         if M and tangent != "none":
             # start from unit vectors so that the logs measure growth from |delta(0)| = 1
             norms = np.sqrt((self.dq**2).sum(0) + (self.dv**2).sum(0))

@@ -504,6 +504,18 @@ def compare_with_law(
     )
 
 
+def _check_run(sink, settings) -> None:
+    """Refuse a ``sink`` that is no Sink, ``settings`` that are no RunSettings, or settings
+    the sink does not allow (:meth:`~sinktheory.model.RunSettings.check`)."""
+    from ..model import RunSettings, Sink
+
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    if not isinstance(settings, RunSettings):
+        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
+    settings.check(sink)
+
+
 def one_shell_box(sink, settings) -> float:
     """The largest start box, up to ``settings.box``, whose runs share one energy shell:
     particles starting at rest in it add at most ENERGY_SLACK E0 to a run's total energy
@@ -516,6 +528,8 @@ def one_shell_box(sink, settings) -> float:
     0.00751
     """
     from dataclasses import replace
+
+    _check_run(sink, settings)
 
     def fits(box: float) -> bool:
         spread = replace(settings, box=box).total_energy_bound(sink) - settings.container_energy
@@ -588,15 +602,10 @@ def measure_lifetimes(
     >>> c.samples, c.runs, round(c.law.total_energy, 6)
     (41, 2, 0.5)
     """
-    from ..model import RunSettings, Sink
     from ..simulate import simulate
     from .law import equilibrium_law
 
-    if not isinstance(sink, Sink):
-        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
-    if not isinstance(settings, RunSettings):
-        raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
-    settings.check(sink)
+    _check_run(sink, settings)
     v.positive_int("transient", transient, minimum=0, maximum=settings.periods - 4)
     fractions = check_fractions(fractions)
     sim = simulate(sink, settings, tol=tol, progress=progress)

@@ -49,7 +49,7 @@ from ..glossary import renamed
 from ..layout import StateLayout
 from ..model import Sink, Well
 from ..twins import python_kernel
-from .area import CLOSED_FORMS, area_ratio, scaled_energy
+from .area import CLOSED_FORMS, _check_well, area_ratio, scaled_energy
 
 __all__ = [
     "basin_points",
@@ -112,6 +112,7 @@ def particle_energies(
     >>> e.shape, bool(np.allclose(e.sum(axis=1), 0.4))
     ((5, 3), True)
     """
+    _check_well(well)
     k = v.positive_int("particles", particles, maximum=10**15)
     total = v.positive("total", total)
     size = v.positive_int("size", size, maximum=10**15)
@@ -145,9 +146,11 @@ def basin_points(well: Well, energies, rng: np.random.Generator) -> np.ndarray:
     >>> p.shape
     (2, 2)
     """
-    e = np.asarray(energies, dtype=float)
-    if not np.all(np.isfinite(e) & (e > 0)):
-        raise ParameterError("energies", e.tolist(), "finite numbers > 0")
+    _check_well(well)
+    allowed = "finite numbers > 0, at least one"
+    e = v.finite_array("energies", energies, allowed)
+    if e.size == 0 or not np.all(e > 0):
+        raise ParameterError("energies", e.tolist(), allowed)
     rng = _check_rng(rng)
     potential = _potential(well)
     flat = e.ravel()

@@ -89,6 +89,7 @@ __all__ = [
     "check_fraction",
     "check_reading",
     "EXTRAPOLATION",
+    "MAX_CHAIN_CELLS",
     "fit_line",
     "LADDER",
     "law_chain",
@@ -171,6 +172,10 @@ class LawChain:
         return first, np.sqrt(np.maximum(second - first**2, 0.0))
 
 
+#: Most cells of :func:`law_chain` (its spectrum's eigenvectors, cells^2 numbers: 200 MB).
+MAX_CHAIN_CELLS = 5000
+
+
 def law_chain(pdf, s_points, drift, *, cells: int = 150) -> LawChain:
     """The law-constrained chain of the density ``pdf`` of s on [0, 1] with the drift
     ``drift`` (s per period) given at ``s_points`` (linear in between, constant beyond).
@@ -182,7 +187,13 @@ def law_chain(pdf, s_points, drift, *, cells: int = 150) -> LawChain:
     >>> round(float(c.masses.sum()), 12), round(float(c.masses @ c.centres), 6)
     (1.0, 0.333333)
     """
-    cells = v.positive_int("cells", cells, minimum=10)
+    cells = v.positive_int(
+        "cells",
+        cells,
+        minimum=10,
+        maximum=MAX_CHAIN_CELLS,
+        why=lambda c: "its spectrum's eigenvectors hold cells^2 numbers",
+    )
     s_points = np.asarray(s_points, dtype=float)
     drift = np.asarray(drift, dtype=float)
     x, w = np.polynomial.legendre.leggauss(_NODES)
@@ -192,6 +203,8 @@ def law_chain(pdf, s_points, drift, *, cells: int = 150) -> LawChain:
     p = np.asarray(pdf(nodes), dtype=float) * weights
     masses = p.sum(axis=1)
     total = masses.sum()
+    if not (np.isfinite(total) and total > 0):
+        raise NumericalError(f"law_chain: the density integrates to {total:g} over {cells} cells")
     p, masses = p / total, masses / total
     centres = (p * nodes).sum(axis=1) / np.maximum(masses, 1e-300)
     d1 = np.interp(nodes, s_points, drift)
@@ -349,6 +362,8 @@ def start_total_energy(sink: Sink, container_energy: float, seed: int = 0, runs:
     """
     from ..ensemble import random_positions, start_state, total_energy
 
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     settings = RunSettings(container_energy=container_energy, runs=runs, seed=seed)
     settings.check(sink)
     rows = start_state(sink, container_energy, random_positions(settings, sink.particles))
