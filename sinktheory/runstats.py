@@ -149,11 +149,15 @@ def plus_minus(
     --------
     >>> plus_minus(0.25, 0.01), plus_minus(0.25, None)
     ('0.25 +- 0.01', '0.25 (no standard error from one run)')
+    >>> plus_minus(np.array(0.25), np.float64(0.01))  # numpy's scalars and 0-d arrays too
+    '0.25 +- 0.01'
+
     """
     for name, x in (("mean", mean), ("stderr", stderr)):
-        if (x is not None or name == "mean") and (
-            isinstance(x, bool | np.bool_) or not isinstance(x, numbers.Real)
-        ):
+        if x is None and name == "stderr":
+            continue
+        scalar = x.item() if isinstance(x, np.ndarray) and x.ndim == 0 else x  # as numpy gives
+        if isinstance(scalar, bool | np.bool_) or not isinstance(scalar, numbers.Real):
             raise ParameterError(
                 name, x, "a real number" + (" or None" if name == "stderr" else "")
             )
