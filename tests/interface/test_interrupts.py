@@ -188,37 +188,28 @@ def test_signal_ends_a_long_command_with_one_line(case, tmp_path):
         _resumable(argv, store)
 
 
-def test_interrupt_behind_a_compiled_call_is_an_interrupt(capsys, monkeypatch):
-    """A signal acted on while numba boxes a compiled call's results surfaces as a
-    SystemError caused by KeyboardInterrupt: it ends the command as an interrupt."""
+@pytest.mark.parametrize(
+    "error",
+    [
+        # a signal acted on while numba boxes a compiled call's results
+        SystemError("returned a result with an exception set"),
+        # Ctrl-C while a C extension module initialises (SciPy's, on a command's first
+        # import of it): a rigid simulate exited 1 with a traceback (full suite, 2026-11-26)
+        ImportError("initialization failed"),
+    ],
+    ids=["boxing", "import"],
+)
+def test_interrupt_behind_another_error_is_an_interrupt(error, capsys, monkeypatch):
+    """An error caused by KeyboardInterrupt ends the command as an interrupt."""
     from sinktheory.commands import period
 
-    def boxing_interrupted(args):
+    def interrupted(args):
         try:
             raise KeyboardInterrupt
         except KeyboardInterrupt as e:
-            raise SystemError("returned a result with an exception set") from e
+            raise error from e
 
-    monkeypatch.setattr(period, "run", boxing_interrupted)
-    with pytest.raises(SystemExit) as info:
-        run_cli(["period", "--n", "2", "--amplitude", "1"], capsys)
-    assert info.value.code == 130
-    assert capsys.readouterr().err == "sinktheory period: interrupted\n"
-
-
-def test_interrupt_behind_an_import_is_an_interrupt(capsys, monkeypatch):
-    """Ctrl-C while a C extension module initialises (SciPy's, on a command's first import
-    of it) surfaces as ImportError("initialization failed") caused by KeyboardInterrupt:
-    it ended a rigid simulate with status 1 and a traceback (full suite, 2026-11-26)."""
-    from sinktheory.commands import period
-
-    def import_interrupted(args):
-        try:
-            raise KeyboardInterrupt
-        except KeyboardInterrupt as e:
-            raise ImportError("initialization failed") from e
-
-    monkeypatch.setattr(period, "run", import_interrupted)
+    monkeypatch.setattr(period, "run", interrupted)
     with pytest.raises(SystemExit) as info:
         run_cli(["period", "--n", "2", "--amplitude", "1"], capsys)
     assert info.value.code == 130
