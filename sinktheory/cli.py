@@ -176,12 +176,12 @@ def _main(argv: list[str], command: str | None) -> int:
 
             limit = interactive_limit(hours)
         if getattr(args, "quiet", False):  # no note before compiling an engine either
-            from .engine.cache import quiet_compilation
-
-            quiet = quiet_compilation()
+            notes = contextlib.nullcontext()
         else:
-            quiet = contextlib.nullcontext()
-        with limit, quiet:
+            from .engine.cache import compilation_notes
+
+            notes = compilation_notes()
+        with limit, notes:
             out = args.module.run(args)
         write_outputs(out.writers)
     except ParameterError as e:

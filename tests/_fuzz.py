@@ -572,7 +572,7 @@ EXEMPT = {
     "sinktheory.commands.derive.renderings": "no parameters",
     "sinktheory.engine.blocks.machine_key": "no parameters",
     "sinktheory.engine.cache.cache_dir": "no parameters",
-    "sinktheory.engine.cache.quiet_compilation": "no parameters",
+    "sinktheory.engine.cache.compilation_notes": "no parameters",
     "sinktheory.engine.systems.henon_heiles": "no parameters",
     "sinktheory.engine.systems.two_dof_duffing": "no parameters",
     "sinktheory.progress.HeldSignals": "no parameters",

@@ -38,6 +38,7 @@ from ..errors import ParameterError
 
 __all__ = [
     "cache_dir",
+    "compilation_notes",
     "compile_note",
     "compiled",
     "COMPILE_SECONDS",
@@ -46,7 +47,6 @@ __all__ = [
     "import_generated",
     "LLVM_OPTIONS",
     "load",
-    "quiet_compilation",
     "sink_name",
     "user_well",
     "well_definition",
@@ -220,15 +220,17 @@ def compiled(name: str) -> bool:
     return any((cache_dir() / "__pycache__").glob(f"{stem}.advance-*.nbi"))
 
 
-#: Whether :func:`load` notes on stderr that it is about to compile (off inside
-#: :func:`quiet_compilation`, i.e. with a command's ``--quiet``).
-_NOTE: ContextVar[bool] = ContextVar("sinktheory_compile_note", default=True)
+#: Whether :func:`load` notes on stderr that it is about to compile: only inside
+#: :func:`compilation_notes`, which the command line enters unless ``--quiet``.  A library
+#: call (a notebook, a sweep's worker) writes nothing to stderr.
+_NOTE: ContextVar[bool] = ContextVar("sinktheory_compile_note", default=False)
 
 
 @contextlib.contextmanager
-def quiet_compilation() -> Iterator[None]:
-    """No note from :func:`load` before a compilation (the commands' ``--quiet``)."""
-    token = _NOTE.set(False)
+def compilation_notes() -> Iterator[None]:
+    """A note from :func:`load` before each first compilation inside (the commands, unless
+    ``--quiet``)."""
+    token = _NOTE.set(True)
     try:
         yield
     finally:
@@ -252,7 +254,7 @@ def compile_note(name: str) -> str:
 def load(name: str):
     """The compiled engine module of system ``name`` (generated on first use; the first
     compilation, about :data:`COMPILE_SECONDS`, is announced on stderr by
-    :func:`compile_note` unless inside :func:`quiet_compilation`)."""
+    :func:`compile_note` inside :func:`compilation_notes`)."""
     if name in _loaded:
         return _loaded[name]
     if _NOTE.get() and not compiled(name):

@@ -28,8 +28,9 @@ def _fake_load(tmp_path, monkeypatch):
 
 def test_note_once_before_the_first_compilation(tmp_path, monkeypatch, capsys):
     imports = _fake_load(tmp_path, monkeypatch)
-    cache.load("sink_flat")
-    cache.load("sink_flat")
+    with cache.compilation_notes():
+        cache.load("sink_flat")
+        cache.load("sink_flat")
     err = capsys.readouterr().err
     assert err.splitlines() == [
         f"sinktheory: compiling the engine sink_flat (about 1 min, once; cached in {tmp_path})"
@@ -37,17 +38,19 @@ def test_note_once_before_the_first_compilation(tmp_path, monkeypatch, capsys):
     assert len(imports) == 1
 
 
-def test_no_note_when_compiled_or_quiet(tmp_path, monkeypatch, capsys):
+def test_no_note_when_compiled_or_from_the_library(tmp_path, monkeypatch, capsys):
+    """A library call (a notebook, a sweep's worker) writes nothing to stderr; nor does a
+    load of a compiled engine."""
     _fake_load(tmp_path, monkeypatch)
-    with cache.quiet_compilation():
-        cache.load("sink_flat")
+    cache.load("sink_flat")
     monkeypatch.setattr(cache, "compiled", lambda name: True)
-    cache.load("sink_symmetric")
+    with cache.compilation_notes():
+        cache.load("sink_symmetric")
     assert capsys.readouterr().err == ""
 
 
 def test_quiet_option_silences_the_note(tmp_path, monkeypatch, capsys):
-    """``simulate --quiet`` runs inside quiet_compilation; without it the note shows."""
+    """``simulate`` runs inside compilation_notes, ``simulate --quiet`` does not."""
     from sinktheory.cli import main
     from sinktheory.commands import simulate
 
