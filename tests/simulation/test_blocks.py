@@ -152,6 +152,26 @@ def test_measured_table_covers_every_size_with_positive_costs():
     assert costs[64] * 64 > costs[1]
 
 
+def test_a_disturbed_timing_never_makes_a_step_look_free(monkeypatch):
+    """The cold CI once timed a short call slower than the long one: the step then cost
+    1e-12 s, and the block looked free.  With fake clocks (``steps`` seconds a call, the
+    short calls disturbed to 3x in the first round, or in every round) the cost is the true
+    one after a new round, or the long call's upper bound, never below it."""
+    calls = {"n": 0, "rounds": 1}
+
+    def fake_time(module, q, v, table, size, weights, steps):
+        calls["n"] += 1
+        first_rounds = calls["n"] <= 2 * blocks._REPEATS * calls["rounds"]
+        disturbed = first_rounds and steps == 100
+        return 1e-3 + steps * (3.0 if disturbed else 1.0)
+
+    monkeypatch.setattr(blocks, "_time", fake_time)
+    assert blocks._step_seconds(None, None, None, None, 1, None, 100) == pytest.approx(1.0)
+    calls.update(n=0, rounds=blocks._ROUNDS)
+    bound = (1e-3 + 200.0) / 200
+    assert blocks._step_seconds(None, None, None, None, 1, None, 100) == pytest.approx(bound)
+
+
 @pytest.mark.parametrize("runs", [1, 7, 40])
 def test_ensemble_plan_is_the_policy_for_its_runs(runs):
     from sinktheory.engine.core import Ensemble
