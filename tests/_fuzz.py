@@ -9,7 +9,8 @@
   valid value per parameter name) and :func:`_overrides` (per entry point, where a name
   means something else there), the parameters with defaults taking their defaults.
 * :data:`EXEMPT` lists the entry points with no user input, each with its reason;
-  :data:`PENDING` those not fuzzed yet (test_api_fuzz_coverage.py fails on any entry
+  :data:`RECORDS` the classes the package builds and returns (their constructors are not
+  entry points); :data:`PENDING` those not fuzzed yet (test_api_fuzz_coverage.py fails on any entry
   point in none of these, and reports the pending ones).
 """
 
@@ -39,8 +40,8 @@ def key_of(function) -> str:
 
 def public_entry_points() -> dict[str, object]:
     """``key_of(f) -> f`` for every callable named in the ``__all__`` of a public module of
-    sinktheory, exceptions, warnings and the generated kernels (``sinktheory._generated``)
-    aside."""
+    sinktheory, the classes of :func:`_never_called_with_values` and the generated kernels
+    (``sinktheory._generated``) aside."""
     import sinktheory
 
     names = ["sinktheory"] + [
@@ -57,12 +58,22 @@ def public_entry_points() -> dict[str, object]:
                 obj = getattr(obj, attr)
             if isinstance(obj, types.ModuleType) or not callable(obj):
                 continue
-            if inspect.isclass(obj) and issubclass(obj, BaseException):
+            if inspect.isclass(obj) and _never_called_with_values(obj):
                 continue
             key = key_of(obj)
             if key.startswith("sinktheory.") and not key.startswith("sinktheory._generated"):
                 found.setdefault(key, obj)
     return found
+
+
+def _never_called_with_values(cls) -> bool:
+    """Whether the class ``cls`` is no entry point by its kind: an exception or warning, a
+    typing Protocol (a type to check against, never called) or a SymPy function head (its
+    arguments are SymPy expressions, which SymPy checks)."""
+    import sympy
+
+    protocol = getattr(cls, "_is_protocol", False)
+    return issubclass(cls, (BaseException, sympy.Function)) or protocol
 
 
 def fig8_sink():
@@ -553,7 +564,7 @@ def _overrides():
         s + "runstats.mean_stderr": dict(values=[0.5]),
         s + "runstats.spread": dict(values=[0.5]),
         s + "plot.floquet.plot_fig7": dict(ns=(2,), count=20),
-    }  # fmt: skip
+    } | {key: given for m in _AREA_MODULES for key, given in m.overrides().items()}  # fmt: skip
 
 
 #: Entry points fuzzed by a test of their own rather than from a table: the test.
@@ -596,452 +607,48 @@ EXEMPT = {
     "sinktheory.worklimit.tally": "no parameters",
 }
 
+#: The areas whose tables live in files of their own (tests/_fuzz_AREA.py: valid arguments,
+#: records and pending entry points), so that work on one area does not touch another's.
+AREAS = ("billiard", "chaos", "commands", "design", "engine", "equilibrium", "plot", "sweep")
+_AREA_MODULES = [importlib.import_module(f"_fuzz_{area}") for area in AREAS]
+
+#: Classes the package builds and returns (dataclasses or NamedTuples that do not check
+#: their fields): their constructors are not entry points.  Key -> what returns it.
+RECORDS = {key: what for m in _AREA_MODULES for key, what in m.RECORDS.items()}
+
+#: Entry points whose calls take seconds, by area: fewer examples.
+AREA_HEAVY = set().union(*(m.HEAVY for m in _AREA_MODULES))
+
+
+def area_fixed_leaks() -> list:
+    """(call, parameter it must name) of each leak fixed in an area: see its file."""
+    return [leak for m in _AREA_MODULES for leak in m.fixed_leaks()]
+
+
+class Lazy:
+    """A valid argument built on first use, not when the tests are collected (a result to
+    plot, say): ``Lazy(make)``; :func:`resolved` builds it, once."""
+
+    def __init__(self, make):
+        self.make = make
+
+    def value(self):
+        if not hasattr(self, "_value"):
+            self._value = self.make()
+        return self._value
+
+
+def resolved(valid: dict) -> dict:
+    """``valid`` with each :class:`Lazy` argument built."""
+    return {k: v.value() if isinstance(v, Lazy) else v for k, v in valid.items()}
+
+
 #: Entry points the fuzz does not call yet (issue 34), by why: the coverage test reports
 #: them (strict xfail) until none is left.
-PENDING_BY_REASON = {
-    "leaks raw exceptions on hostile input (the first found is noted); its validation is not "
-    "written yet": (
-        "sinktheory.attachments.start_rows",  # att=None: AttributeError
-        "sinktheory.basin.numeric",  # expr=None: AttributeError
-        "sinktheory.billiard.convergence.wall_ratios",  # well=None: AttributeError
-        "sinktheory.billiard.convergence.wall_terms",  # well=None: AttributeError
-        "sinktheory.billiard.impact.kinetic_energy",  # vc=None: TypeError
-        "sinktheory.billiard.run.start_directions",  # particles=True: TypeError
-        "sinktheory.chaos.general.check_bound",  # bound=inf: nonfinite
-        "sinktheory.chaos.general.check_gali",  # dim=None: TypeError
-        "sinktheory.chaos.general.check_params",  # runs=[]: TypeError
-        "sinktheory.chaos.general.vector_count",  # dim=None: TypeError
-        "sinktheory.chaos.sink.check_tangent_work",  # gali=None: TypeError
-        "sinktheory.chaos.sink.tangent_runs",  # gali=None: TypeError
-        "sinktheory.chaos.sink.transverse_mask",  # particles=None: TypeError
-        "sinktheory.chaos.staged.looks",  # periods=None: TypeError
-        "sinktheory.chaos.vectors.vector_seed",  # run=None: TypeError
-        "sinktheory.cli.main",  # argv=True: TypeError
-        "sinktheory.codegen.GeometryPrinter",  # settings=True: TypeError
-        "sinktheory.codegen.KernelPrinter",  # settings=True: TypeError
-        "sinktheory.codegen.write",  # directory=None: TypeError
-        "sinktheory.commands.derive.cached_renderings",  # fresh=True: Hang
-        "sinktheory.compare.efficiency.work",  # attachments=None: TypeError
-        "sinktheory.design.inelastic_reference.contact_weight",  # q=None: TypeError
-        "sinktheory.design.inelastic_reference.solve_damped_ivp",  # damping=None: TypeError
-        "sinktheory.design.measures.default_window",  # periods=None: TypeError
-        "sinktheory.design.measures.longest_excursion",  # mean=None: nonfinite
-        "sinktheory.design.measures.sustained_crossing",  # mean='x': ValueError
-        "sinktheory.design.point.equipartition_n",  # p={...}['x']: TypeError
-        "sinktheory.design.point.user_shape",  # p=None: TypeError
-        "sinktheory.design.report.fmt",  # digits=None: ValueError
-        "sinktheory.engine.blocks.groups_of",  # steps=None: TypeError
-        "sinktheory.engine.cache.user_well",  # name=[]: TypeError
-        "sinktheory.ensemble.default_energy_bound",  # tol=1e+308: nonfinite
-        "sinktheory.ensemble.engine_name",  # sink=None: AttributeError
-        "sinktheory.ensemble.join_values",  # q=None: AttributeError
-        "sinktheory.ensemble.random_positions",  # particles=None: TypeError
-        "sinktheory.ensemble.run_parameters",  # runs=nan: nonfinite
-        "sinktheory.ensemble.start_positions",  # settings=None: AttributeError
-        "sinktheory.ensemble.start_state",  # container_energy=None: TypeError
-        "sinktheory.equilibrium.ergodicity.verdict",  # lambda1=None: TypeError
-        "sinktheory.equilibrium.prediction.settling_time",  # fraction=None: TypeError
-        "sinktheory.glossary.modern_argv",  # argv=None: TypeError
-        "sinktheory.glossary.option_of",  # name=None: AttributeError
-        "sinktheory.layout.pack_params",  # sink=None: AttributeError
-        "sinktheory.model.Reach",  # x=nan: nonfinite
-        "sinktheory.nnm.modes.fixed_container_amplitude",  # sink=None: AttributeError
-        "sinktheory.nnm.system.parameter_names",  # system=None: AttributeError
-        "sinktheory.plot.simulate.well_title",  # well=None: AttributeError
-        "sinktheory.progress.ProgressBar",  # delay=None: TypeError
-        "sinktheory.results.attribute",  # x=nan: nonfinite
-        "sinktheory.results.plain",  # x=object(): TypeError
-        "sinktheory.scenes.estimate",  # number=None: KeyError
-        "sinktheory.scenes.orbits.false_call",  # runs=None: TypeError
-        "sinktheory.scenes.trajectories.indicators",  # periods=None: TypeError
-        "sinktheory.scenes.wells.level_line_curvature",  # h=None: TypeError
-        "sinktheory.sweep.grid.parse_value",  # text=None: AttributeError
-        "sinktheory.symbolic.denominator",  # s=None: TypeError
-        "sinktheory.symbolic.y_invariance",  # V=None: TypeError
-        "sinktheory.validation.choice",  # options=None: TypeError
-        "sinktheory.validation.fits_memory",  # nbytes=None: TypeError
-        "sinktheory.validation.nbytes_text",  # n=None: TypeError
-        "sinktheory.validation.positive_int",  # maximum='x': TypeError
-        "sinktheory.validation.real_array",  # value=None: nonfinite
-        "sinktheory.validation.stiffness",  # value=inf: nonfinite
-        "sinktheory.validation.time_step",  # period=None: TypeError
-        "sinktheory.validation.writable_directory",  # directory=None: TypeError
-        "sinktheory.worklimit.check_particle_steps",  # steps=None: TypeError
-        "sinktheory.worklimit.duration",  # seconds=None: TypeError
-        "sinktheory.worklimit.ensemble_steps",  # runs='x': ValueError
-        "sinktheory.worklimit.tangent_steps",  # particles=None: TypeError
-    ),
-    "a SymPy function head: symbolic arguments, no numbers": (
-        "sinktheory.codegen.ipow",
-        "sinktheory.symbolic.Maximum",
-    ),
-    "a decorator of the package's own functions": (
-        "sinktheory.glossary.refusals_named",
-        "sinktheory.glossary.renamed",
-    ),
-    "a typing Protocol: never called": ("sinktheory.symbolic.WellDefinition",),
-    "valid arguments not written yet": (
-        "sinktheory.adaptive.kernels",
-        "sinktheory.basin.NumericWell",
-        "sinktheory.basin.escape",
-        "sinktheory.basin.leading_order",
-        "sinktheory.basin.reach",
-        "sinktheory.basin.star_area",
-        "sinktheory.bifurcation.check_point",
-        "sinktheory.bifurcation.points",
-        "sinktheory.bifurcation.well_bifurcation",
-        "sinktheory.billiard.convergence.convergence",
-        "sinktheory.billiard.convergence.count_hits",
-        "sinktheory.billiard.convergence.lambda_after",
-        "sinktheory.billiard.convergence.lyapunov_chart",
-        "sinktheory.billiard.convergence.measure",
-        "sinktheory.billiard.convergence.power_rate",
-        "sinktheory.billiard.impact.velocities_after",
-        "sinktheory.billiard.kinetic.kinetic_coefficients",
-        "sinktheory.billiard.relaxation.measure_rigid_settling",
-        "sinktheory.billiard.relaxation.predict_rigid_relaxation",
-        "sinktheory.billiard.relaxation.rigid_shell_increments",
-        "sinktheory.billiard.run.check_flights",
-        "sinktheory.billiard.run.expected_collisions",
-        "sinktheory.billiard.run.flight_seconds",
-        "sinktheory.billiard.table.poly_eval",
-        "sinktheory.billiard.table.polynomial_table",
-        "sinktheory.chaos.general.check_transverse",
-        "sinktheory.chaos.points.check_point",
-        "sinktheory.chaos.points.points",
-        "sinktheory.chaos.result.time_average",
-        "sinktheory.chaos.sink.chaos_batch",
-        "sinktheory.chaos.sink.point_steps",
-        "sinktheory.chaos.staged.staged_chaos",
-        "sinktheory.chaos.staged.staged_exponent",
-        "sinktheory.chaos.vectors.orthonormalise",
-        "sinktheory.chaos.verdicts.agreement",
-        "sinktheory.chaos.verdicts.box_starts",
-        "sinktheory.chaos.verdicts.map_calls",
-        "sinktheory.chaos.verdicts.map_split",
-        "sinktheory.chaos.verdicts.point_values",
-        "sinktheory.chaos.verdicts.stored_split",
-        "sinktheory.chaos.verdicts.stored_splits",
-        "sinktheory.chaos.verdicts.verdicts",
-        "sinktheory.codegen.chain",
-        "sinktheory.codegen.integer_powers",
-        "sinktheory.codegen.kernel_lines",
-        "sinktheory.codegen.lowest_powers",
-        "sinktheory.compare.transfer.transfer_maps",
-        "sinktheory.compare.wavelet.ridge_of",
-        "sinktheory.design.cost.work",
-        "sinktheory.design.explorer.todo_of",
-        "sinktheory.design.inelastic_reference.dissipate",
-        "sinktheory.design.inelastic_reference.simulate_inelastic_reference",
-        "sinktheory.design.measures.design_measures",
-        "sinktheory.design.point.attachment_of",
-        "sinktheory.design.point.check",
-        "sinktheory.design.point.compute",
-        "sinktheory.design.point.ensemble",
-        "sinktheory.design.point.lyapunov",
-        "sinktheory.design.ranking.design_table",
-        "sinktheory.design.ranking.rank",
-        "sinktheory.design.report.damper",
-        "sinktheory.design.report.is_damped",
-        "sinktheory.design.report.lambda1_text",
-        "sinktheory.design.report.report_text",
-        "sinktheory.design.report.table_rows",
-        "sinktheory.design.report.write_csv",
-        "sinktheory.design.report.write_report",
-        "sinktheory.design.settling.predicted_settling",
-        "sinktheory.design.settling.settling_column",
-        "sinktheory.design.settling.settling_fields",
-        "sinktheory.design.settling.settling_text",
-        "sinktheory.ensemble.check_record",
-        "sinktheory.ensemble.initial_values",
-        "sinktheory.ensemble.prepare",
-        "sinktheory.ensemble.settings_of",
-        "sinktheory.ensemble.sink_of",
-        "sinktheory.ensemble.total_energy",
-        "sinktheory.ensemble.well_of_text",
-        "sinktheory.equilibrium.ergodicity.check_point",
-        "sinktheory.equilibrium.ergodicity.ergodicity_map",
-        "sinktheory.equilibrium.prediction.check_reading",
-        "sinktheory.equilibrium.prediction.fit_line",
-        "sinktheory.equilibrium.prediction.law_chain",
-        "sinktheory.equilibrium.prediction.log_lambdas",
-        "sinktheory.equilibrium.prediction.measure_settings",
-        "sinktheory.equilibrium.prediction.measure_settling",
-        "sinktheory.equilibrium.prediction.read_settling",
-        "sinktheory.equilibrium.prediction.shell_lags",
-        "sinktheory.equilibrium.prediction.shell_prediction",
-        "sinktheory.equilibrium.prediction.slow_mode",
-        "sinktheory.floquet.check_point",
-        "sinktheory.floquet.json_value",
-        "sinktheory.floquet.point",
-        "sinktheory.floquet.rotation_number",
-        "sinktheory.floquet.well_scan",
-        "sinktheory.nnm.agreement.agreement_report",
-        "sinktheory.nnm.agreement.statement",
-        "sinktheory.nnm.agreement.transverse_chart",
-        "sinktheory.nnm.backbone.container_share",
-        "sinktheory.nnm.backbone.localisation_energy",
-        "sinktheory.nnm.continuation.check_stop",
-        "sinktheory.nnm.continuation.merge",
-        "sinktheory.nnm.continuation.switch_branch",
-        "sinktheory.nnm.continuation.tangent",
-        "sinktheory.nnm.modes.check_user_well",
-        "sinktheory.nnm.modes.linear_modes",
-        "sinktheory.nnm.shooting.checked_start",
-        "sinktheory.nnm.shooting.checked_steps",
-        "sinktheory.nnm.shooting.subspace_indices",
-        "sinktheory.nnm.stability.angles",
-        "sinktheory.nnm.stability.classify",
-        "sinktheory.nnm.stability.reduced_monodromy",
-        "sinktheory.report.closing",
-        "sinktheory.report.render",
-        "sinktheory.scenes.ensembles.ensemble",
-        "sinktheory.scenes.ensembles.long_time",
-        "sinktheory.scenes.horizons.describe",
-        "sinktheory.scenes.horizons.horizon",
-        "sinktheory.scenes.horizons.settling_time",
-        "sinktheory.scenes.orbits.generic_runs",
-        "sinktheory.scenes.orbits.mode_touching",
-        "sinktheory.scenes.orbits.transverse_calls",
-        "sinktheory.scenes.scene",
-        "sinktheory.simulate.check_point",
-        "sinktheory.simulate.point",
-        "sinktheory.sweep.grid.fingerprint",
-        "sinktheory.sweep.store.MemoryStore",
-        "sinktheory.sweep.store.SweepStore",
-        "sinktheory.sweep.store.coordinates",
-        "sinktheory.sweep.store.old_spelling",
-        "sinktheory.sweep.store.read",
-        "sinktheory.sweep.store.selection",
-        "sinktheory.sweep.views.bifurcation_diagram",
-        "sinktheory.sweep.views.split_points",
-        "sinktheory.symbolic.ladder",
-        "sinktheory.symbolic.lift_powers",
-        "sinktheory.symbolic.mechanics",
-        "sinktheory.symbolic.ratio_derivative",
-        "sinktheory.symbolic.substitute_ratios",
-        "sinktheory.twins.python_kernel",
-        "sinktheory.userwell.read_well",
-        "sinktheory.userwell.well_text",
-        "sinktheory.vibroimpact.advancement_bound",
-        "sinktheory.vibroimpact.check_flights",
-        "sinktheory.vibroimpact.flight",
-        "sinktheory.vibroimpact.next_hit",
-    ),
-    "a result record the package builds": (
-        "sinktheory.attachments.ImpulseResponse",
-        "sinktheory.basin.Basin",
-        "sinktheory.basin.Escape",
-        "sinktheory.basin.LeadingOrder",
-        "sinktheory.basin.Reach",
-        "sinktheory.bifurcation.BifurcationDiagram",
-        "sinktheory.bifurcation.WellBifurcation",
-        "sinktheory.billiard.convergence.Convergence",
-        "sinktheory.billiard.convergence.LyapunovChart",
-        "sinktheory.billiard.convergence.Measurement",
-        "sinktheory.billiard.run.BilliardResult",
-        "sinktheory.billiard.run.RigidLimit",
-        "sinktheory.billiard.table.Piece",
-        "sinktheory.billiard.table.Table",
-        "sinktheory.chaos.result.ChaosResult",
-        "sinktheory.chaos.staged.StagedExponent",
-        "sinktheory.chaos.verdicts.Split",
-        "sinktheory.compare.efficiency.Comparison",
-        "sinktheory.compare.transfer.TransferMap",
-        "sinktheory.compare.wavelet.WaveletMap",
-        "sinktheory.damped.InelasticResult",
-        "sinktheory.design.cost.Estimate",
-        "sinktheory.design.explorer.DesignRun",
-        "sinktheory.design.measures.DesignMeasures",
-        "sinktheory.engine.blocks.BlockPlan",
-        "sinktheory.engine.core.Records",
-        "sinktheory.engine.systems.Damping",
-        "sinktheory.engine.systems.SeparableSystem",
-        "sinktheory.engine.systems.Term",
-        "sinktheory.ensemble.SimulationResult",
-        "sinktheory.ensemble.SimulationState",
-        "sinktheory.ensemble.Start",
-        "sinktheory.equilibrium.area.WellArea",
-        "sinktheory.equilibrium.ergodicity.ErgodicityMap",
-        "sinktheory.equilibrium.kramers.FluctuationDissipation",
-        "sinktheory.equilibrium.kramers.KramersMoyal",
-        "sinktheory.equilibrium.law.EquilibriumSummary",
-        "sinktheory.equilibrium.lifetime.LawComparison",
-        "sinktheory.equilibrium.lifetime.VisitStatistics",
-        "sinktheory.equilibrium.prediction.LawChain",
-        "sinktheory.equilibrium.prediction.RelaxationPrediction",
-        "sinktheory.equilibrium.prediction.Settling",
-        "sinktheory.equilibrium.relaxation.Relaxation",
-        "sinktheory.floquet.Boundary",
-        "sinktheory.floquet.FloquetChart",
-        "sinktheory.floquet.HillProblem",
-        "sinktheory.floquet.StabilityScan",
-        "sinktheory.floquet.WellFloquet",
-        "sinktheory.floquet.WellHill",
-        "sinktheory.floquet.WellScan",
-        "sinktheory.hill.QuarterPeriod",
-        "sinktheory.integrators.SplittingScheme",
-        "sinktheory.model.SinkSummary",
-        "sinktheory.model.UserWellSummary",
-        "sinktheory.model.WellSummary",
-        "sinktheory.nnm.agreement.TransverseChart",
-        "sinktheory.nnm.continuation.Branch",
-        "sinktheory.nnm.continuation.Event",
-        "sinktheory.nnm.result.BranchResult",
-        "sinktheory.nnm.shooting.Orbit",
-        "sinktheory.nnm.shooting.ShootingProblem",
-        "sinktheory.nnm.stability.Floquet",
-        "sinktheory.oscillator.Oscillator",
-        "sinktheory.recurrence.RQA",
-        "sinktheory.report.SceneOutcome",
-        "sinktheory.scenes.base.Claim",
-        "sinktheory.scenes.base.Scene",
-        "sinktheory.scenes.base.SceneResult",
-        "sinktheory.scenes.ensembles.LongTime",
-        "sinktheory.series.BoundCheck",
-        "sinktheory.series.SeriesAccuracy",
-        "sinktheory.series.SeriesError",
-        "sinktheory.series.TriangleSeries",
-        "sinktheory.simulate.Stepper",
-        "sinktheory.sinkstats.SinkMeasures",
-        "sinktheory.stepsize.StepChoice",
-        "sinktheory.sweep.grid.Grid",
-        "sinktheory.sweep.kinds.Kind",
-        "sinktheory.sweep.kinds.Param",
-        "sinktheory.sweep.kinds.Result",
-        "sinktheory.sweep.runner.SweepRun",
-        "sinktheory.symbolic.AtomForm",
-        "sinktheory.symbolic.Mechanics",
-        "sinktheory.symbolic.NormalMode",
-        "sinktheory.symbolic.RescaledSystem",
-        "sinktheory.symbolic.SeparableHamiltonian",
-        "sinktheory.symbolic.Shape",
-        "sinktheory.symbolic.WellLadder",
-        "sinktheory.userwell.WellCheck",
-        "sinktheory.vibroimpact.VibroImpactResult",
-    ),
-    "a compiled kernel or engine part, called by checked wrappers": (
-        "sinktheory.billiard.kernels.advance_fixed",
-        "sinktheory.billiard.kernels.advance_moving",
-        "sinktheory.billiard.kernels.energies",
-        "sinktheory.billiard.kernels.impact",
-        "sinktheory.billiard.kernels.impulse",
-        "sinktheory.billiard.kernels.next_hit",
-        "sinktheory.billiard.kernels.outward_normal",
-        "sinktheory.billiard.kernels.reflect_tangent",
-        "sinktheory.billiard.kernels.run_fixed",
-        "sinktheory.billiard.kernels.run_moving",
-        "sinktheory.billiard.kernels.wall_hessian",
-        "sinktheory.billiard.kernels.wall_value",
-        "sinktheory.engine.blocks.block_costs",
-        "sinktheory.engine.blocks.candidates",
-        "sinktheory.engine.blocks.efficient_width",
-        "sinktheory.engine.blocks.fixed",
-        "sinktheory.engine.blocks.layout",
-        "sinktheory.engine.blocks.measure",
-        "sinktheory.engine.blocks.plan",
-        "sinktheory.engine.cache.cost_table_path",
-        "sinktheory.engine.cache.engine_system",
-        "sinktheory.engine.cache.import_generated",
-        "sinktheory.engine.cache.load",
-        "sinktheory.engine.cache.well_definition",
-        "sinktheory.engine.cache.well_name",
-        "sinktheory.engine.core.audit_error",
-        "sinktheory.engine.core.earliest_failure",
-        "sinktheory.engine.printer.cse_lines",
-        "sinktheory.engine.printer.render",
-        "sinktheory.engine.systems.run_time_symbols",
-        "sinktheory.engine.systems.sink_system",
-    ),
-    "CLI plumbing: takes a parsed namespace (argv is checked by the CLI tests)": (
-        "sinktheory.commands.billiard.add_arguments",
-        "sinktheory.commands.billiard.run",
-        "sinktheory.commands.chaos.add_arguments",
-        "sinktheory.commands.chaos.run",
-        "sinktheory.commands.compare.add_arguments",
-        "sinktheory.commands.compare.run",
-        "sinktheory.commands.derive.add_arguments",
-        "sinktheory.commands.derive.run",
-        "sinktheory.commands.derive.well_renderings",
-        "sinktheory.commands.design.add_arguments",
-        "sinktheory.commands.design.params_of",
-        "sinktheory.commands.design.run",
-        "sinktheory.commands.design.summary_line",
-        "sinktheory.commands.equilibrium.add_arguments",
-        "sinktheory.commands.equilibrium.run",
-        "sinktheory.commands.floquet.add_arguments",
-        "sinktheory.commands.floquet.run",
-        "sinktheory.commands.lifetime.add_arguments",
-        "sinktheory.commands.lifetime.run",
-        "sinktheory.commands.load",
-        "sinktheory.commands.nnm.add_arguments",
-        "sinktheory.commands.nnm.run",
-        "sinktheory.commands.period.add_arguments",
-        "sinktheory.commands.period.decimal_text",
-        "sinktheory.commands.period.run",
-        "sinktheory.commands.relaxation.add_arguments",
-        "sinktheory.commands.relaxation.run",
-        "sinktheory.commands.reproduce.add_arguments",
-        "sinktheory.commands.reproduce.run",
-        "sinktheory.commands.series.add_arguments",
-        "sinktheory.commands.series.run",
-        "sinktheory.commands.simulate.add_arguments",
-        "sinktheory.commands.simulate.run",
-        "sinktheory.commands.sink.add_arguments",
-        "sinktheory.commands.sink.run",
-        "sinktheory.commands.sweep.add_arguments",
-        "sinktheory.commands.sweep.estimate_line",
-        "sinktheory.commands.sweep.params_of",
-        "sinktheory.commands.sweep.params_with_well",
-        "sinktheory.commands.sweep.run",
-        "sinktheory.commands.sweep.split_summary",
-        "sinktheory.commands.well.add_arguments",
-        "sinktheory.commands.well.run",
-    ),
-    "draws a result object": (
-        "sinktheory.plot.bifurcation.plot_bifurcation",
-        "sinktheory.plot.billiard.billiard_figure",
-        "sinktheory.plot.chaos.convergence_figure",
-        "sinktheory.plot.chaos.draw_map",
-        "sinktheory.plot.chaos.plot_convergence",
-        "sinktheory.plot.compare.draw_efficiency",
-        "sinktheory.plot.compare.draw_t90",
-        "sinktheory.plot.compare.plot_comparison",
-        "sinktheory.plot.compare.plot_efficiency",
-        "sinktheory.plot.compare.plot_t90",
-        "sinktheory.plot.compare.plot_transfer",
-        "sinktheory.plot.convergence.convergence_figure",
-        "sinktheory.plot.convergence.lyapunov_figure",
-        "sinktheory.plot.design.energy_curves",
-        "sinktheory.plot.design.heatmap",
-        "sinktheory.plot.design.heatmaps",
-        "sinktheory.plot.design.panels",
-        "sinktheory.plot.design.pareto_chart",
-        "sinktheory.plot.design.swept",
-        "sinktheory.plot.equilibrium.plot_ergodicity",
-        "sinktheory.plot.equilibrium.plot_law",
-        "sinktheory.plot.equilibrium.plot_lifetimes",
-        "sinktheory.plot.equilibrium.plot_relaxation",
-        "sinktheory.plot.floquet.plot_scan",
-        "sinktheory.plot.floquet.plot_tongues",
-        "sinktheory.plot.nnm.draw_frequency_energy",
-        "sinktheory.plot.nnm.draw_transverse",
-        "sinktheory.plot.nnm.plot_frequency_energy",
-        "sinktheory.plot.nnm.plot_nnm",
-        "sinktheory.plot.nnm.plot_transverse",
-        "sinktheory.plot.paper.energy_band",
-        "sinktheory.plot.paper.energy_curves",
-        "sinktheory.plot.paper.energy_panels",
-        "sinktheory.plot.paper.orbit_figure",
-        "sinktheory.plot.paper.orbit_panel",
-        "sinktheory.plot.paper.recurrence_columns",
-        "sinktheory.plot.paper.running_and_recurrence",
-        "sinktheory.plot.paper.trajectory_panels",
-        "sinktheory.plot.paper.well_panels",
-        "sinktheory.plot.simulate.plot_ensemble_energy",
-        "sinktheory.plot.well.plot_user_well",
-    ),
-}
+PENDING_BY_REASON: dict[str, tuple] = {}
+for _m in _AREA_MODULES:
+    for _why, _keys in _m.PENDING_BY_REASON.items():
+        PENDING_BY_REASON[_why] = PENDING_BY_REASON.get(_why, ()) + tuple(_keys)
 PENDING = {key: why for why, keys in PENDING_BY_REASON.items() for key in keys}
 
 
@@ -1067,10 +674,11 @@ def _arguments(function, given: dict) -> dict:
 
 def built_entries(skip=()) -> list:
     """(key, function, valid keyword arguments) of each public entry point not in ``skip``
-    (the keys of the hand-written tables), :data:`EXEMPT` or :data:`PENDING`."""
+    (the keys of the hand-written tables), :data:`EXEMPT`, :data:`RECORDS` or
+    :data:`PENDING`."""
     out, overrides = [], _overrides()
     for key, function in sorted(public_entry_points().items()):
-        if key in skip or key in ALSO_FUZZED or key in EXEMPT or key in PENDING:
+        if key in skip or key in ALSO_FUZZED or key in EXEMPT or key in RECORDS or key in PENDING:
             continue
         out.append((key, function, _arguments(function, overrides.get(key, {}))))
     return out

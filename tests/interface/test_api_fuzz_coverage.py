@@ -9,18 +9,23 @@ fails here until it is fuzzed, or listed with its reason as having no user input
 Example counts are small; SINKTHEORY_FUZZ_SCALE=10 runs ten times as many.
 """
 
+import dataclasses
 import inspect
 
 import pytest
 from _cli import FUZZ_SCALE, fuzz_one, non_finite
 from _fuzz import (
     ALSO_FUZZED,
+    AREA_HEAVY,
     EXEMPT,
     PENDING,
+    RECORDS,
+    area_fixed_leaks,
     built_entries,
     hand_entries,
     key_of,
     public_entry_points,
+    resolved,
 )
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -36,7 +41,7 @@ HEAVY = {
         "equilibrium.prediction.settling_periods", "model.user_well_summary",
         "sweep.chaosmap.chaos_map", "symbolic.normal_mode",
     )
-}  # fmt: skip
+} | AREA_HEAVY  # fmt: skip
 _ALL_BUILT = built_entries(skip=HAND)
 BUILT = [e for e in _ALL_BUILT if e[0] not in HEAVY]
 BUILT_HEAVY = [e for e in _ALL_BUILT if e[0] in HEAVY]
@@ -69,24 +74,41 @@ def test_heavy_entry_points_raise_only_documented_errors(key, function, valid, d
 
 
 def _fuzz(key, function, valid, data):
+    valid = resolved(valid)
     if key not in _BASELINE:
         _BASELINE[key] = non_finite(function(**valid))
     fuzz_one(function, valid, data, baseline=_BASELINE[key])
 
 
 def test_every_public_entry_point_is_fuzzed_or_exempt():
-    """Each callable of a public ``__all__`` is fuzzed, exempt (no parameters at all) or
-    pending (listed with why); the lists name only public entry points, once."""
+    """Each callable of a public ``__all__`` is fuzzed, exempt (no parameters at all), a
+    record the package returns, or pending (listed with why); the lists name only public
+    entry points, once."""
     public = public_entry_points()
     fuzzed = HAND | {key for key, _, _ in BUILT + BUILT_HEAVY} | set(ALSO_FUZZED)
-    unlisted = sorted(set(public) - fuzzed - set(EXEMPT) - set(PENDING))
+    listed = set(EXEMPT) | set(RECORDS) | set(PENDING)
+    unlisted = sorted(set(public) - fuzzed - listed)
     assert not unlisted, f"public entry points neither fuzzed nor exempt: {unlisted}"
-    stale = sorted((set(EXEMPT) | set(PENDING) | set(ALSO_FUZZED)) - set(public))
+    stale = sorted((listed | set(ALSO_FUZZED)) - set(public))
     assert not stale, f"listed but not public entry points: {stale}"
-    twice = sorted((HAND | set(ALSO_FUZZED)) & (set(EXEMPT) | set(PENDING)))
-    assert not twice, f"fuzzed and also listed as exempt or pending: {twice}"
+    twice = sorted((HAND | set(ALSO_FUZZED)) & listed)
+    assert not twice, f"fuzzed and also listed as exempt, a record or pending: {twice}"
     with_input = [k for k in EXEMPT if inspect.signature(public[k]).parameters]
     assert not with_input, f"exempt, but they take arguments: {with_input}"
+
+
+def test_records_are_records():
+    """A class listed as a record is a dataclass or a NamedTuple that checks nothing on
+    construction (no ``__post_init__``, no ``__init__`` of its own): one that checks its
+    fields is an entry point, and fuzzed."""
+    public = public_entry_points()
+    for key in RECORDS:
+        cls = public[key]
+        assert inspect.isclass(cls), f"{key} is not a class"
+        if dataclasses.is_dataclass(cls):
+            assert not hasattr(cls, "__post_init__"), f"{key} checks its fields: fuzz it"
+        else:
+            assert issubclass(cls, tuple) and hasattr(cls, "_fields"), f"{key}: not a record"
 
 
 @pytest.mark.xfail(strict=True, reason=f"issue 34: {len(PENDING)} entry points not fuzzed yet")
@@ -215,7 +237,7 @@ def test_named_leaks_of_the_fuzz():
     """The leaks this fuzz found, each refused naming its parameter."""
     from sinktheory.errors import ParameterError
 
-    for make, name in _fixed_leaks():
+    for make, name in _fixed_leaks() + area_fixed_leaks():
         with pytest.raises(ParameterError) as info:
             make()
         assert info.value.name == name, (name, str(info.value))
