@@ -4,7 +4,13 @@ Each module defines ``NAME``, ``HELP``, ``add_arguments(parser)`` and ``run(args
 returns an :class:`~sinktheory.commands._common.Output`.  A command computes everything
 before it writes any file, so bad input never leaves partial output behind.
 
-Modules are imported only when needed (:func:`load`): ``sinktheory --version`` and
+These modules are the command line's, not a Python API: their ``__all__`` holds only
+their constants, and ``add_arguments``/``run`` are reached through
+:func:`sinktheory.cli.main` (an argv list) or the ``sinktheory`` command, whose every
+option is checked by the command-line tests.  A Python user calls the library functions
+the commands call.
+
+Modules are imported only when needed (``load``): ``sinktheory --version`` and
 ``--help`` read the one-line summaries in :data:`HELP` and import no command, and a
 command imports only what it uses.  ``COMMANDS`` (every module) is loaded on first use.
 """
@@ -53,4 +59,4 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["COMMANDS", "HELP", "NAMES", "load"]
+__all__ = ["COMMANDS", "HELP", "NAMES"]

@@ -31,7 +31,7 @@ from ._common import (
     user_well_from_args,
 )
 
-__all__ = ["add_arguments", "HELP", "KINDS", "NAME", "run"]
+__all__ = ["HELP", "KINDS", "NAME"]
 
 NAME = "compare"
 HELP = HELPS[NAME]

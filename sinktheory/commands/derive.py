@@ -39,20 +39,7 @@ from typing import TYPE_CHECKING
 from . import HELP as HELPS
 from ._common import Output, add_json, add_well_file, user_well_from_args
 
-__all__ = [
-    "add_arguments",
-    "cache_file",
-    "cached_renderings",
-    "digest",
-    "equations",
-    "well_renderings",
-    "HELP",
-    "NAME",
-    "renderings",
-    "run",
-    "SOURCES",
-    "sympifiable",
-]
+__all__ = ["HELP", "NAME", "SOURCES"]
 
 if TYPE_CHECKING:
     import sympy as sp

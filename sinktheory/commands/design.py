@@ -38,17 +38,7 @@ from ._common import (
     resume_hint,
 )
 
-__all__ = [
-    "add_arguments",
-    "GRID",
-    "HELP",
-    "NAME",
-    "NEGATIVE_VALUE",
-    "params_of",
-    "run",
-    "SETTINGS",
-    "summary_line",
-]
+__all__ = ["GRID", "HELP", "NAME", "NEGATIVE_VALUE", "SETTINGS"]
 
 NAME = "design"
 HELP = HELPS[NAME]

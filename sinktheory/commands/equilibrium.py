@@ -20,7 +20,7 @@ from ._common import (
     well_from_args,
 )
 
-__all__ = ["add_arguments", "FRACTIONS", "HELP", "NAME", "run"]
+__all__ = ["FRACTIONS", "HELP", "NAME"]
 
 NAME = "equilibrium"
 HELP = HELPS[NAME]

@@ -36,7 +36,7 @@ from ._common import (
     user_well_from_args,
 )
 
-__all__ = ["add_arguments", "HELP", "NAME", "run"]
+__all__ = ["HELP", "NAME"]
 
 NAME = "floquet"
 HELP = HELPS[NAME]

@@ -19,7 +19,7 @@ from ._common import (
     well_text,
 )
 
-__all__ = ["add_arguments", "CHART_PARTICLES", "FRACTIONS", "HELP", "NAME", "run"]
+__all__ = ["CHART_PARTICLES", "FRACTIONS", "HELP", "NAME"]
 
 NAME = "lifetime"
 HELP = HELPS[NAME]

@@ -38,7 +38,7 @@ from ._common import (
     well_from_args,
 )
 
-__all__ = ["add_arguments", "HELP", "NAME", "run"]
+__all__ = ["HELP", "NAME"]
 
 NAME = "nnm"
 HELP = HELPS[NAME]

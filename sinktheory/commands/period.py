@@ -7,7 +7,7 @@ import argparse
 from . import HELP as HELPS
 from ._common import Output, add_json, number
 
-__all__ = ["add_arguments", "NO_WELL", "decimal_text", "HELP", "NAME", "run"]
+__all__ = ["NO_WELL", "HELP", "NAME"]
 
 NAME = "period"
 HELP = HELPS[NAME]

@@ -17,7 +17,7 @@ from ._common import (
     well_from_args,
 )
 
-__all__ = ["add_arguments", "NO_WELL", "HELP", "NAME", "run", "TABLE_ROWS"]
+__all__ = ["NO_WELL", "HELP", "NAME", "TABLE_ROWS"]
 
 NAME = "relaxation"
 HELP = HELPS[NAME]

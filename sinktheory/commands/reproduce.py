@@ -21,7 +21,7 @@ from ..scenes import FIGURES, estimate
 from . import HELP as HELPS
 from ._common import Output, add_json, as_directory, output_directory
 
-__all__ = ["add_arguments", "NO_WELL", "HELP", "NAME", "run"]
+__all__ = ["NO_WELL", "HELP", "NAME"]
 
 NAME = "reproduce"
 HELP = HELPS[NAME]

@@ -30,7 +30,7 @@ from ._common import (
     well_from_args,
 )
 
-__all__ = ["add_arguments", "HELP", "NAME", "QUOTED", "run"]
+__all__ = ["HELP", "NAME", "QUOTED"]
 
 if TYPE_CHECKING:
     import numpy as np

@@ -14,7 +14,7 @@ from ._common import (
     well_text,
 )
 
-__all__ = ["add_arguments", "HELP", "NAME", "run"]
+__all__ = ["HELP", "NAME"]
 
 NAME = "sink"
 HELP = HELPS[NAME]

@@ -33,16 +33,7 @@ from ._common import (
     resume_hint,
 )
 
-__all__ = [
-    "add_arguments",
-    "estimate_line",
-    "HELP",
-    "NAME",
-    "params_of",
-    "params_with_well",
-    "run",
-    "split_summary",
-]
+__all__ = ["HELP", "NAME"]
 
 NAME = "sweep"
 HELP = HELPS[NAME]

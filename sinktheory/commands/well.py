@@ -21,7 +21,7 @@ from ._common import (
     well_from_args,
 )
 
-__all__ = ["add_arguments", "HELP", "NAME", "run"]
+__all__ = ["HELP", "NAME"]
 
 NAME = "well"
 HELP = HELPS[NAME]
