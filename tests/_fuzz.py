@@ -66,6 +66,26 @@ def public_entry_points() -> dict[str, object]:
     return found
 
 
+def public_methods() -> dict[str, tuple]:
+    """``"module.Class.method" -> (class, method name)`` for every public method with user
+    input (a parameter besides ``self``/``cls``; properties aside) of every class among
+    :func:`public_entry_points`, defined in the class itself."""
+    found = {}
+    for key, cls in public_entry_points().items():
+        if not inspect.isclass(cls):
+            continue
+        for name, attr in vars(cls).items():
+            if name.startswith("_") or isinstance(attr, property):
+                continue
+            function = attr.__func__ if isinstance(attr, classmethod | staticmethod) else attr
+            if not inspect.isfunction(function):
+                continue
+            bound = 0 if isinstance(attr, staticmethod) else 1
+            if len(inspect.signature(function).parameters) > bound:
+                found[f"{key}.{name}"] = (cls, name)
+    return found
+
+
 def _never_called_with_values(cls) -> bool:
     """Whether the class ``cls`` is no entry point by its kind: an exception or warning, a
     typing Protocol (a type to check against, never called) or a SymPy function head (its
@@ -655,6 +675,8 @@ def _arguments(function, given: dict) -> dict:
     out = {}
     for p in inspect.signature(function).parameters.values():
         if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD) or p.kind is p.POSITIONAL_ONLY:
+            continue
+        if p.name in ("self", "cls"):  # a method's own object (test_api_fuzz_methods.py)
             continue
         if p.name in given:
             out[p.name] = given[p.name]
