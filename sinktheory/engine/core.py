@@ -35,7 +35,7 @@ from ..validation import choice, nonnegative, real_array
 from . import blocks
 from .cache import cost_table_path, load
 
-__all__ = ["audit_error", "earliest_failure", "Ensemble", "Records", "TANGENT_MODES"]
+__all__ = ["Ensemble", "Records", "TANGENT_MODES"]
 
 #: Tangent modes: none (raw deviation vectors, e.g. a monodromy matrix), Gram-Schmidt
 #: orthonormalisation at every renormalisation (Lyapunov spectrum), or independent
