@@ -21,16 +21,9 @@ from sympy.printing.pycode import MpmathPrinter, PythonCodePrinter
 from . import symbolic as S
 
 __all__ = [
-    "chain",
     "GENERATED_DIR",
-    "GeometryPrinter",
-    "integer_powers",
     "ipow",
-    "kernel_lines",
-    "KernelPrinter",
-    "lowest_powers",
     "render",
-    "write",
 ]
 
 GENERATED_DIR = Path(__file__).parent / "_generated"

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import validation as v
+from .errors import ParameterError
 from .limits import DEFAULT_SCHEME
 
 __all__ = ["DEFAULT_SCHEME", "get_scheme", "SCHEMES", "SplittingScheme"]
@@ -55,6 +56,20 @@ class SplittingScheme:
         Kick weights (s + 1 of them, summing to 1).
     reference : str
         Where the coefficients come from.
+
+    The fields are checked (a ParameterError names the first one refused), since a scheme
+    built by hand goes straight to the compiled engine (:meth:`sinktheory.engine.core.
+    Ensemble.run`), whose loops take the lengths of ``a`` and ``b`` as given.
+
+    Examples
+    --------
+    >>> SplittingScheme("leapfrog", 2, [1.0], [0.5, 0.5], "by hand").b
+    (0.5, 0.5)
+    >>> SplittingScheme("leapfrog", 2, [1.0], [0.5, 0.4], "by hand")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: b = (0.5, 0.4) is not allowed: must be 2 finite kick \
+weights summing to 1 (to 1e-12), one more than a
     """
 
     name: str
@@ -62,6 +77,17 @@ class SplittingScheme:
     a: tuple[float, ...]
     b: tuple[float, ...]
     reference: str
+
+    def __post_init__(self):
+        for field in ("name", "reference"):
+            if not isinstance(getattr(self, field), str) or not getattr(self, field):
+                raise ParameterError(field, getattr(self, field), "a non-empty string")
+        object.__setattr__(self, "order", v.positive_int("order", self.order))
+        a = _weights("a", self.a, None, "one or more finite drift weights summing to 1 (to 1e-12)")
+        b = _weights("b", self.b, len(a) + 1, f"{len(a) + 1} finite kick weights summing "
+                     "to 1 (to 1e-12), one more than a")  # fmt: skip
+        object.__setattr__(self, "a", a)
+        object.__setattr__(self, "b", b)
 
     @property
     def stages(self) -> int:
@@ -71,6 +97,19 @@ class SplittingScheme:
     def arrays(self) -> tuple[np.ndarray, np.ndarray]:
         """(a, b) as float64 arrays for the compiled stepping loop."""
         return np.array(self.a, dtype=np.float64), np.array(self.b, dtype=np.float64)
+
+
+def _weights(name: str, value: object, size: int | None, allowed: str) -> tuple[float, ...]:
+    """``value`` as a tuple of finite floats summing to 1 (to 1e-12), of ``size`` entries
+    (at least one if None), else ParameterError naming ``name``."""
+    shown = tuple(value) if isinstance(value, list | tuple) else value
+    try:
+        w = v.finite_array(name, value, ndim=1)
+    except ParameterError:
+        raise ParameterError(name, shown, allowed) from None
+    if (w.size != size if size else w.size == 0) or not abs(w.sum() - 1.0) <= 1e-12:
+        raise ParameterError(name, shown, allowed)
+    return tuple(float(x) for x in w)
 
 
 def _composition(weights: tuple[float, ...]) -> tuple[tuple[float, ...], tuple[float, ...]]:

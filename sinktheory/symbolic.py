@@ -71,7 +71,6 @@ __all__ = [
     "ladder",
     "lagrangian",
     "lambda_coefficient",
-    "lift_powers",
     "mass_matrix",
     "Maximum",
     "Mechanics",
@@ -87,7 +86,6 @@ __all__ = [
     "period_integral",
     "potential",
     "potential_of_ratios",
-    "ratio_derivative",
     "rescaled_equations",
     "RescaledSystem",
     "rigid_wall_contour",
@@ -105,7 +103,6 @@ __all__ = [
     "wall_ratios",
     "WellDefinition",
     "WellLadder",
-    "y_invariance",
 ]
 
 # --- symbols shared by the whole package -------------------------------------------
@@ -138,8 +135,15 @@ c = sp.Symbol("c", positive=True)
 
 
 def denominator(s: sp.Expr) -> sp.Expr:
-    """D(s) = alpha + beta (s^2 - 1): the wall's half-width across at coordinate s."""
-    return alpha + beta * (s**2 - 1)
+    """D(s) = alpha + beta (s^2 - 1): the wall's half-width across at coordinate s (a
+    SymPy expression or a finite real number).
+
+    Examples
+    --------
+    >>> denominator(y)
+    alpha + beta*(y**2 - 1)
+    """
+    return alpha + beta * (_expression("s", s) ** 2 - 1)
 
 
 class Maximum(sp.Function):
@@ -361,13 +365,14 @@ class _Shapes(Mapping):
 SHAPES = _Shapes()
 
 
-def shape_definition(shape: str | WellDefinition) -> Shape | WellDefinition:
-    """The :class:`Shape` called ``shape`` (ParameterError naming the allowed ones), or
-    ``shape`` itself when it is a :class:`WellDefinition` (a user's well)."""
+def shape_definition(shape: str | WellDefinition, name: str = "shape") -> Shape | WellDefinition:
+    """The :class:`Shape` called ``shape`` (ParameterError naming the allowed ones and the
+    parameter ``name``), or ``shape`` itself when it is a :class:`WellDefinition` (a
+    user's well)."""
     if not isinstance(shape, str) and isinstance(shape, WellDefinition):
         return shape
     if not isinstance(shape, str) or shape not in SHAPES:
-        raise ParameterError("shape", shape, f"one of {tuple(SHAPES)}")
+        raise ParameterError(name, shape, f"one of {tuple(SHAPES)} or a user's well")
     return SHAPES[shape]
 
 
@@ -397,11 +402,18 @@ def potential(shape: str | WellDefinition, xs: sp.Expr = x, ys: sp.Expr = y) -> 
 
 
 def _expression(name: str, value: object) -> sp.Expr:
-    """``value`` as a SymPy expression, else ParameterError naming ``name``."""
+    """``value`` as a SymPy expression (a number must be real and finite), else
+    ParameterError naming ``name``."""
+    allowed = "a SymPy expression or a finite real number"
     try:
-        return sp.sympify(value, strict=True)
+        expr = sp.sympify(value, strict=True)
     except (sp.SympifyError, TypeError, ValueError):
-        raise ParameterError(name, value, "a SymPy expression or a number") from None
+        raise ParameterError(name, value, allowed) from None
+    if not isinstance(expr, sp.Expr) or expr.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+        raise ParameterError(name, value, allowed)
+    if expr.is_number and not expr.is_extended_real:
+        raise ParameterError(name, value, allowed)
+    return expr
 
 
 # --- derivatives in atom form ------------------------------------------------------
@@ -522,7 +534,14 @@ def hessian_in_ratios(shape: str | WellDefinition) -> tuple[sp.Expr, sp.Expr, sp
 
 
 def substitute_ratios(expr: sp.Expr, shape: str | WellDefinition) -> sp.Expr:
-    """Replace the atoms by their definitions in x, y."""
+    """Replace the atoms by their definitions in x, y.
+
+    Examples
+    --------
+    >>> substitute_ratios(s1**2 + s2, "flat")
+    x**2/(alpha + beta*(y**2 - 1))**2 + y
+    """
+    expr = _expression("expr", expr)
     values = atom_values(shape)
     for atom in reversed(list(values)):
         expr = expr.subs(atom, values[atom])
@@ -797,6 +816,7 @@ def normal_mode(
     >>> normal_mode(power, power.values()).reason
     'dV/dy(x, 0) = 0 at n = 2'
     """
+    values = _parameter_values(shape_definition(shape), values)
     V = potential(shape)
     invariant, reason = y_invariance(V)
     at = {}
@@ -815,6 +835,31 @@ def normal_mode(
     q = sp.factor(sp.simplify(_on_axis(sp.diff(V, y, 2)) / mu))
     on_line = {c: sp.simplify(_on_axis(acc[c].subs(at))) for c in (x, X)}
     return NormalMode(True, reason, on_line[x], on_line[X], q)
+
+
+def _parameter_values(
+    definition: WellDefinition, values: object
+) -> dict[sp.Symbol, sp.Expr] | None:
+    """``values`` (None, or a mapping of some of the well's parameter symbols to finite
+    real numbers) as a dict, else ParameterError naming ``values``."""
+    if values is None:
+        return None
+    symbols = tuple(definition.parameter_symbols)
+    allowed = f"None or a mapping of the well's parameters {symbols} to finite real numbers"
+    if not isinstance(values, Mapping):
+        raise ParameterError("values", values, allowed)
+    out = {}
+    for key, value in values.items():
+        if key not in symbols:
+            raise ParameterError("values", values, allowed, why=f"{key!r} is not one of them")
+        try:
+            number = _expression("values", value)
+        except ParameterError:
+            number = None
+        if number is None or not number.is_number:
+            raise ParameterError("values", values, allowed, why=f"{key} = {value!r}") from None
+        out[key] = number
+    return out
 
 
 @dataclass(frozen=True)
@@ -883,10 +928,10 @@ def ladder(
     >>> steps.force, steps.equations_of_motion[y]
     ((-k*x, -k*y), -k*y/mu)
     """
-    definition = shape_definition(well)
+    definition = shape_definition(well, "well")
+    values = _parameter_values(definition, values)
     L, _ = lagrangian(1, well)
     eom = equations_of_motion(1, well)
-    values = None if values is None else dict(values)
     V = potential(well)
     return WellLadder(
         name=definition.name,

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import types as pytypes
 
-__all__ = ["python_kernel"]
+__all__: list[str] = []  # python_kernel is the package's own (model, equilibrium)
 
 
 def python_kernel(kernel):

@@ -108,7 +108,6 @@ __all__ = [
     "estimated_steps",
     "get_scheme",
     "join_values",
-    "kernels",
     "MAX_EPS",
     "MAX_STEPS",
     "ParameterError",

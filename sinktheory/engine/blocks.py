@@ -58,17 +58,9 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = [
-    "block_costs",
     "BlockPlan",
     "CALIBRATION",
-    "candidates",
-    "efficient_width",
-    "fixed",
-    "groups_of",
-    "layout",
     "machine_key",
-    "measure",
-    "plan",
     "SIZES",
     "THREAD_GAIN",
 ]

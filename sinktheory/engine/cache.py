@@ -42,14 +42,8 @@ __all__ = [
     "compile_note",
     "compiled",
     "COMPILE_SECONDS",
-    "cost_table_path",
-    "engine_system",
-    "import_generated",
     "LLVM_OPTIONS",
-    "load",
     "sink_name",
-    "user_well",
-    "well_definition",
     "well_name",
 ]
 
@@ -139,6 +133,11 @@ def well_name(well) -> str:
     """
     import sympy as sp
 
+    from ..symbolic import WellDefinition
+
+    if isinstance(well, str) or not isinstance(well, WellDefinition):
+        raise ParameterError("well", well, "a user's well (a WellDefinition, such as a "
+                             "sinktheory.userwell.UserWell)")  # fmt: skip
     text = "\n".join([sp.srepr(well.potential), *(p.name for p in well.parameter_symbols)])
     name = f"well_{hashlib.sha256(text.encode()).hexdigest()[:12]}"
     _USER_WELLS[name] = well

@@ -29,13 +29,14 @@ import numba
 import numpy as np
 
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
+from ..integrators import SplittingScheme
 from ..model import DAMPING_KINDS
 from ..progress import ProgressBar, chunks
 from ..validation import choice, nonnegative, real_array
 from . import blocks
 from .cache import cost_table_path, load
 
-__all__ = ["audit_error", "earliest_failure", "Ensemble", "Records", "TANGENT_MODES"]
+__all__ = ["Ensemble", "Records", "TANGENT_MODES"]
 
 #: Tangent modes: none (raw deviation vectors, e.g. a monodromy matrix), Gram-Schmidt
 #: orthonormalisation at every renormalisation (Lyapunov spectrum), or independent
@@ -242,6 +243,9 @@ class Ensemble:
         the run and the time (the earliest failure, whatever the threads); ``unit`` is
         what the messages call a segment.
         """
+        if not isinstance(scheme, SplittingScheme):
+            raise ParameterError("scheme", scheme, "a SplittingScheme (sinktheory.integrators."
+                                 "get_scheme)")  # fmt: skip
         R, M, D = self.runs, self.vectors, self.q.shape[0]
         K = self.module.members_of(D)
         S = int(segments)

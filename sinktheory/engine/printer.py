@@ -38,7 +38,7 @@ import sympy as sp
 from ..codegen import KernelPrinter, integer_powers, ipow
 from .systems import SeparableSystem, Term
 
-__all__ = ["cse_lines", "POWER_CLASSES", "render", "RESERVED", "STEPPER"]
+__all__ = ["POWER_CLASSES", "RESERVED", "STEPPER"]
 
 STEPPER = Path(__file__).with_name("_stepper.py")
 

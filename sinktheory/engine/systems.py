@@ -32,9 +32,7 @@ from .. import symbolic as S
 __all__ = [
     "Damping",
     "henon_heiles",
-    "run_time_symbols",
     "SeparableSystem",
-    "sink_system",
     "Term",
     "two_dof_duffing",
 ]
