@@ -26,70 +26,29 @@ def fixed_leaks() -> list:
 HEAVY: set[str] = set()
 
 #: Records the package returns, by key: what returns each.
-RECORDS: dict[str, str] = {}
+RECORDS: dict[str, str] = {
+    "sinktheory.chaos.result.ChaosResult": "returned by chaos.chaos, chaos_batch, indicators",
+    "sinktheory.chaos.staged.StagedExponent": "returned by chaos.staged.staged_chaos",
+    "sinktheory.chaos.verdicts.Split": "returned by chaos.verdicts.split",
+    "sinktheory.nnm.agreement.TransverseChart": "returned by nnm.agreement.transverse_chart",
+    "sinktheory.nnm.continuation.Branch": "returned by nnm.continuation.continue_orbits",
+    "sinktheory.nnm.continuation.Event": "in the events of nnm.continuation.continue_orbits",
+    "sinktheory.nnm.result.BranchResult": "returned by nnm.continuation.continue_both",
+    "sinktheory.nnm.shooting.Orbit": "returned by nnm.shooting.shoot",
+    "sinktheory.nnm.stability.Floquet": "returned by nnm.stability.floquet",
+}
 
 #: Entry points not fuzzed yet, by why.
 PENDING_BY_REASON: dict[str, tuple] = {
-    "leaks raw exceptions on hostile input (the first found is noted); its validation is not "
-    "written yet": (
-        "sinktheory.chaos.general.check_bound",  # bound=inf: nonfinite
-        "sinktheory.chaos.general.check_gali",  # dim=None: TypeError
-        "sinktheory.chaos.general.check_params",  # runs=[]: TypeError
-        "sinktheory.chaos.general.vector_count",  # dim=None: TypeError
-        "sinktheory.chaos.sink.check_tangent_work",  # gali=None: TypeError
-        "sinktheory.chaos.sink.tangent_runs",  # gali=None: TypeError
-        "sinktheory.chaos.sink.transverse_mask",  # particles=None: TypeError
-        "sinktheory.chaos.staged.looks",  # periods=None: TypeError
-        "sinktheory.chaos.vectors.vector_seed",  # run=None: TypeError
-        "sinktheory.nnm.modes.fixed_container_amplitude",  # sink=None: AttributeError
-        "sinktheory.nnm.system.parameter_names",  # system=None: AttributeError
-    ),
     "valid arguments not written yet": (
-        "sinktheory.chaos.general.check_transverse",
-        "sinktheory.chaos.points.check_point",
-        "sinktheory.chaos.points.points",
-        "sinktheory.chaos.result.time_average",
         "sinktheory.chaos.sink.chaos_batch",
-        "sinktheory.chaos.sink.point_steps",
-        "sinktheory.chaos.staged.staged_chaos",
-        "sinktheory.chaos.staged.staged_exponent",
-        "sinktheory.chaos.vectors.orthonormalise",
         "sinktheory.chaos.verdicts.agreement",
-        "sinktheory.chaos.verdicts.box_starts",
         "sinktheory.chaos.verdicts.map_calls",
-        "sinktheory.chaos.verdicts.map_split",
-        "sinktheory.chaos.verdicts.point_values",
-        "sinktheory.chaos.verdicts.stored_split",
-        "sinktheory.chaos.verdicts.stored_splits",
         "sinktheory.chaos.verdicts.verdicts",
         "sinktheory.nnm.agreement.agreement_report",
-        "sinktheory.nnm.agreement.statement",
         "sinktheory.nnm.agreement.transverse_chart",
-        "sinktheory.nnm.backbone.container_share",
         "sinktheory.nnm.backbone.localisation_energy",
-        "sinktheory.nnm.continuation.check_stop",
-        "sinktheory.nnm.continuation.merge",
         "sinktheory.nnm.continuation.switch_branch",
-        "sinktheory.nnm.continuation.tangent",
-        "sinktheory.nnm.modes.check_user_well",
         "sinktheory.nnm.modes.linear_modes",
-        "sinktheory.nnm.shooting.checked_start",
-        "sinktheory.nnm.shooting.checked_steps",
-        "sinktheory.nnm.shooting.subspace_indices",
-        "sinktheory.nnm.stability.angles",
-        "sinktheory.nnm.stability.classify",
-        "sinktheory.nnm.stability.reduced_monodromy",
-    ),
-    "a result record the package builds": (
-        "sinktheory.chaos.result.ChaosResult",
-        "sinktheory.chaos.staged.StagedExponent",
-        "sinktheory.chaos.verdicts.Split",
-        "sinktheory.nnm.agreement.TransverseChart",
-        "sinktheory.nnm.continuation.Branch",
-        "sinktheory.nnm.continuation.Event",
-        "sinktheory.nnm.result.BranchResult",
-        "sinktheory.nnm.shooting.Orbit",
-        "sinktheory.nnm.shooting.ShootingProblem",
-        "sinktheory.nnm.stability.Floquet",
     ),
 }

@@ -63,11 +63,7 @@ from .vectors import ORTHONORMALISE_SECONDS, random_vectors
 __all__ = [
     "chaos",
     "chaos_batch",
-    "check_tangent_work",
-    "point_steps",
     "start_energy",
-    "tangent_runs",
-    "transverse_mask",
 ]
 
 

@@ -56,7 +56,6 @@ __all__ = [
     "agreement_report",
     "LOW_ENERGY",
     "reach_energy",
-    "statement",
     "transverse_chart",
     "TransverseChart",
 ]

@@ -58,7 +58,6 @@ from ..model import Sink
 from .continuation import Branch, check_stop, continue_orbits, merge
 
 __all__ = [
-    "container_share",
     "harmonic_balance",
     "harmonic_balance_frequency",
     "HB_AGREEMENT",

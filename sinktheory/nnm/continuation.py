@@ -75,7 +75,6 @@ __all__ = [
     "POINT_STEPS",
     "Branch",
     "check_ds",
-    "check_stop",
     "continue_both",
     "continue_orbits",
     "DS_MIN_FACTOR",
@@ -84,9 +83,7 @@ __all__ = [
     "LOCATE_ITER",
     "MAX_POINTS",
     "MAX_TURN",
-    "merge",
     "switch_branch",
-    "tangent",
     "TOUCH_TOL",
 ]
 

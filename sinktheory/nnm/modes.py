@@ -45,8 +45,6 @@ from ..model import Sink
 from .system import FlowSystem
 
 __all__ = [
-    "check_user_well",
-    "fixed_container_amplitude",
     "linear_modes",
     "mode_guess",
     "MODES",
