@@ -41,15 +41,10 @@ from .vectors import random_vectors
 
 __all__ = [
     "check_block",
-    "check_bound",
-    "check_gali",
-    "check_params",
     "check_renorm",
     "check_run",
     "check_spectrum",
-    "check_transverse",
     "indicators",
-    "vector_count",
 ]
 
 

@@ -18,7 +18,7 @@ from ..errors import ParameterError
 from ..runstats import check_runs, ensemble_mean
 from ..simulate import check_point as ensemble_check
 
-__all__ = ["check_point", "points"]
+__all__ = []
 
 
 def check_point(p: dict) -> None:

@@ -15,7 +15,7 @@ from ..results import Result, plain
 from ..runstats import ensemble_mean
 from .verdicts import Split, box_starts, split
 
-__all__ = ["ChaosResult", "PER_RUN_NOTE", "sali_from_gali2", "time_average"]
+__all__ = ["ChaosResult", "PER_RUN_NOTE", "sali_from_gali2"]
 
 #: What ``as_dict`` says next to the per-run values (``--json`` of ``sinktheory chaos``).
 PER_RUN_NOTE = (

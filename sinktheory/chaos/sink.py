@@ -63,11 +63,7 @@ from .vectors import ORTHONORMALISE_SECONDS, random_vectors
 __all__ = [
     "chaos",
     "chaos_batch",
-    "check_tangent_work",
-    "point_steps",
     "start_energy",
-    "tangent_runs",
-    "transverse_mask",
 ]
 
 
@@ -270,7 +266,12 @@ def chaos_batch(
     >>> bool((both[1].lambda1 == alone.lambda1).all())
     True
     """
-    sinks, settings = list(sinks), list(settings)
+    sinks = _sequence("sinks", sinks, "a sequence of sinktheory.model.Sink")
+    settings = _sequence("settings", settings, "a sequence of sinktheory.model.RunSettings")
+    for sink in sinks:
+        if not isinstance(sink, Sink):
+            raise ParameterError("sinks", type(sink).__name__,
+                                 "a sequence of sinktheory.model.Sink")  # fmt: skip
     if not sinks or len(sinks) != len(settings):
         raise ParameterError(
             "sinks, settings", f"{len(sinks)} and {len(settings)} items", "equal, non-zero"
@@ -288,6 +289,16 @@ def chaos_batch(
         check_tangent_work(p.sink, p.settings, n, options["spectrum"], options["gali"],
                            options["transverse"], scheme.name)  # fmt: skip
     return _together(points, scheme.name, dts, steps, None, options)
+
+
+def _sequence(name: str, value, allowed: str) -> list:
+    """``value`` as a list: a list, tuple or other sequence of items (not text, not a
+    mapping), else refused naming ``name``."""
+    from collections.abc import Sequence
+
+    if isinstance(value, str | bytes) or not isinstance(value, Sequence | np.ndarray):
+        raise ParameterError(name, type(value).__name__, allowed)
+    return list(value)
 
 
 def point_steps(points, dt) -> tuple[tuple[float, ...], tuple[int, ...]]:

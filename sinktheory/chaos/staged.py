@@ -42,7 +42,7 @@ from ..glossary import renamed
 from ..runstats import ensemble_mean
 from .verdicts import threshold
 
-__all__ = ["LOOKS", "looks", "MIN_LOOK", "staged_chaos", "staged_exponent", "StagedExponent"]
+__all__ = ["LOOKS", "MIN_LOOK", "StagedExponent"]
 
 if TYPE_CHECKING:
     from ..engine.core import Ensemble

@@ -28,7 +28,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 
-__all__ = ["MAX_DIM", "ORTHONORMALISE_SECONDS", "orthonormalise", "random_vectors", "vector_seed"]
+__all__ = ["MAX_DIM", "ORTHONORMALISE_SECONDS", "random_vectors"]
 
 #: Largest number of coordinates D (1 + 2k for k = 10^5 particles).
 MAX_DIM = 200_001

@@ -59,14 +59,9 @@ __all__ = [
     "Split",
     "SPLIT_RESULTS",
     "agreement",
-    "box_starts",
     "chaotic",
     "map_calls",
-    "map_split",
-    "point_values",
     "split",
-    "stored_split",
-    "stored_splits",
     "threshold",
     "verdicts",
 ]
@@ -254,11 +249,27 @@ def box_starts(box) -> str:
         "at X = sqrt(2 E0) at rest")  # fmt: skip
 
 
+def check_map(ds, *names: str, attrs: tuple[str, ...] = (), name: str = "ds") -> None:
+    """Refuse ``ds`` (naming ``name``) unless it is an xarray Dataset holding the variables
+    ``names`` and the attributes ``attrs`` (a chaos map of
+    :func:`sinktheory.sweep.chaosmap.chaos_map` holds them all)."""
+    import xarray as xr
+
+    allowed = ("a chaos map (an xarray Dataset of sinktheory.sweep.chaosmap.chaos_map) with "
+               + ", ".join((*names, *(f"attribute {a}" for a in attrs))))  # fmt: skip
+    if not isinstance(ds, xr.Dataset):
+        raise ParameterError(name, type(ds).__name__, allowed)
+    missing = [n for n in names if n not in ds] + [a for a in attrs if a not in ds.attrs]
+    if missing:
+        raise ParameterError(name, f"a Dataset without {', '.join(missing)}", allowed)
+
+
 def map_split(ds) -> list[Split]:
     """:func:`split` at every point of a chaos map (the ``chaos`` sweep kind; its per-run
     ``lambda1_runs``), in the order of ``ds.lambda1.values.ravel()``.  Each point's span
     is the periods its lambda_1 ran less the transient; the starts are the map's box
     (transient and box read per point where they were swept)."""
+    check_map(ds, "lambda1", "lambda1_runs", "lambda1_periods")
     runs = ds.lambda1_runs.transpose(..., "run").values
     runs = runs.reshape(-1, runs.shape[-1])
     ran = np.broadcast_to(ds.lambda1_periods.values, ds.lambda1.shape).ravel()
@@ -329,6 +340,7 @@ def verdicts(ds) -> dict:
     """Chaotic / regular per beta from lambda_1 and from the transverse exponent; with the
     per-run exponents, also the regular runs per beta (``regular_runs``, of ``runs``) and
     where the ensemble is mixed (:func:`map_split`)."""
+    check_map(ds, "lambda1", "lambda1_se", attrs=("periods",))
     periods = int(ds.attrs["periods"])
     out = {"threshold": threshold(periods),
            "chaotic": chaotic(ds.lambda1.values, ds.lambda1_se.values, periods)}  # fmt: skip
@@ -356,9 +368,17 @@ def agreement(ds, stable: np.ndarray) -> dict:
     scored betas where the transverse exponent's verdict (:func:`chaotic`, on its mean)
     calls chaotic exactly where every run is.
     """
+    check_map(ds, "lambda1", "lambda1_se", "lambda1_runs", "lambda1_periods", "beta",
+               attrs=("periods",))  # fmt: skip
     c = map_calls(ds)
     calls = c["calls"].ravel()
-    stable = np.asarray(stable, dtype=bool).ravel()
+    allowed = f"True or False for each of the map's {calls.size} betas"
+    flags = v.real_array("stable", stable, allowed)
+    if flags.size != calls.size or not np.isin(flags, (0, 1)).all():
+        simple = isinstance(stable, str | int | float | list | tuple) and len(repr(stable)) < 60
+        shown = stable if simple else f"{flags.size} values"
+        raise ParameterError("stable", shown, allowed)
+    stable = flags.astype(bool).ravel()
     scored = calls != 0
     beta = np.asarray(ds.beta.values, dtype=float).ravel()
     out = {
@@ -373,8 +393,8 @@ def agreement(ds, stable: np.ndarray) -> dict:
         "floquet": float(np.mean(stable[scored] == (calls[scored] == -1)))
         if scored.any() else math.nan,
     }  # fmt: skip
-    v = verdicts(ds)
-    if "transverse_chaotic" in v:
-        t = v["transverse_chaotic"].ravel()[scored]
+    judged = verdicts(ds)
+    if "transverse_chaotic" in judged:
+        t = judged["transverse_chaotic"].ravel()[scored]
         out["transverse"] = float(np.mean(t == (calls[scored] == 1))) if scored.any() else math.nan
     return out

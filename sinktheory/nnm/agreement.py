@@ -50,13 +50,12 @@ from ..glossary import renamed
 from ..model import Sink
 from .continuation import continue_orbits, merge
 from .modes import mode_guess, sink_flow
-from .shooting import Orbit, ShootingError, shoot
+from .shooting import MAX_SHOOT_STEPS, Orbit, ShootingError, shoot
 
 __all__ = [
     "agreement_report",
     "LOW_ENERGY",
     "reach_energy",
-    "statement",
     "transverse_chart",
     "TransverseChart",
 ]
@@ -156,9 +155,12 @@ def transverse_chart(
         continued up in energy).
     steps, ds, points : per period, first arclength step, most points per direction.
     """
-    betas = np.asarray(betas, dtype=float)
-    if betas.ndim != 1 or betas.size < 1 or np.any(np.diff(betas) <= 0):
-        raise ParameterError("betas", betas.tolist(), "an increasing sequence of betas")
+    _check_sink(sink)
+    betas = _check_betas(betas)
+    steps = v.positive_int("steps", steps, minimum=2, maximum=MAX_SHOOT_STEPS)
+    if start is not None and not isinstance(start, Orbit):
+        raise ParameterError("start", type(start).__name__,
+                             "None or the Orbit of the mode at (sink, total_energy)")  # fmt: skip
     lo, hi = float(betas[0]), float(betas[-1])
     if not lo <= sink.well.beta <= hi:
         raise ParameterError("beta", sink.well.beta, f"inside the grid [{lo:g}, {hi:g}]")
@@ -188,6 +190,20 @@ def transverse_chart(
                            gamma=w.gamma, particles=sink.particles, mass=sink.mass,
                            mode="coupled", label="coupled normal mode")  # fmt: skip
     return TransverseChart(betas, np.array(phi), np.array(stable), np.array(freq), result)
+
+
+def _check_sink(sink) -> None:
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+
+
+def _check_betas(betas) -> np.ndarray:
+    """The beta grid: finite numbers, increasing."""
+    allowed = "an increasing sequence of finite betas"
+    grid = v.finite_array("betas", betas, allowed, ndim=1)
+    if grid.size < 1 or np.any(np.diff(grid) <= 0):
+        raise ParameterError("betas", grid.tolist(), allowed)
+    return grid
 
 
 def _bracket(values: np.ndarray, b: float) -> int:
@@ -241,11 +257,26 @@ def agreement_report(
         ``beta``, ``phi_half_nnm``, ``phi_half_floquet``, ``lambda1``, ``lambda1_se``
         and ``calls`` (+1 every run chaotic, -1 every run regular, 0 mixed) for plotting.
     """
-    from ..chaos.verdicts import agreement, map_calls
+    from ..chaos.verdicts import agreement, check_map, map_calls
     from ..floquet import model_problem
+    from ..runstats import check_runs
     from ..sweep.chaosmap import chaos_map
 
-    betas = np.asarray(betas, dtype=float)
+    _check_sink(sink)
+    total_energy = v.positive("total_energy", total_energy)
+    betas = _check_betas(betas)
+    # the chaos map's and the chart's settings, checked even where chaos or chart is given
+    check_runs("runs", runs)
+    v.positive_int("periods", periods)
+    dt = None if dt is None else v.positive("dt", dt)
+    v.positive_int("seed", seed, minimum=0)
+    workers = None if workers is None else v.positive_int("workers", workers)
+    v.positive_int("steps", steps, minimum=2, maximum=MAX_SHOOT_STEPS)
+    if chaos is not None:
+        check_map(chaos, "beta", "lambda1", "lambda1_se", "lambda1_runs", "lambda1_periods",
+                  attrs=("periods",), name="chaos")  # fmt: skip
+    if chart is not None and not isinstance(chart, TransverseChart):
+        raise ParameterError("chart", type(chart).__name__, "None or a TransverseChart")
     w = sink.well
     if chaos is None:
         chaos = chaos_map(w.alpha, w.n, betas, shape=w.shape, particles=sink.particles,

@@ -58,7 +58,6 @@ from ..model import Sink
 from .continuation import Branch, check_stop, continue_orbits, merge
 
 __all__ = [
-    "container_share",
     "harmonic_balance",
     "harmonic_balance_frequency",
     "HB_AGREEMENT",
@@ -144,8 +143,10 @@ def container_share(backbone) -> np.ndarray:
 
 def localisation_energy(backbone, share: float = 0.5) -> float:
     """The energy at which the container's spring holds ``share`` of the energy of the
-    in-phase mode (module docstring), interpolated linearly in log E; NaN if the
-    backbone does not reach it.
+    in-phase mode (module docstring), interpolated linearly in log E.  ``backbone`` is
+    a :class:`~sinktheory.nnm.result.BranchResult` of :func:`inphase_backbone`; a share
+    it does not reach is refused (ParameterError naming ``share``, with the range of
+    shares it spans).
 
     Examples
     --------
@@ -155,6 +156,11 @@ def localisation_energy(backbone, share: float = 0.5) -> float:
     >>> round(localisation_energy(b), 6)
     4.6e-05
     """
+    from .result import BranchResult
+
+    if not isinstance(backbone, BranchResult):
+        raise ParameterError("backbone", type(backbone).__name__,
+                             "a BranchResult of inphase_backbone")  # fmt: skip
     share = v.positive("share", share)
     if not share < 1:
         raise ParameterError("share", share, "a fraction in (0, 1)")
@@ -164,9 +170,12 @@ def localisation_energy(backbone, share: float = 0.5) -> float:
     f, logE = f[order], logE[order]
     above = np.flatnonzero((f[:-1] - share) * (f[1:] - share) <= 0)
     if above.size == 0:
-        return math.nan
+        spans = f"[{f.min():.3g}, {f.max():.3g}]" if f.size else "nothing"
+        raise ParameterError("share", share, f"a share the backbone reaches (its {f.size} "
+                             f"point(s) span {spans})")  # fmt: skip
     i = int(above[0])
-    x = logE[i] + (share - f[i]) * (logE[i + 1] - logE[i]) / (f[i + 1] - f[i])
+    step = f[i + 1] - f[i]
+    x = logE[i] + (share - f[i]) * (logE[i + 1] - logE[i]) / step if step else logE[i]
     return float(math.exp(x))
 
 

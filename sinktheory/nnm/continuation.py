@@ -75,7 +75,6 @@ __all__ = [
     "POINT_STEPS",
     "Branch",
     "check_ds",
-    "check_stop",
     "continue_both",
     "continue_orbits",
     "DS_MIN_FACTOR",
@@ -84,9 +83,7 @@ __all__ = [
     "LOCATE_ITER",
     "MAX_POINTS",
     "MAX_TURN",
-    "merge",
     "switch_branch",
-    "tangent",
     "TOUCH_TOL",
 ]
 
@@ -296,12 +293,7 @@ def continue_orbits(
     if ds_max is not None and not ds_max >= ds:
         raise ParameterError("ds_max", ds_max, f">= ds = {ds:g} (the largest step)")
     max_points = v.positive_int("max_points", max_points, maximum=MAX_POINTS)
-    work = ensemble_steps(1, 2 * max_points * steps, system.members or 1, 2 * system.dim)
-    check_particle_steps(
-        "steps", steps, work + max_points * POINT_STEPS, f"{max_points} point(s) x {steps} "
-        f"step(s) per period, each shooting at least twice with {2 * system.dim} tangent "
-        f"vectors, plus {POINT_STEPS:.0f} particle steps a point for its Newton iterations"
-    )  # fmt: skip
+    _check_work("steps", steps, system, steps, max_points)
     free = subspace_indices(system, subspace)
     with refusals_named(parameter="continue_in"):
         problem = ShootingProblem(
@@ -315,6 +307,17 @@ def continue_orbits(
     u, J, data, it = problem.newton(u)
     first = problem.orbit(u, data, it)
     return _continue(problem, first, J, ds, ds_max, max_points, direction, lo, hi, locate)
+
+
+def _check_work(name: str, value, system: FlowSystem, steps: int, max_points: int) -> None:
+    """Refuse (naming ``name`` = ``value``) a branch of ``max_points`` points at ``steps``
+    steps a period that could not finish within the work limit."""
+    work = ensemble_steps(1, 2 * max_points * steps, system.members or 1, 2 * system.dim)
+    check_particle_steps(
+        name, value, work + max_points * POINT_STEPS, f"{max_points} point(s) x {steps} "
+        f"step(s) per period, each shooting at least twice with {2 * system.dim} tangent "
+        f"vectors, plus {POINT_STEPS:.0f} particle steps a point for its Newton iterations"
+    )  # fmt: skip
 
 
 def _continue(problem, first, J, ds, ds_max, max_points, direction, lo, hi, locate, t0=None):
@@ -585,6 +588,7 @@ def switch_branch(
     leaves = np.any(np.abs(w[np.setdiff1d(np.arange(D2), old.free)]) > 1e-8)
     free = np.arange(D2) if leaves or event.kind != "period-doubling" else old.free
     factor = 1 if event.kind == "symmetry-breaking" else 2
+    _check_work("max_points", max_points, orbit.system, old.steps * factor, max_points)
     problem = ShootingProblem(
         orbit.system if old.continue_in == "energy" else old.system,
         old.steps * factor,

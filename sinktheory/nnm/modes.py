@@ -45,8 +45,6 @@ from ..model import Sink
 from .system import FlowSystem
 
 __all__ = [
-    "check_user_well",
-    "fixed_container_amplitude",
     "linear_modes",
     "mode_guess",
     "MODES",
@@ -190,6 +188,8 @@ def linear_modes(system: FlowSystem) -> tuple[np.ndarray, np.ndarray]:
     >>> np.round(w, 6).tolist()
     [1.0, 1.732051]
     """
+    if not isinstance(system, FlowSystem):
+        raise ParameterError("system", system, "a sinktheory.nnm.system.FlowSystem")
     K = system.masses[:, None] * system.stiffness()
     m = np.sqrt(system.masses)
     A = K / m[:, None] / m[None, :]

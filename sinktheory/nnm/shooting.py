@@ -66,15 +66,11 @@ from .stability import Floquet, floquet
 from .system import FlowSystem
 
 __all__ = [
-    "checked_start",
-    "checked_steps",
     "MAX_ITER",
     "MAX_SHOOT_STEPS",
     "MAX_STEP",
     "Orbit",
     "shoot",
-    "ShootingProblem",
-    "subspace_indices",
     "XTOL",
 ]
 

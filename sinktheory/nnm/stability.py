@@ -54,7 +54,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 
-__all__ = ["angles", "classify", "Floquet", "floquet", "reduced_monodromy", "STABILITY_TOL"]
+__all__ = ["Floquet", "floquet", "STABILITY_TOL"]
 
 #: |mu| <= 1 + STABILITY_TOL counts as on the unit circle.
 STABILITY_TOL = 1e-6

@@ -48,7 +48,7 @@ from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..layout import SINK_PARAMS
 from ..model import MAX_RUNS
 
-__all__ = ["FlowSystem", "parameter_names"]
+__all__ = ["FlowSystem"]
 
 
 def parameter_names(system: str) -> tuple[str, ...]:

@@ -188,13 +188,16 @@ def _mark_localisation(ax, branches) -> None:
     """A vertical line where an in-phase 1:1 backbone changes from particle- to
     container-localised (:func:`sinktheory.nnm.backbone.localisation_energy`): the
     NES's transfer threshold lies near it."""
+    from ..errors import ParameterError
     from ..nnm.backbone import localisation_energy
 
     for b in branches:
         if b.meta.get("mode") != "in-phase":
             continue
-        e = localisation_energy(b)
-        if np.isfinite(e):
-            ax.axvline(e, color="0.3", ls="--", lw=1,
-                       label=f"in-phase mode half in the container: E = {e:.2g}")  # fmt: skip
-            return
+        try:
+            e = localisation_energy(b)
+        except ParameterError:  # this piece does not reach the half share
+            continue
+        ax.axvline(e, color="0.3", ls="--", lw=1,
+                   label=f"in-phase mode half in the container: E = {e:.2g}")  # fmt: skip
+        return
