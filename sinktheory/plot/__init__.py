@@ -23,3 +23,42 @@ def checked_axes(ax):
     if ax is not None and not isinstance(ax, Axes):
         raise ParameterError("ax", ax, "a matplotlib Axes or None")
     return ax
+
+
+def _shown(value):
+    """``value`` for a one-line message: itself if short and simple, else its type's name."""
+    simple = isinstance(value, str | int | float | complex | type(None)) and len(repr(value)) < 60
+    return value if simple else type(value).__name__
+
+
+def checked_result(name: str, value, cls, allowed: str):
+    """``value`` if it is a ``cls`` (the result object a figure draws), else ParameterError
+    naming ``name``, ``allowed`` saying what it must be and where it comes from."""
+    from ..errors import ParameterError
+
+    if not isinstance(value, cls):
+        raise ParameterError(name, _shown(value), allowed)
+    return value
+
+
+def checked_results(name: str, value, cls, allowed: str, *, maximum: int = 20) -> list:
+    """``value`` as a list of 1 to ``maximum`` ``cls`` objects, else ParameterError naming
+    ``name``."""
+    from ..errors import ParameterError
+
+    text = f"a sequence of 1 to {maximum} {allowed}"
+    if isinstance(value, str | bytes | dict) or not hasattr(value, "__iter__"):
+        raise ParameterError(name, _shown(value), text)
+    items = list(value)
+    if not 1 <= len(items) <= maximum or not all(isinstance(x, cls) for x in items):
+        raise ParameterError(name, _shown(value), text)
+    return items
+
+
+def checked_title(title, name: str = "title"):
+    """``title`` if it is a text or None, else ParameterError naming ``name``."""
+    from ..errors import ParameterError
+
+    if title is not None and not isinstance(title, str):
+        raise ParameterError(name, _shown(title), "a text or None")
+    return title

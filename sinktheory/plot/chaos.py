@@ -19,7 +19,7 @@ from ..chaos import verdicts
 from ..chaos.result import ChaosResult
 from ..runstats import ensemble_mean
 
-__all__ = ["convergence_figure", "draw_map", "FLOOR", "plot_convergence"]
+__all__ = ["convergence_figure", "FLOOR", "plot_convergence"]
 
 #: GALI values below this are round-off (unit vectors parallel to machine precision).
 FLOOR = 1e-16

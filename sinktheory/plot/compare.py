@@ -31,15 +31,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = [
-    "BAND",
-    "draw_efficiency",
-    "draw_t90",
-    "plot_comparison",
-    "plot_efficiency",
-    "plot_t90",
-    "plot_transfer",
-]
+__all__ = ["BAND", "plot_comparison", "plot_efficiency", "plot_t90", "plot_transfer"]
 
 #: Half-width of the error bands, in standard errors.
 BAND = 2.0

@@ -27,13 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = [
-    "draw_frequency_energy",
-    "draw_transverse",
-    "plot_frequency_energy",
-    "plot_nnm",
-    "plot_transverse",
-]
+__all__ = ["plot_frequency_energy", "plot_nnm", "plot_transverse"]
 
 _MARK = {
     "fold": ("s", "tab:purple"),
