@@ -93,6 +93,28 @@ def _branch():
     return b.result(label="NNM1")
 
 
+def _beta_branch():
+    from sinktheory.nnm.continuation import continue_both
+
+    return continue_both(
+        _sink(),
+        mode="container",
+        continue_in="beta",
+        total_energy=1e-3,
+        interval=(0.2, 0.3),
+        steps=200,
+        points=3,
+        ds=0.1,
+        half_traces=True,
+    )
+
+
+def _beta_scan():
+    from sinktheory.floquet import model_problem, scan
+
+    return scan(model_problem(0.5, 4), 0.2, 0.3, 20)
+
+
 def _scan():
     from sinktheory.floquet import pure_problem, scan
 
@@ -139,7 +161,7 @@ def overrides() -> dict:
     from _fuzz import Lazy
 
     s = "sinktheory.plot."
-    branch, scan = Lazy(_branch), Lazy(_scan)
+    scan, beta_branch, beta_scan = Lazy(_scan), Lazy(_beta_branch), Lazy(_beta_scan)
     comparison = Lazy(_comparison)
     return {
         s + "bifurcation.plot_bifurcation": dict(diagram=Lazy(_diagram), unstable=[(0.1, 0.15)]),
@@ -163,8 +185,10 @@ def overrides() -> dict:
         s + "floquet.plot_scan": dict(result=scan),
         s + "floquet.plot_tongues": dict(ns=[1, 2], lo=-0.5, hi=3.0, count=20),
         s + "nnm.plot_frequency_energy": dict(results=Lazy(lambda: [_branch()])),
-        s + "nnm.plot_nnm": dict(results=Lazy(lambda: [_branch()])),
-        s + "nnm.plot_transverse": dict(result=branch, scan=scan),
+        s + "nnm.plot_nnm": dict(results=Lazy(lambda: [_branch()]), beta_result=beta_branch,
+                                 scan=beta_scan),
+        s + "nnm.plot_transverse": dict(result=beta_branch, scan=beta_scan,
+                                        chaos=([0.2, 0.3], [0.01, 0.02], "lambda_1")),
         s + "simulate.plot_ensemble_energy": dict(result=Lazy(_simulation), sink=_sink()),
         s + "well.plot_user_well": dict(summary=Lazy(lambda: _user_well()[0]),
                                         potential=Lazy(lambda: _user_well()[1]), points=41),
@@ -173,32 +197,29 @@ def overrides() -> dict:
 
 def fixed_leaks() -> list:
     """(call, parameter it must name) of each leak fixed in this area."""
-    return []
+    from sinktheory.plot.bifurcation import plot_bifurcation
+    from sinktheory.plot.compare import plot_comparison
+    from sinktheory.plot.equilibrium import plot_lifetimes
+    from sinktheory.plot.floquet import plot_tongues
+    from sinktheory.plot.nnm import plot_frequency_energy
+    from sinktheory.plot.simulate import plot_ensemble_energy
+
+    lifetimes = dict(fractions=[0.2, 0.5], particles=[1, 2])
+    return [
+        (lambda: plot_ensemble_energy(None, _sink()), "result"),  # AttributeError
+        (lambda: plot_comparison(None), "comparison"),  # AttributeError
+        (lambda: plot_bifurcation(_diagram(), unstable=5), "unstable"),  # TypeError
+        (lambda: plot_tongues(5, -0.5, 3.0), "ns"),  # TypeError
+        (lambda: plot_lifetimes(**lifetimes, predicted=[[2.0]]), "predicted"),  # IndexError
+        (lambda: plot_frequency_energy([_branch()], stability="x"), "stability"),  # AttributeError
+    ]
 
 
 #: Entry points of this area whose calls take seconds: fewer examples.
-HEAVY: set[str] = set()
+HEAVY = {"sinktheory.plot.chaos.plot_convergence"}  # saves a PNG: about 1 s
 
 #: Records the package returns, by key: what returns each.
 RECORDS: dict[str, str] = {}
 
 #: Entry points not fuzzed yet, by why.
-PENDING_BY_REASON: dict[str, tuple] = {
-    "draws a result object": (
-        "sinktheory.plot.billiard.billiard_figure",
-        "sinktheory.plot.chaos.convergence_figure",
-        "sinktheory.plot.chaos.plot_convergence",
-        "sinktheory.plot.compare.plot_comparison",
-        "sinktheory.plot.compare.plot_efficiency",
-        "sinktheory.plot.compare.plot_t90",
-        "sinktheory.plot.compare.plot_transfer",
-        "sinktheory.plot.convergence.convergence_figure",
-        "sinktheory.plot.convergence.lyapunov_figure",
-        "sinktheory.plot.floquet.plot_scan",
-        "sinktheory.plot.floquet.plot_tongues",
-        "sinktheory.plot.nnm.plot_frequency_energy",
-        "sinktheory.plot.nnm.plot_nnm",
-        "sinktheory.plot.nnm.plot_transverse",
-        "sinktheory.plot.well.plot_user_well",
-    ),
-}
+PENDING_BY_REASON: dict[str, tuple] = {}

@@ -22,11 +22,15 @@ from matplotlib.ticker import SymmetricalLogLocator
 from .. import validation as v
 from ..errors import ParameterError
 from ..floquet import StabilityScan, model_problem, pure_problem, scan
+from ..model import SHAPES
+from . import checked_result, checked_title
 
 __all__ = ["plot_fig7", "plot_scan", "plot_tongues"]
 
 #: Most panels (wall stiffnesses) of :func:`plot_fig7`.
 MAX_PANELS = 10
+#: Most rows (wall stiffnesses) and grid points per row of :func:`plot_tongues`.
+MAX_ROWS, MAX_COUNT = 100, 100_000
 
 _LABEL = {"lam": r"$\Lambda$", "beta": r"$\beta$"}
 _CAP = 1e300
@@ -86,6 +90,8 @@ def plot_scan(result: StabilityScan, *, title: str | None = None) -> Figure:
     -------
     matplotlib.figure.Figure
     """
+    checked_result("result", result, StabilityScan, "a StabilityScan (sinktheory.floquet.scan)")
+    checked_title(title)
     p = result.chart.problem
     fig = Figure(figsize=(8, 4.5), layout="constrained")
     ax = fig.add_subplot()
@@ -196,8 +202,15 @@ def plot_tongues(
     >>> fig.axes[0].get_ylabel()
     '$n$'
     """
-    ns = sorted({v.positive_int("n", n) for n in ns})
-    grid = None
+    if isinstance(ns, str) or not hasattr(ns, "__len__") or not 1 <= len(ns) <= MAX_ROWS:
+        raise ParameterError("ns", ns, f"a sequence of 1 to {MAX_ROWS} wall stiffnesses n")
+    ns = sorted({v.positive_int("ns", n) for n in ns})
+    lo, hi = v.finite("lo", lo), v.finite("hi", hi)
+    if not lo < hi:
+        raise ParameterError("hi", hi, f"a number above lo = {lo:g}")
+    count = v.positive_int("count", count, minimum=2, maximum=MAX_COUNT)
+    v.choice("shape", shape, SHAPES)
+    grid = np.linspace(lo, hi, count)
     rows = []
     param = "lam"
     for n in ns:
@@ -206,7 +219,6 @@ def plot_tongues(
         else:
             problem = model_problem(alpha, n, shape=shape, amplitude=amplitude)
         param = problem.parameter
-        grid = np.linspace(v.finite("lo", lo), v.finite("hi", hi), count)
         chart = problem.evaluate(grid)
         h = chart.phi_half
         row = np.where(chart.stable, chart.rotation_number, np.where(h > 0, 1.5, -0.5))
