@@ -36,6 +36,13 @@ _LABEL = {"lam": r"$\Lambda$", "beta": r"$\beta$"}
 _CAP = 1e300
 
 
+def _stiffnesses(ns, maximum: int) -> tuple[int, ...]:
+    """``ns`` as a tuple of 1 to ``maximum`` wall stiffnesses, else ParameterError."""
+    if isinstance(ns, str) or not hasattr(ns, "__len__") or not 1 <= len(ns) <= maximum:
+        raise ParameterError("ns", ns, f"a sequence of 1 to {maximum} wall stiffnesses n")
+    return tuple(v.positive_int("ns", n) for n in ns)
+
+
 def _phi_axis(ax, h: np.ndarray) -> None:
     """Symmetric-log axis for phi_half: linear in [-1, 1], decades beyond, plain labels."""
     ax.set_yscale("symlog", linthresh=1.0, linscale=2.0)
@@ -136,16 +143,13 @@ def plot_fig7(
     -------
     matplotlib.figure.Figure
     """
-    if isinstance(ns, str) or not hasattr(ns, "__len__") or not 1 <= len(ns) <= MAX_PANELS:
-        raise ParameterError("ns", ns, f"a sequence of 1 to {MAX_PANELS} wall stiffnesses n")
-    ns = tuple(v.positive_int("ns", n) for n in ns)
+    ns = _stiffnesses(ns, MAX_PANELS)
     pair = "two finite numbers (from, to)"
     lo_hi = v.finite_array("beta_range", beta_range, pair, ndim=1)
     if lo_hi.size != 2:
         raise ParameterError("beta_range", f"{lo_hi.size} numbers", pair)
     lo, hi = lo_hi
-    if title is not None and not isinstance(title, str):
-        raise ParameterError("title", title, "a text or None")
+    checked_title(title)
     fig = Figure(figsize=(8, 3.2 * len(ns) + 0.5), layout="constrained")
     for k, n in enumerate(ns):
         ax = fig.add_subplot(len(ns), 1, k + 1)
@@ -202,9 +206,7 @@ def plot_tongues(
     >>> fig.axes[0].get_ylabel()
     '$n$'
     """
-    if isinstance(ns, str) or not hasattr(ns, "__len__") or not 1 <= len(ns) <= MAX_ROWS:
-        raise ParameterError("ns", ns, f"a sequence of 1 to {MAX_ROWS} wall stiffnesses n")
-    ns = sorted({v.positive_int("ns", n) for n in ns})
+    ns = sorted(set(_stiffnesses(ns, MAX_ROWS)))
     lo, hi = v.finite("lo", lo), v.finite("hi", hi)
     if not lo < hi:
         raise ParameterError("hi", hi, f"a number above lo = {lo:g}")
