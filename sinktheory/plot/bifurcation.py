@@ -16,6 +16,9 @@ from __future__ import annotations
 import numpy as np
 
 from ..bifurcation import BifurcationDiagram
+from ..errors import ParameterError
+from ..validation import finite_array
+from . import checked_axes, checked_result, checked_title
 
 __all__ = ["plot_bifurcation"]
 
@@ -23,6 +26,16 @@ __all__ = ["plot_bifurcation"]
 def plot_bifurcation(diagram: BifurcationDiagram, unstable=(), ax=None, title=None):
     """Draw the section points against beta; shade the Floquet-unstable ``unstable``
     intervals [(lo, hi), ...] of the normal mode y = 0.  Returns the Figure."""
+    checked_result(
+        "diagram", diagram, BifurcationDiagram, "a BifurcationDiagram (sinktheory.bifurcation)"
+    )
+    pairs = "a sequence of (lo, hi) pairs of finite betas"
+    unstable = finite_array("unstable", unstable, pairs)
+    unstable = unstable.reshape(0, 2) if unstable.size == 0 else unstable
+    if unstable.ndim != 2 or unstable.shape[1] != 2:
+        raise ParameterError("unstable", f"an array of shape {unstable.shape}", pairs)
+    checked_axes(ax)
+    checked_title(title)
     if ax is None:
         from matplotlib.figure import Figure
 
@@ -47,6 +60,6 @@ def plot_bifurcation(diagram: BifurcationDiagram, unstable=(), ax=None, title=No
         title or (f"{diagram.shape} well, $\\alpha$={diagram.alpha:g}, $n$={diagram.n}, $k$=1"),
         fontsize=9,
     )
-    if unstable:
+    if len(unstable):
         ax.legend(loc="upper left", fontsize=8)
     return fig

@@ -15,6 +15,7 @@ import numpy as np
 
 from ..billiard.run import BilliardResult
 from ..runstats import ensemble_mean
+from . import checked_result, checked_title
 
 __all__ = ["billiard_figure"]
 
@@ -33,6 +34,8 @@ def billiard_figure(result: BilliardResult, *, title: str = ""):
     """
     from matplotlib.figure import Figure
 
+    checked_result("result", result, BilliardResult, "a BilliardResult (sinktheory.billiard)")
+    checked_title(title)
     fig = Figure(figsize=(13, 4.2), layout="constrained")
     ax_t, ax_e, ax_l = fig.subplots(1, 3)
     for piece in result.table.pieces:

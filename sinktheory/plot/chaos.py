@@ -18,8 +18,10 @@ import numpy as np
 from ..chaos import verdicts
 from ..chaos.result import ChaosResult
 from ..runstats import ensemble_mean
+from ..validation import positive_int
+from . import checked_path, checked_result, checked_title
 
-__all__ = ["convergence_figure", "draw_map", "FLOOR", "plot_convergence"]
+__all__ = ["convergence_figure", "FLOOR", "plot_convergence"]
 
 #: GALI values below this are round-off (unit vectors parallel to machine precision).
 FLOOR = 1e-16
@@ -42,6 +44,10 @@ def convergence_figure(result: ChaosResult, *, window: int | None = None, title:
     """
     from matplotlib.figure import Figure
 
+    checked_result("result", result, ChaosResult, "a ChaosResult (sinktheory.chaos)")
+    segments = len(result.times) - 1
+    window = None if window is None else positive_int("window", window, maximum=segments)
+    checked_title(title)
     lower = result.gali is not None or result.megno is not None
     fig = Figure(figsize=(8, 7 if lower else 4.5), layout="constrained")
     axes = fig.subplots(2 if lower else 1, 1, squeeze=False)[:, 0]
@@ -109,7 +115,8 @@ def convergence_figure(result: ChaosResult, *, window: int | None = None, title:
 
 
 def plot_convergence(result: ChaosResult, path, **kwargs) -> None:
-    """Draw :func:`convergence_figure` to ``path`` (PNG)."""
+    """Draw :func:`convergence_figure` to ``path`` (PNG unless its suffix says otherwise)."""
+    checked_path("path", path)
     convergence_figure(result, **kwargs).savefig(path, dpi=120)
 
 

@@ -31,15 +31,11 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = [
-    "BAND",
-    "draw_efficiency",
-    "draw_t90",
-    "plot_comparison",
-    "plot_efficiency",
-    "plot_t90",
-    "plot_transfer",
-]
+from ..errors import ParameterError
+from ..nnm.result import BranchResult
+from . import _shown, checked_fields, checked_results, checked_title
+
+__all__ = ["BAND", "plot_comparison", "plot_efficiency", "plot_t90", "plot_transfer"]
 
 #: Half-width of the error bands, in standard errors.
 BAND = 2.0
@@ -85,10 +81,19 @@ def draw_t90(ax, comparison) -> None:
     ax.grid(alpha=0.3, which="both")
 
 
+def _checked(comparison, title) -> None:
+    """ParameterError unless ``comparison`` is a Comparison and ``title`` a text or None."""
+    fields = ("attachment", "container_energy", "efficiency", "t90", "reached", "damping")
+    checked_fields("comparison", comparison, fields,
+                   "a Comparison (sinktheory.compare.efficiency.compare)")  # fmt: skip
+    checked_title(title)
+
+
 def _alone(draw, comparison, title):
     """One chart of ``draw`` on its own figure."""
     from matplotlib.figure import Figure
 
+    _checked(comparison, title)
     fig = Figure(figsize=(7, 4.6), layout="constrained")
     ax = fig.add_subplot()
     draw(ax, comparison)
@@ -111,6 +116,7 @@ def plot_comparison(comparison, *, title: str | None = None):
     """Efficiency (left) and 90 % time (right) against E0, attachments side by side."""
     from matplotlib.figure import Figure
 
+    _checked(comparison, title)
     fig = Figure(figsize=(12, 4.6), layout="constrained")
     left, right = fig.subplots(1, 2)
     draw_efficiency(left, comparison)
@@ -149,8 +155,23 @@ def plot_transfer(maps, backbones=(), *, title: str | None = None):
 
     from .nnm import draw_frequency_energy
 
-    maps = list(maps)
-    backbones = list(backbones) + [[]] * (len(maps) - len(backbones))
+    maps = checked_results(
+        "maps",
+        maps,
+        ("wavelet", "energy_left", "label", "impulse_energy"),
+        "TransferMap (sinktheory.compare.transfer.transfer_maps)",
+    )
+    branches = f"a sequence of at most {len(maps)} lists of BranchResult (one per map)"
+    if isinstance(backbones, str | bytes | dict) or not hasattr(backbones, "__iter__"):
+        raise ParameterError("backbones", _shown(backbones), branches)
+    backbones = list(backbones)
+    if len(backbones) > len(maps) or not all(
+        isinstance(b, list | tuple) and all(isinstance(r, BranchResult) for r in b)
+        for b in backbones
+    ):
+        raise ParameterError("backbones", _shown(backbones), branches)
+    checked_title(title)
+    backbones = [list(b) for b in backbones] + [[]] * (len(maps) - len(backbones))
     fig = Figure(figsize=(4.6 * len(maps), 7.5), layout="constrained")
     axes = np.asarray(fig.subplots(2, len(maps), squeeze=False))
     for j, m in enumerate(maps):

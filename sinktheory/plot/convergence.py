@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..billiard.convergence import Convergence, LyapunovChart
+from . import checked_result, checked_title
 
 __all__ = ["convergence_figure", "lyapunov_figure"]
 
@@ -29,6 +30,13 @@ def lyapunov_figure(chart: LyapunovChart, *, title: str = ""):
     """
     from matplotlib.figure import Figure
 
+    checked_result(
+        "chart",
+        chart,
+        LyapunovChart,
+        "a LyapunovChart (sinktheory.billiard.convergence.lyapunov_chart)",
+    )
+    checked_title(title)
     fig = Figure(figsize=(8, 4.6), layout="constrained")
     ax = fig.subplots()
     shift = 0.12 * np.min(np.diff(chart.betas)) if chart.betas.size > 1 else 0.0
@@ -73,6 +81,10 @@ def convergence_figure(result: Convergence, *, title: str = ""):
     """
     from matplotlib.figure import Figure
 
+    checked_result(
+        "result", result, Convergence, "a Convergence (sinktheory.billiard.convergence.convergence)"
+    )
+    checked_title(title)
     fig = Figure(figsize=(12, 3.8), layout="constrained")
     labels = {
         "lambda1": r"$\lambda_1$ per unit time",

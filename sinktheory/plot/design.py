@@ -31,17 +31,7 @@ from itertools import combinations
 
 import numpy as np
 
-__all__ = [
-    "energy_curves",
-    "HEAT",
-    "heatmap",
-    "heatmaps",
-    "label",
-    "panels",
-    "pareto_chart",
-    "swept",
-    "ZETA",
-]
+__all__ = ["HEAT", "label", "ZETA"]
 
 
 def swept(ds) -> list[str]:

@@ -5,6 +5,14 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from .. import validation as v
+from ..equilibrium.ergodicity import ErgodicityMap
+from ..equilibrium.law import EquilibriumSummary
+from ..equilibrium.prediction import RelaxationPrediction
+from ..equilibrium.relaxation import Relaxation
+from ..errors import ParameterError
+from . import _shown, checked_axes, checked_result
+
 __all__ = ["plot_ergodicity", "plot_law", "plot_lifetimes", "plot_relaxation", "VERDICTS"]
 
 
@@ -20,6 +28,10 @@ def plot_law(summary, ax=None):
     >>> fig.axes[0].get_xlabel()
     '$s = E_c / E$'
     """
+    checked_result(
+        "summary", summary, EquilibriumSummary, "an EquilibriumSummary (EquilibriumLaw.summary)"
+    )
+    checked_axes(ax)
     law = summary.law
     if ax is None:
         fig = Figure(figsize=(6.0, 4.2), layout="constrained")
@@ -79,13 +91,25 @@ def plot_lifetimes(fractions, particles, predicted, measured=None, ax=None):
     >>> fig.axes[0].get_yscale()
     'log'
     """
+    fractions = v.finite_array("fractions", fractions, "a non-empty 1-d array of fractions", ndim=1)
+    particles = v.finite_array("particles", particles, "a non-empty 1-d array of k", ndim=1)
+    if not fractions.size or not particles.size:
+        raise ParameterError(
+            "fractions" if not fractions.size else "particles", [], "a non-empty 1-d array"
+        )
+    particles = [v.positive_int("particles", k) for k in particles]
+    shape = (len(particles), fractions.size)
+    allowed = f"an array of shape {shape} (particles x fractions) of positive times"
+    predicted = v.real_array("predicted", predicted, allowed)
+    if predicted.shape != shape or not np.all(predicted > 0):  # inf: never returns
+        raise ParameterError("predicted", f"an array of shape {predicted.shape}", allowed)
+    measured = _measured(measured)
+    checked_axes(ax)
     if ax is None:
         fig = Figure(figsize=(6.0, 4.2), layout="constrained")
         ax = fig.subplots()
     else:
         fig = ax.figure
-    fractions = np.asarray(fractions, dtype=float)
-    predicted = np.asarray(predicted, dtype=float)
     colours = {}
     for i, k in enumerate(particles):
         (line,) = ax.plot(fractions, predicted[i], lw=1.5, label=f"$k$={k} (Kac, law)")
@@ -102,6 +126,20 @@ def plot_lifetimes(fractions, particles, predicted, measured=None, ax=None):
     return fig
 
 
+def _measured(measured) -> list:
+    """The measured points of :func:`plot_lifetimes`: (k, f, mean, stderr) rows, finite."""
+    if measured is None:
+        return []
+    rows = v.finite_array("measured", measured, "a sequence of (k, f, mean, stderr) rows")
+    if rows.size == 0:
+        return []
+    if rows.ndim != 2 or rows.shape[1] != 4:
+        raise ParameterError(
+            "measured", _shown(measured), "a sequence of (k, f, mean, stderr) rows"
+        )
+    return [tuple(row) for row in rows]
+
+
 def plot_relaxation(prediction, measured=None, ax=None):
     """Predicted <E_c>(t) (a :class:`~sinktheory.equilibrium.prediction.RelaxationPrediction`)
     with its band and run-to-run spread, the law's mean and the settled band, the
@@ -110,14 +148,28 @@ def plot_relaxation(prediction, measured=None, ax=None):
 
     Examples
     --------
-    >>> from types import SimpleNamespace as NS
-    >>> t = np.linspace(0, 100, 5)
-    >>> p = NS(times=t, means=0.1 + 0.4 * np.exp(-t / 30), low=0.1 + 0.3 * np.exp(-t / 30),
-    ...        high=0.1 + 0.5 * np.exp(-t / 30), spread=0.05 + 0 * t, target=0.1, fraction=0.05,
-    ...        settle_time=60.0, particles=1, mass=0.2, container_energy=0.5)
+    >>> from sinktheory.canonical import FIG8_WELL
+    >>> from sinktheory.equilibrium.prediction import predict_relaxation
+    >>> from sinktheory.model import Sink
+    >>> p = predict_relaxation(Sink(FIG8_WELL, particles=1, mass=0.2), 0.5, shell_energies=4,
+    ...                        shell_runs=16, lag=64, resamples=20, seed=1)
     >>> plot_relaxation(p).axes[0].get_xlabel()
     'time (periods $T$)'
     """
+    checked_result(
+        "prediction",
+        prediction,
+        RelaxationPrediction,
+        "a RelaxationPrediction (sinktheory.equilibrium.predict_relaxation)",
+    )
+    if measured is not None:
+        checked_result(
+            "measured",
+            measured,
+            Relaxation,
+            "a Relaxation (sinktheory.equilibrium.measure_relaxation) or None",
+        )
+    checked_axes(ax)
     if ax is None:
         fig = Figure(figsize=(6.4, 4.2), layout="constrained")
         ax = fig.subplots()
@@ -173,6 +225,19 @@ def plot_ergodicity(result, ax=None):
     >>> [a.get_ylabel() for a in plot_ergodicity(m).axes]
     ['KS distance to the law', '$\\\\lambda_1$']
     """
+    checked_result(
+        "result",
+        result,
+        ErgodicityMap,
+        "an ErgodicityMap (sinktheory.equilibrium.ergodicity.ergodicity_map)",
+    )
+    if ax is not None:
+        pair = "a pair of matplotlib Axes (top, bottom) or None"
+        if isinstance(ax, str) or not hasattr(ax, "__len__") or len(ax) != 2:
+            raise ParameterError("ax", _shown(ax), pair)
+        for a in ax:
+            if checked_axes(a) is None:
+                raise ParameterError("ax", _shown(ax), pair)
     if ax is None:
         fig = Figure(figsize=(7.0, 5.5), layout="constrained")
         top, bottom = fig.subplots(2, 1, sharex=True)

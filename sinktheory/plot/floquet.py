@@ -22,14 +22,25 @@ from matplotlib.ticker import SymmetricalLogLocator
 from .. import validation as v
 from ..errors import ParameterError
 from ..floquet import StabilityScan, model_problem, pure_problem, scan
+from ..model import SHAPES
+from . import checked_result, checked_title
 
 __all__ = ["plot_fig7", "plot_scan", "plot_tongues"]
 
 #: Most panels (wall stiffnesses) of :func:`plot_fig7`.
 MAX_PANELS = 10
+#: Most rows (wall stiffnesses) and grid points per row of :func:`plot_tongues`.
+MAX_ROWS, MAX_COUNT = 100, 100_000
 
 _LABEL = {"lam": r"$\Lambda$", "beta": r"$\beta$"}
 _CAP = 1e300
+
+
+def _stiffnesses(ns, maximum: int) -> tuple[int, ...]:
+    """``ns`` as a tuple of 1 to ``maximum`` wall stiffnesses, else ParameterError."""
+    if isinstance(ns, str) or not hasattr(ns, "__len__") or not 1 <= len(ns) <= maximum:
+        raise ParameterError("ns", ns, f"a sequence of 1 to {maximum} wall stiffnesses n")
+    return tuple(v.positive_int("ns", n) for n in ns)
 
 
 def _phi_axis(ax, h: np.ndarray) -> None:
@@ -86,6 +97,8 @@ def plot_scan(result: StabilityScan, *, title: str | None = None) -> Figure:
     -------
     matplotlib.figure.Figure
     """
+    checked_result("result", result, StabilityScan, "a StabilityScan (sinktheory.floquet.scan)")
+    checked_title(title)
     p = result.chart.problem
     fig = Figure(figsize=(8, 4.5), layout="constrained")
     ax = fig.add_subplot()
@@ -130,16 +143,13 @@ def plot_fig7(
     -------
     matplotlib.figure.Figure
     """
-    if isinstance(ns, str) or not hasattr(ns, "__len__") or not 1 <= len(ns) <= MAX_PANELS:
-        raise ParameterError("ns", ns, f"a sequence of 1 to {MAX_PANELS} wall stiffnesses n")
-    ns = tuple(v.positive_int("ns", n) for n in ns)
+    ns = _stiffnesses(ns, MAX_PANELS)
     pair = "two finite numbers (from, to)"
     lo_hi = v.finite_array("beta_range", beta_range, pair, ndim=1)
     if lo_hi.size != 2:
         raise ParameterError("beta_range", f"{lo_hi.size} numbers", pair)
     lo, hi = lo_hi
-    if title is not None and not isinstance(title, str):
-        raise ParameterError("title", title, "a text or None")
+    checked_title(title)
     fig = Figure(figsize=(8, 3.2 * len(ns) + 0.5), layout="constrained")
     for k, n in enumerate(ns):
         ax = fig.add_subplot(len(ns), 1, k + 1)
@@ -196,8 +206,13 @@ def plot_tongues(
     >>> fig.axes[0].get_ylabel()
     '$n$'
     """
-    ns = sorted({v.positive_int("n", n) for n in ns})
-    grid = None
+    ns = sorted(set(_stiffnesses(ns, MAX_ROWS)))
+    lo, hi = v.finite("lo", lo), v.finite("hi", hi)
+    if not lo < hi:
+        raise ParameterError("hi", hi, f"a number above lo = {lo:g}")
+    count = v.positive_int("count", count, minimum=2, maximum=MAX_COUNT)
+    v.choice("shape", shape, SHAPES)
+    grid = np.linspace(lo, hi, count)
     rows = []
     param = "lam"
     for n in ns:
@@ -206,7 +221,6 @@ def plot_tongues(
         else:
             problem = model_problem(alpha, n, shape=shape, amplitude=amplitude)
         param = problem.parameter
-        grid = np.linspace(v.finite("lo", lo), v.finite("hi", hi), count)
         chart = problem.evaluate(grid)
         h = chart.phi_half
         row = np.where(chart.stable, chart.rotation_number, np.where(h > 0, 1.5, -0.5))

@@ -27,13 +27,13 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = [
-    "draw_frequency_energy",
-    "draw_transverse",
-    "plot_frequency_energy",
-    "plot_nnm",
-    "plot_transverse",
-]
+from .. import validation as v
+from ..errors import ParameterError
+from ..floquet import StabilityScan
+from ..nnm.result import BranchResult
+from . import _shown, checked_result, checked_results, checked_title
+
+__all__ = ["plot_frequency_energy", "plot_nnm", "plot_transverse"]
 
 _MARK = {
     "fold": ("s", "tab:purple"),
@@ -42,6 +42,35 @@ _MARK = {
     "symmetry-breaking": ("^", "tab:green"),
     "branch-point": ("D", "tab:brown"),
 }
+
+
+#: The stability flags a frequency-energy plot can draw lines by.
+STABILITY = ("stable", "stable_inplane", "stable_transverse")
+_BRANCHES = "BranchResult (sinktheory.nnm)"
+
+
+def _beta_branch(name: str, result) -> BranchResult:
+    """``result`` if it is a branch continued in a well parameter, else ParameterError."""
+    allowed = "a BranchResult continued in a well parameter (beta), not in the energy"
+    checked_result(name, result, BranchResult, allowed)
+    if result.meta.get("continue_in") == "energy":
+        raise ParameterError(name, "a branch continued in the energy", allowed)
+    return result
+
+
+def _chaos_hook(chaos, arrays: bool):
+    """``chaos`` if None, a function of an Axes or (when ``arrays``) (beta, values, label)
+    of equal-length 1-d arrays and a text, else ParameterError naming ``chaos``."""
+    allowed = "None, a function chaos(ax)" + (" or (beta, values, label)" if arrays else "")
+    if chaos is None or callable(chaos):
+        return chaos
+    if not arrays or not isinstance(chaos, tuple | list) or len(chaos) != 3:
+        raise ParameterError("chaos", _shown(chaos), allowed)
+    beta = v.finite_array("chaos", chaos[0], allowed, ndim=1)
+    values = v.real_array("chaos", chaos[1], allowed)
+    if values.shape != beta.shape or not isinstance(chaos[2], str):
+        raise ParameterError("chaos", _shown(chaos), allowed)
+    return beta, values, chaos[2]
 
 
 def _runs(flags: np.ndarray):
@@ -112,6 +141,9 @@ def plot_frequency_energy(results, *, title: str | None = None, stability: str =
     """
     from matplotlib.figure import Figure
 
+    results = checked_results("results", results, BranchResult, _BRANCHES)
+    checked_title(title)
+    v.choice("stability", stability, STABILITY)
     fig = Figure(figsize=(7.5, 4.8), layout="constrained")
     ax = fig.add_subplot()
     draw_frequency_energy(ax, results, stability=stability)
@@ -167,6 +199,11 @@ def plot_transverse(result, scan=None, *, chaos=None, title: str | None = None):
     """
     from matplotlib.figure import Figure
 
+    _beta_branch("result", result)
+    if scan is not None:
+        checked_result("scan", scan, StabilityScan, "a StabilityScan (floquet.scan) or None")
+    chaos = _chaos_hook(chaos, arrays=True)
+    checked_title(title)
     rows = 2 if chaos is not None else 1
     fig = Figure(figsize=(8, 4.2 * rows), layout="constrained")
     ax = fig.add_subplot(rows, 1, 1)
@@ -194,6 +231,12 @@ def plot_nnm(results, beta_result=None, scan=None, *, chaos=None):
     """The frequency-energy plot and, beside it, the transverse chart against beta."""
     from matplotlib.figure import Figure
 
+    results = checked_results("results", results, BranchResult, _BRANCHES)
+    if beta_result is not None:
+        _beta_branch("beta_result", beta_result)
+    if scan is not None:
+        checked_result("scan", scan, StabilityScan, "a StabilityScan (floquet.scan) or None")
+    chaos = _chaos_hook(chaos, arrays=False)
     cols = 2 if beta_result is not None else 1
     fig = Figure(figsize=(7 * cols, 5), layout="constrained")
     ax = fig.add_subplot(1, cols, 1)

@@ -23,17 +23,7 @@ from .chaos import draw_map
 from .recurrence import plot_recurrence
 from .well import plot_well
 
-__all__ = [
-    "energy_band",
-    "energy_curves",
-    "energy_panels",
-    "orbit_figure",
-    "orbit_panel",
-    "recurrence_columns",
-    "running_and_recurrence",
-    "trajectory_panels",
-    "well_panels",
-]
+__all__: list[str] = []
 
 
 def _figure(figsize):

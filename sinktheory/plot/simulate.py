@@ -14,10 +14,12 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import ParameterError
 from ..model import Sink
 from ..simulate import SimulationResult
+from . import checked_result
 
-__all__ = ["plot_ensemble_energy", "well_title"]
+__all__ = ["plot_ensemble_energy"]
 
 
 def well_title(well) -> str:
@@ -44,6 +46,14 @@ def plot_ensemble_energy(result: SimulationResult, sink: Sink):
     """
     from matplotlib.figure import Figure
 
+    checked_result("result", result, SimulationResult, "a SimulationResult (sinktheory.simulate)")
+    if result.container_energy is None:
+        raise ParameterError(
+            "result",
+            "a SimulationResult without the container's energy",
+            'one that recorded "container"',
+        )
+    checked_result("sink", sink, Sink, "a sinktheory.Sink (the one simulated)")
     mean, stderr = result.ensemble_energy()
     fig = Figure(figsize=(8, 4.5), layout="constrained")
     ax = fig.add_subplot()

@@ -7,9 +7,9 @@ from matplotlib.figure import Figure
 
 from ..errors import ParameterError
 from ..glossary import renamed
-from ..model import Well
-from ..validation import positive_int
-from . import checked_axes
+from ..model import UserWellSummary, Well
+from ..validation import positive_int, real_array
+from . import _shown, checked_axes, checked_result
 
 __all__ = ["LEVEL_FRACTIONS", "plot_user_well", "plot_well"]
 
@@ -72,6 +72,16 @@ def plot_user_well(summary, potential, ax=None, points: int = 301):
     >>> fig.axes[0].get_title().splitlines()[0]
     'hh well (no parameters)'
     """
+    checked_result(
+        "summary",
+        summary,
+        UserWellSummary,
+        "a UserWellSummary (sinktheory.model.user_well_summary)",
+    )
+    if not callable(potential):
+        raise ParameterError("potential", _shown(potential), "a function V(x, y) on arrays")
+    points = positive_int("points", points, minimum=2, maximum=MAX_GRID)
+    checked_axes(ax)
     values = ", ".join(f"{k}={v:g}" for k, v in summary.parameters.items()) or "no parameters"
     title = f"{summary.name} well ({values})"
     half = max(summary.reach.x, summary.reach.y)
@@ -83,7 +93,13 @@ def _levels(potential, half, energy, title, ax, points):
     half = 1.15 * half
     xs = np.linspace(-half, half, points)
     X, Y = np.meshgrid(xs, xs)
-    V = potential(X, Y)
+    V = real_array("potential", potential(X, Y), "a function V(x, y) giving real arrays")
+    if V.shape != X.shape:
+        raise ParameterError(
+            "potential",
+            f"a function giving shape {V.shape} for {X.shape}",
+            "a function V(x, y) on arrays, of their shape",
+        )
     if ax is None:
         fig = Figure(figsize=(5.5, 5.0), layout="constrained")
         ax = fig.subplots()
