@@ -154,4 +154,4 @@ def solve_damped_ivp(sink: Sink, settings: RunSettings, damping: float, periods:
     return 0.5 * (z[1] ** 2 + z[0] ** 2), z[-2], z[-1]
 
 
-__all__ = ["contact_weight", "dissipate", "simulate_inelastic_reference", "solve_damped_ivp"]
+__all__ = ["simulate_inelastic_reference", "solve_damped_ivp"]

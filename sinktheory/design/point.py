@@ -83,18 +83,7 @@ from ..stepsize import check_tol, step_of
 from ..worklimit import DISSIPATIVE, check_particle_steps, ensemble_steps
 from .measures import RQA_MEASURES, design_measures, horizons_of
 
-__all__ = [
-    "attachment_of",
-    "check",
-    "compute",
-    "ensemble",
-    "ENSEMBLE_RESULTS",
-    "equipartition_n",
-    "lyapunov",
-    "MAX_BOOTSTRAP",
-    "SAMPLES",
-    "user_shape",
-]
+__all__ = ["ENSEMBLE_RESULTS", "equipartition_n", "MAX_BOOTSTRAP", "SAMPLES"]
 
 #: Results of a point that come from its ensemble (besides the container energy).
 ENSEMBLE_RESULTS = (

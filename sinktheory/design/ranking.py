@@ -44,7 +44,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 
-__all__ = ["DESIGN_PARAMS", "design_table", "pareto_front", "pareto_layers", "rank"]
+__all__ = ["DESIGN_PARAMS", "pareto_front", "pareto_layers", "rank"]
 
 #: The design parameters a user sweeps (any other parameter of the kind may be given too).
 DESIGN_PARAMS = (

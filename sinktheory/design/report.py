@@ -39,8 +39,7 @@ from .measures import VERDICTS
 from .ranking import rank
 from .settling import SETTLING_FIELDS, settling_column, settling_fields, settling_text
 
-__all__ = ["damper", "fmt", "is_damped", "lambda1_text", "report_text", "table_rows", "write_csv",
-           "write_report"]  # fmt: skip
+__all__ = ["write_report"]
 
 
 def fmt(x: float, se: float | None = None, digits: int = 3) -> str:

@@ -36,8 +36,7 @@ import math
 
 from ..equilibrium.prediction import Settling
 
-__all__ = ["describe", "E0", "FACTOR", "MASS", "MAX_HORIZON", "SETTLING", "horizon",
-           "settling_time"]  # fmt: skip
+__all__ = ["E0", "FACTOR", "MASS", "MAX_HORIZON", "SETTLING", "horizon"]
 
 #: The report's ensembles: container energy E0 and total particle mass m.
 E0, MASS = 0.5, 0.2
