@@ -40,7 +40,7 @@ def overrides() -> dict:
     s = "sinktheory."
     return {
         s + "design.inelastic_reference.simulate_inelastic_reference": dict(
-            sink=fig8_sink(), settings=one, damping=0.5, dt=0.1
+            sink=fig8_sink(), settings=one, damping=0.5, dt=0.05
         ),
         s + "design.inelastic_reference.solve_damped_ivp": dict(
             sink=fig8_sink(), settings=one, damping=0.5, periods=1
@@ -77,6 +77,7 @@ def fixed_leaks() -> list:
 
 #: Entry points of this area whose calls take seconds: fewer examples.
 HEAVY: set[str] = {
+    "sinktheory.design.inelastic_reference.solve_damped_ivp",  # 1-1.5 s a period
     "sinktheory.design.report.write_report",
 }
 
@@ -93,16 +94,10 @@ RECORDS: dict[str, str] = {
 
 #: Entry points not fuzzed yet, by why.
 PENDING_BY_REASON: dict[str, tuple] = {
-    "valid arguments written, not run yet": (
-        "sinktheory.design.inelastic_reference.simulate_inelastic_reference",
-        "sinktheory.design.inelastic_reference.solve_damped_ivp",
+    "leaks raw exceptions on hostile input (the first found is noted); its validation is not "
+    "written yet": (
         "sinktheory.design.measures.design_measures",
-        "sinktheory.design.point.equipartition_n",
-        "sinktheory.design.ranking.rank",
-        "sinktheory.design.report.write_report",
-        "sinktheory.scenes.base.Claim",
-        "sinktheory.scenes.estimate",
-        "sinktheory.scenes.horizons.horizon",
-        "sinktheory.scenes.scene",
+        "sinktheory.design.ranking.rank",  # ds=None: AttributeError
+        "sinktheory.design.report.write_report",  # ds=None: AttributeError
     ),
 }

@@ -69,6 +69,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -203,8 +204,10 @@ def equipartition_n(p: dict) -> int | float:
     ...                  "n": 4, "particles": 1, "mass": 0.2})
     2
     """
+    if not isinstance(p, Mapping) or not {"shape", "n"} <= set(p):
+        raise ParameterError("p", p, "a design point: a dict with its shape and n at least")
     if not user_shape(p):
-        return p["n"]
+        return v.stiffness("n", p["n"])
     return sink_of(p).well.leading_order.n
 
 
