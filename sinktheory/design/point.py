@@ -82,7 +82,7 @@ from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings
 from ..runstats import check_runs, ensemble_mean, mean_stderr
 from ..stepsize import check_tol, step_of
 from ..worklimit import DISSIPATIVE, check_particle_steps, ensemble_steps
-from .measures import RQA_MEASURES, design_measures, horizons_of
+from .measures import MAX_BOOTSTRAP, RQA_MEASURES, design_measures, horizons_of
 
 __all__ = ["ENSEMBLE_RESULTS", "equipartition_n", "MAX_BOOTSTRAP", "SAMPLES"]
 
@@ -112,11 +112,6 @@ def attachment_of(p: dict):
     return Attachment(
         p["attachment"], p["shape"], p["alpha"], p["beta"], p["n"], p["particles"], p["mass"]
     )
-
-
-#: Most bootstrap resamples: the bootstrap's own relative error ~ 1 / sqrt(2 B) is 0.2 %
-#: at 1e5 resamples, and each resample is a pass over the point's (P + 1) means.
-MAX_BOOTSTRAP = 10**5
 
 
 def check(p: dict) -> None:
