@@ -1,4 +1,8 @@
-"""The reproduction report: one section per figure with parameters, run time and claims."""
+"""The reproduction report: one section per figure with parameters, run time and claims.
+
+The text ``sinktheory reproduce`` writes to report.md (:mod:`sinktheory.commands.reproduce`
+builds the outcomes and renders them here); no API of its own.
+"""
 
 from __future__ import annotations
 
@@ -7,7 +11,7 @@ from dataclasses import dataclass
 from .results import Result
 from .scenes.base import BEYOND, FAILS, HOLDS, UNDECIDED, Scene, SceneResult
 
-__all__ = ["closing", "render", "SceneOutcome"]
+__all__ = []
 
 
 @dataclass

@@ -298,4 +298,4 @@ def estimate(sweep, *, workers: int | None = None, seconds: float = 3.0, todo=No
     )
 
 
-__all__ = ["DISSIPATIVE", "TANGENT", "Estimate", "estimate", "work"]
+__all__ = ["DISSIPATIVE", "TANGENT", "Estimate", "estimate"]

@@ -30,7 +30,7 @@ import numpy as np
 
 from .ranking import rank
 
-__all__ = ["DesignRun", "explore", "plan", "todo_of"]
+__all__ = ["DesignRun", "explore", "plan"]
 
 
 @dataclass(frozen=True)

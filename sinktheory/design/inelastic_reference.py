@@ -24,10 +24,29 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import validation as v
 from ..damped import InelasticResult, check_audit, result, setup
+from ..ensemble import check_sink
+from ..errors import ParameterError
 from ..glossary import renamed
 from ..integrators import get_scheme
-from ..model import RunSettings, Sink
+from ..model import SECONDS_PER_PARTICLE_STEP, RunSettings, Sink, Well
+from ..worklimit import check_particle_steps, scheme_factor
+
+#: Seconds of one step of :func:`simulate_inelastic_reference` (a Python loop over the
+#: scheme's stages, NumPy over runs): STEP_SECONDS[0] + STEP_SECONDS[1] k per step, plus
+#: STEP_SECONDS[2] k R, times the scheme's stage factor.  Measured on the 2-core machine
+#: (flat n = 4, dt = 0.05, damping 0.5, 2026-11-26, load about 7): 0.82 and 1.47 ms per step
+#: at k = 1 and 5 with R = 2 runs, 1.34 and 2.96 ms with R = 512; the constants are rounded
+#: up so that the estimate is not optimistic.
+STEP_SECONDS = (6e-4, 2e-4, 1e-6)
+#: Seconds of one right-hand side of :func:`solve_damped_ivp` (0.29-0.32 ms measured at
+#: k = 1 and 5, n = 2, 4 and 10, same machine and day), and its evaluations per period:
+#: IVP_EVALUATIONS[0] + IVP_EVALUATIONS[1] x the engine's steps per period at tol 1e-8
+#: (measured 3019-4171 evaluations against 267-1588 engine steps), plus what DOP853's
+#: stability needs against the damping's rate (:func:`_ivp_evaluations`).
+IVP_SECONDS = 3.5e-4
+IVP_EVALUATIONS = (2000.0, 4.0)
 
 
 def contact_weight(sink: Sink, q: np.ndarray) -> np.ndarray:
@@ -86,10 +105,18 @@ def simulate_inelastic_reference(
     (same parameters, same start states, same checks; no sampling, no progress bar)."""
     s = setup(sink, settings, damping, scheme, dt, tol, energy_bound, damping_kind, start)
     settings = RunSettings() if settings is None else settings
+    _registered(sink)
+    v.flag("dissipative_stage", dissipative_stage)
     q, vel, h0, engine, params = s.q, s.vel, s.h0, s.engine, s.params
     dt, steps = s.dt, s.steps
     a, b = get_scheme(s.scheme).arrays()
     runs, periods = q.shape[1], settings.periods
+    k = sink.particles
+    per_step = STEP_SECONDS[0] + STEP_SECONDS[1] * k + STEP_SECONDS[2] * k * runs
+    seconds = float(periods) * steps * per_step * scheme_factor(s.scheme)
+    check_particle_steps("periods", periods, seconds / SECONDS_PER_PARTICLE_STEP,
+                         f"{runs} run(s) x {periods} period(s) x {steps} step(s) of the "
+                         "NumPy reference")  # fmt: skip
     e_c = np.empty((runs, periods + 1))
     h_t = np.empty((runs, periods + 1))
     w_t = np.zeros((runs, periods + 1))
@@ -129,6 +156,17 @@ def solve_damped_ivp(sink: Sink, settings: RunSettings, damping: float, periods:
     from ..ensemble import random_positions, start_state
     from ..simulate import first_order_rhs
 
+    settings = check_sink(sink, settings)
+    _registered(sink)
+    damping = v.nonnegative("damping", damping)
+    periods = v.positive_int("periods", periods)
+    settings.check(sink)
+    plain, damped = _ivp_evaluations(sink, settings, damping)
+    name, value = ("damping", damping) if damped > plain else ("periods", periods)
+    seconds = (plain + damped) * IVP_SECONDS * periods
+    check_particle_steps(name, value, seconds / SECONDS_PER_PARTICLE_STEP,
+                         f"{periods} period(s) of DOP853 at rtol 1e-12, about "
+                         f"{plain + damped:.3g} evaluations each")  # fmt: skip
     k, mu, w = sink.particles, sink.mu, sink.well
     f = first_order_rhs(sink)
 
@@ -154,4 +192,28 @@ def solve_damped_ivp(sink: Sink, settings: RunSettings, damping: float, periods:
     return 0.5 * (z[1] ** 2 + z[0] ** 2), z[-2], z[-1]
 
 
-__all__ = ["contact_weight", "dissipate", "simulate_inelastic_reference", "solve_damped_ivp"]
+def _registered(sink: Sink) -> None:
+    """The contact weight here reads a registered shape's n and gamma: refuse a user's well."""
+    if not isinstance(sink.well, Well):
+        raise ParameterError("sink", sink, "a Sink of a registered shape (a sinktheory.Well)",
+                             why="the NumPy reference reads the well's n and gamma")  # fmt: skip
+
+
+def _ivp_evaluations(sink: Sink, settings: RunSettings, damping: float) -> tuple[float, float]:
+    """Estimated right-hand sides of one period of :func:`solve_damped_ivp`: those of
+    :data:`IVP_EVALUATIONS`, and those DOP853's stability would need against the fastest
+    damping rate, c s (1 + mu)/mu with the contact weight s = 2n V/gamma at most 2n
+    E/gamma (E the total energy's bound): a step h with h rate <= 3.3, 12 evaluations a
+    step.  An upper bound: at damping 5 and 20 (flat n = 4, k = 1) DOP853 took 3638 and
+    3458 evaluations against 7042 and 15267 estimated, the particles spending most of a
+    period away from the wall."""
+    from ..stepsize import choose
+
+    energy = settings.total_energy_bound(sink)
+    steps = choose(sink, energy, 1e-8).steps_per_period
+    w, mu = sink.well, sink.mu
+    rate = damping * (2.0 * w.n * energy / w.gamma) * (1.0 + mu) / mu
+    return IVP_EVALUATIONS[0] + IVP_EVALUATIONS[1] * steps, 12 * 2 * np.pi * rate / 3.3
+
+
+__all__ = ["simulate_inelastic_reference", "solve_damped_ivp"]

@@ -69,6 +69,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -81,20 +82,9 @@ from ..model import DAMPING_KINDS, MAX_PERIODS, RunSettings
 from ..runstats import check_runs, ensemble_mean, mean_stderr
 from ..stepsize import check_tol, step_of
 from ..worklimit import DISSIPATIVE, check_particle_steps, ensemble_steps
-from .measures import RQA_MEASURES, design_measures, horizons_of
+from .measures import MAX_BOOTSTRAP, RQA_MEASURES, design_measures, horizons_of
 
-__all__ = [
-    "attachment_of",
-    "check",
-    "compute",
-    "ensemble",
-    "ENSEMBLE_RESULTS",
-    "equipartition_n",
-    "lyapunov",
-    "MAX_BOOTSTRAP",
-    "SAMPLES",
-    "user_shape",
-]
+__all__ = ["ENSEMBLE_RESULTS", "equipartition_n", "MAX_BOOTSTRAP", "SAMPLES"]
 
 #: Results of a point that come from its ensemble (besides the container energy).
 ENSEMBLE_RESULTS = (
@@ -122,11 +112,6 @@ def attachment_of(p: dict):
     return Attachment(
         p["attachment"], p["shape"], p["alpha"], p["beta"], p["n"], p["particles"], p["mass"]
     )
-
-
-#: Most bootstrap resamples: the bootstrap's own relative error ~ 1 / sqrt(2 B) is 0.2 %
-#: at 1e5 resamples, and each resample is a pass over the point's (P + 1) means.
-MAX_BOOTSTRAP = 10**5
 
 
 def check(p: dict) -> None:
@@ -214,8 +199,10 @@ def equipartition_n(p: dict) -> int | float:
     ...                  "n": 4, "particles": 1, "mass": 0.2})
     2
     """
+    if not isinstance(p, Mapping) or not {"shape", "n"} <= set(p):
+        raise ParameterError("p", p, "a design point: a dict with its shape and n at least")
     if not user_shape(p):
-        return p["n"]
+        return v.stiffness("n", p["n"])
     return sink_of(p).well.leading_order.n
 
 

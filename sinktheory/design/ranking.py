@@ -44,7 +44,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 
-__all__ = ["DESIGN_PARAMS", "design_table", "pareto_front", "pareto_layers", "rank"]
+__all__ = ["DESIGN_PARAMS", "pareto_front", "pareto_layers", "rank"]
 
 #: The design parameters a user sweeps (any other parameter of the kind may be given too).
 DESIGN_PARAMS = (
@@ -101,6 +101,17 @@ def pareto_front(speed, depth, spread) -> np.ndarray:
     return pareto_layers(speed, depth, spread) == 1
 
 
+def design_dataset(ds, name: str = "ds"):
+    """``ds`` if it is the dataset of a design sweep (an ``xarray.Dataset`` with the
+    ``design`` kind's results and ``done``), else ParameterError naming ``name``."""
+    import xarray as xr
+
+    if not isinstance(ds, xr.Dataset) or not {"done", "depth", "passage"} <= set(ds.data_vars):
+        allowed = "the xarray.Dataset of a design sweep (explore(...).dataset, or its store)"
+        raise ParameterError(name, type(ds).__name__, allowed)
+    return ds
+
+
 def design_table(ds) -> list[dict]:
     """One row per computed design point: its parameters and measures (plain floats).
 
@@ -112,7 +123,7 @@ def design_table(ds) -> list[dict]:
     """
     from ..chaos.verdicts import SPLIT_RESULTS, stored_splits
 
-    ds = ds.load()
+    ds = design_dataset(ds).load()
     dims = [d for d in ds.done.dims]
     fixed = {k: ds.attrs[k] for k in DESIGN_PARAMS if k in ds.attrs}
     splits = [None] * ds.done.size  # a store written before the split was kept

@@ -27,20 +27,69 @@ from __future__ import annotations
 
 import csv
 import math
+import os
 import time
 from pathlib import Path
 
 import numpy as np
 
+from .. import validation as v
 from ..chaos.verdicts import box_starts
-from ..equilibrium.prediction import MODEL_FACTOR
+from ..equilibrium.prediction import MODEL_FACTOR, Settling
+from ..errors import ParameterError
 from ..plot.design import label, swept
 from .measures import VERDICTS
-from .ranking import rank
+from .ranking import design_dataset, rank
 from .settling import SETTLING_FIELDS, settling_column, settling_fields, settling_text
 
-__all__ = ["damper", "fmt", "is_damped", "lambda1_text", "report_text", "table_rows", "write_csv",
-           "write_report"]  # fmt: skip
+
+def _ranked(ranked) -> list:
+    """``ranked`` if it is a ranking as :func:`~.ranking.rank` returns it."""
+    rows = ("rank", "layer", "depth")
+    if not isinstance(ranked, list | tuple) or not all(
+        isinstance(r, dict) and all(k in r for k in rows) for r in ranked
+    ):
+        shown = type(ranked).__name__
+        raise ParameterError("ranked", shown, "None or the list of rows of rank(ds)")
+    return list(ranked)
+
+
+def _predicted(predicted, shown: list) -> tuple:
+    """``predicted`` if it holds (rank -> settling, seconds) for the ``shown`` rows."""
+    allowed = "None or (rank -> predicted settling of the top rows, seconds), as made by "
+    allowed += "settling_column"
+    ok = isinstance(predicted, tuple | list) and len(predicted) == 2
+    if ok:
+        column, seconds = predicted
+        ok = (
+            isinstance(column, dict)
+            and all(isinstance(column.get(r["rank"]), Settling | str) for r in shown)
+            and not isinstance(seconds, bool)
+            and isinstance(seconds, int | float)
+            and math.isfinite(seconds)
+            and seconds >= 0
+        )
+    if not ok:
+        raise ParameterError("predicted", type(predicted).__name__, allowed)
+    return tuple(predicted)
+
+
+def _directory(directory) -> Path:
+    """The report's directory, created if needed (ParameterError naming ``directory`` if
+    it is no path or cannot be written in)."""
+    if not isinstance(directory, str | os.PathLike) or not str(directory).strip():
+        raise ParameterError("directory", directory, "the path of a directory (a str or Path)")
+    out = Path(directory)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise ParameterError("directory", directory, "a directory that can be created",
+                             why=e.strerror or str(e)) from None  # fmt: skip
+    v.writable_directory("directory", directory, out)
+    return out
+
+
+__all__ = ["write_report"]
 
 
 def fmt(x: float, se: float | None = None, digits: int = 3) -> str:
@@ -308,14 +357,21 @@ def write_report(ds, directory, *, ranked: list | None = None, top: int = 10, ru
     ``directory`` (created if needed), with the predicted settling time of the ``top``
     designs (in the report's table and designs.csv) unless ``settling`` is False;
     ``predicted``: those predictions made already (``(rank -> settling, seconds)`` from
-    :func:`~.settling.settling_column`), else they are made here.  Returns the path of
-    ``report.md``."""
+    :func:`~.settling.settling_column`), else they are made here; ``run``: the
+    :class:`~sinktheory.design.explorer.DesignRun` whose call the report describes.
+    Returns the path of ``report.md``."""
     from ..plot import design as plots
 
-    out = Path(directory)
-    out.mkdir(parents=True, exist_ok=True)
-    ds = ds.load()
-    ranked = rank(ds) if ranked is None else ranked
+    ds = design_dataset(ds).load()
+    top = v.positive_int("top", top)
+    settling = v.flag("settling", settling)
+    if run is not None and not all(hasattr(run, a) for a in ("computed", "skipped", "seconds",
+                                                             "where")):  # fmt: skip
+        raise ParameterError("run", type(run).__name__, "None or the DesignRun of explore")
+    ranked = rank(ds) if ranked is None else _ranked(ranked)
+    if predicted is not None and settling and ranked:
+        predicted = _predicted(predicted, ranked[:top])
+    out = _directory(directory)
     dims = swept(ds)
     figures = []
     if ranked:

@@ -33,13 +33,7 @@ from collections.abc import Mapping
 from ..equilibrium.prediction import Settling, settling_periods
 from ..errors import NumericalError
 
-__all__ = [
-    "predicted_settling",
-    "settling_column",
-    "settling_fields",
-    "settling_text",
-    "SETTLING_FIELDS",
-]
+__all__ = ["SETTLING_FIELDS"]
 
 #: The columns of ``designs.csv`` and the keys of the design JSON that hold a design's
 #: predicted settling (:func:`settling_fields`).

@@ -18,6 +18,8 @@ Examples
 
 from importlib import import_module
 
+from ..errors import ParameterError
+
 #: The module of each figure's scene (its object is ``FIG<number>`` there).
 MODULES = {
     2: "wells",
@@ -80,15 +82,33 @@ ENGINES = {
 }
 
 
+def _figure(number: int) -> int:
+    """``number`` if a figure of the paper has a scene (ParameterError naming it if not)."""
+    from ..validation import positive_int
+
+    allowed = "a figure with a scene: " + ", ".join(map(str, FIGURES))
+    try:
+        figure = positive_int("number", number)
+    except ParameterError:
+        raise ParameterError("number", number, allowed) from None
+    if figure not in MODULES:
+        raise ParameterError("number", number, allowed)
+    return figure
+
+
 def scene(number: int):
     """The :class:`~sinktheory.scenes.base.Scene` of figure ``number`` (imported now)."""
+    number = _figure(number)
     module = import_module(f".{MODULES[number]}", __name__)
     return getattr(module, f"FIG{number}")
 
 
 def estimate(number: int, quick: bool) -> float:
-    """Expected wall seconds of figure ``number`` (see :data:`SECONDS`)."""
-    return SECONDS[number][0 if quick else 1]
+    """Expected wall seconds of figure ``number`` (see :data:`SECONDS`) at the fidelity
+    ``quick`` (True: ``--quick``) selects."""
+    from ..validation import flag
+
+    return SECONDS[_figure(number)][0 if flag("quick", quick) else 1]
 
 
 _BASE = ("Claim", "Scene", "SceneResult")

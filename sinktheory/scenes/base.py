@@ -6,7 +6,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
+from ..errors import ParameterError
 from ..results import Result
+from ..validation import choice
 
 __all__ = ["BEYOND", "Claim", "Scene", "SceneResult", "SIGN_CALL"]
 
@@ -35,8 +37,10 @@ class Claim(Result):
     physics: str = ""
 
     def __post_init__(self) -> None:
-        if self.verdict not in (HOLDS, FAILS, UNDECIDED):
-            raise ValueError(f"verdict = {self.verdict!r} is not one of the three verdicts")
+        for name in ("statement", "measured", "physics"):
+            if not isinstance(getattr(self, name), str):
+                raise ParameterError(name, getattr(self, name), "text (a str)")
+        choice("verdict", self.verdict, (HOLDS, FAILS, UNDECIDED))
 
 
 @dataclass

@@ -19,10 +19,7 @@ from .base import BEYOND, FAILS, HOLDS, UNDECIDED, Claim, Scene, SceneResult
 from .horizons import E0, FACTOR, MASS, MAX_HORIZON, describe, horizon, settling_time
 
 __all__ = [
-    "ensemble",
     "LONG_RUNS",
-    "long_time",
-    "LongTime",
     "RESOLUTION",
     "FIG12",
     "FIG45_BETAS",

@@ -36,8 +36,7 @@ import math
 
 from ..equilibrium.prediction import Settling
 
-__all__ = ["describe", "E0", "FACTOR", "MASS", "MAX_HORIZON", "SETTLING", "horizon",
-           "settling_time"]  # fmt: skip
+__all__ = ["E0", "FACTOR", "MASS", "MAX_HORIZON", "SETTLING", "horizon"]
 
 #: The report's ensembles: container energy E0 and total particle mass m.
 E0, MASS = 0.5, 0.2
@@ -114,8 +113,13 @@ SETTLING = {
 
 def settling_time(shape: str, alpha: float, beta: float, n: int, k: int) -> Settling:
     """The settling time of a set-up (E0 = 0.5, m = 0.2): measured where :data:`SETTLING`
-    holds it, else predicted (cached per set-up)."""
-    key = (shape, float(alpha), float(beta), int(n), int(k))
+    holds it, else predicted (cached per set-up); ParameterError naming a parameter the
+    model refuses."""
+    from ..model import Sink, Well
+
+    sink = Sink(Well(alpha, beta, n, shape=shape), particles=k, mass=MASS)
+    w = sink.well
+    key = (w.shape, w.alpha, w.beta, w.n, sink.particles)
     return SETTLING[key] if key in SETTLING else _predicted(*key)
 
 

@@ -25,15 +25,7 @@ from ..sweep.chaosmap import beta_grid, chaos_map
 from ..sweep.views import bifurcation_diagram
 from .base import BEYOND, FAILS, HOLDS, SIGN_CALL, UNDECIDED, Claim, Scene, SceneResult
 
-__all__ = [
-    "FIG11",
-    "FIG3",
-    "MARGIN",
-    "false_call",
-    "generic_runs",
-    "mode_touching",
-    "transverse_calls",
-]
+__all__ = ["FIG11", "FIG3", "MARGIN"]
 
 
 def _fidelity(quick: bool) -> dict:

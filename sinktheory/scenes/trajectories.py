@@ -12,7 +12,7 @@ from ..model import RunSettings, Sink, Well
 from ..plot.paper import trajectory_panels
 from .base import FAILS, HOLDS, SIGN_CALL, Claim, Scene, SceneResult
 
-__all__ = ["BETAS", "FIG4", "SALI_CHAOTIC", "SAMPLES", "indicators", "trajectory"]
+__all__ = ["BETAS", "FIG4", "SALI_CHAOTIC", "SAMPLES", "trajectory"]
 
 BETAS = (-0.5, -0.3, -0.2, -0.14, 0.009, 0.3)
 ALPHA, N, MASS, START = 0.5, 10, 0.2, (0.0, 0.01)

@@ -8,7 +8,7 @@ from ..model import Well
 from ..plot.paper import well_panels
 from .base import FAILS, HOLDS, Claim, Scene, SceneResult
 
-__all__ = ["ENERGY", "FIG10", "FIG2", "level_line_curvature"]
+__all__ = ["ENERGY", "FIG10", "FIG2"]
 
 #: The container's initial energy in the paper's runs; the outer level line drawn.
 ENERGY = 0.5
