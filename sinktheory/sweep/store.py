@@ -95,13 +95,8 @@ __all__ = [
     "CHECKSUM",
     "CHECKSUM_ATTR",
     "CHUNK_VALUES",
-    "coordinates",
     "LOCK",
-    "MemoryStore",
-    "old_spelling",
     "read",
-    "selection",
-    "SweepStore",
 ]
 
 #: File in the store locked by the process writing to it.
