@@ -49,8 +49,6 @@ from .worklimit import check_particle_steps, check_work, ensemble_steps
 __all__ = [
     "bifurcation",
     "BifurcationDiagram",
-    "check_point",
-    "points",
     "QUANTITIES",
     "sampled_run",
     "section",

@@ -104,13 +104,13 @@ def _no_well(argv: list[str], command: str | None) -> str | None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run ``sinktheory ARGV`` (default: this process's own arguments) and return its exit
-    status.  Without ``argv`` main is the process's command line (``python -m sinktheory``,
-    the ``sinktheory`` script): an interrupt then ends the process at once
-    (:func:`_exit_interrupted`); called with ``argv`` (tests, scripts), it raises
-    SystemExit(130 or 143) instead."""
+    """Run ``sinktheory ARGV`` (a list of strings; default: this process's own arguments)
+    and return its exit status.  Without ``argv`` main is the process's command line
+    (``python -m sinktheory``, the ``sinktheory`` script): an interrupt then ends the
+    process at once (:func:`_exit_interrupted`); called with ``argv`` (tests, scripts), it
+    raises SystemExit(130 or 143) instead."""
     whole = argv is None
-    argv = sys.argv[1:] if argv is None else list(argv)
+    argv = sys.argv[1:] if argv is None else _words(argv)
     command = _command(argv)
     try:
         with interruptible(f"sinktheory {command}" if command else "sinktheory", hint=None):
@@ -122,6 +122,24 @@ def main(argv: list[str] | None = None) -> int:
         if whole and e.code in INTERRUPTED:
             _exit_interrupted(e.code)
         raise
+
+
+def _words(argv: object) -> list[str]:
+    """``argv`` as a list of strings: a list or tuple of them, else a ParameterError naming
+    ``argv`` (a string alone would be read letter by letter, a number not at all).
+
+    >>> _words(("period", "--n", "2"))
+    ['period', '--n', '2']
+    >>> _words("period")
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: argv = 'period' is not allowed: must be a list of \
+strings (the words of a command line) or None
+    """
+    if isinstance(argv, list | tuple) and all(isinstance(word, str) for word in argv):
+        return list(argv)
+    shown = argv if len(repr(argv)) <= 80 else f"a long {type(argv).__name__}"
+    raise ParameterError("argv", shown, "a list of strings (the words of a command line) or None")
 
 
 #: The exit statuses of an interrupt: SIGINT (Ctrl-C) and SIGTERM.

@@ -45,11 +45,7 @@ __all__ = [
     "RENAMED_KEYWORDS",
     "RENAMED_OPTIONS",
     "RENAMED_PARAMETERS",
-    "modern_argv",
     "old_attribute",
-    "refusals_named",
-    "option_of",
-    "renamed",
     "stepper_or_scheme",
 ]
 

@@ -46,6 +46,9 @@ from typing import TextIO
 
 from tqdm.std import tqdm
 
+from . import validation as v
+from .errors import ParameterError
+
 __all__ = [
     "CHUNK_SECONDS",
     "chunks",
@@ -100,12 +103,12 @@ class ProgressBar:
     Parameters
     ----------
     total : int
-        Units of work.
+        Units of work (>= 0).
     enabled : bool
         False shows nothing at all.
     stream : text stream, default sys.stderr
     delay : float
-        Seconds before anything is shown (shorter work shows nothing).
+        Seconds (>= 0) before anything is shown (shorter work shows nothing).
     label : str
         Text in front of the bar.
     unit : str
@@ -136,7 +139,15 @@ class ProgressBar:
         unit: str = "it",
         interval: float | None = None,
     ) -> None:
-        self.total = max(int(total), 1)
+        total = v.positive_int("total", total, minimum=0)
+        delay = v.nonnegative("delay", delay)
+        interval = None if interval is None else v.nonnegative("interval", interval)
+        for name, text in (("label", label), ("unit", unit)):
+            if not isinstance(text, str):
+                raise ParameterError(name, text, "a text")
+        if stream is not None and not callable(getattr(stream, "write", None)):
+            raise ParameterError("stream", stream, "a text stream (with a write method) or None")
+        self.total = max(total, 1)
         self.stream = sys.stderr if stream is None else stream
         terminal = bool(getattr(self.stream, "isatty", lambda: False)())
         self.enabled = bool(enabled) and terminal

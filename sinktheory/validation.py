@@ -29,21 +29,13 @@ from .limits import MAX_STEPS_PER_PERIOD
 
 __all__ = [
     "BOOLS",
-    "choice",
     "finite",
     "finite_array",
-    "fits_memory",
     "flag",
     "MAX_STEPS_PER_PERIOD",
     "memory_limit",
-    "nbytes_text",
     "nonnegative",
     "positive",
-    "positive_int",
-    "real_array",
-    "stiffness",
-    "time_step",
-    "writable_directory",
 ]
 
 

@@ -67,20 +67,16 @@ from .limits import DEFAULT_SCHEME, MAX_INTERACTIVE_SECONDS
 from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 
 __all__ = [
-    "check_particle_steps",
     "check_work",
     "BLOCK_RUNS",
     "BLOCK_STEP",
     "DISSIPATIVE",
-    "duration",
-    "ensemble_steps",
     "interactive_limit",
     "MAX_INTERACTIVE_SECONDS",
     "max_seconds",
     "resumable",
     "scheme_factor",
     "tally",
-    "tangent_steps",
     "TANGENT_OVERHEAD",
     "VECTOR_STEP",
 ]

@@ -77,7 +77,6 @@ __all__ = [
     "Sweep",
     "SweepPointError",
     "SweepRun",
-    "SweepStore",
     "bifurcation_diagram",
     "execute",
     "get_kind",

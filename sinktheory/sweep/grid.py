@@ -39,12 +39,10 @@ from ..errors import ParameterError
 from ..limits import MAX_SWEEP_POINTS as MAX_POINTS
 
 __all__ = [
-    "fingerprint",
     "Grid",
     "MAX_POINTS",
     "parse_param",
     "parse_range",
-    "parse_value",
     "point_seed",
     "Value",
 ]

@@ -95,13 +95,8 @@ __all__ = [
     "CHECKSUM",
     "CHECKSUM_ATTR",
     "CHUNK_VALUES",
-    "coordinates",
     "LOCK",
-    "MemoryStore",
-    "old_spelling",
     "read",
-    "selection",
-    "SweepStore",
 ]
 
 #: File in the store locked by the process writing to it.
@@ -393,8 +388,20 @@ def read(path: str | Path) -> xr.Dataset:
     """The results of the sweep store at ``path``, opened lazily with ``xarray.open_zarr``,
     under the current parameter names: in a store written under old names
     (:data:`sinktheory.glossary.RENAMED_PARAMETERS`) the swept coordinates, dimensions
-    and fixed-parameter attributes of an old name read under its new one."""
-    ds = xr.open_zarr(path)
+    and fixed-parameter attributes of an old name read under its new one.  A ``path`` that
+    is no Zarr directory is refused naming ``path``."""
+    allowed = "the path (str or os.PathLike) of a sweep store, a Zarr directory"
+    if isinstance(path, bool) or not isinstance(path, str | os.PathLike) or not str(path).strip():
+        raise ParameterError("path", path, allowed)
+    if not Path(path).is_dir():
+        why = "it is a file" if Path(path).exists() else "it does not exist"
+        raise ParameterError("path", str(path), allowed, why=why)
+    try:
+        ds = xr.open_zarr(path)
+    except (zarr.errors.BaseZarrError, ValueError, KeyError, OSError) as e:
+        raise ParameterError(
+            "path", str(path), allowed, why=" ".join(f"{type(e).__name__}: {e}".split())
+        ) from None
     names = {old: new for old, new in RENAMED_PARAMETERS.items() if old in ds.variables or
              old in ds.dims}  # fmt: skip
     if names:

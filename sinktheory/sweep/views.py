@@ -27,6 +27,7 @@ def bifurcation_diagram(dataset: xr.Dataset) -> BifurcationDiagram | WellBifurca
     beta alone (every other parameter fixed, every point done); of a sweep of a user's
     well over one of its own parameters, the
     :class:`~sinktheory.bifurcation.WellBifurcation`."""
+    _check_dataset(dataset)
     attrs = dataset.attrs
     if "well" in attrs:
         return _well_diagram(dataset)
@@ -74,6 +75,14 @@ def _well_diagram(dataset: xr.Dataset) -> WellBifurcation:
     )  # fmt: skip
 
 
+def _check_dataset(dataset: object) -> None:
+    """Refuse a ``dataset`` that is no xarray Dataset (what ``run_sweep`` returns and
+    :func:`sinktheory.sweep.store.read` reads)."""
+    if not isinstance(dataset, xr.Dataset):
+        shown = dataset if isinstance(dataset, str | int | float | None) else type(dataset).__name__
+        raise ParameterError("dataset", shown, "the xarray Dataset of a sweep")
+
+
 def _check_done(dataset: xr.Dataset) -> None:
     if not bool(dataset.done.all()):
         missing = int((~dataset.done).sum())
@@ -94,6 +103,7 @@ def split_points(dataset: xr.Dataset) -> list[tuple[dict, object]]:
     """
     from ..chaos.verdicts import map_split, stored_splits
 
+    _check_dataset(dataset)
     kind = dataset.attrs.get("sweep_kind")
     if kind == "chaos":
         splits = map_split(dataset)
