@@ -20,6 +20,7 @@ from _fuzz import (
     EXEMPT,
     PENDING,
     RECORDS,
+    _overrides,
     area_fixed_leaks,
     built_entries,
     hand_entries,
@@ -93,6 +94,8 @@ def test_every_public_entry_point_is_fuzzed_or_exempt():
     assert not stale, f"listed but not public entry points: {stale}"
     twice = sorted((HAND | set(ALSO_FUZZED)) & listed)
     assert not twice, f"fuzzed and also listed as exempt, a record or pending: {twice}"
+    stale_arguments = sorted(set(_overrides()) - set(public))
+    assert not stale_arguments, f"valid arguments of no public entry point: {stale_arguments}"
     with_input = [k for k in EXEMPT if inspect.signature(public[k]).parameters]
     assert not with_input, f"exempt, but they take arguments: {with_input}"
 
