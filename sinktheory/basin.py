@@ -99,12 +99,9 @@ __all__ = [
     "leading_order",
     "LeadingOrder",
     "MAX_RAYS",
-    "numeric",
     "NumericWell",
-    "reach",
     "Reach",
     "SCAN_POINTS",
-    "star_area",
 ]
 
 #: Nodes per half side of the search grid (a grid of (2 GRID + 1)^2 nodes).

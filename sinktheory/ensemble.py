@@ -35,28 +35,21 @@ from .runstats import ensemble_mean
 from .stepsize import DEFAULT_TOL
 
 __all__ = [
-    "check_record",
     "check_sink",
-    "default_energy_bound",
     "ENERGY_BOUND",
     "engine_name",
     "engine_params",
-    "initial_values",
     "join_values",
     "prepare",
     "random_positions",
     "RECORDS",
     "run_parameters",
-    "settings_of",
     "SimulationResult",
     "SimulationState",
-    "sink_of",
     "split_values",
     "Start",
-    "start_positions",
     "start_state",
     "total_energy",
-    "well_of_text",
 ]
 
 #: What :func:`sinktheory.simulate.simulate` can record.

@@ -27,79 +27,59 @@ def fixed_leaks() -> list:
 HEAVY: set[str] = set()
 
 #: Records the package returns, by key: what returns each.
-RECORDS: dict[str, str] = {}
+RECORDS: dict[str, str] = {
+    "sinktheory.basin.Basin": "returned by Basin.of (userwell.check_well(...).basin)",
+    "sinktheory.basin.Escape": "returned by basin.escape",
+    "sinktheory.basin.LeadingOrder": "returned by basin.leading_order",
+    "sinktheory.basin.Reach": "returned by Basin.reach",
+    "sinktheory.ensemble.SimulationResult": "returned by simulate and simulate_adaptive",
+    "sinktheory.ensemble.Start": "returned by ensemble.prepare",
+    "sinktheory.equilibrium.area.WellArea": "returned by WellArea.of",
+    "sinktheory.equilibrium.ergodicity.ErgodicityMap": "returned by ergodicity_map",
+    "sinktheory.equilibrium.kramers.FluctuationDissipation": "returned by "
+    "check_fluctuation_dissipation",
+    "sinktheory.equilibrium.kramers.KramersMoyal": "returned by kramers_moyal and "
+    "measure_kramers_moyal",
+    "sinktheory.equilibrium.law.EquilibriumSummary": "returned by EquilibriumLaw.summary",
+    "sinktheory.equilibrium.lifetime.LawComparison": "returned by compare_with_law",
+    "sinktheory.equilibrium.lifetime.VisitStatistics": "returned by visit_statistics",
+    "sinktheory.equilibrium.prediction.LawChain": "returned by law_chain",
+    "sinktheory.equilibrium.prediction.RelaxationPrediction": "returned by "
+    "predict_relaxation and shell_prediction",
+    "sinktheory.equilibrium.prediction.Settling": "returned by settling_periods",
+    "sinktheory.equilibrium.relaxation.Relaxation": "returned by measure_relaxation",
+    "sinktheory.model.Reach": "returned by Well.reach",
+    "sinktheory.model.SinkSummary": "returned by Sink.summary",
+    "sinktheory.model.UserWellSummary": "returned by user_well_summary",
+    "sinktheory.model.WellSummary": "returned by Well.summary",
+    "sinktheory.recurrence.RQA": "returned by rqa and rqa_matrix",
+    "sinktheory.simulate.Stepper": "the entries of simulate.STEPPERS (built by the package)",
+    "sinktheory.sinkstats.SinkMeasures": "returned by sink_measures",
+}
 
 #: Entry points not fuzzed yet, by why.
 PENDING_BY_REASON: dict[str, tuple] = {
     "leaks raw exceptions on hostile input (the first found is noted); its validation is not "
     "written yet": (
-        "sinktheory.basin.numeric",  # expr=None: AttributeError
-        "sinktheory.ensemble.default_energy_bound",  # tol=1e+308: nonfinite
-        "sinktheory.ensemble.engine_name",  # sink=None: AttributeError
-        "sinktheory.ensemble.join_values",  # q=None: AttributeError
-        "sinktheory.ensemble.random_positions",  # particles=None: TypeError
-        "sinktheory.ensemble.run_parameters",  # runs=nan: nonfinite
-        "sinktheory.ensemble.start_positions",  # settings=None: AttributeError
-        "sinktheory.ensemble.start_state",  # container_energy=None: TypeError
-        "sinktheory.equilibrium.ergodicity.verdict",  # lambda1=None: TypeError
-        "sinktheory.equilibrium.prediction.settling_time",  # fraction=None: TypeError
-        "sinktheory.layout.pack_params",  # sink=None: AttributeError
-        "sinktheory.model.Reach",  # x=nan: nonfinite
-        "sinktheory.results.attribute",  # x=nan: nonfinite
-        "sinktheory.results.plain",  # x=object(): TypeError
-    ),
-    "valid arguments not written yet": (
         "sinktheory.basin.NumericWell",
         "sinktheory.basin.escape",
         "sinktheory.basin.leading_order",
-        "sinktheory.basin.reach",
-        "sinktheory.basin.star_area",
-        "sinktheory.ensemble.check_record",
-        "sinktheory.ensemble.initial_values",
+        "sinktheory.ensemble.SimulationState",
+        "sinktheory.ensemble.engine_name",  # sink=None: AttributeError
+        "sinktheory.ensemble.join_values",  # q=None: AttributeError
         "sinktheory.ensemble.prepare",
-        "sinktheory.ensemble.settings_of",
-        "sinktheory.ensemble.sink_of",
+        "sinktheory.ensemble.random_positions",  # particles=None: TypeError
+        "sinktheory.ensemble.run_parameters",  # runs=nan: nonfinite
+        "sinktheory.ensemble.start_state",  # container_energy=None: TypeError
         "sinktheory.ensemble.total_energy",
-        "sinktheory.ensemble.well_of_text",
-        "sinktheory.equilibrium.ergodicity.check_point",
         "sinktheory.equilibrium.ergodicity.ergodicity_map",
-        "sinktheory.equilibrium.prediction.check_reading",
-        "sinktheory.equilibrium.prediction.fit_line",
         "sinktheory.equilibrium.prediction.law_chain",
         "sinktheory.equilibrium.prediction.log_lambdas",
-        "sinktheory.equilibrium.prediction.measure_settings",
         "sinktheory.equilibrium.prediction.measure_settling",
         "sinktheory.equilibrium.prediction.read_settling",
         "sinktheory.equilibrium.prediction.shell_lags",
         "sinktheory.equilibrium.prediction.shell_prediction",
         "sinktheory.equilibrium.prediction.slow_mode",
-        "sinktheory.simulate.check_point",
-        "sinktheory.simulate.point",
-    ),
-    "a result record the package builds": (
-        "sinktheory.basin.Basin",
-        "sinktheory.basin.Escape",
-        "sinktheory.basin.LeadingOrder",
-        "sinktheory.basin.Reach",
-        "sinktheory.ensemble.SimulationResult",
-        "sinktheory.ensemble.SimulationState",
-        "sinktheory.ensemble.Start",
-        "sinktheory.equilibrium.area.WellArea",
-        "sinktheory.equilibrium.ergodicity.ErgodicityMap",
-        "sinktheory.equilibrium.kramers.FluctuationDissipation",
-        "sinktheory.equilibrium.kramers.KramersMoyal",
-        "sinktheory.equilibrium.law.EquilibriumSummary",
-        "sinktheory.equilibrium.lifetime.LawComparison",
-        "sinktheory.equilibrium.lifetime.VisitStatistics",
-        "sinktheory.equilibrium.prediction.LawChain",
-        "sinktheory.equilibrium.prediction.RelaxationPrediction",
-        "sinktheory.equilibrium.prediction.Settling",
-        "sinktheory.equilibrium.relaxation.Relaxation",
-        "sinktheory.model.SinkSummary",
-        "sinktheory.model.UserWellSummary",
-        "sinktheory.model.WellSummary",
-        "sinktheory.recurrence.RQA",
-        "sinktheory.simulate.Stepper",
-        "sinktheory.sinkstats.SinkMeasures",
+        "sinktheory.layout.pack_params",  # sink=None: AttributeError
     ),
 }

@@ -53,7 +53,6 @@ from .law import check_fractions
 from .lifetime import check_one_shell
 
 __all__ = [
-    "check_point",
     "DEFAULTS",
     "ergodicity_map",
     "ergodicity_point",
@@ -61,7 +60,6 @@ __all__ = [
     "fractions_of",
     "P_LEVEL",
     "RESULTS",
-    "verdict",
 ]
 
 #: KS p-value below which the runs are said not to sample the law.

@@ -87,15 +87,12 @@ from .law import equilibrium_law
 
 __all__ = [
     "check_fraction",
-    "check_reading",
     "EXTRAPOLATION",
     "MAX_CHAIN_CELLS",
-    "fit_line",
     "LADDER",
     "law_chain",
     "LawChain",
     "log_lambdas",
-    "measure_settings",
     "measure_settling",
     "MODEL_FACTOR",
     "predict_relaxation",
@@ -103,7 +100,6 @@ __all__ = [
     "RelaxationPrediction",
     "Settling",
     "settling_periods",
-    "settling_time",
     "shell_lags",
     "shell_prediction",
     "slow_mode",
