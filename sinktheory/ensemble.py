@@ -33,6 +33,7 @@ from .model import RunSettings, Sink, Well
 from .results import Result
 from .runstats import ensemble_mean
 from .stepsize import DEFAULT_TOL
+from .validation import real_array  # join_values has a parameter v
 
 __all__ = [
     "check_sink",
@@ -229,6 +230,10 @@ def random_positions(settings: RunSettings, particles: int) -> np.ndarray:
     >>> p.shape, bool(np.all(np.abs(p) < 0.01))
     ((3, 2, 2), True)
     """
+    settings = _settings(settings)
+    particles = v.positive_int("particles", particles, maximum=1000)  # as a Sink's
+    v.fits_memory("particles", particles, 16.0 * settings.runs * particles,
+                  "the starting positions", "fewer particles or runs")  # fmt: skip
     children = np.random.SeedSequence(settings.seed).spawn(settings.runs)
     return np.stack(
         [
@@ -243,12 +248,21 @@ def start_state(sink: Sink, container_energy: float, positions: np.ndarray) -> n
     """State rows (R, 2 + 4k): container at X = sqrt(2 E0) at rest (E0 =
     ``container_energy``), particles at rest at ``positions`` (R, k, 2) relative to the
     container."""
-    return StateLayout(sink.particles).start(math.sqrt(2.0 * container_energy), positions)
+    k = _sink(sink).particles
+    e0 = v.positive("container_energy", container_energy)
+    if not math.isfinite(2.0 * e0):
+        raise ParameterError("container_energy", container_energy, "a number > 0 with 2 E0 finite")
+    positions = v.finite_array("positions", positions, "finite positions of shape (R, k, 2)")
+    if positions.ndim != 3 or positions.shape[1:] != (k, 2) or positions.shape[0] < 1:
+        raise ParameterError(
+            "positions", f"an array of shape {positions.shape}", f"shape (R, {k}, 2), R >= 1"
+        )
+    return StateLayout(k).start(math.sqrt(2.0 * e0), positions)
 
 
 def total_energy(sink: Sink, values: np.ndarray) -> np.ndarray:
     """Total energy H of each state row (R, 2 + 4k) (generated energy kernel)."""
-    return _engine_energies(sink, np.asarray(values, dtype=float))[0]
+    return _engine_energies(sink, _rows(sink, values))[0]
 
 
 def engine_name(sink: Sink) -> str:
@@ -256,7 +270,7 @@ def engine_name(sink: Sink) -> str:
     (:func:`sinktheory.engine.cache.well_name`); n, k and the rest are run-time values."""
     from .engine.cache import sink_name, well_name  # numba loads when first needed
 
-    if isinstance(sink.well, Well):
+    if isinstance(_sink(sink).well, Well):
         return sink_name(sink.well.shape)
     return well_name(sink.well.definition)
 
@@ -272,7 +286,16 @@ def split_values(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def join_values(q: np.ndarray, v: np.ndarray) -> np.ndarray:
     """The engine's (q, v) as state rows (R, 2 + 4k): [X, Xdot, u.., y.., udot.., ydot..]."""
-    return StateLayout((q.shape[0] - 1) // 2).join(q, v)
+    allowed = "an array (1 + 2k, R) of real numbers, k >= 1, R >= 1"  # a state that blew
+    q = real_array("q", q, allowed)  # up is joined as it is, for the audit to report
+    if q.ndim != 2 or q.shape[0] < 3 or q.shape[0] % 2 == 0 or q.shape[1] < 1:
+        raise ParameterError("q", f"an array of shape {q.shape}", allowed)
+    velocities = real_array("v", v, f"an array of shape {q.shape} (as q)")
+    if velocities.shape != q.shape:
+        raise ParameterError(
+            "v", f"an array of shape {velocities.shape}", f"shape {q.shape} (as q)"
+        )
+    return StateLayout((q.shape[0] - 1) // 2).join(q, velocities)
 
 
 def _engine_energies(sink: Sink, values: np.ndarray):
@@ -288,7 +311,8 @@ def _engine_energies(sink: Sink, values: np.ndarray):
 def run_parameters(sink: Sink, settings: RunSettings, runs: int) -> dict:
     """What a simulation ran, as its result's ``parameters``: the well, k, m, E0, runs,
     periods, seed, box."""
-    w = sink.well
+    w, settings = _sink(sink).well, _settings(settings)
+    runs = v.positive_int("runs", runs)
     well = ({"alpha": w.alpha, "beta": w.beta, "n": w.n, "gamma": w.gamma}
             if isinstance(w, Well) else dict(w.parameters))  # fmt: skip
     return {
@@ -391,12 +415,33 @@ class Start:
 
 def check_sink(sink, settings) -> RunSettings:
     """``settings`` (a new :class:`RunSettings` when None) after checking both types."""
-    settings = RunSettings() if settings is None else settings
+    _sink(sink)
+    return _settings(RunSettings() if settings is None else settings)
+
+
+def _sink(sink) -> Sink:
+    """``sink`` if it is a :class:`~sinktheory.model.Sink`, else a ParameterError."""
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    return sink
+
+
+def _settings(settings) -> RunSettings:
+    """``settings`` if it is a :class:`~sinktheory.model.RunSettings`, else a ParameterError."""
     if not isinstance(settings, RunSettings):
         raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
     return settings
+
+
+def _rows(sink: Sink, values) -> np.ndarray:
+    """``values`` as state rows (R, 2 + 4k) of finite numbers for ``sink``'s k particles,
+    else a ParameterError naming ``values``."""
+    width = 2 + 4 * _sink(sink).particles
+    allowed = f"state rows (R, {width}) of finite numbers, R >= 1"
+    rows = v.finite_array("values", values, allowed, ndim=2)
+    if rows.shape[1] != width or rows.shape[0] < 1:
+        raise ParameterError("values", f"an array of shape {rows.shape}", allowed)
+    return rows
 
 
 def prepare(

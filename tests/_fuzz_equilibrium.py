@@ -15,12 +15,74 @@ ensemble, basin, model, results, layout, recurrence, sinkstats, simulate.
 
 def overrides() -> dict:
     """Valid keyword arguments of the entry points of this area, by key."""
-    return {}
+    import numpy as np
+    from scipy import stats
+
+    s = "sinktheory."
+    rows = np.array([[0.5**0.5 * 2, 0.0, 0.003, -0.004, 0.0, 0.0]])  # Fig. 8, k = 1: E0 = 1
+    lags = np.array([32.0, 64.0, 128.0])
+    grid = np.array([0.1, 0.5, 0.9])
+    # increments (point, lag, run) of s, relaxing to mu = 0.3 as 0.75 exp(-tau / 120)
+    relaxing = np.stack([(0.75 * np.exp(-t / 120) - 1) * (grid - 0.3) for t in lags], axis=1)
+    increments = relaxing[..., None] + 0.01 * np.sin(np.arange(8.0))  # 8 runs, a spread
+    return {
+        s + "ensemble.total_energy": dict(values=rows),
+        s + "equilibrium.prediction.shell_lags": dict(lag=128),
+        s + "equilibrium.prediction.slow_mode": dict(
+            lags=lags, log_lambda=np.log(0.75) - lags / 120, stderr=np.ones(3)
+        ),
+        s + "equilibrium.prediction.log_lambdas": dict(
+            s=grid, increments=increments, weights=np.ones((3, 3))
+        ),
+        s + "equilibrium.prediction.law_chain": dict(
+            pdf=stats.beta(1, 2).pdf, s_points=[0.0, 1.0], drift=[0.01, -0.02], cells=50
+        ),
+    }
 
 
 def fixed_leaks() -> list:
     """(call, parameter its ParameterError must name) of each leak fixed in this area."""
-    return []
+    import math
+
+    import numpy as np
+
+    from sinktheory import RunSettings
+    from sinktheory.canonical import FIG8_SINK
+    from sinktheory.ensemble import (
+        engine_name,
+        join_values,
+        random_positions,
+        run_parameters,
+        start_state,
+        total_energy,
+    )
+    from sinktheory.equilibrium.prediction import law_chain, log_lambdas, shell_lags, slow_mode
+    from sinktheory.layout import pack_params
+
+    at = np.array([[[0.003, -0.004]]])
+    settings = RunSettings(runs=2, seed=1)
+    ones = np.ones(3)
+    return [
+        (lambda: engine_name(None), "sink"),  # AttributeError
+        (lambda: pack_params(None), "sink"),  # AttributeError
+        (lambda: join_values(None, np.zeros((3, 2))), "q"),  # AttributeError
+        (lambda: join_values(np.zeros((3, 2)), None), "v"),  # AttributeError
+        (lambda: random_positions(settings, 10**12), "particles"),  # MemoryError
+        (lambda: random_positions(None, 1), "settings"),  # AttributeError
+        (lambda: run_parameters(FIG8_SINK, settings, math.nan), "runs"),  # NaN returned
+        (lambda: start_state(FIG8_SINK, -1, at), "container_energy"),  # ValueError
+        (lambda: start_state(FIG8_SINK, 1e308, at), "container_energy"),  # inf returned
+        (lambda: start_state(FIG8_SINK, 0.5, None), "positions"),  # AttributeError
+        (lambda: total_energy(FIG8_SINK, "x"), "values"),  # ValueError
+        (lambda: law_chain(None, [0.0, 1.0], [0.1, 0.1]), "pdf"),  # TypeError
+        (lambda: law_chain(np.ones_like, None, [0.1]), "s_points"),  # ValueError
+        (lambda: log_lambdas(None, np.zeros((3, 1, 2)), np.ones((3, 1))), "s"),  # LinAlgError
+        (lambda: log_lambdas([0.1, 0.5, 0.9], None, np.ones((3, 1))), "increments"),
+        (lambda: slow_mode([1.0, 2.0, 3.0], ones, 0 * ones), "stderr"),  # inf returned
+        (lambda: slow_mode(None, ones, ones), "lags"),  # LinAlgError
+        (lambda: slow_mode([1.0, 2.0, 3.0], 1e12, ones), "log_lambda"),  # OverflowError
+        (lambda: shell_lags(math.inf), "lag"),  # OverflowError
+    ]
 
 
 #: Entry points of this area whose calls take seconds: fewer examples.
@@ -65,21 +127,10 @@ PENDING_BY_REASON: dict[str, tuple] = {
         "sinktheory.basin.escape",
         "sinktheory.basin.leading_order",
         "sinktheory.ensemble.SimulationState",
-        "sinktheory.ensemble.engine_name",  # sink=None: AttributeError
-        "sinktheory.ensemble.join_values",  # q=None: AttributeError
         "sinktheory.ensemble.prepare",
-        "sinktheory.ensemble.random_positions",  # particles=None: TypeError
-        "sinktheory.ensemble.run_parameters",  # runs=nan: nonfinite
-        "sinktheory.ensemble.start_state",  # container_energy=None: TypeError
-        "sinktheory.ensemble.total_energy",
         "sinktheory.equilibrium.ergodicity.ergodicity_map",
-        "sinktheory.equilibrium.prediction.law_chain",
-        "sinktheory.equilibrium.prediction.log_lambdas",
         "sinktheory.equilibrium.prediction.measure_settling",
         "sinktheory.equilibrium.prediction.read_settling",
-        "sinktheory.equilibrium.prediction.shell_lags",
         "sinktheory.equilibrium.prediction.shell_prediction",
-        "sinktheory.equilibrium.prediction.slow_mode",
-        "sinktheory.layout.pack_params",  # sink=None: AttributeError
     ),
 }

@@ -190,8 +190,16 @@ def law_chain(pdf, s_points, drift, *, cells: int = 150) -> LawChain:
         maximum=MAX_CHAIN_CELLS,
         why=lambda c: "its spectrum's eigenvectors hold cells^2 numbers",
     )
-    s_points = np.asarray(s_points, dtype=float)
-    drift = np.asarray(drift, dtype=float)
+    if not callable(pdf):
+        raise ParameterError("pdf", pdf, "a density of s: a function of an array")
+    allowed = "an increasing array of finite s"
+    s_points = v.finite_array("s_points", s_points, allowed, ndim=1)
+    if s_points.size < 1 or np.any(np.diff(s_points) <= 0):
+        raise ParameterError("s_points", f"an array of shape {s_points.shape}", allowed)
+    allowed = f"{s_points.size} finite drifts, one per point of s_points"
+    drift = v.finite_array("drift", drift, allowed, ndim=1)
+    if drift.shape != s_points.shape:
+        raise ParameterError("drift", f"an array of shape {drift.shape}", allowed)
     x, w = np.polynomial.legendre.leggauss(_NODES)
     h = 1.0 / cells
     nodes = (np.arange(cells)[:, None] + 0.5 * (x + 1)) * h  # (cell, node)
@@ -282,20 +290,35 @@ class RelaxationPrediction(Result):
     energy = old_attribute("container_energy")
 
 
-def fit_line(x, y, stderr) -> tuple[float, float]:
+def fit_line(x, y, stderr, *, names=("x", "y", "stderr")) -> tuple[float, float]:
     """(a, b) of the straight line a + b x through ``y`` by least squares weighted with
-    1 / stderr^2.
+    1 / stderr^2 (``names``: what a refusal calls the three arguments).
 
     Examples
     --------
     >>> [round(x, 12) for x in fit_line([0, 1, 2], [1, 3, 5], [1, 1, 1])]
     [1.0, 2.0]
     """
-    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
-    w = 1 / np.asarray(stderr, dtype=float)
+    x = v.finite_array(names[0], x, "at least 2 distinct finite numbers", ndim=1)
+    if np.unique(x).size < 2:
+        raise ParameterError(names[0], f"{x.size} distinct value(s)", "at least 2 distinct numbers")
+    y = _alike(names[1], y, x.size)
+    stderr = _alike(names[2], stderr, x.size)
+    if not np.all(stderr > 0):
+        raise ParameterError(names[2], "a value <= 0", f"{x.size} finite numbers > 0")
+    w = 1 / stderr
     design = np.column_stack([np.ones_like(x), x]) * w[:, None]
     (a, b), *_ = np.linalg.lstsq(design, y * w, rcond=None)
     return float(a), float(b)
+
+
+def _alike(name: str, value, size: int) -> np.ndarray:
+    """``value`` as ``size`` finite numbers (a 1-D array), else a ParameterError."""
+    allowed = f"{size} finite numbers (an array of shape ({size},))"
+    out = v.finite_array(name, value, allowed, ndim=1)
+    if out.size != size:
+        raise ParameterError(name, f"an array of shape {out.shape}", allowed)
+    return out
 
 
 def log_lambdas(s, increments, weights) -> np.ndarray:
@@ -310,6 +333,17 @@ def log_lambdas(s, increments, weights) -> np.ndarray:
     >>> np.round(log_lambdas(s, inc[..., None].repeat(2, axis=2), np.ones((3, 2))), 6)
     array([-0.793147, -0.893147])
     """
+    s = v.finite_array("s", s, "the starting s of each point, at least 2 distinct", ndim=1)
+    if np.unique(s).size < 2:
+        raise ParameterError("s", f"{s.size} distinct value(s)", "at least 2 distinct points")
+    allowed = f"an array (point, lag, run) of finite increments, {s.size} points, runs >= 1"
+    increments = v.finite_array("increments", increments, allowed, ndim=3)
+    if increments.shape[0] != s.size or 0 in increments.shape:
+        raise ParameterError("increments", f"an array of shape {increments.shape}", allowed)
+    allowed = f"standard errors > 0 of shape {increments.shape[:2]} (point, lag)"
+    weights = v.finite_array("weights", weights, allowed, ndim=2)
+    if weights.shape != increments.shape[:2] or not np.all(weights > 0):
+        raise ParameterError("weights", f"an array of shape {weights.shape}", allowed)
     out = []
     for j in range(increments.shape[1]):
         b = fit_line(s, increments[:, j].mean(axis=1), weights[:, j])[1]
@@ -328,7 +362,12 @@ def slow_mode(lags, log_lambda, stderr) -> tuple[float, float]:
     >>> round(t, 6), round(c, 6)
     (120.0, 0.75)
     """
-    a, b = fit_line(lags, log_lambda, stderr)
+    lags = v.finite_array("lags", lags, "at least 2 distinct lags > 0", ndim=1)
+    if not np.all(lags > 0):
+        raise ParameterError("lags", "a lag <= 0", "at least 2 distinct lags > 0")
+    a, b = fit_line(lags, log_lambda, stderr, names=("lags", "log_lambda", "stderr"))
+    if a > math.log(np.finfo(float).max):
+        raise NumericalError(f"slow_mode: ln c = {a:.6g} from the fit: c overflows")
     return (-1 / b if b < 0 else math.inf), math.exp(a)
 
 
@@ -467,6 +506,7 @@ def shell_lags(lag: int) -> list[int]:
     >>> shell_lags(128)
     [16, 32, 64, 128]
     """
+    lag = v.positive_int("lag", lag)
     return sorted({max(1, round(lag * x)) for x in LADDER})
 
 
