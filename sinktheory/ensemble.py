@@ -32,7 +32,7 @@ from .layout import StateLayout, pack_params
 from .model import RunSettings, Sink, Well
 from .results import Result
 from .runstats import ensemble_mean
-from .stepsize import DEFAULT_TOL
+from .stepsize import DEFAULT_TOL, check_tol
 from .validation import real_array  # join_values has a parameter v
 
 __all__ = [
@@ -457,8 +457,9 @@ def prepare(
 ) -> Start:
     """Check what every stepper checks and place the runs at their start.
 
-    The sink and settings, the records (from ``allowed``) and their memory, the energy
-    bound (default :func:`default_energy_bound` of ``tol``), then the starting state from
+    The sink and settings, the records (from ``allowed``) and their memory, ``tol`` (None
+    or in :data:`~sinktheory.limits.TOL_RANGE`), the energy bound (default
+    :func:`default_energy_bound` of ``tol``), then the starting state from
     :func:`initial_values`.
 
     Examples
@@ -469,7 +470,10 @@ def prepare(
     (2, ('container',), 1e-06, 0.0)
     """
     settings = check_sink(sink, settings)
+    if not (isinstance(allowed, tuple) and allowed and set(allowed) <= set(RECORDS)):
+        raise ParameterError("allowed", allowed, f"a tuple of names from {', '.join(RECORDS)}")
     record = check_record(record, allowed)
+    tol = None if tol is None else check_tol(tol)
     settings.check_memory(sink, record)
     bound = v.positive(
         "energy_bound", default_energy_bound(tol) if energy_bound is None else energy_bound

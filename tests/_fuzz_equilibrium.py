@@ -25,7 +25,26 @@ def overrides() -> dict:
     # increments (point, lag, run) of s, relaxing to mu = 0.3 as 0.75 exp(-tau / 120)
     relaxing = np.stack([(0.75 * np.exp(-t / 120) - 1) * (grid - 0.3) for t in lags], axis=1)
     increments = relaxing[..., None] + 0.01 * np.sin(np.arange(8.0))  # 8 runs, a spread
+    noisy = relaxing[..., None] + 0.01 * np.random.default_rng(0).standard_normal((3, 3, 20))
     return {
+        s + "ensemble.prepare": dict(record=("container",)),
+        s + "equilibrium.prediction.read_settling": dict(target=0.3, resamples=20),
+        s + "equilibrium.prediction.measure_settling": dict(measure=(3, 24), resamples=20),
+        s + "equilibrium.prediction.shell_prediction": dict(
+            s=grid,
+            increments=noisy,
+            lags=lags,
+            pdf=stats.beta(1, 2).pdf,
+            mu=1 / 3,
+            start=0.5,
+            total=0.6,
+            particles=2,
+            mass=0.2,
+            lag=128,
+            coefficients="synthetic",
+            resamples=20,
+            cells=20,
+        ),  # fmt: skip
         s + "ensemble.total_energy": dict(values=rows),
         s + "equilibrium.prediction.shell_lags": dict(lag=128),
         s + "equilibrium.prediction.slow_mode": dict(
@@ -51,15 +70,25 @@ def fixed_leaks() -> list:
     from sinktheory.ensemble import (
         engine_name,
         join_values,
+        prepare,
         random_positions,
         run_parameters,
         start_state,
         total_energy,
     )
-    from sinktheory.equilibrium.prediction import law_chain, log_lambdas, shell_lags, slow_mode
+    from sinktheory.equilibrium.prediction import (
+        law_chain,
+        log_lambdas,
+        measure_settling,
+        read_settling,
+        shell_lags,
+        shell_prediction,
+        slow_mode,
+    )
     from sinktheory.layout import pack_params
 
     at = np.array([[[0.003, -0.004]]])
+    shells = overrides()["sinktheory.equilibrium.prediction.shell_prediction"]
     settings = RunSettings(runs=2, seed=1)
     ones = np.ones(3)
     return [
@@ -82,11 +111,21 @@ def fixed_leaks() -> list:
         (lambda: slow_mode(None, ones, ones), "lags"),  # LinAlgError
         (lambda: slow_mode([1.0, 2.0, 3.0], 1e12, ones), "log_lambda"),  # OverflowError
         (lambda: shell_lags(math.inf), "lag"),  # OverflowError
+        (lambda: prepare(FIG8_SINK, settings, "container", tol="x"), "tol"),  # TypeError
+        (lambda: prepare(FIG8_SINK, settings, "container", allowed=None), "allowed"),
+        (lambda: read_settling(None, 0.3), "energy_runs"),  # IndexError
+        (lambda: measure_settling(None, 0.5, (3, 24)), "sink"),  # AttributeError
+        (lambda: shell_prediction(**{**shells, "mu": 0}), "mu"),  # ZeroDivisionError
+        (lambda: shell_prediction(**{**shells, "start": -1}), "start"),  # IndexError
+        (lambda: shell_prediction(**{**shells, "total": math.inf}), "total"),  # inf returned
+        (lambda: shell_prediction(**{**shells, "particles": math.nan}), "particles"),  # NaN
+        (lambda: shell_prediction(**{**shells, "periods": 1e308}), "periods"),  # UFuncTypeError
+        (lambda: shell_prediction(**{**shells, "increments": None}), "increments"),
     ]
 
 
 #: Entry points of this area whose calls take seconds: fewer examples.
-HEAVY: set[str] = set()
+HEAVY: set[str] = {"sinktheory.equilibrium.prediction.measure_settling"}
 
 #: Records the package returns, by key: what returns each.
 RECORDS: dict[str, str] = {
@@ -127,10 +166,6 @@ PENDING_BY_REASON: dict[str, tuple] = {
         "sinktheory.basin.escape",
         "sinktheory.basin.leading_order",
         "sinktheory.ensemble.SimulationState",
-        "sinktheory.ensemble.prepare",
         "sinktheory.equilibrium.ergodicity.ergodicity_map",
-        "sinktheory.equilibrium.prediction.measure_settling",
-        "sinktheory.equilibrium.prediction.read_settling",
-        "sinktheory.equilibrium.prediction.shell_prediction",
     ),
 }
