@@ -28,6 +28,7 @@ import numpy as np
 from . import validation as v
 from .errors import ParameterError
 from .glossary import old_attribute, renamed
+from .integrators import get_scheme
 from .layout import StateLayout, pack_params
 from .model import RunSettings, Sink, Well
 from .results import Result
@@ -92,7 +93,10 @@ class SimulationState(Result):
     and the part of a step still to take, so that a continued run takes the steps it would
     have taken.  A state made before ``method`` was split in two (``method="adaptive"``, or
     "adaptive" where the scheme now stands) is an adaptive state whose scheme was not
-    recorded (None).
+    recorded (None).  A state made by hand (a start on an energy shell) may give ``dt`` 0
+    and ``scheme`` "": not stepped yet.  The fields are checked on construction
+    (ParameterError naming the field); non-finite ``values`` are kept, for
+    :func:`initial_values` to refuse as a start.
     """
 
     values: np.ndarray
@@ -127,6 +131,30 @@ class SimulationState(Result):
         if self.scheme == "adaptive":  # the stepper, as an old state's method named it
             object.__setattr__(self, "stepper", "adaptive")
             object.__setattr__(self, "scheme", None)
+        values = real_array("values", self.values, "state rows (R, 2 + 4k)")
+        if values.ndim != 2 or values.shape[0] < 1:
+            raise ParameterError("values", f"an array of shape {values.shape}", "rows (R, 2 + 4k)")
+        StateLayout.of(values)  # 2 + 4k columns
+        runs = values.shape[0]
+        reference = v.finite_array("reference_energy", self.reference_energy,
+                                   f"{runs} finite energies, one per run", ndim=1)  # fmt: skip
+        if reference.shape != (runs,):
+            raise ParameterError(
+                "reference_energy", f"an array of shape {reference.shape}", f"shape ({runs},)"
+            )
+        object.__setattr__(self, "values", values)
+        object.__setattr__(self, "reference_energy", reference)
+        object.__setattr__(self, "time", v.finite("time", self.time))
+        object.__setattr__(self, "dt", v.nonnegative("dt", self.dt))
+        if self.scheme not in (None, ""):
+            get_scheme(self.scheme)
+        v.choice("stepper", self.stepper, ("fixed", "adaptive"))
+        if self.controller is not None:
+            allowed = f"an array ({runs}, 2) of each run's rate and step part"
+            controller = v.finite_array("controller", self.controller, allowed, ndim=2)
+            if controller.shape != (runs, 2):
+                raise ParameterError("controller", f"an array of shape {controller.shape}", allowed)
+            object.__setattr__(self, "controller", controller)
 
     def coords(self) -> dict:
         return {"state": list(self.layout.names())}
@@ -247,15 +275,15 @@ def random_positions(settings: RunSettings, particles: int) -> np.ndarray:
 def start_state(sink: Sink, container_energy: float, positions: np.ndarray) -> np.ndarray:
     """State rows (R, 2 + 4k): container at X = sqrt(2 E0) at rest (E0 =
     ``container_energy``), particles at rest at ``positions`` (R, k, 2) relative to the
-    container."""
+    container ((R, 1, 2): every particle of a run at one place)."""
     k = _sink(sink).particles
     e0 = v.positive("container_energy", container_energy)
     if not math.isfinite(2.0 * e0):
         raise ParameterError("container_energy", container_energy, "a number > 0 with 2 E0 finite")
     positions = v.finite_array("positions", positions, "finite positions of shape (R, k, 2)")
-    if positions.ndim != 3 or positions.shape[1:] != (k, 2) or positions.shape[0] < 1:
+    if positions.ndim != 3 or positions.shape[1:] not in ((k, 2), (1, 2)) or not positions.size:
         raise ParameterError(
-            "positions", f"an array of shape {positions.shape}", f"shape (R, {k}, 2), R >= 1"
+            "positions", f"an array of shape {positions.shape}", f"shape (R, {k}, 2) or (R, 1, 2)"
         )
     return StateLayout(k).start(math.sqrt(2.0 * e0), positions)
 

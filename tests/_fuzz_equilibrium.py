@@ -46,6 +46,9 @@ def overrides() -> dict:
             cells=20,
         ),  # fmt: skip
         s + "ensemble.total_energy": dict(values=rows),
+        s + "ensemble.SimulationState": dict(
+            values=rows, time=0.0, reference_energy=[1.0], dt=0.05, scheme="verlet"
+        ),
         s + "equilibrium.prediction.shell_lags": dict(lag=128),
         s + "equilibrium.prediction.slow_mode": dict(
             lags=lags, log_lambda=np.log(0.75) - lags / 120, stderr=np.ones(3)
@@ -68,6 +71,7 @@ def fixed_leaks() -> list:
     from sinktheory import RunSettings
     from sinktheory.canonical import FIG8_SINK
     from sinktheory.ensemble import (
+        SimulationState,
         engine_name,
         join_values,
         prepare,
@@ -89,6 +93,7 @@ def fixed_leaks() -> list:
 
     at = np.array([[[0.003, -0.004]]])
     shells = overrides()["sinktheory.equilibrium.prediction.shell_prediction"]
+    rows = np.zeros((1, 6))
     settings = RunSettings(runs=2, seed=1)
     ones = np.ones(3)
     return [
@@ -121,6 +126,9 @@ def fixed_leaks() -> list:
         (lambda: shell_prediction(**{**shells, "particles": math.nan}), "particles"),  # NaN
         (lambda: shell_prediction(**{**shells, "periods": 1e308}), "periods"),  # UFuncTypeError
         (lambda: shell_prediction(**{**shells, "increments": None}), "increments"),
+        (lambda: SimulationState([[1.0]], 0.0, [1.0], 0.05, "verlet"), "values"),  # unchecked
+        (lambda: SimulationState(rows, 0.0, [1.0], 0.05, "x"), "scheme"),  # unchecked
+        (lambda: SimulationState(rows, math.nan, [1.0], 0.05, "verlet"), "time"),  # unchecked
     ]
 
 
@@ -165,7 +173,6 @@ PENDING_BY_REASON: dict[str, tuple] = {
         "sinktheory.basin.NumericWell",
         "sinktheory.basin.escape",
         "sinktheory.basin.leading_order",
-        "sinktheory.ensemble.SimulationState",
         "sinktheory.equilibrium.ergodicity.ergodicity_map",
     ),
 }
