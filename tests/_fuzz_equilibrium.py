@@ -16,6 +16,7 @@ ensemble, basin, model, results, layout, recurrence, sinkstats, simulate.
 def overrides() -> dict:
     """Valid keyword arguments of the entry points of this area, by key."""
     import numpy as np
+    from _fuzz import Lazy
     from scipy import stats
 
     s = "sinktheory."
@@ -26,7 +27,23 @@ def overrides() -> dict:
     relaxing = np.stack([(0.75 * np.exp(-t / 120) - 1) * (grid - 0.3) for t in lags], axis=1)
     increments = relaxing[..., None] + 0.01 * np.sin(np.arange(8.0))  # 8 runs, a spread
     noisy = relaxing[..., None] + 0.01 * np.random.default_rng(0).standard_normal((3, 3, 20))
+
+    def hh():  # the Henon-Heiles potential, as a user's well parses it
+        from _cli import HH
+
+        from sinktheory.userwell import UserWell
+
+        return UserWell("hh", HH, {}).potential
+
+    def hh_well():
+        from sinktheory.basin import NumericWell
+
+        return NumericWell(hh())
+
     return {
+        s + "basin.NumericWell": dict(V=Lazy(hh)),
+        s + "basin.escape": dict(well=Lazy(hh_well)),
+        s + "basin.leading_order": dict(V=Lazy(hh)),
         s + "ensemble.prepare": dict(record=("container",)),
         s + "equilibrium.prediction.read_settling": dict(target=0.3, resamples=20),
         s + "equilibrium.prediction.measure_settling": dict(measure=(3, 24), resamples=20),
@@ -69,6 +86,7 @@ def fixed_leaks() -> list:
     import numpy as np
 
     from sinktheory import RunSettings
+    from sinktheory.basin import NumericWell, escape, leading_order
     from sinktheory.canonical import FIG8_SINK
     from sinktheory.ensemble import (
         SimulationState,
@@ -90,6 +108,7 @@ def fixed_leaks() -> list:
         slow_mode,
     )
     from sinktheory.layout import pack_params
+    from sinktheory.symbolic import x, y
 
     at = np.array([[[0.003, -0.004]]])
     shells = overrides()["sinktheory.equilibrium.prediction.shell_prediction"]
@@ -129,6 +148,12 @@ def fixed_leaks() -> list:
         (lambda: SimulationState([[1.0]], 0.0, [1.0], 0.05, "verlet"), "values"),  # unchecked
         (lambda: SimulationState(rows, 0.0, [1.0], 0.05, "x"), "scheme"),  # unchecked
         (lambda: SimulationState(rows, math.nan, [1.0], 0.05, "verlet"), "time"),  # unchecked
+        (lambda: NumericWell(None), "V"),  # AttributeError
+        (lambda: NumericWell(x**2 + y**2, name=None), "name"),  # unchecked
+        (lambda: NumericWell(x**2 + y**2, values=[]), "values"),  # unchecked
+        (lambda: leading_order("x**2"), "V"),  # AttributeError
+        (lambda: escape(None), "well"),  # AttributeError
+        (lambda: escape(NumericWell(x**2 + y**2), 1e-300), "radius"),  # seconds of doubling
     ]
 
 
@@ -169,10 +194,5 @@ RECORDS: dict[str, str] = {
 #: Entry points not fuzzed yet, by why.
 PENDING_BY_REASON: dict[str, tuple] = {
     "leaks raw exceptions on hostile input (the first found is noted); its validation is not "
-    "written yet": (
-        "sinktheory.basin.NumericWell",
-        "sinktheory.basin.escape",
-        "sinktheory.basin.leading_order",
-        "sinktheory.equilibrium.ergodicity.ergodicity_map",
-    ),
+    "written yet": ("sinktheory.equilibrium.ergodicity.ergodicity_map",),
 }
