@@ -530,7 +530,9 @@ def sink_of(p: Mapping) -> Sink:
     >>> sink_of(dict(well=bowl, k=2.0, particles=1, mass=0.2)).well
     WellAt(bowl: k=2)
     """
-    text = p["well"] if "well" in p else _shape_wells(p.get("wells")).get(p.get("shape"))
+    shape = p.get("shape")  # not text: the Well of a registered shape refuses it
+    wells = _shape_wells(p.get("wells")) if isinstance(shape, str) else {}
+    text = p["well"] if "well" in p else wells.get(shape) if wells else None
     if text is None:
         well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
     else:

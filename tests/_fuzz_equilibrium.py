@@ -45,6 +45,9 @@ def overrides() -> dict:
         s + "basin.escape": dict(well=Lazy(hh_well)),
         s + "basin.leading_order": dict(V=Lazy(hh)),
         s + "ensemble.prepare": dict(record=("container",)),
+        s + "equilibrium.ergodicity.ergodicity_map": dict(
+            betas=[0.3], runs=2, periods=20, transient=10, lyapunov_runs=0, progress=False
+        ),
         s + "equilibrium.prediction.read_settling": dict(target=0.3, resamples=20),
         s + "equilibrium.prediction.measure_settling": dict(measure=(3, 24), resamples=20),
         s + "equilibrium.prediction.shell_prediction": dict(
@@ -98,6 +101,7 @@ def fixed_leaks() -> list:
         start_state,
         total_energy,
     )
+    from sinktheory.equilibrium.ergodicity import ergodicity_map
     from sinktheory.equilibrium.prediction import (
         law_chain,
         log_lambdas,
@@ -154,11 +158,15 @@ def fixed_leaks() -> list:
         (lambda: leading_order("x**2"), "V"),  # AttributeError
         (lambda: escape(None), "well"),  # AttributeError
         (lambda: escape(NumericWell(x**2 + y**2), 1e-300), "radius"),  # seconds of doubling
+        (lambda: ergodicity_map([0.3], alpha=0.5, n=4, shape=[]), "shape"),  # TypeError
     ]
 
 
 #: Entry points of this area whose calls take seconds: fewer examples.
-HEAVY: set[str] = {"sinktheory.equilibrium.prediction.measure_settling"}
+HEAVY: set[str] = {
+    "sinktheory.equilibrium.ergodicity.ergodicity_map",
+    "sinktheory.equilibrium.prediction.measure_settling",
+}
 
 #: Records the package returns, by key: what returns each.
 RECORDS: dict[str, str] = {
@@ -192,7 +200,4 @@ RECORDS: dict[str, str] = {
 }
 
 #: Entry points not fuzzed yet, by why.
-PENDING_BY_REASON: dict[str, tuple] = {
-    "leaks raw exceptions on hostile input (the first found is noted); its validation is not "
-    "written yet": ("sinktheory.equilibrium.ergodicity.ergodicity_map",),
-}
+PENDING_BY_REASON: dict[str, tuple] = {}
