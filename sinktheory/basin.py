@@ -99,12 +99,10 @@ __all__ = [
     "leading_order",
     "LeadingOrder",
     "MAX_RAYS",
-    "numeric",
+    "RADIUS_RANGE",
     "NumericWell",
-    "reach",
     "Reach",
     "SCAN_POINTS",
-    "star_area",
 ]
 
 #: Nodes per half side of the search grid (a grid of (2 GRID + 1)^2 nodes).
@@ -160,6 +158,39 @@ class LeadingOrder:
 
 #: Directions on which the leading form must be positive (:func:`leading_order`).
 FORM_DIRECTIONS = 256
+#: The range of ``radius`` of :func:`escape` (that of :func:`sinktheory.userwell.check_well`,
+#: which calls it): below, V on the first box underflows to V(0, 0) and the search doubles
+#: its box hundreds of times.
+RADIUS_RANGE = (1e-140, 1e300)
+
+
+def _check_expression(V, values, name) -> dict:
+    """``values`` as a dict after checking the arguments of :class:`NumericWell` and
+    :func:`leading_order`: V a SymPy expression in x, y and the symbols of ``values``
+    (None or a mapping of SymPy symbols to finite real numbers), ``name`` a string."""
+    if not isinstance(name, str):
+        raise ParameterError("name", name, "a string naming the well in messages")
+    if values is not None and not isinstance(values, Mapping):
+        raise ParameterError("values", values, "None or a mapping of SymPy symbols to numbers")
+    values = dict(values or {})
+    for key, value in values.items():
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            number = math.nan
+        if not isinstance(key, sp.Symbol) or not math.isfinite(number) or isinstance(value, bool):
+            raise ParameterError(
+                "values", f"{key} = {value}", "a mapping of SymPy symbols to finite real numbers"
+            )
+    if not isinstance(V, sp.Expr):
+        raise ParameterError("V", V, "a SymPy expression in x, y (sinktheory.symbolic's)")
+    unknown = V.free_symbols - {x, y} - set(values)
+    if unknown:
+        raise ParameterError(
+            "V", str(V)[:40], f"an expression in x, y and the symbols of values, not "
+            f"{', '.join(sorted(map(str, unknown)))}",
+        )  # fmt: skip
+    return values
 
 
 def leading_order(V: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None,
@@ -185,8 +216,9 @@ def leading_order(V: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None,
     ...
     sinktheory.errors.WellDefinitionError: well V: 'x**2' is refused: the leading term ...
     """
+    values = _check_expression(V, values, name)
     lam = sp.Dummy("lambda", positive=True)
-    V = V.subs(dict(values or {}))
+    V = V.subs(values)
     where = f"well {name}"
     scaled = V.subs({x: lam * x, y: lam * y}, simultaneous=True) - V.subs({x: 0, y: 0})
     try:
@@ -311,9 +343,9 @@ class NumericWell:
 
     def __init__(self, V: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None,
                  name: str = "V"):  # fmt: skip
+        self.values = _check_expression(V, values, name)
         self.name = name
         self.expr = V
-        self.values = dict(values or {})
         self.f = numeric(V, self.values)
         # derivatives at the values by the chain rule through the bases of the powers
         # (symbolic.lift_powers): numbers of order one, finite where a base vanishes
@@ -346,6 +378,10 @@ class NumericWell:
             sign = float(np.sign(g(0.0, 0.0)))
             self.guards.append((g, rule, sign))
         self.v0 = float(self.f(0.0, 0.0))
+        if not math.isfinite(self.v0):
+            raise WellDefinitionError(
+                f"well {name}", f"V(0, 0) = {self.v0}", "V must be real and finite at the centre"
+            )
         # the sum of |terms| of V: its rounding error is a few ulps of it (so a well
         # scaled by 1e-300 is not taken for one flat to rounding)
         self.magnitude = numeric(sum(abs(t) for t in sp.Add.make_args(V)), self.values)
@@ -520,7 +556,16 @@ def escape(well: NumericWell, radius: float = 1.0) -> Escape:
     >>> e.kind, round(e.escape_potential, 15), round(abs(e.point[0]) - 0.5**0.5, 15)
     ('saddle', 0.25, 0.0)
     """
-    R = FIRST_BOX * radius
+    if not isinstance(well, NumericWell):
+        raise ParameterError("well", well, "a sinktheory.basin.NumericWell")
+    lo, hi = RADIUS_RANGE
+    try:
+        ok = lo <= radius <= hi and not isinstance(radius, bool)
+    except TypeError:
+        ok = False
+    if not ok:
+        raise ParameterError("radius", radius, f"a number in [{lo:g}, {hi:g}]")
+    R = FIRST_BOX * float(radius)
     m = GRID
     while True:
         X, Y = _grid(R)

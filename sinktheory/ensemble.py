@@ -28,35 +28,30 @@ import numpy as np
 from . import validation as v
 from .errors import ParameterError
 from .glossary import old_attribute, renamed
+from .integrators import get_scheme
 from .layout import StateLayout, pack_params
 from .model import RunSettings, Sink, Well
 from .results import Result
 from .runstats import ensemble_mean
-from .stepsize import DEFAULT_TOL
+from .stepsize import DEFAULT_TOL, check_tol
+from .validation import real_array  # join_values has a parameter v
 
 __all__ = [
-    "check_record",
     "check_sink",
-    "default_energy_bound",
     "ENERGY_BOUND",
     "engine_name",
     "engine_params",
-    "initial_values",
     "join_values",
     "prepare",
     "random_positions",
     "RECORDS",
     "run_parameters",
-    "settings_of",
     "SimulationResult",
     "SimulationState",
-    "sink_of",
     "split_values",
     "Start",
-    "start_positions",
     "start_state",
     "total_energy",
-    "well_of_text",
 ]
 
 #: What :func:`sinktheory.simulate.simulate` can record.
@@ -98,7 +93,10 @@ class SimulationState(Result):
     and the part of a step still to take, so that a continued run takes the steps it would
     have taken.  A state made before ``method`` was split in two (``method="adaptive"``, or
     "adaptive" where the scheme now stands) is an adaptive state whose scheme was not
-    recorded (None).
+    recorded (None).  A state made by hand (a start on an energy shell) may give ``dt`` 0
+    and ``scheme`` "": not stepped yet.  The fields are checked on construction
+    (ParameterError naming the field); non-finite ``values`` are kept, for
+    :func:`initial_values` to refuse as a start.
     """
 
     values: np.ndarray
@@ -133,6 +131,30 @@ class SimulationState(Result):
         if self.scheme == "adaptive":  # the stepper, as an old state's method named it
             object.__setattr__(self, "stepper", "adaptive")
             object.__setattr__(self, "scheme", None)
+        values = real_array("values", self.values, "state rows (R, 2 + 4k)")
+        if values.ndim != 2 or values.shape[0] < 1:
+            raise ParameterError("values", f"an array of shape {values.shape}", "rows (R, 2 + 4k)")
+        StateLayout.of(values)  # 2 + 4k columns
+        runs = values.shape[0]
+        reference = v.finite_array("reference_energy", self.reference_energy,
+                                   f"{runs} finite energies, one per run", ndim=1)  # fmt: skip
+        if reference.shape != (runs,):
+            raise ParameterError(
+                "reference_energy", f"an array of shape {reference.shape}", f"shape ({runs},)"
+            )
+        object.__setattr__(self, "values", values)
+        object.__setattr__(self, "reference_energy", reference)
+        object.__setattr__(self, "time", v.finite("time", self.time))
+        object.__setattr__(self, "dt", v.nonnegative("dt", self.dt))
+        if self.scheme not in (None, ""):
+            get_scheme(self.scheme)
+        v.choice("stepper", self.stepper, ("fixed", "adaptive"))
+        if self.controller is not None:
+            allowed = f"an array ({runs}, 2) of each run's rate and step part"
+            controller = v.finite_array("controller", self.controller, allowed, ndim=2)
+            if controller.shape != (runs, 2):
+                raise ParameterError("controller", f"an array of shape {controller.shape}", allowed)
+            object.__setattr__(self, "controller", controller)
 
     def coords(self) -> dict:
         return {"state": list(self.layout.names())}
@@ -236,6 +258,10 @@ def random_positions(settings: RunSettings, particles: int) -> np.ndarray:
     >>> p.shape, bool(np.all(np.abs(p) < 0.01))
     ((3, 2, 2), True)
     """
+    settings = _settings(settings)
+    particles = v.positive_int("particles", particles, maximum=1000)  # as a Sink's
+    v.fits_memory("particles", particles, 16.0 * settings.runs * particles,
+                  "the starting positions", "fewer particles or runs")  # fmt: skip
     children = np.random.SeedSequence(settings.seed).spawn(settings.runs)
     return np.stack(
         [
@@ -249,13 +275,22 @@ def random_positions(settings: RunSettings, particles: int) -> np.ndarray:
 def start_state(sink: Sink, container_energy: float, positions: np.ndarray) -> np.ndarray:
     """State rows (R, 2 + 4k): container at X = sqrt(2 E0) at rest (E0 =
     ``container_energy``), particles at rest at ``positions`` (R, k, 2) relative to the
-    container."""
-    return StateLayout(sink.particles).start(math.sqrt(2.0 * container_energy), positions)
+    container ((R, 1, 2): every particle of a run at one place)."""
+    k = _sink(sink).particles
+    e0 = v.positive("container_energy", container_energy)
+    if not math.isfinite(2.0 * e0):
+        raise ParameterError("container_energy", container_energy, "a number > 0 with 2 E0 finite")
+    positions = v.finite_array("positions", positions, "finite positions of shape (R, k, 2)")
+    if positions.ndim != 3 or positions.shape[1:] not in ((k, 2), (1, 2)) or not positions.size:
+        raise ParameterError(
+            "positions", f"an array of shape {positions.shape}", f"shape (R, {k}, 2) or (R, 1, 2)"
+        )
+    return StateLayout(k).start(math.sqrt(2.0 * e0), positions)
 
 
 def total_energy(sink: Sink, values: np.ndarray) -> np.ndarray:
     """Total energy H of each state row (R, 2 + 4k) (generated energy kernel)."""
-    return _engine_energies(sink, np.asarray(values, dtype=float))[0]
+    return _engine_energies(sink, _rows(sink, values))[0]
 
 
 def engine_name(sink: Sink) -> str:
@@ -263,7 +298,7 @@ def engine_name(sink: Sink) -> str:
     (:func:`sinktheory.engine.cache.well_name`); n, k and the rest are run-time values."""
     from .engine.cache import sink_name, well_name  # numba loads when first needed
 
-    if isinstance(sink.well, Well):
+    if isinstance(_sink(sink).well, Well):
         return sink_name(sink.well.shape)
     return well_name(sink.well.definition)
 
@@ -279,7 +314,16 @@ def split_values(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def join_values(q: np.ndarray, v: np.ndarray) -> np.ndarray:
     """The engine's (q, v) as state rows (R, 2 + 4k): [X, Xdot, u.., y.., udot.., ydot..]."""
-    return StateLayout((q.shape[0] - 1) // 2).join(q, v)
+    allowed = "an array (1 + 2k, R) of real numbers, k >= 1, R >= 1"  # a state that blew
+    q = real_array("q", q, allowed)  # up is joined as it is, for the audit to report
+    if q.ndim != 2 or q.shape[0] < 3 or q.shape[0] % 2 == 0 or q.shape[1] < 1:
+        raise ParameterError("q", f"an array of shape {q.shape}", allowed)
+    velocities = real_array("v", v, f"an array of shape {q.shape} (as q)")
+    if velocities.shape != q.shape:
+        raise ParameterError(
+            "v", f"an array of shape {velocities.shape}", f"shape {q.shape} (as q)"
+        )
+    return StateLayout((q.shape[0] - 1) // 2).join(q, velocities)
 
 
 def _engine_energies(sink: Sink, values: np.ndarray):
@@ -295,7 +339,8 @@ def _engine_energies(sink: Sink, values: np.ndarray):
 def run_parameters(sink: Sink, settings: RunSettings, runs: int) -> dict:
     """What a simulation ran, as its result's ``parameters``: the well, k, m, E0, runs,
     periods, seed, box."""
-    w = sink.well
+    w, settings = _sink(sink).well, _settings(settings)
+    runs = v.positive_int("runs", runs)
     well = ({"alpha": w.alpha, "beta": w.beta, "n": w.n, "gamma": w.gamma}
             if isinstance(w, Well) else dict(w.parameters))  # fmt: skip
     return {
@@ -398,12 +443,33 @@ class Start:
 
 def check_sink(sink, settings) -> RunSettings:
     """``settings`` (a new :class:`RunSettings` when None) after checking both types."""
-    settings = RunSettings() if settings is None else settings
+    _sink(sink)
+    return _settings(RunSettings() if settings is None else settings)
+
+
+def _sink(sink) -> Sink:
+    """``sink`` if it is a :class:`~sinktheory.model.Sink`, else a ParameterError."""
     if not isinstance(sink, Sink):
         raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    return sink
+
+
+def _settings(settings) -> RunSettings:
+    """``settings`` if it is a :class:`~sinktheory.model.RunSettings`, else a ParameterError."""
     if not isinstance(settings, RunSettings):
         raise ParameterError("settings", settings, "a sinktheory.model.RunSettings")
     return settings
+
+
+def _rows(sink: Sink, values) -> np.ndarray:
+    """``values`` as state rows (R, 2 + 4k) of finite numbers for ``sink``'s k particles,
+    else a ParameterError naming ``values``."""
+    width = 2 + 4 * _sink(sink).particles
+    allowed = f"state rows (R, {width}) of finite numbers, R >= 1"
+    rows = v.finite_array("values", values, allowed, ndim=2)
+    if rows.shape[1] != width or rows.shape[0] < 1:
+        raise ParameterError("values", f"an array of shape {rows.shape}", allowed)
+    return rows
 
 
 def prepare(
@@ -419,8 +485,9 @@ def prepare(
 ) -> Start:
     """Check what every stepper checks and place the runs at their start.
 
-    The sink and settings, the records (from ``allowed``) and their memory, the energy
-    bound (default :func:`default_energy_bound` of ``tol``), then the starting state from
+    The sink and settings, the records (from ``allowed``) and their memory, ``tol`` (None
+    or in :data:`~sinktheory.limits.TOL_RANGE`), the energy bound (default
+    :func:`default_energy_bound` of ``tol``), then the starting state from
     :func:`initial_values`.
 
     Examples
@@ -431,7 +498,10 @@ def prepare(
     (2, ('container',), 1e-06, 0.0)
     """
     settings = check_sink(sink, settings)
+    if not (isinstance(allowed, tuple) and allowed and set(allowed) <= set(RECORDS)):
+        raise ParameterError("allowed", allowed, f"a tuple of names from {', '.join(RECORDS)}")
     record = check_record(record, allowed)
+    tol = None if tol is None else check_tol(tol)
     settings.check_memory(sink, record)
     bound = v.positive(
         "energy_bound", default_energy_bound(tol) if energy_bound is None else energy_bound
@@ -460,7 +530,9 @@ def sink_of(p: Mapping) -> Sink:
     >>> sink_of(dict(well=bowl, k=2.0, particles=1, mass=0.2)).well
     WellAt(bowl: k=2)
     """
-    text = p["well"] if "well" in p else _shape_wells(p.get("wells")).get(p.get("shape"))
+    shape = p.get("shape")  # not text: the Well of a registered shape refuses it
+    wells = _shape_wells(p.get("wells")) if isinstance(shape, str) else {}
+    text = p["well"] if "well" in p else wells.get(shape) if wells else None
     if text is None:
         well = Well(p["alpha"], p["beta"], p["n"], gamma=p["gamma"], shape=p["shape"])
     else:

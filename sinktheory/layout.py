@@ -54,6 +54,10 @@ def pack_params(sink) -> np.ndarray:
     A user's well (:class:`~sinktheory.wellat.WellAt`) packs its own parameters, in
     declaration order, then mu.
     """
+    from .model import Sink
+
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
     w = sink.well
     if hasattr(w, "definition"):  # a user's well
         return np.array([*w.parameters.values(), sink.mu], dtype=float)

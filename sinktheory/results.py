@@ -46,7 +46,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-__all__ = ["attribute", "plain", "Result"]
+__all__ = ["Result"]
 
 
 def plain(x: Any) -> Any:

@@ -69,10 +69,8 @@ from .stepsize import PERIOD, check_tol, step_of
 from .worklimit import check_work
 
 __all__ = [
-    "check_point",
     "ENERGY_BOUND",
     "first_order_rhs",
-    "point",
     "RECORDS",
     "simulate",
     "SimulationResult",

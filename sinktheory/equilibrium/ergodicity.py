@@ -53,7 +53,6 @@ from .law import check_fractions
 from .lifetime import check_one_shell
 
 __all__ = [
-    "check_point",
     "DEFAULTS",
     "ergodicity_map",
     "ergodicity_point",
@@ -61,7 +60,6 @@ __all__ = [
     "fractions_of",
     "P_LEVEL",
     "RESULTS",
-    "verdict",
 ]
 
 #: KS p-value below which the runs are said not to sample the law.
@@ -284,10 +282,30 @@ class ErgodicityMap(Result):
     COORDS = {"fractions": "fraction"}
 
 
-def ergodicity_map(betas, *, seed: int = 0, progress: bool = True, **parameters) -> ErgodicityMap:
-    """:func:`ergodicity_point` at each beta of ``betas`` (the other parameters as keyword
-    arguments: alpha, n, shape, gamma, particles, mass, energy and :data:`DEFAULTS`),
-    every point seeded with ``seed``.
+def ergodicity_map(
+    betas,
+    *,
+    alpha: float,
+    n: int,
+    gamma: float = MODEL["gamma"],
+    shape: str = MODEL["shape"],
+    particles: int = MODEL["particles"],
+    mass: float = MODEL["mass"],
+    container_energy: float = MODEL["container_energy"],
+    runs: int = DEFAULTS["runs"],
+    periods: int = DEFAULTS["periods"],
+    transient: int = DEFAULTS["transient"],
+    box: float = DEFAULTS["box"],
+    tol: float = DEFAULTS["tol"],
+    fractions: str = DEFAULTS["fractions"],
+    lyapunov_runs: int = DEFAULTS["lyapunov_runs"],
+    lyapunov_periods: int = DEFAULTS["lyapunov_periods"],
+    seed: int = 0,
+    progress: bool = True,
+) -> ErgodicityMap:
+    """:func:`ergodicity_point` at each beta of ``betas``, the other parameters of a point
+    (:data:`MODEL`, :data:`DEFAULTS`) as keyword arguments, every point seeded with
+    ``seed``; every point is checked before the first runs.
 
     Examples
     --------
@@ -296,9 +314,18 @@ def ergodicity_map(betas, *, seed: int = 0, progress: bool = True, **parameters)
     >>> m.verdict.tolist(), m.tail_ratio.shape
     ([-1, -1], (2, 3))
     """
+    parameters = dict(alpha=alpha, n=n, gamma=gamma, shape=shape, particles=particles,
+                      mass=mass, container_energy=container_energy, runs=runs,
+                      periods=periods, transient=transient, box=box, tol=tol,
+                      fractions=fractions, lyapunov_runs=lyapunov_runs,
+                      lyapunov_periods=lyapunov_periods)  # fmt: skip
+    seed = v.positive_int("seed", seed, minimum=0)
+    progress = v.flag("progress", progress)
     from ..progress import ProgressBar
 
-    betas = np.atleast_1d(v.real_array("beta", betas))
+    betas = np.atleast_1d(v.finite_array("betas", betas, "finite numbers (the points' beta)"))
+    if betas.ndim != 1 or not betas.size:
+        raise v.ParameterError("betas", f"an array of shape {betas.shape}", "one or more beta")
     points = [{**parameters, "beta": float(b)} for b in betas]
     for p in points:
         check_point(p)
@@ -308,11 +335,10 @@ def ergodicity_map(betas, *, seed: int = 0, progress: bool = True, **parameters)
         rows.append(ergodicity_point(p, seed))
         bar.update(1)
     bar.close()
-    full = {**DEFAULTS, **parameters}
     return ErgodicityMap(
         beta=betas,
-        fractions=fractions_of(full["fractions"]),
-        parameters=full,
+        fractions=fractions_of(fractions),
+        parameters=parameters,
         **{
             name: np.array([r[name] for r in rows])
             for name in RESULTS

@@ -80,6 +80,7 @@ import numpy as np
 from .. import validation as v
 from ..errors import NumericalError, ParameterError
 from ..glossary import old_attribute, renamed
+from ..limits import MAX_PERIODS, MAX_RESAMPLES
 from ..model import RunSettings, Sink, Well
 from ..results import Result
 from .kramers import measure_kramers_moyal
@@ -87,15 +88,12 @@ from .law import equilibrium_law
 
 __all__ = [
     "check_fraction",
-    "check_reading",
     "EXTRAPOLATION",
     "MAX_CHAIN_CELLS",
-    "fit_line",
     "LADDER",
     "law_chain",
     "LawChain",
     "log_lambdas",
-    "measure_settings",
     "measure_settling",
     "MODEL_FACTOR",
     "predict_relaxation",
@@ -103,7 +101,6 @@ __all__ = [
     "RelaxationPrediction",
     "Settling",
     "settling_periods",
-    "settling_time",
     "shell_lags",
     "shell_prediction",
     "slow_mode",
@@ -176,6 +173,12 @@ class LawChain:
 MAX_CHAIN_CELLS = 5000
 
 
+def _check_cells(cells) -> int:
+    """``cells`` of :func:`law_chain`, an integer in [10, :data:`MAX_CHAIN_CELLS`]."""
+    why = "its spectrum's eigenvectors hold cells^2 numbers"
+    return v.positive_int("cells", cells, minimum=10, maximum=MAX_CHAIN_CELLS, why=lambda c: why)
+
+
 def law_chain(pdf, s_points, drift, *, cells: int = 150) -> LawChain:
     """The law-constrained chain of the density ``pdf`` of s on [0, 1] with the drift
     ``drift`` (s per period) given at ``s_points`` (linear in between, constant beyond).
@@ -187,15 +190,17 @@ def law_chain(pdf, s_points, drift, *, cells: int = 150) -> LawChain:
     >>> round(float(c.masses.sum()), 12), round(float(c.masses @ c.centres), 6)
     (1.0, 0.333333)
     """
-    cells = v.positive_int(
-        "cells",
-        cells,
-        minimum=10,
-        maximum=MAX_CHAIN_CELLS,
-        why=lambda c: "its spectrum's eigenvectors hold cells^2 numbers",
-    )
-    s_points = np.asarray(s_points, dtype=float)
-    drift = np.asarray(drift, dtype=float)
+    cells = _check_cells(cells)
+    if not callable(pdf):
+        raise ParameterError("pdf", pdf, "a density of s: a function of an array")
+    allowed = "an increasing array of finite s"
+    s_points = v.finite_array("s_points", s_points, allowed, ndim=1)
+    if s_points.size < 1 or np.any(np.diff(s_points) <= 0):
+        raise ParameterError("s_points", f"an array of shape {s_points.shape}", allowed)
+    allowed = f"{s_points.size} finite drifts, one per point of s_points"
+    drift = v.finite_array("drift", drift, allowed, ndim=1)
+    if drift.shape != s_points.shape:
+        raise ParameterError("drift", f"an array of shape {drift.shape}", allowed)
     x, w = np.polynomial.legendre.leggauss(_NODES)
     h = 1.0 / cells
     nodes = (np.arange(cells)[:, None] + 0.5 * (x + 1)) * h  # (cell, node)
@@ -286,20 +291,35 @@ class RelaxationPrediction(Result):
     energy = old_attribute("container_energy")
 
 
-def fit_line(x, y, stderr) -> tuple[float, float]:
+def fit_line(x, y, stderr, *, names=("x", "y", "stderr")) -> tuple[float, float]:
     """(a, b) of the straight line a + b x through ``y`` by least squares weighted with
-    1 / stderr^2.
+    1 / stderr^2 (``names``: what a refusal calls the three arguments).
 
     Examples
     --------
     >>> [round(x, 12) for x in fit_line([0, 1, 2], [1, 3, 5], [1, 1, 1])]
     [1.0, 2.0]
     """
-    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
-    w = 1 / np.asarray(stderr, dtype=float)
+    x = v.finite_array(names[0], x, "at least 2 distinct finite numbers", ndim=1)
+    if np.unique(x).size < 2:
+        raise ParameterError(names[0], f"{x.size} distinct value(s)", "at least 2 distinct numbers")
+    y = _alike(names[1], y, x.size)
+    stderr = _alike(names[2], stderr, x.size)
+    if not np.all(stderr > 0):
+        raise ParameterError(names[2], "a value <= 0", f"{x.size} finite numbers > 0")
+    w = 1 / stderr
     design = np.column_stack([np.ones_like(x), x]) * w[:, None]
     (a, b), *_ = np.linalg.lstsq(design, y * w, rcond=None)
     return float(a), float(b)
+
+
+def _alike(name: str, value, size: int) -> np.ndarray:
+    """``value`` as ``size`` finite numbers (a 1-D array), else a ParameterError."""
+    allowed = f"{size} finite numbers (an array of shape ({size},))"
+    out = v.finite_array(name, value, allowed, ndim=1)
+    if out.size != size:
+        raise ParameterError(name, f"an array of shape {out.shape}", allowed)
+    return out
 
 
 def log_lambdas(s, increments, weights) -> np.ndarray:
@@ -314,6 +334,17 @@ def log_lambdas(s, increments, weights) -> np.ndarray:
     >>> np.round(log_lambdas(s, inc[..., None].repeat(2, axis=2), np.ones((3, 2))), 6)
     array([-0.793147, -0.893147])
     """
+    s = v.finite_array("s", s, "the starting s of each point, at least 2 distinct", ndim=1)
+    if np.unique(s).size < 2:
+        raise ParameterError("s", f"{s.size} distinct value(s)", "at least 2 distinct points")
+    allowed = f"an array (point, lag, run) of finite increments, {s.size} points, runs >= 1"
+    increments = v.finite_array("increments", increments, allowed, ndim=3)
+    if increments.shape[0] != s.size or 0 in increments.shape:
+        raise ParameterError("increments", f"an array of shape {increments.shape}", allowed)
+    allowed = f"standard errors > 0 of shape {increments.shape[:2]} (point, lag)"
+    weights = v.finite_array("weights", weights, allowed, ndim=2)
+    if weights.shape != increments.shape[:2] or not np.all(weights > 0):
+        raise ParameterError("weights", f"an array of shape {weights.shape}", allowed)
     out = []
     for j in range(increments.shape[1]):
         b = fit_line(s, increments[:, j].mean(axis=1), weights[:, j])[1]
@@ -332,7 +363,12 @@ def slow_mode(lags, log_lambda, stderr) -> tuple[float, float]:
     >>> round(t, 6), round(c, 6)
     (120.0, 0.75)
     """
-    a, b = fit_line(lags, log_lambda, stderr)
+    lags = v.finite_array("lags", lags, "at least 2 distinct lags > 0", ndim=1)
+    if not np.all(lags > 0):
+        raise ParameterError("lags", "a lag <= 0", "at least 2 distinct lags > 0")
+    a, b = fit_line(lags, log_lambda, stderr, names=("lags", "log_lambda", "stderr"))
+    if a > math.log(np.finfo(float).max):
+        raise NumericalError(f"slow_mode: ln c = {a:.6g} from the fit: c overflows")
     return (-1 / b if b < 0 else math.inf), math.exp(a)
 
 
@@ -444,6 +480,24 @@ def predict_relaxation(
     )  # fmt: skip
 
 
+def _check_shells(s, increments, lags) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(s, increments, lags) of :func:`shell_prediction` checked: s (points,) in [0, 1],
+    at least 2 distinct; increments (point, lag, run) finite, 2 runs or more; lags
+    increasing, > 0, one per increment column."""
+    s = v.finite_array("s", s, "the shells' E_c / E, in [0, 1], at least 2 distinct", ndim=1)
+    if np.unique(s).size < 2 or not np.all((s >= 0) & (s <= 1)):
+        raise ParameterError("s", f"an array of shape {s.shape}", "at least 2 distinct s in [0, 1]")
+    allowed = f"an array (point, lag, run) of finite increments, {s.size} points, runs >= 2"
+    inc = v.finite_array("increments", increments, allowed, ndim=3)
+    if inc.shape[0] != s.size or inc.shape[1] < 1 or inc.shape[2] < 2:
+        raise ParameterError("increments", f"an array of shape {inc.shape}", allowed)
+    allowed = f"{inc.shape[1]} increasing lags > 0 (periods), one per increment column"
+    lags = v.finite_array("lags", lags, allowed, ndim=1)
+    if lags.shape != inc.shape[1:2] or lags[0] <= 0 or np.any(np.diff(lags) <= 0):
+        raise ParameterError("lags", f"an array of shape {lags.shape}", allowed)
+    return s, inc, lags
+
+
 def check_fraction(fraction) -> float:
     """``fraction``, the relative excess that counts as settled, checked to lie in (0, 1)."""
     fraction = v.positive("fraction", fraction)
@@ -457,9 +511,9 @@ def check_reading(periods, level, resamples) -> tuple[int | None, float, int]:
     (an integer >= 20) of :func:`shell_prediction`, checked before any run."""
     if not 0 < v.finite("level", level) < 1:
         raise ParameterError("level", level, "a number in (0, 1)")
-    resamples = v.positive_int("resamples", resamples, minimum=20)
+    resamples = v.positive_int("resamples", resamples, minimum=20, maximum=MAX_RESAMPLES)
     if periods is not None:
-        periods = v.positive_int("periods", periods)
+        periods = v.positive_int("periods", periods, maximum=MAX_PERIODS)
     return periods, level, resamples
 
 
@@ -471,6 +525,7 @@ def shell_lags(lag: int) -> list[int]:
     >>> shell_lags(128)
     [16, 32, 64, 128]
     """
+    lag = v.positive_int("lag", lag)
     return sorted({max(1, round(lag * x)) for x in LADDER})
 
 
@@ -484,7 +539,25 @@ def shell_prediction(s, increments, lags, pdf, mu, *, start: float, total: float
     run) at ``lags`` (periods, ascending), the law's density ``pdf`` of s and its mean
     ``mu``; the start E0 = ``start`` of total energy E = ``total``.  The other arguments
     are those of :func:`predict_relaxation` (``coefficients``: one line on the runs)."""
-    s, inc, lags = np.asarray(s, float), np.asarray(increments, float), np.asarray(lags)
+    s, inc, lags = _check_shells(s, increments, lags)
+    if not callable(pdf):
+        raise ParameterError("pdf", pdf, "the law's density of s: a function of an array")
+    mu = v.finite("mu", mu)
+    if not 0 < mu < 1:
+        raise ParameterError("mu", mu, "the law's mean of s, in (0, 1)")
+    total = v.positive("total", total)
+    start = v.positive("start", start)
+    if not start <= total:
+        raise ParameterError("start", start, f"E0 <= the total energy {total:g}")
+    particles = v.positive_int("particles", particles, maximum=1000)  # as a Sink's
+    mass = v.positive("mass", mass)
+    lag = v.positive_int("lag", lag)
+    if not isinstance(coefficients, str):
+        raise ParameterError("coefficients", coefficients, "one line of text on the runs")
+    fraction = check_fraction(fraction)
+    seed = v.positive_int("seed", seed, minimum=0)
+    periods, level, resamples = check_reading(periods, level, resamples)
+    cells = _check_cells(cells)
     points, _, runs = inc.shape
     s0 = start / total
     spread_runs = np.maximum(inc.std(axis=2, ddof=1), 1e-12) / math.sqrt(runs)
@@ -670,6 +743,10 @@ def measure_settling(sink: Sink, container_energy: float, measure, *, fraction: 
     ``measure = (runs, periods)`` runs from the paper's start at E0 = ``container_energy``."""
     from ..simulate import simulate
 
+    if not isinstance(sink, Sink):
+        raise ParameterError("sink", sink, "a sinktheory.model.Sink")
+    fraction = check_fraction(fraction)  # everything checked before the runs
+    resamples = v.positive_int("resamples", resamples, minimum=20, maximum=MAX_RESAMPLES)
     settings = measure_settings(measure, container_energy, seed)
     settings.check(sink)
     sim = simulate(sink, settings, tol=tol, progress=False)
@@ -705,7 +782,12 @@ def read_settling(energy_runs, target: float, *, fraction: float = 0.05, seed: i
     than 600 periods, so that 12 windows fit)."""
     from .relaxation import measure_relaxation
 
-    energy_runs = np.asarray(energy_runs)
+    energy_runs = v.real_array("energy_runs", energy_runs, "an array (runs, P + 1) of energies")
+    if energy_runs.ndim != 2:
+        raise ParameterError(
+            "energy_runs", f"an array of shape {energy_runs.shape}", "an array (runs, P + 1)"
+        )
+    fraction = check_fraction(fraction)
     window = min(50, max(1, energy_runs.shape[-1] // 12))
     return measure_relaxation(energy_runs, target, fraction=fraction, window=window,
                               resamples=resamples, seed=seed)  # fmt: skip
