@@ -46,6 +46,8 @@ from typing import TextIO
 
 from tqdm.std import tqdm
 
+from .validation import positive_int
+
 __all__ = [
     "CHUNK_SECONDS",
     "chunks",
@@ -164,7 +166,7 @@ class ProgressBar:
 
     def update(self, units: int) -> None:
         """Record ``units`` more units done; show them if an update is due."""
-        units = min(int(units), self.total - self.done)
+        units = min(positive_int("units", units, minimum=0), self.total - self.done)
         self.done += units
         self._bar.update(units)
 
