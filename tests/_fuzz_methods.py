@@ -232,9 +232,15 @@ def arguments() -> dict:
 
 def fixed_leaks() -> list:
     """(call, parameter its ParameterError must name) of each leak fixed in a method."""
+    from sinktheory import RunSettings
     from sinktheory.billiard.table import rigid_table
     from sinktheory.equilibrium import equilibrium_law
     from sinktheory.floquet import model_problem
+    from sinktheory.layout import StateLayout
+    from sinktheory.model import Well
+    from sinktheory.progress import ProgressBar
+    from sinktheory.sweep.grid import Grid
+    from sinktheory.sweep.kinds import get_kind
 
     law = Lazy(lambda: equilibrium_law(fig8_sink(), 0.5))
     chart = Lazy(lambda: model_problem(0.5, 4).evaluate([0.1, 0.3]))
@@ -250,6 +256,16 @@ def fixed_leaks() -> list:
         (lambda: table.pieces[0].values(1e308), "s"),  # NaN returned silently
         (lambda: _law_chain().moments(0.5, [float("nan")]), "times"),  # NaN returned silently
         (lambda: _law_chain().moments(None, [1.0]), "start"),  # TypeError
+        (lambda: RunSettings().check(1.0), "sink"),  # AttributeError
+        (lambda: RunSettings().memory_bytes(fig8_sink(), record=1), "record"),  # TypeError
+        (lambda: fig8_sink().summary(settings=2), "settings"),  # AttributeError
+        (lambda: Well(0.5, 0.3, 4).check_position("start", [1.0, 2.0], 0.0), "start"),
+        (lambda: StateLayout(1).split(np.zeros((2, 5))), "values"),  # IndexError
+        (lambda: StateLayout(1).start(0.0, [[[0.01, 0.02, 0.03]]]), "positions"),  # IndexError
+        (lambda: Grid.from_params(None), "params"),  # AttributeError
+        (lambda: Grid.from_params({"beta": [0.1, 0.2]}).point(2), "index"),  # ValueError
+        (lambda: get_kind("floquet").complete(None), "given"),  # AttributeError
+        (lambda: ProgressBar(10, enabled=False).update("x"), "units"),  # ValueError
     ]
 
 
