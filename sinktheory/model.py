@@ -222,8 +222,12 @@ class Well:
             raise NumericalError(f"Well.curvature: overflow at y = {y!r}") from None
 
     def denominator(self, s):
-        """D(s) = alpha + beta (s^2 - 1); accepts scalars or arrays."""
-        return _denominator(np.asarray(s, dtype=float), self.alpha, self.beta)
+        """D(s) = alpha + beta (s^2 - 1); accepts scalars or arrays of finite numbers."""
+        with np.errstate(over="ignore"):
+            d = _denominator(v.finite_array("s", s), self.alpha, self.beta)
+        if not np.all(np.isfinite(d)):
+            raise NumericalError("Well.denominator: D(s) overflows float range (|s| > 1e150)")
+        return d
 
     def potential(self, x, y) -> np.ndarray:
         """V(x, y) at arrays of points (relative to the container), broadcast together.

@@ -314,10 +314,9 @@ PENDING_BY_REASON: dict[str, tuple] = {
         "sinktheory.userwell.UserWell.values",
         "sinktheory.userwell.UserWell.with_defaults",
     ),
-    "inf is their answer beyond the walls or the basin (V, D(s), the wall ratio overflow "
+    "inf is their answer beyond the walls or the basin (V or the wall ratio overflow "
     "float range; RunSettings.check_box and WellAt.check_position rely on it): refusing it "
     "changes what the package's callers get, a decision for the lead": (
-        "sinktheory.model.Well.denominator",
         "sinktheory.model.Well.potential",
         "sinktheory.model.Well.wall_ratio",
         "sinktheory.wellat.WellAt.box_potential",
