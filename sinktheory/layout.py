@@ -148,9 +148,13 @@ class StateLayout:
         from .validation import finite, finite_array
 
         X, positions = finite("X", X), finite_array("positions", positions)
-        if positions.ndim != 3 or positions.shape[1:] != (self.particles, 2):
-            raise ParameterError("positions", f"an array of shape {positions.shape}",
-                                 f"shape (R, {self.particles}, 2)")  # fmt: skip
+        k = self.particles
+        if positions.ndim != 3 or positions.shape[2] != 2 or positions.shape[1] not in (1, k):
+            raise ParameterError(
+                "positions",
+                f"an array of shape {positions.shape}",
+                f"shape (R, {k}, 2) (or (R, 1, 2): one position for every particle)",
+            )
         values = np.zeros((positions.shape[0], self.width))
         values[:, self.X] = X
         values[:, self.u] = X + positions[:, :, 0]
