@@ -259,8 +259,7 @@ class ImpulseResponse(Result):
         >>> r.time_to_fraction(0.9).tolist(), r.time_to_fraction(0.25).tolist()
         ([1.8], [0.5])
         """
-        q = float(q)
-        if not 0 < q <= 1:
+        if not 0 < (q := v.finite("q", q)) <= 1:
             raise ParameterError("q", q, "a fraction in (0, 1]")
         share = self.dissipated / self.initial_energy[:, None]
         return np.array([_crossing(self.t, row, q) for row in share])

@@ -812,13 +812,29 @@ class Basin:
     def of(cls, V: sp.Expr, values: Mapping[sp.Symbol, sp.Expr] | None = None,
            name: str = "V", radius: float = 1.0) -> Basin:  # fmt: skip
         """Search the basin of V at ``values`` (:func:`escape`)."""
+        if not isinstance(V, sp.Expr):
+            raise ParameterError("V", type(V).__name__, "a SymPy expression in x and y")
+        if values is not None and not isinstance(values, Mapping):
+            raise ParameterError("values", values, "a mapping of parameter symbols to values")
+        if not 0 < cls._number("radius", radius) < math.inf:
+            raise ParameterError("radius", radius, "a finite radius > 0")
         well = NumericWell(V, values, name)
         return cls(well, escape(well, radius))
 
     @renamed(energy="particle_energy")
     def reach(self, particle_energy: float) -> Reach:
         """Bounds of |x|, |y| over the basin at ``particle_energy`` (:func:`reach`)."""
-        return reach(self.well, particle_energy, self.escape)
+        return reach(self.well, self._number("particle_energy", particle_energy), self.escape)
+
+    @staticmethod
+    def _number(name: str, value: object) -> float:
+        """``value`` as a float if it is a real number (not a bool, not NaN), else a
+        ParameterError naming ``name`` (the model layer's validators sit above this one)."""
+        if isinstance(value, bool | np.bool_) or not isinstance(value, int | float | np.number):
+            raise ParameterError(name, value, "a real number")
+        if isinstance(value, complex | np.complexfloating) or math.isnan(value):
+            raise ParameterError(name, value, "a real number")
+        return float(value)
 
     @property
     def escape_energy(self) -> float:
@@ -852,4 +868,8 @@ class Basin:
         if within is None:
             r = self.reach(e)
             within, e = 1.000001 * math.hypot(r.x_max, r.y_max), r.particle_energy
+        else:
+            e = self._number("particle_energy", e)
+            if not 0 < self._number("within", within) < math.inf:
+                raise ParameterError("within", within, "a radius > 0")
         return star_area(self.well.f, e, within, f"{self.well.name}")

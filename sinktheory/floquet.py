@@ -526,7 +526,8 @@ class FloquetChart(Result):
     def as_dict(self, point: int | None = None) -> dict:
         """JSON-ready: per value a list (or, with ``point=i``, value i's scalars)."""
         if point is not None:
-            rows = self._point(point)
+            last = len(self.values) - 1
+            rows = self._point(v.positive_int("point", point, minimum=0, maximum=last))
         else:
             points = [self._point(i) for i in range(len(self.values))]
             rows = {key: [p[key] for p in points] for key in points[0]} if points else {}
@@ -553,7 +554,9 @@ class FloquetChart(Result):
     def factor(self, name: str) -> np.ndarray:
         """One of y1(Q), dy1(Q), y2(Q), dy2(Q), in the normalised variables (may be inf)."""
         q = self.quarter
-        mant = {"y1": q.y1, "dy1": q.dy1, "y2": q.y2, "dy2": q.dy2}[name]
+        mant = {"y1": q.y1, "dy1": q.dy1, "y2": q.y2, "dy2": q.dy2}[
+            v.choice("name", name, _FACTOR_ORDER)
+        ]
         scale = q.scale1 if name in ("y1", "dy1") else q.scale2
         with np.errstate(over="ignore"):
             return np.ldexp(mant, scale)
@@ -1223,7 +1226,7 @@ class WellHill:
         """The factor ``name`` (one of :data:`BOUNDARY_FACTORS`: y1, dy1, y2, dy2 at the
         quarter period, or at the half period without symmetry) as a function of the
         amplitude: its zeros are the boundaries of stability."""
-        k = 3 + _FACTOR_ORDER.index(name)
+        k = 3 + _FACTOR_ORDER.index(v.choice("name", name, _FACTOR_ORDER))
         return lambda amplitude: self._factors(amplitude)[k]
 
     def at(self, amplitude: float) -> WellFloquet:

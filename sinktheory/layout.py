@@ -128,15 +128,37 @@ class StateLayout:
         blocks = [[f"{c}_{j}" for j in ks] for c in ("u", "y", "udot", "ydot")]
         return ("X", "Xdot", *(name for block in blocks for name in block))
 
+    def _rows(self, name: str, values, ndim: int | None = None) -> np.ndarray:
+        """``values`` as float state rows (..., 2 + 4k) (``ndim`` dimensions if given),
+        else a ParameterError naming ``name``."""
+        from .validation import real_array
+
+        rows = real_array(name, values)
+        if rows.ndim < 1 or rows.shape[-1] != self.width or (ndim and rows.ndim != ndim):
+            shape = "(R, 2 + 4k)" if ndim == 2 else "(..., 2 + 4k)"
+            raise ParameterError(name, f"an array of shape {rows.shape}",
+                                 f"state rows of shape {shape}, 2 + 4k = {self.width}")  # fmt: skip
+        return rows
+
     def relative_positions(self, values: np.ndarray) -> np.ndarray:
         """Particle positions (x_j, y_j) in the container's frame, shape (..., k, 2)."""
-        values = np.asarray(values)
+        values = self._rows("values", values)
         x = values[..., self.u] - values[..., self.X, None]
         return np.stack([x, values[..., self.y]], -1)
 
     def start(self, X: float, positions: np.ndarray) -> np.ndarray:
         """Rows (R, 2 + 4k): container at ``X``, particles at ``positions`` (R, k, 2)
         relative to it, everything at rest."""
+        from .validation import finite, finite_array
+
+        X, positions = finite("X", X), finite_array("positions", positions)
+        k = self.particles
+        if positions.ndim != 3 or positions.shape[2] != 2 or positions.shape[1] not in (1, k):
+            raise ParameterError(
+                "positions",
+                f"an array of shape {positions.shape}",
+                f"shape (R, {k}, 2) (or (R, 1, 2): one position for every particle)",
+            )
         values = np.zeros((positions.shape[0], self.width))
         values[:, self.X] = X
         values[:, self.u] = X + positions[:, :, 0]
@@ -145,11 +167,19 @@ class StateLayout:
 
     def split(self, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Rows (R, 2 + 4k) as the engine's (q, v), each (1 + 2k, R), contiguous."""
-        values = np.asarray(values, dtype=float)
+        values = self._rows("values", values, ndim=2)
         return np.ascontiguousarray(values[:, self.q].T), np.ascontiguousarray(values[:, self.v].T)
 
     def join(self, q: np.ndarray, v: np.ndarray) -> np.ndarray:
         """The engine's (q, v) as rows (R, 2 + 4k)."""
+        from .validation import real_array
+
+        q, v = real_array("q", q), real_array("v", v)
+        for name, a in (("q", q), ("v", v)):
+            if a.ndim != 2 or a.shape != (1 + 2 * self.particles, q.shape[-1]):
+                raise ParameterError(name, f"an array of shape {a.shape}",
+                                     f"shape (1 + 2k, R) = ({1 + 2 * self.particles}, R), "
+                                     "the same R for q and v")  # fmt: skip
         values = np.empty((q.shape[1], self.width))
         values[:, self.q] = q.T
         values[:, self.v] = v.T

@@ -32,7 +32,7 @@ import numpy as np
 
 from . import validation as v
 from ._generated import shapes as _shapes
-from .errors import ParameterError
+from .errors import NumericalError, ParameterError
 from .glossary import old_attribute, renamed
 from .limits import MAX_N, MAX_PERIODS, MAX_RUNS, MAX_SECONDS, SECONDS_PER_PARTICLE_STEP
 from .results import Result
@@ -216,11 +216,18 @@ class Well:
 
     def curvature(self, y: float) -> float:
         """Curvature of the rigid-wall contour (n -> oo) at height y (generated kernel)."""
-        return self.kernels.wall_curvature(v.finite("y", y), self.alpha, self.beta)
+        try:
+            return self.kernels.wall_curvature(v.finite("y", y), self.alpha, self.beta)
+        except OverflowError:
+            raise NumericalError(f"Well.curvature: overflow at y = {y!r}") from None
 
     def denominator(self, s):
-        """D(s) = alpha + beta (s^2 - 1); accepts scalars or arrays."""
-        return _denominator(np.asarray(s, dtype=float), self.alpha, self.beta)
+        """D(s) = alpha + beta (s^2 - 1); accepts scalars or arrays of finite numbers."""
+        with np.errstate(over="ignore"):
+            d = _denominator(v.finite_array("s", s), self.alpha, self.beta)
+        if not np.all(np.isfinite(d)):
+            raise NumericalError("Well.denominator: D(s) overflows float range (|s| > 1e150)")
+        return d
 
     def potential(self, x, y) -> np.ndarray:
         """V(x, y) at arrays of points (relative to the container), broadcast together.
@@ -304,11 +311,17 @@ class Well:
         sinktheory.errors.ParameterError: initial = (0.3, 0.0) is not allowed: must be a \
 point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
         """
-        x, y = float(x), float(y)
         allowed = "a point inside the walls (wall ratios < 1)"
+        try:
+            x, y = float(x), float(y)
+        except (TypeError, ValueError):
+            raise ParameterError(name, (x, y), allowed) from None
         if not (math.isfinite(x) and math.isfinite(y)):
             raise ParameterError(name, (x, y), allowed)
-        ratio = self.wall_ratio(x, y)
+        try:
+            ratio = self.wall_ratio(x, y)
+        except OverflowError:
+            ratio = math.inf
         if not ratio < 1:
             raise ParameterError(name, (x, y), allowed, why=f"wall ratio {ratio:.3g} there")
 
@@ -492,6 +505,8 @@ class Sink:
         >>> Sink(Well(0.5, 0.3, 4), particles=5).summary(RunSettings()).mu
         0.04
         """
+        if not isinstance(settings, RunSettings):
+            raise ParameterError("settings", type(settings).__name__, "a RunSettings")
         settings.check(self)
         e_total = settings.total_energy_bound(self)
         return SinkSummary(
@@ -553,6 +568,7 @@ class RunSettings:
     def total_energy_bound(self, sink: Sink) -> float:
         """Upper bound of the total energy: E0 plus k times V at the box's corner (for a
         user's well, the largest V - V(0, 0) on a grid of the box)."""
+        self._sink(sink)
         if isinstance(sink.well, Well):
             corner = float(sink.well.potential(self.box, self.box))
         else:
@@ -562,7 +578,7 @@ class RunSettings:
     def check(self, sink: Sink) -> None:
         """Raise ParameterError unless the particles start inside the walls, every
         particle stays in a regular part of the well, and the ensemble fits in memory."""
-        self.check_box(sink.well)
+        self.check_box(self._sink(sink).well)
         bound = self.total_energy_bound(sink)
         try:
             sink.well.check_energy(bound)
@@ -596,6 +612,8 @@ walls of the well (the start box reaches wall ratio 50 >= 1 at (10, 0) (wall dis
 alpha - beta = 0.2))
         """
         if not isinstance(well, Well):  # a user's well: V on the box's edge
+            if not callable(getattr(well, "check_box", None)):
+                raise ParameterError("well", type(well).__name__, "a Well or a user's WellAt")
             return well.check_box(self.box)
         ratio, where = _box_ratio(well, self.box)
         if not ratio < 1:
@@ -613,9 +631,24 @@ alpha - beta = 0.2))
                 f"({where[0]:g}, {where[1]:g}) (wall distance alpha - beta = {wall:.3g})",
             )
 
+    @staticmethod
+    def _sink(sink: object, needs: tuple[str, ...] = ("well", "particles")) -> Sink:
+        """``sink`` if it has the attributes ``needs`` of a :class:`Sink` (the package
+        passes stand-ins holding ``particles`` alone), else a ParameterError naming it."""
+        if not all(hasattr(sink, name) for name in needs):
+            raise ParameterError("sink", type(sink).__name__, "a Sink")
+        return sink
+
+    @staticmethod
+    def _record(record: object) -> None:
+        """A ParameterError unless ``record`` is a tuple or list of record names."""
+        if not isinstance(record, tuple | list) or not all(isinstance(r, str) for r in record):
+            raise ParameterError("record", record, "a tuple of names ('container', 'particles')")
+
     def memory_bytes(self, sink: Sink, record: tuple[str, ...] = ("container",)) -> int:
         """Bytes the ensemble's state and ``record`` take (estimate: the state three
         times, one float per run and period for ``container``, k for ``particles``)."""
+        self._sink(sink, ("particles",)), self._record(record)
         state = 3 * self.runs * (2 + 4 * sink.particles) * 8
         per_period = {"container": 1, "particles": sink.particles}
         records = sum(per_period.get(r, 0) for r in record)
@@ -624,6 +657,7 @@ alpha - beta = 0.2))
     def check_memory(self, sink: Sink, record: tuple[str, ...] = ("container",)) -> None:
         """Raise ParameterError (naming runs or periods, whichever is larger) when the
         ensemble would need more than half of this machine's memory."""
+        self._sink(sink, ("particles",)), self._record(record)
         name = "periods" if self.periods > self.runs else "runs"
         per_period = {"container": 1, "particles": sink.particles}
         records = max(1, sum(per_period.get(r, 0) for r in record))

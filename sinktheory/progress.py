@@ -175,7 +175,7 @@ class ProgressBar:
 
     def update(self, units: int) -> None:
         """Record ``units`` more units done; show them if an update is due."""
-        units = min(int(units), self.total - self.done)
+        units = min(v.positive_int("units", units, minimum=0), self.total - self.done)
         self.done += units
         self._bar.update(units)
 

@@ -207,7 +207,11 @@ class TriangleSeries:
         """
         if not isinstance(self.n, int):
             raise ParameterError("n", self.n, "an integer for numerical evaluation")
-        tau = np.asarray(tau, dtype=float)
+        tau = v.finite_array("tau", tau)
+        if np.any(np.abs(tau) > 1):
+            raise ParameterError(
+                "tau", tau.tolist(), "phases in [-1, 1] (a quarter period each way)"
+            )
         coeffs = [float(c) for c in self._sum(order)]
         with np.errstate(under="ignore"):
             s = np.abs(tau) ** (2 * self.n)

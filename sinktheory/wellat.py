@@ -33,7 +33,7 @@ import math
 import numpy as np
 
 from . import validation as v
-from .errors import ParameterError
+from .errors import NumericalError, ParameterError
 
 __all__ = ["WellAt"]
 
@@ -73,7 +73,13 @@ class WellAt:
 
     def hessian_at(self, x: float, y: float) -> np.ndarray:
         """The 2 x 2 Hessian of V at (x, y)."""
-        return np.asarray(self.basin.well.hessian(float(x), float(y)), dtype=float)
+        x, y = v.finite("x", x), v.finite("y", y)
+        h = np.asarray(self.basin.well.hessian(x, y), dtype=float)
+        if not np.all(np.isfinite(h)):
+            raise NumericalError(
+                f"{self.shape} well: the Hessian of V at ({x:g}, {y:g}) is not finite"
+            )
+        return h
 
     def reach(self, particle_energy: float, *, name: str = "particle_energy"):
         """Bounds (x_max, y_max) of |x|, |y| over the basin of a particle of energy
@@ -92,8 +98,11 @@ class WellAt:
         """Raise ParameterError naming ``name`` unless (x, y) is a finite point of the
         basin: V - V(0, 0) below the escape energy all along the segment from the centre
         (65 points), so a point past a ridge, where V may fall again, is refused."""
-        x, y = float(x), float(y)
         allowed = f"a point of the {self.shape} well's basin (V - V(0, 0) below its escape energy)"
+        try:
+            x, y = float(x), float(y)
+        except (TypeError, ValueError):
+            raise ParameterError(name, (x, y), allowed) from None
         if not (math.isfinite(x) and math.isfinite(y)):
             raise ParameterError(name, (x, y), allowed)
         t = np.linspace(0.0, 1.0, 65)

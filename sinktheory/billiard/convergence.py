@@ -376,6 +376,9 @@ class Convergence(Result):
 
     def rate(self, quantity: str, n_min: float = 1) -> dict[str, Any]:
         """:func:`power_rate` of one of :data:`QUANTITIES` over n >= ``n_min``."""
+        n_min = val.real_array("n_min", n_min, "a number (inf allowed)")
+        if n_min.ndim or np.isnan(n_min):
+            raise ParameterError("n_min", n_min.tolist(), "a number (inf allowed)")
         return power_rate(self.ns, *self.summary(quantity), n_min=n_min)
 
     def split(self) -> tuple[list[Split], Split]:
@@ -488,6 +491,10 @@ class LyapunovChart(Result):
         those betas for each n against the rigid mean (standard errors combined as for a
         mean of independent estimates).  Pooling many betas resolves differences that
         one beta's ensemble cannot, where they share a sign."""
+        for name, bound in (("lo", lo), ("hi", hi)):
+            bound = val.real_array(name, bound, "a number (+-inf allowed)")
+            if bound.ndim or np.isnan(bound):
+                raise ParameterError(name, bound.tolist(), "a number (+-inf allowed)")
         pick = (self.betas >= lo) & (self.betas <= hi)
         if not pick.any():
             raise ParameterError("lo, hi", (lo, hi), "an interval holding at least one beta")

@@ -39,7 +39,7 @@ from .. import symbolic as S
 from ..errors import NumericalError, ParameterError, WellDefinitionError
 from ..model import Well
 from ..results import Result
-from ..validation import positive
+from ..validation import finite, finite_array, positive, positive_int
 from .kernels import CAPSULE, POLYNOMIAL
 
 __all__ = [
@@ -87,15 +87,17 @@ class Piece:
         return tuple(sp.lambdify(_s, e, "numpy") for e in (self.expr, d1, sp.diff(d1, _s)))
 
     def values(self, s) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(W, W', W'') at s (broadcast to arrays)."""
-        s = np.asarray(s, dtype=float)
+        """(W, W', W'') at s in [lo, hi] (broadcast to arrays)."""
+        s = finite_array("s", s)
+        if np.any((s < self.lo) | (s > self.hi)):
+            raise ParameterError("s", s.tolist(), f"numbers in [{self.lo:.9g}, {self.hi:.9g}]")
         with np.errstate(divide="ignore", invalid="ignore"):  # arcs are vertical at ends
             out = [np.asarray(f(s), dtype=float) for f in self._funcs]
         return tuple(np.broadcast_to(v, s.shape) for v in out)
 
     def points(self, count: int = 200) -> np.ndarray:
         """(count, 2) points along the piece."""
-        s = np.linspace(self.lo, self.hi, count)
+        s = np.linspace(self.lo, self.hi, positive_int("count", count, maximum=10**7))
         w = self.sign * self.values(s)[0]
         return np.column_stack((w, s) if self.axis == "x" else (s, w))
 
@@ -192,7 +194,10 @@ class Table(Result):
 
     def wall_values(self, x, y) -> np.ndarray:
         """(walls, ...) values of the wall functions at points x, y (>= 0 inside)."""
-        x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+        x, y = finite_array("x", x), finite_array("y", y)
+        for name, z in (("x", x), ("y", y)):  # beyond, the wall polynomials overflow
+            if np.abs(z).max(initial=0.0) > 1e100:
+                raise ParameterError(name, f"{np.abs(z).max():g}", "coordinates within +-1e100")
         out = []
         for kind, c, cap in zip(self.kinds, self.coef, self.cap, strict=True):
             if kind == CAPSULE:
@@ -204,11 +209,15 @@ class Table(Result):
 
     def contains(self, x: float, y: float) -> bool:
         """True if (x, y) lies strictly inside every wall."""
+        x, y = finite("x", x), finite("y", y)
         return bool(np.all(self.wall_values(x, y) > 0))
 
     def check_positions(self, name: str, positions: np.ndarray) -> None:
         """Raise ParameterError naming ``name`` if a position (..., 2) is not inside."""
-        p = np.asarray(positions, dtype=float).reshape(-1, 2)
+        p = finite_array(name, positions)
+        if p.ndim < 1 or p.shape[-1] != 2:
+            raise ParameterError(name, f"an array of shape {p.shape}", "positions (..., 2)")
+        p = p.reshape(-1, 2)
         inside = np.all(self.wall_values(p[:, 0], p[:, 1]) > 0, axis=0)
         if not inside.all():
             x, y = p[np.argmin(inside)]

@@ -11,6 +11,8 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from .. import validation as v
+from ..errors import ParameterError
 from ..results import Result, plain
 from ..runstats import ensemble_mean
 from .verdicts import Split, box_starts, split
@@ -215,8 +217,13 @@ class ChaosResult(Result):
         L(t_start)) / (t_end - t_start), shape (R, W), of ``logs`` (default
         ``log_growth``; any (R, S + 1, ...) array of accumulated logs).
         """
+        window = v.positive_int("window", window, maximum=max(1, len(self.times) - 1))
+        if logs is not None:
+            logs = v.real_array("logs", logs)
+            if logs.ndim < 2 or logs.shape[:2] != self.log_growth.shape[:2]:
+                allowed = f"shape (R, S + 1, ...) = {self.log_growth.shape[:2]} + ..."
+                raise ParameterError("logs", f"an array of shape {logs.shape}", allowed)
         logs = self.log_growth if logs is None else logs
-        window = max(1, int(window))
         idx = np.arange(0, len(self.times), window)
         t = self.times[idx]
         return t[1:], np.diff(logs[:, idx], axis=1) / np.diff(t).reshape(
@@ -228,10 +235,14 @@ class ChaosResult(Result):
         """Ensemble mean and standard error of a per-run quantity (see
         :func:`sinktheory.runstats.ensemble_mean`): ``name`` is an attribute or property
         of shape (R, ...), e.g. "lambda1", "spectrum", "finite_time_lambda1", "gali"."""
-        a = getattr(self, name)
-        if a is None:
-            raise AttributeError(f"{name} was not computed in this run")
-        a = np.asarray(a, float)
+        allowed = "a per-run quantity of this run (lambda1, spectrum, finite_time_lambda1, gali...)"
+        a = getattr(self, name, None) if isinstance(name, str) and name[:1].isalpha() else None
+        try:
+            a = np.asarray(a, float)
+        except (TypeError, ValueError):
+            a = None
+        if a is None or a.ndim == 0 or a.shape[0] != self.log_growth.shape[0]:
+            raise ParameterError("name", name, allowed)
         shape = a.shape[1:]
         m, se = ensemble_mean(a.reshape(a.shape[0], -1))
         return m.reshape(shape), se.reshape(shape)

@@ -229,7 +229,8 @@ class Comparison(Result):
         >>> c.span(0), c.span(0, 0.9)
         ((1.0, 10.0), None)
         """
-        above = np.flatnonzero(self.efficiency[index] >= level)
+        index = v.positive_int("index", index, minimum=0, maximum=len(self.efficiency) - 1)
+        above = np.flatnonzero(self.efficiency[index] >= v.finite("level", level))
         if not above.size:
             return None
         return float(self.container_energy[above[0]]), float(self.container_energy[above[-1]])

@@ -290,7 +290,9 @@ class WellArea:
 
     def ratio(self, t, within: float) -> np.ndarray:
         """A / t at scaled energies t = e^(1/n) (array), the rays ending at ``within``."""
-        t = np.asarray(t, dtype=float)
+        t = v.real_array("t", t)
+        if not np.all((t > 0) & np.isfinite(t)):
+            raise ParameterError("t", t.tolist(), "positive finite scaled energies e^(1/n)")
         energies = t**self.n
         areas = [self.basin.area(self.basin.well.v0 + e, within=within) for e in energies.ravel()]
         return np.array(areas).reshape(t.shape) / t

@@ -297,8 +297,10 @@ class EquilibriumLaw(Result):
 
     def cdf(self, s) -> np.ndarray | float:
         """P(E_c / E <= s)."""
-        s = np.clip(np.asarray(s, dtype=float), 0.0, 1.0)
-        return 1.0 - self.tail(s)
+        s = v.real_array("s", s)
+        if np.isnan(s).any():
+            raise ParameterError("s", s.tolist(), "numbers (NaN has no probability)")
+        return 1.0 - self.tail(np.clip(s, 0.0, 1.0))
 
     def quantile(self, level) -> np.ndarray | float:
         """s with P(E_c / E <= s) = level, for levels in (0, 1) (bisection on the tail to
@@ -311,7 +313,7 @@ class EquilibriumLaw(Result):
         >>> round(float(law.quantile(0.75)), 10)  # 1 - (1 - 0.75)^(1/2)
         0.5
         """
-        levels = np.asarray(level, dtype=float)
+        levels = v.real_array("level", level)
         if np.any(~((levels > 0) & (levels < 1))):
             raise ParameterError("level", level, "numbers in (0, 1)")
         out = []

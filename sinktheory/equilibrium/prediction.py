@@ -159,6 +159,12 @@ class LawChain:
     def moments(self, start: float, times: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Mean and standard deviation of s at ``times`` (periods), started in the cell of
         s = ``start``."""
+        start = v.finite("start", start)
+        if not 0 <= start <= 1:
+            raise ParameterError("start", start, "a scaled energy in [0, 1]")
+        times = v.finite_array("times", times)
+        if np.any(times < 0):
+            raise ParameterError("times", times.tolist(), "times >= 0 (periods)")
         lam, vec = self.spectrum
         j = min(int(start * self.masses.size), self.masses.size - 1)
         root = np.sqrt(np.maximum(self.masses, 1e-300))

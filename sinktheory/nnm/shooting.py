@@ -314,7 +314,7 @@ class Orbit:
 
     def trajectory(self, samples: int = 200) -> tuple[np.ndarray, np.ndarray]:
         """(t, z(t)) on ``samples`` + 1 equally spaced times over one period (same steps)."""
-        per = max(1, self.steps // samples)
+        per = max(1, self.steps // v.positive_int("samples", samples, maximum=10**6))
         n = self.steps // per
         dt = self.period / self.steps
         zs = [self.z0]

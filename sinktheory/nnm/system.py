@@ -42,7 +42,7 @@ import numpy as np
 from .. import validation as val
 from ..engine.cache import engine_system
 from ..engine.core import Ensemble
-from ..errors import ParameterError
+from ..errors import NumericalError, ParameterError
 from ..glossary import old_attribute
 from ..integrators import DEFAULT_SCHEME, get_scheme
 from ..layout import SINK_PARAMS
@@ -132,12 +132,12 @@ class FlowSystem:
     def with_param(self, name: str, value: float) -> FlowSystem:
         """A copy with parameter ``name`` set to ``value``."""
         p = self.params.copy()
-        p[self.index(name)] = value
+        p[self.index(name)] = val.finite("value", value)
         return FlowSystem(self.system, p, self.scheme, self.members)
 
     def index(self, name: str) -> int:
         names = self.parameter_names
-        if name not in names:
+        if not isinstance(name, str) or name not in names:
             raise ParameterError("parameter", name, f"one of {names or '(none)'}")
         return names.index(name)
 
@@ -145,7 +145,12 @@ class FlowSystem:
     def hamiltonian(self, z: np.ndarray, params: np.ndarray | None = None) -> float:
         """The Hamiltonian H(z): the total energy at the state z."""
         D = self.dim
-        z = np.asarray(z, float)
+        z = self._point("z", z, 2 * D)
+        if params is not None:
+            params = val.finite_array("params", params)
+            if params.shape != self.params.shape:
+                allowed = f"shape {self.params.shape}, the system's parameters"
+                raise ParameterError("params", f"an array of shape {params.shape}", allowed)
         p = self.params if params is None else params
         table = self.module.table_of(p, 1)
         return float(self.module.block_energies(z[:D, None], z[D:, None], table)[0][0])
@@ -155,22 +160,37 @@ class FlowSystem:
     def accelerations(self, q: np.ndarray) -> np.ndarray:
         """Accelerations (D,) at positions q (D,)."""
         table = self.module.table_of(self.params, 1)
-        return self.module.block_accelerations(np.asarray(q, float)[:, None], table)[:, 0]
+        q = self._point("q", q, self.dim)
+        a = self.module.block_accelerations(q[:, None], table)[:, 0]
+        if not np.all(np.isfinite(a)):
+            raise NumericalError(f"{self.system}: the accelerations overflow at q = {q.tolist()}")
+        return a
+
+    @staticmethod
+    def _point(name: str, z, size: int) -> np.ndarray:
+        """``z`` as a finite float vector of ``size`` components, else a ParameterError."""
+        z = val.finite_array(name, z)
+        if z.shape != (size,):
+            raise ParameterError(name, f"an array of shape {z.shape}", f"shape ({size},)")
+        return z
 
     def vector_field(self, z: np.ndarray) -> np.ndarray:
         """f(z) = (v, a(q))."""
         D = self.dim
+        z = self._point("z", z, 2 * D)
         return np.concatenate([z[D:], self.accelerations(z[:D])])
 
     def gradient(self, z: np.ndarray) -> np.ndarray:
         """grad H(z) = (-M a(q), M v) in the (q, v) coordinates."""
         D = self.dim
+        z = self._point("z", z, 2 * D)
         return np.concatenate([-self.masses * self.accelerations(z[:D]), self.masses * z[D:]])
 
     def stiffness(self, q: np.ndarray | None = None, h: float = 1e-6) -> np.ndarray:
         """-da/dq (D, D) at q (default 0) by central differences (for linear modes)."""
         D = self.dim
-        q = np.zeros(D) if q is None else np.asarray(q, float)
+        q = np.zeros(D) if q is None else self._point("q", q, D)
+        h = val.positive("h", h)
         K = np.empty((D, D))
         for j in range(D):
             e = np.zeros(D)

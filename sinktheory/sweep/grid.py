@@ -157,6 +157,8 @@ class Grid:
         >>> g.shape, g.size, g.point(4)
         ((3, 2), 6, {'alpha': 0.5, 'beta': 0.3, 'n': 2})
         """
+        if not isinstance(params, Mapping):
+            raise ParameterError("params", params, "a mapping of parameter names to values")
         dims, fixed = [], {}
         for name, value in params.items():
             if isinstance(value, list | tuple | np.ndarray):
@@ -197,6 +199,7 @@ class Grid:
 
     def point(self, index: int) -> dict[str, Any]:
         """All parameters of point ``index`` (C order over the swept parameters)."""
+        index = v.positive_int("index", index, minimum=0, maximum=self.size - 1)
         where = np.unravel_index(index, self.shape) if self.dims else ()
         values = {name: vals[i] for (name, vals), i in zip(self.dims, where, strict=True)}
         return dict(sorted({**dict(self.fixed), **values}.items()))

@@ -215,6 +215,8 @@ class Kind:
         name labels it, and the fixed parameter ``wells`` (JSON: name -> the well's text)
         keeps its definition.  Its parameters named like the kind's alpha, beta, n or
         gamma take the point's values, the others their defaults."""
+        if not isinstance(given, Mapping):
+            raise ParameterError("given", given, "a mapping of parameter names to values")
         given = _modern_names(given)
         table, own = self.params, None
         if "well" in given:

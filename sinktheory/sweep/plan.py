@@ -114,7 +114,12 @@ class Sweep:
     def shape(self, name: str) -> tuple[int, ...]:
         """Shape of result ``name`` over the whole grid."""
         extra = self.extra_coords
-        return self.grid.shape + tuple(extra[d].size for d in self.kind.results[name].dims)
+        results = self.kind.results
+        if not isinstance(name, str) or name not in results:
+            raise ParameterError(
+                "name", name, f"a result of the {self.kind.name} sweep: {sorted(results)}"
+            )
+        return self.grid.shape + tuple(extra[d].size for d in results[name].dims)
 
     def coords(self) -> dict[str, np.ndarray]:
         swept = {name: _coordinate(values) for name, values in self.grid.dims}
