@@ -76,6 +76,7 @@ def fixed_leaks() -> list:
     s, flat = sp.Symbol("s"), rigid_table("flat", 0.5, 0.3)
     square = [Piece(a, g, sp.Integer(1) + 0 * s, -1, 1) for a in "xy" for g in (1, -1)]
     x, y = sp.symbols("x y", real=True)
+    disk = [Piece("x", g, sp.sqrt(1 - s**2), -1, 1) for g in (1, -1)]
     rate = ([10, 20, 40], [1.1, 1.05, 1.025], [1e-3] * 3)
     small = RunSettings(runs=2, periods=2)
     return [
@@ -83,6 +84,7 @@ def fixed_leaks() -> list:
         (lambda: Piece("x", 1, float("inf"), -1.0, 1.0), "expr"),  # inf kept
         (lambda: polynomial_table("sq", [1 - x**2, 4 - y**2], square, symbol=s), "walls"),
         (lambda: polynomial_table("sq", [[5.0, 5.0]], square, symbol=s), "walls"),  # Attribute
+        (lambda: polynomial_table("disk", [1 - x**2 - y**2], disk, symbol=x), "symbol"),  # Name
         (lambda: velocities_after(None), "impulse"),  # TypeError
         (lambda: stadium_table(1e308, 1.0), "half_length"),  # overflow warnings, quad error
         (lambda: start_directions(None, 2), "settings"),  # AttributeError

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import functools
 import math
+import numbers
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -97,7 +98,11 @@ class Piece:
     def __post_init__(self) -> None:
         set_ = object.__setattr__
         set_(self, "axis", choice("axis", self.axis, ("x", "y")))
-        if isinstance(self.sign, bool | np.bool_) or self.sign not in (1, -1):
+        if (
+            not isinstance(self.sign, numbers.Real)
+            or isinstance(self.sign, bool | np.bool_)
+            or self.sign not in (1, -1)
+        ):
             raise ParameterError("sign", self.sign, "1 or -1")
         set_(self, "sign", int(self.sign))
         expr = real_expression("expr", self.expr)
@@ -579,6 +584,11 @@ def polynomial_table(
         raise ParameterError("pieces", [type(p).__name__ for p in pieces],
                              "a non-empty sequence of Piece")  # fmt: skip
     pieces = [Piece(p.axis, p.sign, p.expr.subs(symbol, _s), p.lo, p.hi, p.hole) for p in pieces]
+    strays = set().union(*(p.expr.free_symbols for p in pieces)) - {_s}
+    if strays:
+        raise ParameterError(
+            "symbol", symbol, f"the pieces' variable (they use {sorted(map(str, strays))})"
+        )
     walls = _sequence("walls", walls, "a non-empty sequence of polynomials in x, y")
     coefs = []
     for f in walls:
