@@ -390,4 +390,4 @@ def impulse_response(
                            "dashpot flow (Strang)", **common)  # fmt: skip
 
 
-__all__ = ["KINDS", "Attachment", "ImpulseResponse", "impulse_response", "start_rows"]
+__all__ = ["KINDS", "Attachment", "ImpulseResponse", "impulse_response"]

@@ -451,12 +451,8 @@ def simulate_vibroimpact(
 
 __all__ = [
     "VibroImpactResult",
-    "advancement_bound",
-    "flight",
-    "check_flights",
     "DRIVEN_RATE",
     "FLIGHT_SECONDS",
     "modes",
-    "next_hit",
     "simulate_vibroimpact",
 ]

@@ -65,15 +65,13 @@ from ..errors import ParameterError
 from ..model import RunSettings, Sink, Well
 from ..results import Result
 from ..runstats import ensemble_mean
-from .run import PERIOD, BilliardResult, billiard
+from .run import PERIOD, BilliardResult, _settings, billiard
 
 __all__ = [
     "CHUNK_SAMPLES",
     "Convergence",
     "convergence",
-    "count_hits",
     "HIT_FRACTION",
-    "lambda_after",
     "lyapunov_chart",
     "LyapunovChart",
     "measure",
@@ -81,8 +79,6 @@ __all__ = [
     "NS",
     "power_rate",
     "QUANTITIES",
-    "wall_ratios",
-    "wall_terms",
 ]
 
 #: Stiffnesses measured by default.
@@ -274,11 +270,13 @@ def measure(
     >>> m.n, m.container_energy.shape
     (inf, (2, 4))
     """
-    settings = settings or RunSettings()
+    settings = _settings(settings)
     n = val.stiffness("n", n)
     transient = val.positive_int("transient", transient, minimum=0,
                                  maximum=max(0, settings.periods - 1))  # fmt: skip
     lyapunov = val.flag("lyapunov", lyapunov)
+    if tol is not None:  # checked also where the rigid billiard has no use for it
+        val.positive("tol", tol)
     if n == math.inf:
         val.positive("gamma", gamma)
         return _rigid(shape, alpha, beta, particles, mass, settings, lyapunov, transient)
@@ -309,11 +307,13 @@ def power_rate(ns, means, ses, limit: float, limit_se: float, n_min: float = 1) 
     >>> math.isnan(r["p"]), r["below"], r["above"]
     (True, [10, 20], [100])
     """
-    ns = np.asarray(ns, float)
-    d = np.abs(np.asarray(means, float) - limit)
-    s = np.sqrt(np.asarray(ses, float) ** 2 + limit_se**2)
-    use = np.isfinite(d) & (d > 2 * s) & (ns >= n_min)
-    side = np.asarray(means, float) - limit
+    ns, means, ses, limit, limit_se, n_min = _rate_inputs(ns, means, ses, limit, limit_se,
+                                                          n_min)  # fmt: skip
+    d = np.abs(means - limit)
+    s = np.hypot(ses, limit_se)
+    with np.errstate(invalid="ignore", over="ignore"):  # a non-finite d or s is not used
+        use = np.isfinite(d) & np.isfinite(s) & (d > 2 * s) & (ns >= n_min)
+    side = means - limit
     out: dict[str, Any] = {"limit": limit, "limit_stderr": limit_se,
                            "fit_ns": [int(n) for n in ns[use]],
                            "below": [int(n) for n in ns[use & (side < 0)]],
@@ -321,11 +321,35 @@ def power_rate(ns, means, ses, limit: float, limit_se: float, n_min: float = 1) 
     if use.sum() < 2 or (out["below"] and out["above"]):
         return out | {"p": math.nan, "p_stderr": math.nan, "C": math.nan}
     A = np.column_stack([np.ones(use.sum()), -np.log(ns[use])])
-    w = np.where(s[use] > 0, (d[use] / np.where(s[use] > 0, s[use], 1)) ** 2, 1e12)
+    # weights (d / s)^2, the inverse variances of log d: 1e12 where s = 0 (exact values),
+    # capped where d / s would overflow the square
+    with np.errstate(over="ignore"):
+        ratio = np.divide(d[use], s[use], out=np.full(int(use.sum()), 1e6), where=s[use] > 0)
+    w = np.minimum(ratio, 1e150) ** 2
     cov = np.linalg.inv(A.T @ (A * w[:, None]))
     coef = cov @ (A.T @ (w * np.log(d[use])))
     p_se = math.sqrt(cov[1, 1]) if use.sum() > 2 else math.nan
     return out | {"p": float(coef[1]), "p_stderr": p_se, "C": float(math.exp(coef[0]))}
+
+
+def _rate_inputs(ns, means, ses, limit, limit_se, n_min):
+    """The checked inputs of :func:`power_rate`: distinct stiffnesses (integers >= 1), one
+    mean and one standard error >= 0 of each (real numbers; a non-finite one is not
+    used), a finite limit and its finite standard error >= 0, a finite n_min."""
+    grid = val.finite_array("ns", ns, "a non-empty sequence of distinct integers >= 1", ndim=1)
+    if grid.size == 0 or len(set(grid.tolist())) != grid.size:
+        raise ParameterError("ns", grid.tolist(), "a non-empty sequence of distinct integers >= 1")
+    grid = np.array([val.positive_int("ns", n) for n in grid.tolist()], dtype=float)
+    out = []
+    for name, values in (("means", means), ("ses", ses)):
+        a = val.real_array(name, values, f"{grid.size} real numbers, one per n")
+        if a.shape != grid.shape or (name == "ses" and np.any(a < 0)):
+            raise ParameterError(name, f"an array of shape {a.shape}",
+                                 f"{grid.size} {'numbers >= 0' if name == 'ses' else 'numbers'},"
+                                 " one per n")  # fmt: skip
+        out.append(a)
+    return (grid, *out, val.finite("limit", limit), val.nonnegative("limit_se", limit_se),
+            val.finite("n_min", n_min))  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -420,9 +444,11 @@ def convergence(
     """:func:`measure` at every soft n of ``ns`` and at n = oo, gathered (module docstring).
 
     Each finite n compiles its engine once (about 15 s the first time on a new machine);
-    ``progress`` prints a line to stderr as each stiffness is done.
+    ``progress`` prints a line to stderr as each stiffness is done.  A run that meets no
+    wall (a container amplitude too small for the table, or runs too short) has no mean
+    free time, and the study is refused (ParameterError naming ``settings``).
     """
-    settings = settings or RunSettings()
+    settings = _settings(settings)
     grid = val.real_array("ns", ns, "a sequence of integers >= 1")
     if grid.ndim != 1 or grid.size == 0:
         raise ParameterError("ns", ns, "a non-empty sequence of integers >= 1")
@@ -440,8 +466,8 @@ def convergence(
                   f"{time.perf_counter() - t0:.0f} s", file=sys.stderr, flush=True)  # fmt: skip
         return m
 
-    rigid = timed(math.inf)
-    runs = [timed(n, tol=tol) for n in soft]
+    rigid = _check_hits(math.inf, timed(math.inf), settings)
+    runs = [_check_hits(n, timed(n, tol=tol), settings) for n in soft]
     return Convergence(
         np.array(soft),
         rigid.times,
@@ -458,6 +484,21 @@ def convergence(
          "periods": settings.periods, "seed": settings.seed, "box": settings.box,
          "transient": transient, "tol": tol, "hit_fraction": HIT_FRACTION},
     )  # fmt: skip
+
+
+def _check_hits(n, m: Measurement, settings: RunSettings) -> Measurement:
+    """``m``, unless a run of it met no wall: its mean free time (inf) is not defined,
+    nor the comparison of the means with it, and the convergence study is refused."""
+    missed = np.flatnonzero(~np.isfinite(m.mean_free_time))
+    if missed.size:
+        raise ParameterError(
+            "settings", f"{settings.runs} run(s) x {settings.periods} period(s)",
+            "runs in which the particles meet the walls",
+            why=f"run {int(missed[0])} at n = {n} met no wall, so its mean free time is not "
+            "defined: the container's amplitude is too small for the table or the runs too "
+            "short",
+        )  # fmt: skip
+    return m
 
 
 @dataclass(frozen=True)
@@ -535,13 +576,14 @@ def lyapunov_chart(
     from ..chaos.sink import start_energy
     from ..stepsize import resolve_step
 
-    settings = settings or RunSettings()
+    settings = _settings(settings)
     grid = val.real_array("betas", betas, "a sequence of betas")
     if grid.ndim != 1 or grid.size == 0:
         raise ParameterError("betas", betas, "a non-empty sequence of betas")
     soft = [val.stiffness("ns", n) for n in np.atleast_1d(ns).tolist()]
-    if math.inf in soft:
-        raise ParameterError("ns", ns, "finite integers >= 1 (the rigid row is always drawn)")
+    if math.inf in soft or len(set(soft)) != len(soft):
+        raise ParameterError("ns", ns, "distinct finite integers >= 1 (the rigid row is "
+                             "always drawn)")  # fmt: skip
     transient = val.positive_int("transient", transient, minimum=0,
                                  maximum=max(0, settings.periods - 1))  # fmt: skip
     lam = np.zeros((len(soft), grid.size))

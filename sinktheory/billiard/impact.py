@@ -18,15 +18,53 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["impulse_expression", "J", "kinetic_energy", "mu", "velocities_after"]
+from ..errors import ParameterError
+
+__all__ = ["impulse_expression", "J", "mu", "velocities_after"]
 
 mu = sp.Symbol("mu", positive=True)
 J = sp.Symbol("J", real=True)
 v_x, v_y, V, n_x, n_y = sp.symbols("v_x v_y V n_x n_y", real=True)
 
 
+def real_expression(name: str, value: object, variables=None) -> sp.Expr:
+    """``value`` as a real SymPy expression (a SymPy expression or a real number; text is
+    refused, as sympify would evaluate it) with no infinity, NaN or imaginary unit in it,
+    and, if ``variables`` are given, no free symbol outside them; else ParameterError
+    naming ``name``.  The check of the billiard package's SymPy inputs.
+
+    Examples
+    --------
+    >>> real_expression("impulse", 2.5)
+    2.50000000000000
+    >>> real_expression("impulse", float("inf"))
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: impulse = inf is not allowed: must be a real SymPy \
+expression or a finite real number
+    """
+    allowed = "a real SymPy expression or a finite real number"
+    if variables is not None:
+        allowed += " in " + ", ".join(sorted(str(v) for v in variables))
+    if isinstance(value, bool | str) or type(value).__name__ in ("bool_", "bool"):
+        raise ParameterError(name, value, allowed)
+    try:
+        expr = sp.sympify(value, strict=True)
+    except (sp.SympifyError, TypeError, ValueError):
+        raise ParameterError(name, type(value).__name__, allowed) from None
+    if (
+        not isinstance(expr, sp.Expr)
+        or expr.has(sp.nan, sp.zoo, sp.oo, sp.I)
+        or expr.is_real is False
+        or (variables is not None and not expr.free_symbols <= set(variables))
+    ):
+        raise ParameterError(name, value if isinstance(value, float) else str(expr), allowed)
+    return expr
+
+
 def velocities_after(impulse: sp.Expr) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """(v_x', v_y', V') after the impulse: particle -J n, container +J n_x."""
+    impulse = real_expression("impulse", impulse)
     return v_x - impulse * n_x / mu, v_y - impulse * n_y / mu, V + impulse * n_x
 
 

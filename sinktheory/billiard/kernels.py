@@ -29,20 +29,8 @@ import numba
 import numpy as np
 
 __all__ = [
-    "advance_fixed",
-    "advance_moving",
-    "energies",
-    "impact",
-    "impulse",
     "MAX_ITERATIONS",
     "MAX_REPEATS",
-    "next_hit",
-    "outward_normal",
-    "reflect_tangent",
-    "run_fixed",
-    "run_moving",
-    "wall_hessian",
-    "wall_value",
 ]
 
 POLYNOMIAL, CAPSULE = 0, 1

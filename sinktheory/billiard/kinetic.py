@@ -74,19 +74,25 @@ def kinetic_coefficients(table: Table, particles: int, mass: float, total_energy
                          container_energies) -> tuple[np.ndarray, np.ndarray]:  # fmt: skip
     """(D1, D2) of the container energy per period (module docstring) at the given E_c, for
     k = ``particles`` of total mass ``mass`` in the rigid ``table`` at total energy E."""
-    k = v.positive_int("particles", particles)
-    m = v.positive("mass", mass)
+    from ..model import Sink
+
+    k, m = Sink.check_particles(particles, mass)
     e = v.positive("total_energy", total_energy)
-    ec = np.asarray(container_energies, dtype=float)
+    allowed = f"energies in [0, {e:g}]"
+    ec = v.real_array("container_energies", container_energies, allowed)
     if not np.all((ec >= 0) & (ec <= e)):
-        raise ParameterError("container_energies", ec.tolist(), f"energies in [0, {e:g}]")
-    g = 4 * math.sqrt(2 * m / k) * wall_moment(table) / (math.pi * table.area)
+        raise ParameterError("container_energies", ec.tolist(), allowed)
+    g = 4 * math.sqrt(2.0) * math.sqrt(m / k) * wall_moment(table) / (math.pi * table.area)
     a_k = math.exp(math.lgamma(1.5) + math.lgamma(k) - math.lgamma(k + 0.5))
     b_k = math.exp(math.lgamma(2.5) + math.lgamma(k) - math.lgamma(k + 1.5))
     ep = e - ec
     period = 2 * math.pi
-    d1 = period * k * g * (-a_k * ec * np.sqrt(ep) + 2 / 3 * b_k * ep**1.5)
-    d2 = period * k * g * 2 / 3 * b_k * ep**1.5 * ec
+    with np.errstate(over="ignore", invalid="ignore"):
+        d1 = period * k * g * (-a_k * ec * np.sqrt(ep) + 2 / 3 * b_k * ep**1.5)
+        d2 = period * k * g * 2 / 3 * b_k * ep**1.5 * ec
+    if not (np.all(np.isfinite(d1)) and np.all(np.isfinite(d2))):
+        raise ParameterError("total_energy", total_energy, "small enough that D1 and D2 are "
+                             "finite", why=f"they overflow at mass = {m:g}")  # fmt: skip
     return d1, d2
 
 

@@ -32,6 +32,8 @@ import numpy as np
 from .. import validation as v
 from ..errors import ParameterError
 from ..glossary import renamed
+from ..limits import MAX_RESAMPLES
+from ..model import MAX_PERIODS
 from .table import Table
 
 __all__ = [
@@ -74,7 +76,8 @@ def rigid_shell_states(table: Table, particles: int, mass: float, total_energy: 
         pos[filled : filled + take] = inside[:take]
         filled += take
     g = rng.standard_normal((runs, k, 2))
-    vel = g * np.sqrt(2 * (1 - s) * e / (mu * (g**2).sum(axis=(1, 2))))[:, None, None]
+    speed = math.sqrt(2 * (1 - s) * e / mu)  # finite: checked above
+    vel = g * (speed / np.sqrt((g**2).sum(axis=(1, 2))))[:, None, None]
     phase = rng.uniform(0, 2 * math.pi, runs)
     amplitude = math.sqrt(2 * s * e)
     container = amplitude * np.column_stack([np.cos(phase), np.sin(phase)])
@@ -130,6 +133,9 @@ def predict_rigid_relaxation(
     runs = v.positive_int("shell_runs", shell_runs, minimum=4)
     lag = v.positive_int("lag", lag, minimum=8)
     seed = v.positive_int("seed", seed, minimum=0)
+    if periods is not None:
+        periods = v.positive_int("periods", periods, maximum=MAX_PERIODS)
+    resamples = v.positive_int("resamples", resamples, minimum=20, maximum=MAX_RESAMPLES)
     periods, level, resamples = check_reading(periods, level, resamples)
     s, inc, message = rigid_shell_increments(rigid_table(shape, alpha, beta), k, mass, e,
                                              points, runs, shell_lags(lag), seed)  # fmt: skip
@@ -149,6 +155,8 @@ def measure_rigid_settling(shape: str, alpha: float, beta: float, measure, *,
     particles at rest at the seeded start positions), read by
     :func:`~sinktheory.equilibrium.prediction.read_settling` against the rigid law's mean
     <E_c> = E / (k + 1): the measured counterpart of :func:`predict_rigid_relaxation`.
+    Runs in which no particle meets a wall do not settle and are refused (ParameterError
+    naming ``measure``).
 
     Examples
     --------
@@ -162,6 +170,12 @@ def measure_rigid_settling(shape: str, alpha: float, beta: float, measure, *,
     fraction = check_fraction(fraction)
     settings = measure_settings(measure, container_energy, seed)
     result = billiard(shape, alpha, beta, particles=particles, mass=mass, settings=settings)
+    if not result.collisions.any():
+        raise ParameterError(
+            "measure", measure, "runs in which the particles reach the walls",
+            why=f"no particle met a wall of the rigid {shape} table in {settings.periods} "
+            "periods of any run: the container's energy never changed",
+        )  # fmt: skip
     total = float(np.mean(result.total_energy[:, 0]))
     r = read_settling(result.container_energy, total / (result.particles + 1),
                       fraction=fraction, seed=seed, resamples=resamples)  # fmt: skip
@@ -178,6 +192,12 @@ def rigid_shell_increments(table: Table, particles: int, mass: float, total_ener
     from ..equilibrium.kramers import gauss_grid
     from .run import simulate_billiard
 
+    allowed = f"an ascending sequence of integers in [1, {MAX_PERIODS}] (periods)"
+    steps = v.finite_array("lags", lags, allowed, ndim=1)
+    lags = [v.positive_int("lags", j, maximum=MAX_PERIODS) for j in steps.tolist()]
+    if not lags or any(b <= a for a, b in zip(lags, lags[1:], strict=False)):
+        raise ParameterError("lags", lags, allowed)
+    seed = v.positive_int("seed", seed, minimum=0)
     s = gauss_grid(points, 1)[0]
     children = np.random.SeedSequence(seed).spawn(points)
     states = [rigid_shell_states(table, particles, mass, total_energy, si, runs,

@@ -54,10 +54,7 @@ __all__ = [
     "billiard",
     "BILLIARD_SECONDS",
     "BilliardResult",
-    "check_flights",
     "ENERGY_BOUND",
-    "expected_collisions",
-    "flight_seconds",
     "PERIOD",
     "RENORMALISATIONS",
     "rigid_limit",
@@ -443,6 +440,11 @@ def start_directions(settings: RunSettings, particles: int) -> np.ndarray:
     >>> d.shape, bool(np.allclose(np.hypot(d[..., 0], d[..., 1]), 1))
     ((2, 4, 2), True)
     """
+    if not isinstance(settings, RunSettings):
+        raise ParameterError("settings", settings, "a RunSettings")
+    particles = positive_int("particles", particles)
+    fits_memory("particles", particles, 48.0 * settings.runs * particles,
+                f"{settings.runs} run(s) x {particles} particle(s)", "fewer")  # fmt: skip
     children = np.random.SeedSequence([settings.seed, 22]).spawn(settings.runs)
     angles = np.stack([np.random.default_rng(c).uniform(0, 2 * np.pi, particles) for c in children])
     return np.stack([np.cos(angles), np.sin(angles)], axis=-1)

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import functools
 import math
+import numbers
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -39,13 +40,13 @@ from .. import symbolic as S
 from ..errors import NumericalError, ParameterError, WellDefinitionError
 from ..model import Well
 from ..results import Result
-from ..validation import finite, finite_array, positive, positive_int
+from ..validation import choice, finite, finite_array, flag, positive, positive_int
+from .impact import real_expression
 from .kernels import CAPSULE, POLYNOMIAL
 
 __all__ = [
     "EPS_UNITS",
     "Piece",
-    "poly_eval",
     "polynomial_table",
     "rigid_table",
     "SCAN_EXTENT",
@@ -72,7 +73,20 @@ MAX_SCALE = 1e20
 class Piece:
     """One boundary piece, a graph: ``axis`` "x" means x = sign W(s) with s = y, "y"
     means y = sign W(s) with s = x, for s in [lo, hi]; ``hole`` marks the boundary of an
-    obstacle inside the table (traversed the other way, curvature sign flipped)."""
+    obstacle inside the table (traversed the other way, curvature sign flipped).  The
+    fields are checked: ``expr`` a real SymPy expression in at most one symbol (the
+    graph's variable), lo < hi finite.
+
+    Examples
+    --------
+    >>> s = sp.Symbol("s")
+    >>> Piece("x", 1, sp.sqrt(1 - s**2), -1, 1).points(3).round(12).tolist()
+    [[0.0, -1.0], [1.0, 0.0], [0.0, 1.0]]
+    >>> Piece("x", 1, sp.sqrt(1 - s**2), 1, -1)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: hi = -1 is not allowed: must be a finite number > lo = 1.0
+    """
 
     axis: str
     sign: int
@@ -80,6 +94,27 @@ class Piece:
     lo: float
     hi: float
     hole: bool = False
+
+    def __post_init__(self) -> None:
+        set_ = object.__setattr__
+        set_(self, "axis", choice("axis", self.axis, ("x", "y")))
+        if (
+            not isinstance(self.sign, numbers.Real)
+            or isinstance(self.sign, bool | np.bool_)
+            or self.sign not in (1, -1)
+        ):
+            raise ParameterError("sign", self.sign, "1 or -1")
+        set_(self, "sign", int(self.sign))
+        expr = real_expression("expr", self.expr)
+        if len(expr.free_symbols) > 1:
+            raise ParameterError("expr", str(expr), "an expression in one symbol (the graph's)")
+        set_(self, "expr", expr)
+        set_(self, "lo", finite("lo", self.lo))
+        hi = finite("hi", self.hi)
+        if not hi > self.lo:
+            raise ParameterError("hi", self.hi, f"a finite number > lo = {self.lo!r}")
+        set_(self, "hi", hi)
+        set_(self, "hole", flag("hole", self.hole))
 
     @functools.cached_property
     def _funcs(self):
@@ -547,8 +582,30 @@ def polynomial_table(
     >>> round(t.area, 12), round(t.perimeter, 12)
     (4.0, 8.0)
     """
+    if not isinstance(name, str):
+        raise ParameterError("name", name, "a string (the table's name)")
+    if not isinstance(symbol, sp.Symbol):
+        raise ParameterError("symbol", symbol, "a SymPy Symbol (the pieces' variable)")
+    if parameters is not None and not isinstance(parameters, dict):
+        raise ParameterError("parameters", parameters, "a dict or None")
+    pieces = _sequence("pieces", pieces, "a non-empty sequence of Piece")
+    if not all(isinstance(p, Piece) for p in pieces):
+        raise ParameterError("pieces", [type(p).__name__ for p in pieces],
+                             "a non-empty sequence of Piece")  # fmt: skip
     pieces = [Piece(p.axis, p.sign, p.expr.subs(symbol, _s), p.lo, p.hi, p.hole) for p in pieces]
-    coefs = [_coef_array(*_coefficients(f)) for f in walls]
+    strays = set().union(*(p.expr.free_symbols for p in pieces)) - {_s}
+    if strays:
+        raise ParameterError(
+            "symbol", symbol, f"the pieces' variable (they use {sorted(map(str, strays))})"
+        )
+    walls = _sequence("walls", walls, "a non-empty sequence of polynomials in x, y")
+    coefs = []
+    for f in walls:
+        f = real_expression("walls", f, (S.x, S.y))
+        try:
+            coefs.append(_coef_array(*_coefficients(f)))
+        except sp.PolynomialError:
+            raise ParameterError("walls", str(f), "polynomials in x, y") from None
     table = _assemble(
         name, parameters or {}, pieces, [POLYNOMIAL] * len(coefs), coefs,
         np.zeros((len(coefs), 2)),
@@ -558,7 +615,37 @@ def polynomial_table(
         raise ParameterError("pieces", f"{len(pieces)} pieces", "a closed boundary", why=why)
 
     _check_closed(table, refuse)
+    _check_on_walls(table)
     return table
+
+
+def _sequence(name: str, value: object, allowed: str) -> list:
+    """``value`` as a non-empty list (a string, a mapping or a SymPy object is not one)."""
+    if isinstance(value, str | dict | sp.Basic) or not hasattr(value, "__iter__"):
+        raise ParameterError(name, value, allowed)
+    items = list(value)
+    if not items:
+        raise ParameterError(name, items, allowed)
+    return items
+
+
+def _check_on_walls(table: Table) -> None:
+    """The pieces must lie where the wall functions say the boundary is: at each point of
+    a piece every wall function >= 0 and one of them 0, to 1e-9 of its size over the box
+    (the graphs are the walls' zero sets, so rounding alone separates them)."""
+    pts = np.concatenate([p.points(101) for p in table.pieces])
+    values = table.wall_values(pts[:, 0], pts[:, 1])  # (walls, points)
+    bx, by = table.box
+    scale = np.array([_poly_bound(c, bx, by) for c in table.coef])[:, None]
+    tol = 1e-9 * np.maximum(scale, np.finfo(float).tiny)
+    on = np.any(np.abs(values) <= tol, axis=0) & np.all(values >= -tol, axis=0)
+    if not on.all():
+        x, y = pts[np.argmin(on)]
+        raise ParameterError(
+            "walls", f"{len(table.kinds)} wall function(s)",
+            "functions >= 0 inside the table that vanish on its boundary pieces",
+            why=f"none vanishes at the piece's point ({x:.6g}, {y:.6g})",
+        )  # fmt: skip
 
 
 def stadium_table(half_length: float, radius: float) -> Table:
@@ -573,6 +660,9 @@ def stadium_table(half_length: float, radius: float) -> Table:
     """
     a = positive("half_length", half_length)
     r = positive("radius", radius)
+    for name, value in (("half_length", a), ("radius", r)):
+        if value > MAX_SCALE:  # the box and the engine's bounds overflow beyond
+            raise ParameterError(name, value, f"a number in (0, {MAX_SCALE:g}]")
     cap_ = a + sp.sqrt((r - _s) * (r + _s))
     pieces = [Piece("y", sg, r + 0 * _s, -a, a) for sg in (1, -1)]
     pieces += [Piece("x", sg, cap_, -r, r) for sg in (1, -1)]

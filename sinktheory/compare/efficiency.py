@@ -44,7 +44,6 @@ __all__ = [
     "FRACTION",
     "MAX_ENERGIES",
     "steps_per_period",
-    "work",
 ]
 
 #: The share of the initial energy whose dissipation time is reported.

@@ -40,7 +40,6 @@ __all__ = [
     "BACKBONE_STEPS",
     "START_TRIES",
     "transfer_map",
-    "transfer_maps",
     "TransferMap",
 ]
 

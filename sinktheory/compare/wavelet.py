@@ -51,7 +51,6 @@ __all__ = [
     "MAX_FREQUENCIES",
     "morlet",
     "PRECISION",
-    "ridge_of",
     "wavelet_map",
     "WaveletMap",
 ]
