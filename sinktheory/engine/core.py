@@ -32,7 +32,7 @@ from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from ..integrators import SplittingScheme
 from ..model import DAMPING_KINDS
 from ..progress import ProgressBar, chunks
-from ..validation import choice, nonnegative, real_array
+from ..validation import choice, nonnegative, positive_int, real_array
 from . import blocks
 from .cache import cost_table_path, load
 
@@ -183,7 +183,7 @@ class Ensemble:
     def runs(self) -> int:
         return self.q.shape[1]
 
-    def take(self, runs) -> Ensemble:
+    def _take(self, runs) -> Ensemble:
         """A new ensemble of the runs ``runs`` (indices or a boolean mask), continuing
         exactly where these are: state, deviation vectors and their logs, audit reference,
         time.  Advancing it gives each run bitwise what advancing this one would."""
@@ -365,10 +365,11 @@ class Ensemble:
     def plan(self, threads: int | None = None) -> blocks.BlockPlan:
         """The plan the cost table predicts fastest for these runs (see
         :mod:`sinktheory.engine.blocks`): at most ``threads`` threads (default: numba's
-        current number).  :meth:`run` times it against the other candidates while running
-        (:func:`blocks.candidates`) and keeps the fastest."""
+        current number; at most numba's ``NUMBA_NUM_THREADS``).  :meth:`run` times it against
+        the other candidates while running (:func:`blocks.candidates`) and keeps the fastest."""
         if threads is None:
             threads = numba.get_num_threads()
+        threads = positive_int("threads", threads, maximum=numba.config.NUMBA_NUM_THREADS)
         return blocks.plan(self.runs, self.block_costs(), threads)
 
     def timings(self) -> dict[blocks.BlockPlan, float]:
