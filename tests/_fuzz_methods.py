@@ -340,6 +340,27 @@ def fixed_leaks() -> list:
         (lambda: well_at.value().wall_distance("x", 0.0), "c"),  # UFuncTypeError
         (lambda: well_at.value().basin.escape.describe(None), "v0"),  # TypeError
         (lambda: _ensemble().plan([]), "threads"),  # TypeError
+        (lambda: _ensemble().run(_verlet(), dt=None, steps=4, segments=2), "dt"),  # TypeError
+        (lambda: _ensemble().run(_verlet(), dt=[], steps=4, segments=2), "dt"),  # ValueError
+        (lambda: _ensemble().run(_verlet(), dt=0.05, steps=4, segments="x"), "segments"),
+        (
+            lambda: _ensemble().run(_verlet(), dt=0.05, steps=4, segments=2, record="shared"),
+            "record",
+        ),  # a string: nothing recorded, silently
+        (
+            lambda: _ensemble().run(
+                _verlet(), dt=0.05, steps=4, segments=2, stride=[], record=("trajectory",)
+            ),
+            "stride",
+        ),  # ValueError
+        (
+            lambda: _ensemble().run(_verlet(), dt=0.05, steps=4, segments=2, renorm=1e308),
+            "renorm",
+        ),  # OverflowError
+        (
+            lambda: _ensemble().run(_verlet(), dt=0.05, steps=4, segments=2, block=1e308),
+            "block",
+        ),  # OverflowError
     ]
 
 
@@ -351,5 +372,7 @@ PENDING_BY_REASON: dict[str, tuple] = {
     "needs a work check: steps = 10**12 (or segments) with a finite dt x steps starts "
     "hours of engine work, and the limit in force (worklimit.max_seconds, its context "
     "variables) lives in the set-up layer, above the engine; moving those variables down "
-    "to sinktheory.limits lets the engine check it": ("sinktheory.engine.core.Ensemble.run",),
+    "to sinktheory.limits lets the engine check it (its other arguments are checked)": (
+        "sinktheory.engine.core.Ensemble.run",
+    ),
 }

@@ -32,7 +32,7 @@ from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from ..integrators import SplittingScheme
 from ..model import DAMPING_KINDS
 from ..progress import ProgressBar, chunks
-from ..validation import choice, nonnegative, positive_int, real_array
+from ..validation import choice, flag, nonnegative, positive, positive_int, real_array
 from . import blocks
 from .cache import cost_table_path, load
 
@@ -248,7 +248,15 @@ class Ensemble:
                                  "get_scheme)")  # fmt: skip
         R, M, D = self.runs, self.vectors, self.q.shape[0]
         K = self.module.members_of(D)
-        S = int(segments)
+        S = positive_int("segments", segments, minimum=0)
+        record, renorm, gali, megno, bound = _checked_options(record, renorm, gali, megno, bound)
+        if block is not None:
+            block = positive_int("block", block, maximum=np.iinfo(np.int64).max)
+        if progress is not None:
+            progress = flag("progress", progress)
+        for name, text in (("label", label), ("unit", unit)):
+            if not isinstance(text, str):
+                raise ParameterError(name, text, "a string")
         if gali > M or (megno and M == 0):
             raise ParameterError("gali", gali, f"at most the number of deviation vectors ({M})")
         dt, steps, segment_time = _per_run_steps(dt, steps, R, renorm)
@@ -426,16 +434,39 @@ def audit_error(where: str, nonfinite: bool, H: float, H0: float, bound: float,
                             f"({audited} = {H!r}, H0 = {H0!r}); {advice[1]}")  # fmt: skip
 
 
+#: What :meth:`Ensemble.run` can record.
+RECORDABLE = ("shared", "members", "trajectory", "logs", "work", "integral")
+
+
+def _checked_options(record, renorm, gali, megno, bound) -> tuple:
+    """(record, renorm, gali, megno, bound) of :meth:`Ensemble.run`, checked: ``record`` a
+    collection of names among :data:`RECORDABLE`, ``renorm`` and ``gali`` integers >= 0,
+    ``megno`` a bool, ``bound`` a number > 0 (inf: none); else ParameterError naming it."""
+    allowed = "a tuple of names among " + ", ".join(RECORDABLE)
+    if isinstance(record, str) or not isinstance(record, tuple | list | set | frozenset):
+        raise ParameterError("record", record, allowed)
+    if any(not isinstance(r, str) or r not in RECORDABLE for r in record):
+        raise ParameterError("record", tuple(record), allowed)
+    renorm = positive_int("renorm", renorm, minimum=0, maximum=np.iinfo(np.int64).max)
+    gali = positive_int("gali", gali, minimum=0)
+    megno = flag("megno", megno)
+    if bound != math.inf:
+        bound = positive("bound", bound)
+    return tuple(record), renorm, gali, megno, bound
+
+
 def _per_run_steps(dt, steps, runs: int, renorm: int):
     """(dt (R,), steps (R,), segment time) from one step or one per run; refuses steps per
     run whose segments differ, or that vary together with renorm (in steps)."""
     if np.ndim(dt) == 0 and np.ndim(steps) == 0:  # one step for all (the common case)
-        if int(steps) != steps or int(steps) < 1 or not 0 < float(dt) * int(steps) < math.inf:
+        steps = positive_int("steps", steps)
+        dt = positive("dt", dt)
+        if not dt * steps < math.inf:
             raise ParameterError("dt, steps", (dt, steps), "a positive finite step and a "
                                  "positive integer number of steps")  # fmt: skip
-        return np.full(runs, float(dt)), np.full(runs, int(steps)), float(dt) * int(steps)
-    dt_r = np.broadcast_to(np.asarray(dt, dtype=float), (runs,))
-    steps_r = np.broadcast_to(np.asarray(steps), (runs,))
+        return np.full(runs, dt), np.full(runs, steps), dt * steps
+    dt_r = _per_run("dt", real_array("dt", dt), runs)
+    steps_r = _per_run("steps", np.asarray(steps), runs)
     if steps_r.dtype.kind not in "iuf" or np.any(steps_r < 1) or np.any(steps_r % 1):
         raise ParameterError("steps", steps, "a positive integer, or one per run")
     segment = dt_r * steps_r
@@ -451,14 +482,26 @@ def _per_run_steps(dt, steps, runs: int, renorm: int):
     return dt_r, steps_r.astype(np.int64), float(segment[0])
 
 
+def _per_run(name: str, value: np.ndarray, runs: int) -> np.ndarray:
+    """``value`` broadcast to one per run, else ParameterError naming ``name``."""
+    try:
+        return np.broadcast_to(value, (runs,))
+    except ValueError:
+        shown = f"an array of shape {value.shape}"
+        raise ParameterError(name, shown, f"one value, or one per run ({runs})") from None
+
+
 def _strides(stride, steps: np.ndarray, segments: int) -> tuple[np.ndarray, int]:
     """(stride (R,), samples) of the trajectory record: steps between samples, one for all
     runs or one per run (0: no record); every run must give the same number of samples
     S x steps // stride + 1."""
     if np.ndim(stride) == 0 and stride == 0:  # no trajectory (the common case)
         return np.zeros_like(steps), 0
-    stride_r = np.broadcast_to(np.asarray(stride), steps.shape)
-    if stride_r.dtype.kind not in "iuf" or np.any(stride_r < 0) or np.any(stride_r % 1):
+    stride_r = _per_run("stride", np.asarray(stride), len(steps))
+    top = np.iinfo(np.int64).max
+    if stride_r.dtype.kind not in "iuf" or np.any(
+        (stride_r < 0) | (stride_r > top) | (stride_r % 1)
+    ):
         raise ParameterError("stride", stride, "a non-negative integer, or one per run")
     stride_r = stride_r.astype(np.int64)
     if not stride_r.any():
