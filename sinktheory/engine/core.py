@@ -30,6 +30,7 @@ import numpy as np
 
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from ..integrators import SplittingScheme
+from ..limits import SECONDS_PER_PARTICLE_STEP, _max_seconds
 from ..model import DAMPING_KINDS
 from ..progress import ProgressBar, chunks
 from ..validation import choice, flag, nonnegative, positive, positive_int, real_array
@@ -260,6 +261,7 @@ class Ensemble:
         if gali > M or (megno and M == 0):
             raise ParameterError("gali", gali, f"at most the number of deviation vectors ({M})")
         dt, steps, segment_time = _per_run_steps(dt, steps, R, renorm)
+        _check_work(steps, S, K, scheme)
         stride, samples = _strides(stride if "trajectory" in record else 0, steps, S)
         groups = blocks.groups_of(steps)
         threads = numba.get_num_threads()
@@ -480,6 +482,25 @@ def _per_run_steps(dt, steps, runs: int, renorm: int):
         raise ParameterError("renorm", renorm,
                              "0 when the runs take different steps (it counts steps)")  # fmt: skip
     return dt_r, steps_r.astype(np.int64), float(segment[0])
+
+
+def _check_work(steps: np.ndarray, segments: int, members: int, scheme) -> None:
+    """Refuse ``segments`` segments of ``steps`` steps (one per run) beyond the work limit
+    in force (:func:`sinktheory.worklimit.max_seconds`), priced at a lower bound of
+    :func:`sinktheory.worklimit.ensemble_steps` (each run's members, at least one, by the
+    scheme's stages; no vectors, no blocks): the callers' own checks, which price the same
+    work higher, refuse first; this catches the work they did not check."""
+    per_step = max(members, 1) * (scheme.stages + 1) / 12 * SECONDS_PER_PARTICLE_STEP
+    seconds = float(np.sum(steps, dtype=float)) * segments * per_step
+    limit = _max_seconds()
+    if seconds > limit:
+        name, value = ("segments", segments) if segments > steps.max() else ("steps", steps.max())
+        raise ParameterError(
+            name, value, f"at most {limit:.3g} s of estimated engine work (the limit in force; "
+            "sinktheory.worklimit.interactive_limit raises it)",
+            why=f"{segments} segments of {int(steps.max())} steps of {len(steps)} runs: "
+            f"about {seconds:.3g} s",
+        )  # fmt: skip
 
 
 def _per_run(name: str, value: np.ndarray, runs: int) -> np.ndarray:
