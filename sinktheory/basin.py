@@ -75,6 +75,7 @@ Examples
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -386,14 +387,14 @@ class NumericWell:
         # scaled by 1e-300 is not taken for one flat to rounding)
         self.magnitude = numeric(sum(abs(t) for t in sp.Add.make_args(V)), self.values)
 
-    def gradient(self, px: float, py: float) -> np.ndarray:
+    def _gradient(self, px: float, py: float) -> np.ndarray:
         return np.array(self._derivatives(px, py)[:2])
 
-    def hessian(self, px: float, py: float) -> np.ndarray:
+    def _hessian(self, px: float, py: float) -> np.ndarray:
         hxx, hxy, hyy = self._derivatives(px, py)[2:]
         return np.array([[hxx, hxy], [hxy, hyy]])
 
-    def valid(self, xs, ys, values=None) -> np.ndarray:
+    def _valid(self, xs, ys, values=None) -> np.ndarray:
         """True where V is not NaN or -inf (+inf is float64 overflow: large, not singular)
         and every guard holds."""
         v = self.f(xs, ys) if values is None else values
@@ -443,6 +444,8 @@ class Escape:
     def describe(self, v0: float = 0.0) -> str:
         """One line: what e* is and how it was found, the escape energy measured from
         ``v0`` = V(0, 0) (said when it is not 0; the grid bracket is of V itself)."""
+        if isinstance(v0, bool) or not isinstance(v0, numbers.Real) or not math.isfinite(v0):
+            raise ParameterError("v0", v0, "a finite real number (V(0, 0))")
         at = f"({self.point[0]:.6g}, {self.point[1]:.6g})"
         what = {
             "saddle": f"the saddle at {at} (Newton's method from the grid's pass)",
@@ -529,7 +532,7 @@ def _zoom_singular(well: NumericWell, p: tuple[float, float], h: float) -> tuple
     while width > 8 * np.finfo(float).eps * scale:
         X, Y = _grid(width, _ZOOM_NODES, best)
         values = well.f(X, Y)
-        valid = well.valid(X, Y, values)
+        valid = well._valid(X, Y, values)
         near = ndimage.binary_dilation(~valid, structure=_EIGHT) & valid
         if not near.any():
             break
@@ -571,7 +574,7 @@ def escape(well: NumericWell, radius: float = 1.0) -> Escape:
         X, Y = _grid(R)
         h = R / m
         values = well.f(X, Y)
-        valid = well.valid(X, Y, values)
+        valid = well._valid(X, Y, values)
         edge, singular = _exits(valid)
         found = _bottleneck(values, valid, edge | singular, m)
         if found is None:  # only if the centre itself is invalid, which the checks refuse
@@ -601,8 +604,8 @@ def escape(well: NumericWell, radius: float = 1.0) -> Escape:
         # nodes inside the box are tried before the exits)
         inner = passes & ~(edge | singular)
         for i in list(zip(*np.nonzero(inner), strict=True))[:_NEWTON_TRIES]:
-            q = _newton(well.gradient, well.hessian, (X[i], Y[i]), 2 * h)
-            if q is not None and np.linalg.slogdet(well.hessian(*q))[0] < 0:  # no underflow
+            q = _newton(well._gradient, well._hessian, (X[i], Y[i]), 2 * h)
+            if q is not None and np.linalg.slogdet(well._hessian(*q))[0] < 0:  # no underflow
                 point = (float(q[0]) + 0.0, float(q[1]) + 0.0)
                 return Escape(float(well.f(*q)), "saddle", point, (e_lo, e_hi), R, h)
         on_singular = passes & singular
@@ -706,8 +709,8 @@ def reach(well: NumericWell, particle_energy: float, limit: Escape) -> Reach:
     while R <= 2 * limit.box:
         X, Y = _grid(R)
         values = well.f(X, Y)
-        comp = _component(well.valid(X, Y, values) & (values <= e), m)
-        edge, singular = _exits(well.valid(X, Y, values))
+        comp = _component(well._valid(X, Y, values) & (values <= e), m)
+        edge, singular = _exits(well._valid(X, Y, values))
         if (comp & singular).any():
             raise NumericalError(
                 f"basin of {well.name}: at energy {e:.9g} the grid's basin meets a singular "

@@ -240,7 +240,7 @@ class HillProblem:
             else:
                 self._well(float(value))
             with np.errstate(over="ignore"):  # an overflow is inf, refused just below
-                lam = float(self.lam(np.array([value]))[0])
+                lam = float(self._lam(np.array([value]))[0])
             if abs(lam) * self.amplitude**2 > MAX_LAMBDA:
                 raise ParameterError(
                     self.parameter,
@@ -272,7 +272,7 @@ class HillProblem:
                 "where Hill's coefficient has a pole",
             )
 
-    def lam(self, values: np.ndarray) -> np.ndarray:
+    def _lam(self, values: np.ndarray) -> np.ndarray:
         """lambda of eq. y-oscill: Lam itself, or the shape's generated ``hill_lambda``
         (Hill's coefficient at the turning point x = 1 for n >= 2: -2 beta (alpha - beta)
         for the paper's wells, 1 for the circular one)."""
@@ -281,7 +281,7 @@ class HillProblem:
         hill_lambda = _shapes.bundle(self.kind).hill_lambda  # the well is checked already
         return np.array([hill_lambda(self.alpha, b) for b in values])
 
-    def quarter(self, values: np.ndarray) -> QuarterPeriod:
+    def _quarter(self, values: np.ndarray) -> QuarterPeriod:
         """Fundamental solutions at Q for already validated parameter values."""
         pure = self.kind == "pure"
         return integrate_quarter_period(
@@ -296,7 +296,7 @@ class HillProblem:
     def evaluate(self, values) -> FloquetChart:
         """phi_half, multipliers and stability at each parameter value."""
         arr = self.check(values)
-        return FloquetChart(self, arr, self.quarter(arr))
+        return FloquetChart(self, arr, self._quarter(arr))
 
 
 def pure_problem(n: int, amplitude: float = 1.0, *, rtol: float = DEFAULT_RTOL) -> HillProblem:
@@ -366,7 +366,7 @@ def model_problem(
     Examples
     --------
     >>> p = model_problem(0.5, 2)
-    >>> p.parameter, float(p.lam(np.array([-0.5]))[0])  # -2 beta (alpha - beta)
+    >>> p.parameter, float(p._lam(np.array([-0.5]))[0])  # -2 beta (alpha - beta)
     ('beta', 1.0)
     """
     well = Well(alpha, 0.0, n, gamma=gamma, shape=shape)  # validates all but beta
@@ -537,7 +537,7 @@ class FloquetChart(Result):
     @property
     def lam(self) -> np.ndarray:
         """lambda of eq. y-oscill at each value."""
-        return self.problem.lam(self.values)
+        return self.problem._lam(self.values)
 
     @property
     def _exponent(self) -> np.ndarray:
@@ -815,7 +815,7 @@ def scan(problem: HillProblem, lo: float, hi: float, count: int) -> StabilitySca
     chart = problem.evaluate(grid)
 
     def one(value: float) -> FloquetChart:
-        return FloquetChart(problem, np.array([value]), problem.quarter(np.array([value])))
+        return FloquetChart(problem, np.array([value]), problem._quarter(np.array([value])))
 
     boundaries = _factor_boundaries(grid, chart.factor, lambda name: _scalar(one, name), "Q")
     intervals = _stable_intervals(
@@ -1185,8 +1185,8 @@ class WellHill:
             )  # fmt: skip
 
         def rhs(t, s):
-            gx = well.gradient(s[0], 0.0)[0]
-            qx = well.hessian(s[0], 0.0)[1, 1]
+            gx = well._gradient(s[0], 0.0)[0]
+            qx = well._hessian(s[0], 0.0)[1, 1]
             return [s[1], -gx, s[3], -qx * s[2], s[5], -qx * s[4]]
 
         if self.symmetric:  # x = 0: a quarter period

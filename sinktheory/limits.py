@@ -16,6 +16,8 @@ True
 
 from __future__ import annotations
 
+from contextvars import ContextVar
+
 __all__ = [
     "DEFAULT_EPS",
     "DEFAULT_RTOL",
@@ -71,6 +73,22 @@ MAX_RESAMPLES = 100_000
 #: Most points of one sweep (every point is checked before any work starts: about
 #: 0.1 ms each, so 1e6 points take a couple of minutes just to check).
 MAX_SWEEP_POINTS = 10**6
+
+#: Whether the work being checked is a resumable sweep's (set by
+#: :func:`sinktheory.worklimit.resumable`).
+_RESUMABLE: ContextVar[bool] = ContextVar("sinktheory_resumable_work", default=False)
+#: The limit of a computation that cannot resume, in seconds (set by
+#: :func:`sinktheory.worklimit.interactive_limit`).
+_INTERACTIVE: ContextVar[float] = ContextVar(
+    "sinktheory_interactive_limit", default=MAX_INTERACTIVE_SECONDS
+)
+
+
+def _max_seconds() -> float:
+    """:func:`sinktheory.worklimit.max_seconds`, here below the engine so that the engine
+    can check the work it is handed too."""
+    return MAX_SECONDS if _RESUMABLE.get() else _INTERACTIVE.get()
+
 
 # ------------------------------------------------------------------------- time steps
 #: Most integration steps in one container period T = 2 pi (a step >= 6.3e-9).

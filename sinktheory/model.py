@@ -230,11 +230,13 @@ class Well:
         return d
 
     def potential(self, x, y) -> np.ndarray:
-        """V(x, y) at arrays of points (relative to the container), broadcast together.
+        """V(x, y) at arrays of finite points (relative to the container), broadcast
+        together; +inf where V overflows float range, far beyond the walls (the answer
+        :meth:`sinktheory.model.RunSettings.check_box` reads as outside).
 
         The shape's compiled kernel in a compiled loop over the points (calling it once per
         point from Python cost 20 ms of every ``simulate`` call in the step search)."""
-        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        x, y = v.points(x, y)
         out = np.empty(x.size)
         _points_loop()(
             self.kernels.potential, np.ascontiguousarray(x).ravel(),
@@ -326,8 +328,10 @@ point inside the walls (wall ratios < 1) (wall ratio 1.5 there)
             raise ParameterError(name, (x, y), allowed, why=f"wall ratio {ratio:.3g} there")
 
     def wall_ratio(self, x: float, y: float) -> float:
-        """Largest wall ratio of the shape at (x, y): < 1 strictly inside the walls."""
-        return self.kernels.wall_ratio(float(x), float(y), self.alpha, self.beta)
+        """Largest wall ratio of the shape at the finite point (x, y): < 1 strictly inside
+        the walls; it grows beyond them, to +inf where it overflows float range."""
+        x, y = v.finite("x", x), v.finite("y", y)
+        return self.kernels.wall_ratio(x, y, self.alpha, self.beta)
 
     @renamed(energy="particle_energy")
     def check_energy(self, particle_energy: float, *, name: str = "particle_energy") -> None:

@@ -294,6 +294,30 @@ def real_array(name: str, value: object, allowed: str = "an array of real number
     return out
 
 
+def points(x: object, y: object):
+    """The coordinates ``x`` and ``y`` as float ndarrays of finite numbers broadcast
+    together, else ParameterError naming ``x`` or ``y`` (the points of a well's potential).
+
+    Examples
+    --------
+    >>> [a.tolist() for a in points([0.0, 0.5], 1)]
+    [[0.0, 0.5], [1.0, 1.0]]
+    >>> points([0.0, 0.5], [1.0, 2.0, 3.0])
+    Traceback (most recent call last):
+    ...
+    sinktheory.errors.ParameterError: y = 'an array of shape (3,)' is not allowed: must be \
+an array of finite real numbers broadcasting with x, of shape (2,)
+    """
+    import numpy as np
+
+    x, y = finite_array("x", x), finite_array("y", y)
+    try:
+        return np.broadcast_arrays(x, y)
+    except ValueError:
+        allowed = f"an array of finite real numbers broadcasting with x, of shape {x.shape}"
+        raise ParameterError("y", f"an array of shape {y.shape}", allowed) from None
+
+
 def finite_array(name: str, value: object, allowed: str = "an array of finite real numbers",
                  ndim: int | None = None):  # fmt: skip
     """``value`` as a float ndarray of finite numbers (``ndim`` dimensions if given), else

@@ -65,8 +65,10 @@ class WellAt:
         return self.basin.escape_energy
 
     def potential(self, x, y) -> np.ndarray:
-        """V(x, y) - V(0, 0) at arrays of points (relative to the container)."""
-        x, y = np.broadcast_arrays(np.asarray(x, dtype=float), np.asarray(y, dtype=float))
+        """V(x, y) - V(0, 0) at arrays of finite points (relative to the container),
+        broadcast together; +inf (or -inf on a well falling without bound) where V
+        overflows float range beyond the basin, which callers read as outside it."""
+        x, y = v.points(x, y)
         numeric = self.basin.well
         with np.errstate(all="ignore"):  # beyond the basin V may overflow: large, not inside
             return np.asarray(numeric.f(x, y), dtype=float) - numeric.v0
@@ -74,7 +76,7 @@ class WellAt:
     def hessian_at(self, x: float, y: float) -> np.ndarray:
         """The 2 x 2 Hessian of V at (x, y)."""
         x, y = v.finite("x", x), v.finite("y", y)
-        h = np.asarray(self.basin.well.hessian(x, y), dtype=float)
+        h = np.asarray(self.basin.well._hessian(x, y), dtype=float)
         if not np.all(np.isfinite(h)):
             raise NumericalError(
                 f"{self.shape} well: the Hessian of V at ({x:g}, {y:g}) is not finite"
@@ -127,7 +129,8 @@ class WellAt:
 
     def box_potential(self, box: float) -> float:
         """The largest V - V(0, 0) on a 17 x 17 grid of the start box (about the most a
-        particle starting at rest in it holds)."""
+        particle starting at rest in it holds); +inf where V overflows float range on it
+        (a box reaching far beyond the basin)."""
         return self._box_edge(box)[0]
 
     def check_box(self, box: float) -> None:
@@ -167,7 +170,7 @@ class WellAt:
         """The distance t from the centre along the unit direction (c, s) at which the
         largest abs(r_i) of the wall ratios reaches 1 (the rigid wall), located by brentq
         between powers of 2 up to ``limit``; inf if it does not within ``limit``, or
-        without wall ratios.
+        without wall ratios.  ``c`` and ``s`` finite, ``limit`` > 0.
 
         Examples
         --------
@@ -179,6 +182,7 @@ class WellAt:
         """
         from scipy.optimize import brentq
 
+        c, s, limit = v.finite("c", c), v.finite("s", s), v.positive("limit", limit)
         if not self._ratios:
             return math.inf
         scales = 2.0 ** np.arange(-20.0, 41.0)
@@ -230,7 +234,7 @@ class WellAt:
             if not math.isfinite(t):
                 continue
             rise = float(self.potential(t * c, t * s))
-            slope = float(np.dot(self.basin.well.gradient(t * c, t * s), (t * c, t * s)))
+            slope = float(np.dot(self.basin.well._gradient(t * c, t * s), (t * c, t * s)))
             if math.isfinite(rise) and math.isfinite(slope) and rise > 0:
                 steepest = max(steepest, slope / rise)
         if not steepest > 0:

@@ -63,7 +63,7 @@ from contextvars import ContextVar
 from . import validation as v
 from .errors import ParameterError
 from .integrators import get_scheme
-from .limits import DEFAULT_SCHEME, MAX_INTERACTIVE_SECONDS
+from .limits import _INTERACTIVE, _RESUMABLE, DEFAULT_SCHEME, MAX_INTERACTIVE_SECONDS, _max_seconds
 from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 
 __all__ = [
@@ -114,12 +114,6 @@ BLOCK_STEP = 8.0
 DISSIPATIVE = 2.5
 
 
-#: Whether the work being checked is a resumable sweep's (set by :func:`resumable`).
-_RESUMABLE: ContextVar[bool] = ContextVar("sinktheory_resumable_work", default=False)
-#: The limit of a computation that cannot resume, in seconds (set by :func:`interactive_limit`).
-_INTERACTIVE: ContextVar[float] = ContextVar(
-    "sinktheory_interactive_limit", default=MAX_INTERACTIVE_SECONDS
-)
 #: The estimates (seconds) of the checks made inside :func:`tally`, or None outside it.
 _TALLY: ContextVar[list[float] | None] = ContextVar("sinktheory_work_tally", default=None)
 
@@ -167,7 +161,7 @@ def max_seconds() -> float:
     """The work limit in force, in estimated seconds: :data:`MAX_INTERACTIVE_SECONDS`
     (or the limit :func:`interactive_limit` set), or :data:`~sinktheory.model.MAX_SECONDS`
     inside :func:`resumable`."""
-    return MAX_SECONDS if _RESUMABLE.get() else _INTERACTIVE.get()
+    return _max_seconds()
 
 
 @contextlib.contextmanager

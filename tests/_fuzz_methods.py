@@ -92,6 +92,26 @@ def _orbit():
                  total_energy=0.01)  # fmt: skip
 
 
+def _ensemble():
+    """Two Henon-Heiles runs (fresh for each call: running advances it)."""
+    from sinktheory.engine.core import Ensemble
+
+    return Ensemble("henon_heiles", np.array([[0.0, 0.01], [0.1, 0.0]]),
+                    np.array([[0.3, 0.2], [0.0, 0.1]]), [])  # fmt: skip
+
+
+def _branch():
+    import math
+
+    from _fuzz import duffing_flow
+
+    from sinktheory.nnm.continuation import continue_orbits
+
+    return continue_orbits(duffing_flow(), np.array([0.1, 0.1, 0.0, 0.0]), 2 * math.pi,
+                           steps=64, total_energy=0.01, interval=(1e-3, 0.02), ds=0.5,
+                           max_points=3)  # fmt: skip
+
+
 #: A small floquet sweep's parameters.
 _SWEEP = {"alpha": 0.5, "beta": [0.1, 0.2], "n": 4}
 #: A state (X, u, y, Xdot, udot, ydot) of the figure-8 sink's flow.
@@ -122,6 +142,8 @@ def instances() -> dict:
     return {
         S + "attachments.ImpulseResponse": Lazy(_impulse),
         S + "basin.Basin": Lazy(lambda: Basin.of(hh.potential, hh.values(), hh.name)),
+        S + "basin.Escape": Lazy(lambda: Basin.of(hh.potential, hh.values(), hh.name).escape),
+        S + "nnm.continuation.Branch": Lazy(_branch),
         S + "billiard.convergence.Convergence": Lazy(_convergence),
         S + "billiard.convergence.LyapunovChart": Lazy(_lyapunov_chart),
         S + "billiard.table.Piece": table.pieces[0],
@@ -175,6 +197,9 @@ def arguments() -> dict:
         S + "chaos.result.ChaosResult.mean": dict(name="lambda1"),
         S + "chaos.result.ChaosResult.window_exponents": dict(window=1),
         S + "compare.efficiency.Comparison.span": dict(index=0),
+        S + "engine.core.Ensemble.plan": dict(threads=1),
+        S + "engine.core.Ensemble.run": dict(scheme=Lazy(_verlet), dt=0.05, steps=4,
+                                             segments=2),
         S + "equilibrium.area.WellArea.of": dict(well=Lazy(_ellipse)),
         S + "equilibrium.area.WellArea.ratio": dict(t=[0.5, 1.0], within=1.0),
         S + "equilibrium.kramers.KramersMoyal.lag_index": dict(lag=1),
@@ -230,6 +255,43 @@ def arguments() -> dict:
     }  # fmt: skip
 
 
+def _verlet():
+    from sinktheory.integrators import get_scheme
+
+    return get_scheme("verlet")
+
+
+_BEYOND = "documented: "
+#: Methods whose documented answer is +-inf beyond the walls or the basin (V or a wall
+#: ratio overflowing float range), by key: the fuzz lets +-inf through, not NaN or complex.
+INFINITE_ANSWER: dict[str, str] = {
+    S + "model.Well.potential": _BEYOND + "'+inf where V overflows float range, far beyond "
+    "the walls'",
+    S + "model.Well.wall_ratio": _BEYOND + "'it grows beyond them, to +inf where it overflows "
+    "float range'",
+    S + "wellat.WellAt.potential": _BEYOND + "'+inf (or -inf on a well falling without bound) "
+    "where V overflows float range beyond the basin'",
+    S + "wellat.WellAt.box_potential": _BEYOND + "'+inf where V overflows float range on it "
+    "(a box reaching far beyond the basin)'",
+    S + "wellat.WellAt.wall_distance": _BEYOND + "'inf if it does not within limit, or "
+    "without wall ratios'",
+}
+
+#: Classes whose instance the fuzz builds afresh for each call (a call changes it), by key.
+FRESH = {S + "engine.core.Ensemble": _ensemble}
+
+#: Methods taking only ``**given`` keyword arguments (a well's parameter names), by key:
+#: valid keywords; the fuzz replaces one value at a time, or adds an unknown keyword.
+KEYWORD_CALLS: dict[str, dict] = {
+    S + "userwell.UserWell.potential_at": dict(a=0.4, b=0.25),
+    S + "userwell.UserWell.values": dict(a=0.4, gamma=2.0, n=4),
+    S + "userwell.UserWell.with_defaults": dict(b=0.25, n=3),
+    S + "nnm.continuation.Branch.result": dict(half_traces=False, label="NNM1"),
+}
+#: Of these, the methods that keep any keyword (metadata), so an unknown one is no error.
+OPEN_KEYWORDS = {S + "nnm.continuation.Branch.result"}
+
+
 def fixed_leaks() -> list:
     """(call, parameter its ParameterError must name) of each leak fixed in a method."""
     from sinktheory import RunSettings
@@ -241,10 +303,12 @@ def fixed_leaks() -> list:
     from sinktheory.progress import ProgressBar
     from sinktheory.sweep.grid import Grid
     from sinktheory.sweep.kinds import get_kind
+    from sinktheory.wellat import WellAt
 
     law = Lazy(lambda: equilibrium_law(fig8_sink(), 0.5))
     chart = Lazy(lambda: model_problem(0.5, 4).evaluate([0.1, 0.3]))
     table = rigid_table("flat", 0.5, 0.3)
+    well_at = Lazy(lambda: WellAt(_ellipse()))
     return [
         (lambda: law.value().cdf("x"), "s"),  # ValueError from float()
         (lambda: law.value().quantile({"a": 1}), "level"),  # TypeError
@@ -266,48 +330,44 @@ def fixed_leaks() -> list:
         (lambda: Grid.from_params({"beta": [0.1, 0.2]}).point(2), "index"),  # ValueError
         (lambda: get_kind("floquet").complete(None), "given"),  # AttributeError
         (lambda: ProgressBar(10, enabled=False).update("x"), "units"),  # ValueError
+        (lambda: Well(0.5, 0.3, 4).potential("x", 0.0), "x"),  # ValueError
+        (lambda: Well(0.5, 0.3, 4).potential([0.0, 0.5], [1.0, 2.0, 3.0]), "y"),  # ValueError
+        (lambda: Well(0.5, 0.3, 4).potential(float("nan"), 0.0), "x"),  # NaN returned silently
+        (lambda: Well(0.5, 0.3, 4).wall_ratio(None, 0.0), "x"),  # TypeError
+        (lambda: Well(0.5, 0.3, 4).wall_ratio(0.0, float("nan")), "y"),  # NaN returned
+        (lambda: well_at.value().potential([[float("nan")]], 0.0), "x"),  # NaN returned
+        (lambda: well_at.value().wall_distance(float("nan"), 0.0), "c"),  # inf: "no wall"
+        (lambda: well_at.value().wall_distance("x", 0.0), "c"),  # UFuncTypeError
+        (lambda: well_at.value().basin.escape.describe(None), "v0"),  # TypeError
+        (lambda: _ensemble().plan([]), "threads"),  # TypeError
+        (lambda: _ensemble().run(_verlet(), dt=None, steps=4, segments=2), "dt"),  # TypeError
+        (lambda: _ensemble().run(_verlet(), dt=[], steps=4, segments=2), "dt"),  # ValueError
+        (lambda: _ensemble().run(_verlet(), dt=0.05, steps=4, segments="x"), "segments"),
+        (
+            lambda: _ensemble().run(_verlet(), dt=0.05, steps=4, segments=2, record="shared"),
+            "record",
+        ),  # a string: nothing recorded, silently
+        (
+            lambda: _ensemble().run(
+                _verlet(), dt=0.05, steps=4, segments=2, stride=[], record=("trajectory",)
+            ),
+            "stride",
+        ),  # ValueError
+        (
+            lambda: _ensemble().run(_verlet(), dt=0.05, steps=4, segments=2, renorm=1e308),
+            "renorm",
+        ),  # OverflowError
+        (
+            lambda: _ensemble().run(_verlet(), dt=0.05, steps=4, segments=2, block=1e308),
+            "block",
+        ),  # OverflowError
+        # ran for hours: a finite dt x steps was all the engine checked
+        (lambda: _ensemble().run(_verlet(), dt=1e-12, steps=10**12, segments=2), "steps"),
     ]
 
 
 #: Methods whose calls take seconds: fewer examples.
 HEAVY: set[str] = set()
 
-_INTERNAL = "internal: only the package calls it"
 #: Methods not fuzzed yet, by why.
-PENDING_BY_REASON: dict[str, tuple] = {
-    _INTERNAL: (
-        "sinktheory.basin.Escape.describe",
-        "sinktheory.chaos.result.ChaosResult.runs_of",
-        "sinktheory.basin.NumericWell.gradient",
-        "sinktheory.basin.NumericWell.hessian",
-        "sinktheory.basin.NumericWell.valid",
-        "sinktheory.design.explorer.DesignRun.of",
-        "sinktheory.engine.core.Ensemble.plan",
-        "sinktheory.engine.core.Ensemble.run",
-        "sinktheory.engine.core.Ensemble.take",
-        "sinktheory.engine.systems.Term.plain",
-        "sinktheory.floquet.HillProblem.lam",
-        "sinktheory.floquet.HillProblem.quarter",
-        "sinktheory.nnm.continuation.Branch.result",
-        "sinktheory.nnm.result.BranchResult.from_branch",
-        "sinktheory.nnm.system.FlowSystem.param_derivative",
-        "sinktheory.nnm.system.FlowSystem.propagate",
-        "sinktheory.sweep.plan.Sweep.dataset",
-        "sinktheory.sweep.plan.Sweep.task",
-    ),
-    "only **given keyword arguments (a well's parameter names): the fuzz draws among "
-    "named parameters, of which these have none": (
-        "sinktheory.userwell.UserWell.potential_at",
-        "sinktheory.userwell.UserWell.values",
-        "sinktheory.userwell.UserWell.with_defaults",
-    ),
-    "inf is their answer beyond the walls or the basin (V or the wall ratio overflow "
-    "float range; RunSettings.check_box and WellAt.check_position rely on it): refusing it "
-    "changes what the package's callers get, a decision for the lead": (
-        "sinktheory.model.Well.potential",
-        "sinktheory.model.Well.wall_ratio",
-        "sinktheory.wellat.WellAt.box_potential",
-        "sinktheory.wellat.WellAt.potential",
-        "sinktheory.wellat.WellAt.wall_distance",
-    ),
-}
+PENDING_BY_REASON: dict[str, tuple] = {}

@@ -110,7 +110,7 @@ class ChaosResult(Result):
     transient: int = 0
 
     # ----------------------------------------------------------------- per run
-    def runs_of(self, runs: slice, parameters: dict) -> ChaosResult:
+    def _runs_of(self, runs: slice, parameters: dict) -> ChaosResult:
         """The result of the runs ``runs`` alone, described by ``parameters``."""
 
         def part(a):

@@ -425,7 +425,7 @@ def _together(points: list[_Point], scheme, dts, steps, block, o) -> list[ChaosR
         start = runs.stop
         info = dict(res.parameters, params=engine_params(p.sink).tolist(), seed=p.settings.seed,
                     dt=float(dt), steps_per_segment=int(n))  # fmt: skip
-        part = res.runs_of(runs, info | p.parameters())
+        part = res._runs_of(runs, info | p.parameters())
         # its own times: dt x steps rounds differently for each step (as in indicators)
         out.append(replace(part, times=dt * n * np.arange(res.times.size)))
     return out

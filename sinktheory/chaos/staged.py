@@ -178,6 +178,6 @@ def staged_exponent(ensemble: Ensemble, groups, scheme, *, dt, steps,
         if stop.all():
             break
         if stop.any():
-            ensemble = ensemble.take(~stop)
+            ensemble = ensemble._take(~stop)
             active = active[~stop]
     return StagedExponent(exponent, used, worst)

@@ -270,7 +270,7 @@ def _run(args: argparse.Namespace) -> Output:
         repair=args.repair,
         progress=not args.quiet,
     )
-    run = DesignRun.of(done, est, repaired)
+    run = DesignRun._of(done, est, repaired)
     ds, ranked, repaired = run.dataset, run.ranked, run.repaired
     dims = list(ds.done.dims)
     predicted = None

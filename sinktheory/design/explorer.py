@@ -66,7 +66,7 @@ class DesignRun:
     repaired: int = 0
 
     @classmethod
-    def of(cls, done, estimate=None, repaired: int = 0) -> DesignRun:
+    def _of(cls, done, estimate=None, repaired: int = 0) -> DesignRun:
         """The design run of a finished :class:`~sinktheory.sweep.runner.SweepRun`, ranked.
 
         ``repaired``: damaged points :func:`todo_of` found before ``done`` ran; opening
@@ -182,7 +182,7 @@ def explore(
         progress=progress,
         repair=repair,
     )
-    run = DesignRun.of(done, est, repaired)
+    run = DesignRun._of(done, est, repaired)
     ranked = run.ranked
     if run.repaired:
         import warnings

@@ -30,9 +30,10 @@ import numpy as np
 
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from ..integrators import SplittingScheme
+from ..limits import SECONDS_PER_PARTICLE_STEP, _max_seconds
 from ..model import DAMPING_KINDS
 from ..progress import ProgressBar, chunks
-from ..validation import choice, nonnegative, real_array
+from ..validation import choice, flag, nonnegative, positive, positive_int, real_array
 from . import blocks
 from .cache import cost_table_path, load
 
@@ -183,7 +184,7 @@ class Ensemble:
     def runs(self) -> int:
         return self.q.shape[1]
 
-    def take(self, runs) -> Ensemble:
+    def _take(self, runs) -> Ensemble:
         """A new ensemble of the runs ``runs`` (indices or a boolean mask), continuing
         exactly where these are: state, deviation vectors and their logs, audit reference,
         time.  Advancing it gives each run bitwise what advancing this one would."""
@@ -248,10 +249,19 @@ class Ensemble:
                                  "get_scheme)")  # fmt: skip
         R, M, D = self.runs, self.vectors, self.q.shape[0]
         K = self.module.members_of(D)
-        S = int(segments)
+        S = positive_int("segments", segments, minimum=0)
+        record, renorm, gali, megno, bound = _checked_options(record, renorm, gali, megno, bound)
+        if block is not None:
+            block = positive_int("block", block, maximum=np.iinfo(np.int64).max)
+        if progress is not None:
+            progress = flag("progress", progress)
+        for name, text in (("label", label), ("unit", unit)):
+            if not isinstance(text, str):
+                raise ParameterError(name, text, "a string")
         if gali > M or (megno and M == 0):
             raise ParameterError("gali", gali, f"at most the number of deviation vectors ({M})")
         dt, steps, segment_time = _per_run_steps(dt, steps, R, renorm)
+        _check_work(steps, S, K, scheme)
         stride, samples = _strides(stride if "trajectory" in record else 0, steps, S)
         groups = blocks.groups_of(steps)
         threads = numba.get_num_threads()
@@ -365,10 +375,11 @@ class Ensemble:
     def plan(self, threads: int | None = None) -> blocks.BlockPlan:
         """The plan the cost table predicts fastest for these runs (see
         :mod:`sinktheory.engine.blocks`): at most ``threads`` threads (default: numba's
-        current number).  :meth:`run` times it against the other candidates while running
-        (:func:`blocks.candidates`) and keeps the fastest."""
+        current number; at most numba's ``NUMBA_NUM_THREADS``).  :meth:`run` times it against
+        the other candidates while running (:func:`blocks.candidates`) and keeps the fastest."""
         if threads is None:
             threads = numba.get_num_threads()
+        threads = positive_int("threads", threads, maximum=numba.config.NUMBA_NUM_THREADS)
         return blocks.plan(self.runs, self.block_costs(), threads)
 
     def timings(self) -> dict[blocks.BlockPlan, float]:
@@ -425,16 +436,39 @@ def audit_error(where: str, nonfinite: bool, H: float, H0: float, bound: float,
                             f"({audited} = {H!r}, H0 = {H0!r}); {advice[1]}")  # fmt: skip
 
 
+#: What :meth:`Ensemble.run` can record.
+RECORDABLE = ("shared", "members", "trajectory", "logs", "work", "integral")
+
+
+def _checked_options(record, renorm, gali, megno, bound) -> tuple:
+    """(record, renorm, gali, megno, bound) of :meth:`Ensemble.run`, checked: ``record`` a
+    collection of names among :data:`RECORDABLE`, ``renorm`` and ``gali`` integers >= 0,
+    ``megno`` a bool, ``bound`` a number > 0 (inf: none); else ParameterError naming it."""
+    allowed = "a tuple of names among " + ", ".join(RECORDABLE)
+    if isinstance(record, str) or not isinstance(record, tuple | list | set | frozenset):
+        raise ParameterError("record", record, allowed)
+    if any(not isinstance(r, str) or r not in RECORDABLE for r in record):
+        raise ParameterError("record", tuple(record), allowed)
+    renorm = positive_int("renorm", renorm, minimum=0, maximum=np.iinfo(np.int64).max)
+    gali = positive_int("gali", gali, minimum=0)
+    megno = flag("megno", megno)
+    if bound != math.inf:
+        bound = positive("bound", bound)
+    return tuple(record), renorm, gali, megno, bound
+
+
 def _per_run_steps(dt, steps, runs: int, renorm: int):
     """(dt (R,), steps (R,), segment time) from one step or one per run; refuses steps per
     run whose segments differ, or that vary together with renorm (in steps)."""
     if np.ndim(dt) == 0 and np.ndim(steps) == 0:  # one step for all (the common case)
-        if int(steps) != steps or int(steps) < 1 or not 0 < float(dt) * int(steps) < math.inf:
+        steps = positive_int("steps", steps)
+        dt = positive("dt", dt)
+        if not dt * steps < math.inf:
             raise ParameterError("dt, steps", (dt, steps), "a positive finite step and a "
                                  "positive integer number of steps")  # fmt: skip
-        return np.full(runs, float(dt)), np.full(runs, int(steps)), float(dt) * int(steps)
-    dt_r = np.broadcast_to(np.asarray(dt, dtype=float), (runs,))
-    steps_r = np.broadcast_to(np.asarray(steps), (runs,))
+        return np.full(runs, dt), np.full(runs, steps), dt * steps
+    dt_r = _per_run("dt", real_array("dt", dt), runs)
+    steps_r = _per_run("steps", np.asarray(steps), runs)
     if steps_r.dtype.kind not in "iuf" or np.any(steps_r < 1) or np.any(steps_r % 1):
         raise ParameterError("steps", steps, "a positive integer, or one per run")
     segment = dt_r * steps_r
@@ -450,14 +484,45 @@ def _per_run_steps(dt, steps, runs: int, renorm: int):
     return dt_r, steps_r.astype(np.int64), float(segment[0])
 
 
+def _check_work(steps: np.ndarray, segments: int, members: int, scheme) -> None:
+    """Refuse ``segments`` segments of ``steps`` steps (one per run) beyond the work limit
+    in force (:func:`sinktheory.worklimit.max_seconds`), priced at a lower bound of
+    :func:`sinktheory.worklimit.ensemble_steps` (each run's members, at least one, by the
+    scheme's stages; no vectors, no blocks): the callers' own checks, which price the same
+    work higher, refuse first; this catches the work they did not check."""
+    per_step = max(members, 1) * (scheme.stages + 1) / 12 * SECONDS_PER_PARTICLE_STEP
+    seconds = float(np.sum(steps, dtype=float)) * segments * per_step
+    limit = _max_seconds()
+    if seconds > limit:
+        name, value = ("segments", segments) if segments > steps.max() else ("steps", steps.max())
+        raise ParameterError(
+            name, value, f"at most {limit:.3g} s of estimated engine work (the limit in force; "
+            "sinktheory.worklimit.interactive_limit raises it)",
+            why=f"{segments} segments of {int(steps.max())} steps of {len(steps)} runs: "
+            f"about {seconds:.3g} s",
+        )  # fmt: skip
+
+
+def _per_run(name: str, value: np.ndarray, runs: int) -> np.ndarray:
+    """``value`` broadcast to one per run, else ParameterError naming ``name``."""
+    try:
+        return np.broadcast_to(value, (runs,))
+    except ValueError:
+        shown = f"an array of shape {value.shape}"
+        raise ParameterError(name, shown, f"one value, or one per run ({runs})") from None
+
+
 def _strides(stride, steps: np.ndarray, segments: int) -> tuple[np.ndarray, int]:
     """(stride (R,), samples) of the trajectory record: steps between samples, one for all
     runs or one per run (0: no record); every run must give the same number of samples
     S x steps // stride + 1."""
     if np.ndim(stride) == 0 and stride == 0:  # no trajectory (the common case)
         return np.zeros_like(steps), 0
-    stride_r = np.broadcast_to(np.asarray(stride), steps.shape)
-    if stride_r.dtype.kind not in "iuf" or np.any(stride_r < 0) or np.any(stride_r % 1):
+    stride_r = _per_run("stride", np.asarray(stride), len(steps))
+    top = np.iinfo(np.int64).max
+    if stride_r.dtype.kind not in "iuf" or np.any(
+        (stride_r < 0) | (stride_r > top) | (stride_r % 1)
+    ):
         raise ParameterError("stride", stride, "a non-negative integer, or one per run")
     stride_r = stride_r.astype(np.int64)
     if not stride_r.any():

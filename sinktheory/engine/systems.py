@@ -60,7 +60,7 @@ class Term:
     hessian: tuple[sp.Expr, ...]
 
     @classmethod
-    def plain(cls, local, maps, value) -> Term:
+    def _plain(cls, local, maps, value) -> Term:
         """A term whose derivatives SymPy takes directly (no atoms)."""
         local = tuple(local)
         grad = tuple(sp.diff(value, v) for v in local)
@@ -201,7 +201,7 @@ def sink_system(well, name: str | None = None) -> SeparableSystem:
         member=(u, S.y),
         member_masses=(sh.masses[1], sh.masses[2]),
         params=(*(p.subs(whole) for p in params), S.mu),
-        shared_terms=(Term.plain((X,), (X,), X**2 / 2),),
+        shared_terms=(Term._plain((X,), (X,), X**2 / 2),),
         member_terms=(term,),
         # contact weight V / (its level at the wall): about 1 at the wall, (1/2)^(2n)
         # half-way to it for the paper's wells (2 n V / gamma)
@@ -248,7 +248,7 @@ def henon_heiles() -> SeparableSystem:
         name="henon_heiles",
         shared=(x, y),
         shared_masses=(sp.Integer(1), sp.Integer(1)),
-        shared_terms=(Term.plain((x, y), (x, y), U),),
+        shared_terms=(Term._plain((x, y), (x, y), U),),
     )
 
 
@@ -261,5 +261,5 @@ def two_dof_duffing() -> SeparableSystem:
         name="duffing2",
         shared=(x1, x2),
         shared_masses=(sp.Integer(1), sp.Integer(1)),
-        shared_terms=(Term.plain((x1, x2), (x1, x2), U),),
+        shared_terms=(Term._plain((x1, x2), (x1, x2), U),),
     )

@@ -198,7 +198,7 @@ class Branch:
         """Labelled arrays of this branch (:class:`~sinktheory.nnm.result.BranchResult`)."""
         from .result import BranchResult
 
-        return BranchResult.from_branch(self, **meta)
+        return BranchResult._from_branch(self, **meta)
 
 
 def tangent(J: np.ndarray, previous: np.ndarray | None = None) -> np.ndarray:

@@ -97,7 +97,7 @@ class BranchResult(Result):
     }
 
     @classmethod
-    def from_branch(cls, branch, *, half_traces: bool = False, **meta) -> BranchResult:
+    def _from_branch(cls, branch, *, half_traces: bool = False, **meta) -> BranchResult:
         """Collect a :class:`~sinktheory.nnm.continuation.Branch` (``half_traces``: also
         the transverse phi_half of every point, one more half-period run each)."""
         orbits = branch.orbits

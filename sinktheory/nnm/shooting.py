@@ -158,7 +158,7 @@ class ShootingProblem:
         z0, T, sigma, lam = self.unpack(u)
         system, h = self.system_at(lam)
         try:
-            zT, M = system.propagate(z0, T, steps=self.steps)
+            zT, M = system._propagate(z0, T, steps=self.steps)
         except NumericalError as err:  # the step is too large for a far-off iterate
             raise ShootingError(f"integration failed during Newton: {err}") from err
         F = self.free
@@ -177,7 +177,7 @@ class ShootingProblem:
             if self.continue_in == "energy":
                 J[n + 1, n + 2] = -h
             else:
-                dz, dH = system.param_derivative(z0, T, self.continue_in, steps=self.steps)
+                dz, dH = system._param_derivative(z0, T, self.continue_in, steps=self.steps)
                 J[:n, n + 2] = dz[F]
                 J[n + 1, n + 2] = dH
         return G, J, (system, z0, T, sigma, zT, M)
@@ -320,7 +320,7 @@ class Orbit:
         zs = [self.z0]
         z = self.z0
         for _ in range(n):
-            z = self.system.propagate(z, dt * per, steps=per, jacobian=False)
+            z = self.system._propagate(z, dt * per, steps=per, jacobian=False)
             zs.append(z)
         return np.arange(n + 1) * per * dt, np.array(zs)
 
@@ -333,7 +333,7 @@ class Orbit:
         """
         if self.steps % 2:
             raise ParameterError("steps", self.steps, "even for the half-period map")
-        zT, M, zh, Mh = self.system.propagate(self.z0, self.period, steps=self.steps, half=True)
+        zT, M, zh, Mh = self.system._propagate(self.z0, self.period, steps=self.steps, half=True)
         return zh, Mh, float(np.max(np.abs(zh + self.z0)))
 
     def transverse_half_traces(self) -> np.ndarray:

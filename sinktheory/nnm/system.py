@@ -26,10 +26,6 @@ Examples
 >>> s = FlowSystem("duffing2", [])
 >>> s.dim, s.masses.tolist()
 (2, [1.0, 1.0])
->>> z = np.array([1e-4, 1e-4, 0.0, 0.0])  # the in-phase linear mode, omega = 1
->>> zT, M = s.propagate(z, 2 * np.pi, steps=200)
->>> bool(np.allclose(zT, z, atol=1e-12)), M.shape
-(True, (4, 4))
 """
 
 from __future__ import annotations
@@ -199,7 +195,7 @@ class FlowSystem:
         return K
 
     # --- maps -----------------------------------------------------------------------
-    def propagate(
+    def _propagate(
         self,
         z0: np.ndarray,
         T: float,
@@ -263,7 +259,7 @@ class FlowSystem:
                 res.append(jacobians[k])
         return tuple(res) if len(res) > 1 else res[0]
 
-    def param_derivative(
+    def _param_derivative(
         self, z0: np.ndarray, T: float, name: str, *, steps: int, rel: float = 1e-6
     ) -> tuple[np.ndarray, float]:
         """(d z(T) / dp, dH(z0) / dp) for parameter ``name`` by central differences."""
@@ -274,6 +270,6 @@ class FlowSystem:
         for s in (1, -1):
             p = p0.copy()
             p[i] += s * h
-            out.append(self.propagate(z0, T, steps=steps, jacobian=False, params=p))
+            out.append(self._propagate(z0, T, steps=steps, jacobian=False, params=p))
             energies.append(self.hamiltonian(z0, p))
         return (out[0] - out[1]) / (2 * h), (energies[0] - energies[1]) / (2 * h)

@@ -92,7 +92,7 @@ class Sweep:
         return cls(k, grid, seed, spec, digest, math.fsum(estimates))
 
     # --- points -------------------------------------------------------------------------
-    def task(self, index: int) -> tuple[int, dict, int]:
+    def _task(self, index: int) -> tuple[int, dict, int]:
         """(index, parameters, point seed) of point ``index``: what a worker needs."""
         return index, self.grid.point(index), point_seed(self.seed, index)
 
@@ -142,7 +142,7 @@ class Sweep:
         seeds = [point_seed(self.seed, i) for i in range(self.grid.size)]
         return np.array(seeds, dtype=np.uint64).reshape(self.grid.shape)
 
-    def dataset(self, results: Mapping[str, Any], done: np.ndarray) -> xr.Dataset:
+    def _dataset(self, results: Mapping[str, Any], done: np.ndarray) -> xr.Dataset:
         """The labelled results: ``results`` (name -> array over the grid) plus bookkeeping.
 
         ``done`` flags the points computed; ``point_seed`` holds each point's seed.

@@ -248,7 +248,7 @@ def _tasks(sweep: Sweep, done: np.ndarray) -> list[list[tuple[int, dict, int]]]:
         if current and (index != current[-1][0] + 1 or len(current) == batch):
             tasks.append(current)
             current = []
-        current.append(sweep.task(index))
+        current.append(sweep._task(index))
     if current:
         tasks.append(current)
     return tasks

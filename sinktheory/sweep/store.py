@@ -143,7 +143,7 @@ class SweepStore:
             )
         tmp = path.parent / f".{path.name}.creating-{uuid.uuid4().hex}"
         try:
-            template = sweep.dataset(_empty_results(sweep), np.zeros(sweep.grid.shape, bool))
+            template = sweep._dataset(_empty_results(sweep), np.zeros(sweep.grid.shape, bool))
             template[CHECKSUM] = (
                 sweep.grid.names,
                 np.zeros(sweep.grid.shape, np.uint64),
@@ -436,7 +436,7 @@ class MemoryStore:
         self.flags[where] = value
 
     def dataset(self) -> xr.Dataset:
-        return self.sweep.dataset(self.results, self.flags)
+        return self.sweep._dataset(self.results, self.flags)
 
     def close(self) -> None:
         """Nothing to release."""

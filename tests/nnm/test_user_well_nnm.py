@@ -34,8 +34,8 @@ def test_the_flat_well_typed_by_a_user_flows_as_the_registry():
     user = sink_flow(Sink(WellAt(FLAT), 1, 0.2))
     assert user.parameter_names == ("alpha", "beta", "gamma", "n", "mu")
     z0, T = mode_guess(REGISTRY, "particle", 0.1)
-    zu, mu = user.propagate(z0, T, steps=200)
-    zr, mr = sink_flow(REGISTRY).propagate(z0, T, steps=200)
+    zu, mu = user._propagate(z0, T, steps=200)
+    zr, mr = sink_flow(REGISTRY)._propagate(z0, T, steps=200)
     np.testing.assert_allclose(zu, zr, rtol=1e-12, atol=1e-15)
     np.testing.assert_allclose(mu, mr, rtol=1e-12, atol=1e-13)
     for mode, energy in (("particle", 1e-3), ("particle", 2.0), ("container", 0.5)):

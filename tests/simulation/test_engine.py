@@ -121,7 +121,7 @@ def test_symbol_names_the_kernels_use_are_refused():
     from sinktheory.engine.systems import SeparableSystem, Term
 
     pull, x = sp.symbols("pull x", real=True)
-    term = Term.plain((pull, x), (pull, x), pull**2 * x**2)
+    term = Term._plain((pull, x), (pull, x), pull**2 * x**2)
     system = SeparableSystem("clash", (pull, x), (sp.Integer(1),) * 2, shared_terms=(term,))
     with pytest.raises(ValueError, match=r"\['pull'\]"):
         render(system, "")
@@ -293,7 +293,7 @@ def test_take_continues_the_chosen_runs_bitwise():
     part = fresh()
     part.run(scheme, dt=dt, steps=400, segments=2, record=())
     kept = np.array([1, 4, 6])
-    part = part.take(kept)
+    part = part._take(kept)
     rec = part.run(scheme, dt=dt, steps=400, segments=2, record=("logs",))
     assert part.runs == 3 and part.time == whole.time
     for name in ("q", "v", "dq", "dv", "logs"):

@@ -53,7 +53,7 @@ def test_an_ensemble_sweep_of_henon_heiles_is_simulate_of_its_well():
     sweep = Sweep.make("ensemble", params)
     ds = run_sweep("ensemble", params, workers=1, progress=False)
     for i, e0 in enumerate((0.01, 0.02)):
-        seed = sweep.task(i)[2]
+        seed = sweep._task(i)[2]
         res = simulate(Sink(WellAt(hh), 1, 0.2), RunSettings(container_energy=e0, runs=2,
                        periods=2, seed=seed), progress=False)  # fmt: skip
         assert np.array_equal(ds.mean_energy.values[i], res.ensemble_energy()[0])
@@ -64,7 +64,7 @@ def test_a_point_rebuilds_its_well_from_the_stored_text(tmp_path):
     point computes after the file is gone, in a process that never read it."""
     path = write_well_file(tmp_path, "paperflat", BUILT_IN["flat"], PAPER)
     sweep = Sweep.make("bifurcation", {"well": load_well(path), "beta": 0.3, **SECTIONS})
-    task = pickle.dumps(sweep.task(0))
+    task = pickle.dumps(sweep._task(0))
     path.unlink()
     from sinktheory import ensemble
 
