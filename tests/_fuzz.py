@@ -561,8 +561,6 @@ def _overrides():
         s + "worklimit.check_work": dict(steps_per_period=100),
         s + "scenes.estimate": dict(number=2, quick=True),
         s + "userwell.well_report": dict(well=ellipse),
-        s + "compare.efficiency.work": dict(samples_per_period=4),
-        s + "billiard.impact.kinetic_energy": dict(vx=0.1, vy=0.2, vc=0.3),
         s + "damped.simulate_inelastic": dict(settings=small),
         # leaksb: one run, whose standard error is NaN by the package's rule (runstats.py),
         # so a hostile value read as one run (a number, [1.0, 2.0]) may give NaN too

@@ -114,7 +114,6 @@ def test_records_are_records():
             assert issubclass(cls, tuple) and hasattr(cls, "_fields"), f"{key}: not a record"
 
 
-@pytest.mark.xfail(strict=True, reason=f"issue 34: {len(PENDING)} entry points not fuzzed yet")
 def test_no_entry_point_is_pending():
     assert not PENDING, sorted(PENDING)
 

@@ -132,7 +132,6 @@ def test_every_public_method_is_fuzzed_or_pending():
     assert not sorted(HAND & set(PENDING)), "fuzzed by hand and also pending"
 
 
-@pytest.mark.xfail(strict=True, reason=f"issue 34: {len(PENDING)} methods not fuzzed yet")
 def test_no_method_is_pending():
     assert not PENDING, sorted(PENDING)
 
