@@ -8,6 +8,11 @@
 * :func:`built_entries` gives those of every other entry point from :data:`VALID` (a
   valid value per parameter name) and :func:`_overrides` (per entry point, where a name
   means something else there), the parameters with defaults taking their defaults.
+* Each area has a file of tables, tests/_fuzz_AREA.py (:data:`AREAS`): ``overrides()``
+  (valid keyword arguments by key, a costly one wrapped in :class:`Lazy`),
+  ``fixed_leaks()`` (each leak found and fixed, as a call and the parameter its
+  ParameterError must name), ``HEAVY`` (entry points taking seconds), ``RECORDS`` (classes
+  the package builds and returns, with what returns each) and ``PENDING_BY_REASON``.
 * :data:`EXEMPT` lists the entry points with no user input, each with its reason;
   :data:`RECORDS` the classes the package builds and returns (their constructors are not
   entry points); :data:`PENDING` those not fuzzed yet (test_api_fuzz_coverage.py fails on any entry

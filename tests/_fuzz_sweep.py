@@ -1,15 +1,8 @@
 """The API fuzz's tables (issue 34, item 5; see tests/_fuzz.py) for the modules sweep,
 floquet, bifurcation, validation, glossary, worklimit, userwell, cli, progress.
 
-* :func:`overrides`: valid keyword arguments by key, where the parameters' names do not
-  give them (tests/_fuzz.py's ``_valid``); a value costly to build is wrapped in
-  ``_fuzz.Lazy`` (built when first fuzzed, not when collected);
-* :func:`fixed_leaks`: each leak the fuzz found and that is fixed, as a call and the
-  parameter its ParameterError must name; :data:`HEAVY`: entry points taking seconds;
-* :data:`RECORDS`: classes the package builds and returns (dataclasses or NamedTuples
-  with no validation of their own), each with what returns it: their constructors are
-  not entry points;
-* :data:`PENDING_BY_REASON`: the entry points not fuzzed yet, by why.
+Its tables (``overrides``, ``fixed_leaks``, ``HEAVY``, ``RECORDS``,
+``PENDING_BY_REASON``) are laid out as tests/_fuzz.py describes.
 """
 
 import io
