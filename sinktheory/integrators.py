@@ -94,6 +94,17 @@ weights summing to 1 (to 1e-12), one more than a
         """Force evaluations per step."""
         return len(self.a)
 
+    @property
+    def relative_cost(self) -> float:
+        """The cost of a step relative to a step of
+        :data:`~sinktheory.limits.DEFAULT_SCHEME`: (stages + 1) / (its stages + 1), the
+        work estimates' scheme factor (measured in :func:`sinktheory.worklimit.scheme_factor`).
+
+        >>> get_scheme("verlet").relative_cost, get_scheme(DEFAULT_SCHEME).relative_cost
+        (0.16666666666666666, 1.0)
+        """
+        return (self.stages + 1) / (get_scheme(DEFAULT_SCHEME).stages + 1)
+
     def arrays(self) -> tuple[np.ndarray, np.ndarray]:
         """(a, b) as float64 arrays for the compiled stepping loop."""
         return np.array(self.a, dtype=np.float64), np.array(self.b, dtype=np.float64)

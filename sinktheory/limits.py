@@ -84,9 +84,12 @@ _INTERACTIVE: ContextVar[float] = ContextVar(
 )
 
 
-def _max_seconds() -> float:
-    """:func:`sinktheory.worklimit.max_seconds`, here below the engine so that the engine
-    can check the work it is handed too."""
+def max_seconds() -> float:
+    """The work limit in force, in estimated seconds: :data:`MAX_INTERACTIVE_SECONDS` (or
+    the limit :func:`sinktheory.worklimit.interactive_limit` set), or :data:`MAX_SECONDS`
+    inside :func:`sinktheory.worklimit.resumable`.  Here, below the engine, so that the
+    engine can check the work it is handed too; public as
+    :func:`sinktheory.worklimit.max_seconds`."""
     return MAX_SECONDS if _RESUMABLE.get() else _INTERACTIVE.get()
 
 

@@ -63,7 +63,7 @@ from contextvars import ContextVar
 from . import validation as v
 from .errors import ParameterError
 from .integrators import get_scheme
-from .limits import _INTERACTIVE, _RESUMABLE, DEFAULT_SCHEME, MAX_INTERACTIVE_SECONDS, _max_seconds
+from .limits import _INTERACTIVE, _RESUMABLE, MAX_INTERACTIVE_SECONDS, max_seconds
 from .model import MAX_SECONDS, SECONDS_PER_PARTICLE_STEP, RunSettings, Sink
 
 __all__ = [
@@ -141,7 +141,7 @@ def scheme_factor(scheme: str | None) -> float:
     """
     if scheme is None:
         return 1.0
-    return (get_scheme(scheme).stages + 1) / (get_scheme(DEFAULT_SCHEME).stages + 1)
+    return get_scheme(scheme).relative_cost
 
 
 def ensemble_steps(
@@ -155,13 +155,6 @@ def ensemble_steps(
     blocks = math.ceil(runs / BLOCK_RUNS)
     per_step = runs * tangent_steps(particles, vectors) + blocks * BLOCK_STEP
     return float(steps) * per_step * scheme_factor(scheme)
-
-
-def max_seconds() -> float:
-    """The work limit in force, in estimated seconds: :data:`MAX_INTERACTIVE_SECONDS`
-    (or the limit :func:`interactive_limit` set), or :data:`~sinktheory.model.MAX_SECONDS`
-    inside :func:`resumable`."""
-    return _max_seconds()
 
 
 @contextlib.contextmanager

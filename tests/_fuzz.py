@@ -607,7 +607,7 @@ EXEMPT = {
     "sinktheory.symbolic.symmetric_corner_bound": "no parameters",
     "sinktheory.symbolic.symmetric_corner_saddle": "no parameters",
     "sinktheory.validation.memory_limit": "no parameters",
-    "sinktheory.worklimit.max_seconds": "no parameters",
+    "sinktheory.limits.max_seconds": "no parameters",
     "sinktheory.worklimit.resumable": "no parameters",
     "sinktheory.worklimit.tally": "no parameters",
 }

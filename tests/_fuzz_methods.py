@@ -10,7 +10,7 @@ hostile value.
 * :func:`arguments`: valid keyword arguments by method key (``module.Class.method``),
   where the parameters' names do not give them (``_fuzz._valid``);
 * :func:`fixed_leaks`: each leak found and fixed, as a call and the parameter its
-  ParameterError must name; :data:`HEAVY`: methods whose call takes seconds;
+  ParameterError must name;
 * :data:`PENDING_BY_REASON`: the methods not fuzzed yet, by why.
 """
 
@@ -365,9 +365,6 @@ def fixed_leaks() -> list:
         (lambda: _ensemble().run(_verlet(), dt=1e-12, steps=10**12, segments=2), "steps"),
     ]
 
-
-#: Methods whose calls take seconds: fewer examples.
-HEAVY: set[str] = set()
 
 #: Methods not fuzzed yet, by why.
 PENDING_BY_REASON: dict[str, tuple] = {}

@@ -30,7 +30,7 @@ import numpy as np
 
 from ..errors import EnergyDriftError, NonFiniteStateError, ParameterError
 from ..integrators import SplittingScheme
-from ..limits import SECONDS_PER_PARTICLE_STEP, _max_seconds
+from ..limits import SECONDS_PER_PARTICLE_STEP, max_seconds
 from ..model import DAMPING_KINDS
 from ..progress import ProgressBar, chunks
 from ..validation import choice, flag, nonnegative, positive, positive_int, real_array
@@ -490,9 +490,9 @@ def _check_work(steps: np.ndarray, segments: int, members: int, scheme) -> None:
     :func:`sinktheory.worklimit.ensemble_steps` (each run's members, at least one, by the
     scheme's stages; no vectors, no blocks): the callers' own checks, which price the same
     work higher, refuse first; this catches the work they did not check."""
-    per_step = max(members, 1) * (scheme.stages + 1) / 12 * SECONDS_PER_PARTICLE_STEP
+    per_step = max(members, 1) * scheme.relative_cost * SECONDS_PER_PARTICLE_STEP
     seconds = float(np.sum(steps, dtype=float)) * segments * per_step
-    limit = _max_seconds()
+    limit = max_seconds()
     if seconds > limit:
         name, value = ("segments", segments) if segments > steps.max() else ("steps", steps.max())
         raise ParameterError(

@@ -42,8 +42,6 @@ def _entries() -> list:
 
 
 ENTRIES = _entries()
-LIGHT = [e for e in ENTRIES if e[0] not in tables.HEAVY]
-HEAVY = [e for e in ENTRIES if e[0] in tables.HEAVY]
 _INSTANCES = tables.instances()
 _BASELINE: dict = {}
 
@@ -83,19 +81,11 @@ def _fuzz(key, owner, name, valid, data):
     fuzz_one(_method(owner, name), valid, data, baseline=_BASELINE[key])
 
 
-@pytest.mark.parametrize(("key", "owner", "name", "valid"), LIGHT, ids=[e[0] for e in LIGHT])
+@pytest.mark.parametrize(("key", "owner", "name", "valid"), ENTRIES, ids=[e[0] for e in ENTRIES])
 @settings(max_examples=12 * FUZZ_SCALE, deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.too_slow])  # fmt: skip
 @given(data=st.data())
 def test_every_public_method_raises_only_documented_errors(key, owner, name, valid, data):
-    _fuzz(key, owner, name, valid, data)
-
-
-@pytest.mark.parametrize(("key", "owner", "name", "valid"), HEAVY, ids=[e[0] for e in HEAVY])
-@settings(max_examples=3 * FUZZ_SCALE, deadline=None, derandomize=True,
-          suppress_health_check=[HealthCheck.too_slow])  # fmt: skip
-@given(data=st.data())
-def test_heavy_methods_raise_only_documented_errors(key, owner, name, valid, data):
     _fuzz(key, owner, name, valid, data)
 
 
@@ -126,7 +116,7 @@ def test_every_public_method_is_fuzzed_or_pending():
     public = set(public_methods())
     fuzzed = HAND | {e[0] for e in ENTRIES} | set(tables.KEYWORD_CALLS)
     assert not sorted(public - fuzzed - set(PENDING)), sorted(public - fuzzed - set(PENDING))
-    listed = set(PENDING) | set(tables.HEAVY) | set(tables.INFINITE_ANSWER)
+    listed = set(PENDING) | set(tables.INFINITE_ANSWER)
     stale = sorted((listed | set(tables.KEYWORD_CALLS)) - public)
     assert not stale, f"listed but not public methods: {stale}"
     assert not sorted(HAND & set(PENDING)), "fuzzed by hand and also pending"
