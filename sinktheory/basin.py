@@ -161,7 +161,8 @@ class LeadingOrder:
 FORM_DIRECTIONS = 256
 #: The range of ``radius`` of :func:`escape` (that of :func:`sinktheory.userwell.check_well`,
 #: which calls it): below, V on the first box underflows to V(0, 0) and the search doubles
-#: its box hundreds of times.
+#: its box hundreds of times (at 1e-300 every V was 0 on the checks' rings and the search
+#: took 4-23 s); at 1e-140 the finest ring's (radius 2^-20) square stays a normal float.
 RADIUS_RANGE = (1e-140, 1e300)
 
 

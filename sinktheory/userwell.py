@@ -85,7 +85,7 @@ import numpy as np
 import sympy as sp
 from sympy.printing.str import StrPrinter
 
-from .basin import Basin, guards, numeric
+from .basin import RADIUS_RANGE, Basin, guards, numeric
 from .errors import ParameterError, WellDefinitionError
 from .limits import MAX_N
 from .symbolic import SHAPES, x, y, y_invariance
@@ -768,19 +768,13 @@ def _directions() -> tuple[np.ndarray, np.ndarray]:
     return cos, sin
 
 
-#: The smallest radius of the checks: the finest ring's (radius 2^-20) square stays a
-#: normal float64 (at 1e-300 every V was 0 on the rings, and the basin's search doubled
-#: its box a thousand times before it found V again: 4-23 s).
-MIN_RADIUS = 1e-140
-
-
 def _radius(radius: object) -> float:
     """The radius of the checks: a finite number whose grids stay finite and whose
     squares on the finest ring do not underflow."""
-    radius = _number("radius", radius)
-    if not MIN_RADIUS <= radius <= 1e300:
+    radius, (lo, hi) = _number("radius", radius), RADIUS_RANGE
+    if not lo <= radius <= hi:
         raise WellDefinitionError(
-            "radius", radius, f"must be in [{MIN_RADIUS:g}, 1e300] (below, r**2 underflows "
+            "radius", radius, f"must be in [{lo:g}, {hi:g}] (below, r**2 underflows "
             "on the checks' finest ring, radius/2**20)",
         )  # fmt: skip
     return radius
